@@ -1,0 +1,118 @@
+"""The typed record that flows through the conversion stages.
+
+Everything here is in the world frame: right-handed, Z up, metres, kilograms, seconds.
+Quaternions are MuJoCo order (w, x, y, z).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import trimesh
+
+
+@dataclass
+class CaptureInfo:
+    """Where the capture came from and how it was brought into the world frame."""
+
+    source: Path
+    kind: str  # "pointcloud" | "mesh" | "objects"
+    environment_file: Path | None
+    units: str  # "m" | "mm" | "cm"
+    up: str  # "+z", "-y", "+y", ...
+    units_detected: bool
+    up_detected: bool
+    input_to_world: np.ndarray  # (4, 4), maps input coordinates to world coordinates
+    metadata: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class SupportPlane:
+    """A horizontal support surface (floor, table, counter, shelf) in the world frame."""
+
+    id: int
+    kind: str  # "floor" | "table" | "shelf"
+    normal: np.ndarray  # (3,) unit normal, pointing up
+    height: float  # z of the surface in the world frame
+    polygon: np.ndarray  # (K, 2) convex hull of the inliers in xy, counter-clockwise
+    rect_center: np.ndarray  # (2,) oriented rectangle centre (xy)
+    rect_size: np.ndarray  # (2,) oriented rectangle side lengths
+    rect_yaw: float  # oriented rectangle yaw (rad)
+    inlier_count: int
+    observed: bool = True  # False for an assumed surface (e.g. a floor below a table)
+
+    @property
+    def offset(self) -> float:
+        """d of the plane equation n.x + d = 0."""
+        return float(-self.normal[2] * self.height)
+
+
+@dataclass
+class SceneObject:
+    """One object: where it is, what it is made of and the geometry MuJoCo needs.
+
+    ``position`` is the centre of the object's base in the world frame; the meshes are in the
+    object frame whose origin is that point (Z up).
+    """
+
+    id: int
+    name: str  # unique, MJCF-safe
+    label: str
+    position: np.ndarray  # (3,)
+    quat: np.ndarray  # (4,) w, x, y, z
+    size: np.ndarray  # (3,) axis-aligned extents in the object frame
+    support_id: int | None = None  # plane the object rests on
+    resting_on: int | None = None  # object id it is stacked on, if any
+    point_count: int = 0
+    color: np.ndarray | None = None  # (3,) mean RGB in [0, 1]
+    visual: trimesh.Trimesh | None = None  # detailed mesh, object frame
+    collision: list[trimesh.Trimesh] = field(default_factory=list)  # convex parts, object frame
+    mass: float | None = None
+    com: np.ndarray | None = None  # (3,) object frame
+    inertia: np.ndarray | None = None  # (3, 3) about com, object frame
+    friction: tuple[float, float, float] = (1.0, 0.005, 0.0001)
+    solref: tuple[float, float] = (0.02, 1.0)
+    manifest: Any = None  # ObjectManifest when the physics stage ran
+    source_file: Path | None = None
+    texture: Path | None = None  # PNG for the visual mesh, when it has UVs
+    notes: list[str] = field(default_factory=list)
+
+
+@dataclass
+class Scene:
+    """The record every stage reads and extends."""
+
+    capture: CaptureInfo
+    seed: int = 0
+    points: np.ndarray | None = None  # (N, 3) world frame, input order, NaN kept
+    colors: np.ndarray | None = None  # (N, 3) float in [0, 1], or None
+    grid_shape: tuple[int, int] | None = None  # (H, W) for organized clouds
+    planes: list[SupportPlane] = field(default_factory=list)
+    labels: np.ndarray | None = None  # (N,) int32: 0 support/background, -1 noise, k object
+    objects: list[SceneObject] = field(default_factory=list)
+    object_files: list[Path] = field(default_factory=list)
+    timings: dict[str, float] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    spec: Any = None  # mujoco.MjSpec once composed
+    keyframe_qpos: np.ndarray | None = None
+    settle_report: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def floor_height(self) -> float:
+        """z of the floor: the lowest support (0 when there is none)."""
+        floors = [p.height for p in self.planes if p.kind == "floor"]
+        return min(floors) if floors else 0.0
+
+    def plane(self, plane_id: int) -> SupportPlane:
+        """The support plane with this id."""
+        for p in self.planes:
+            if p.id == plane_id:
+                return p
+        raise KeyError(plane_id)
+
+    def warn(self, message: str) -> None:
+        """Record a warning for the conversion report."""
+        self.warnings.append(message)
