@@ -77,7 +77,7 @@ class SceneObject:
     solref: tuple[float, float] = (0.02, 1.0)
     manifest: Any = None  # ObjectManifest when the physics stage ran
     source_file: Path | None = None
-    texture: Path | None = None  # PNG for the visual mesh, when it has UVs
+    texture_png: bytes | None = None  # PNG for the visual mesh, when it has UVs
     notes: list[str] = field(default_factory=list)
 
 
@@ -97,6 +97,7 @@ class Scene:
     timings: dict[str, float] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     spec: Any = None  # mujoco.MjSpec once composed
+    assets: dict[str, bytes] = field(default_factory=dict)  # files of assets/, by name
     keyframe_qpos: np.ndarray | None = None
     settle_report: dict[str, Any] = field(default_factory=dict)
 

@@ -1,0 +1,286 @@
+"""Load a capture (a single file or a folder) into a :class:`Scene`.
+
+A capture is either one file — a point cloud (PCD, PLY) or an environment mesh (OBJ, STL, PLY,
+GLB/glTF, sampled to points) — or a folder holding ``scene.*`` (the environment),
+``objects/*`` (object meshes) and an optional ``capture.yaml``::
+
+    units: m            # m | cm | mm (detected when absent)
+    up: "-y"            # +z | -z | +y | -y | +x | -x (detected when absent)
+    labels: {1: mug}    # object labels by id, or by object file stem
+    support_height: 0.75  # assumed height of the lowest support when no floor is seen
+
+Loading converts units and the up axis; the `level` stage then aligns gravity with the
+dominant support. Both transforms are composed into ``capture.input_to_world``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import yaml
+
+from realsim.errors import InputError
+from realsim.scene import CaptureInfo, Scene
+
+POINT_CLOUD_SUFFIXES = {".pcd", ".ply", ".xyz", ".pts"}
+MESH_SUFFIXES = {".obj", ".stl", ".ply", ".glb", ".gltf", ".off"}
+UP_AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
+
+
+@dataclass(frozen=True)
+class LoadParams:
+    """Parameters of the load stage."""
+
+    units: str | None = None  # override unit detection
+    up: str | None = None  # override up-axis detection
+    mesh_sample_points: int = 200_000  # points sampled from an environment mesh
+    mm_extent_threshold: float = 30.0  # a scene larger than this many units is in millimetres
+
+
+@dataclass
+class RawCloud:
+    """Points as read from the file, before any transform."""
+
+    points: np.ndarray
+    colors: np.ndarray | None
+    grid_shape: tuple[int, int] | None
+    is_camera_view: bool
+    fmt: str
+
+
+def up_rotation(up: str) -> np.ndarray:
+    """Rotation (3x3) taking the given input up axis to world +Z (a proper rotation)."""
+    if up not in UP_AXES:
+        raise InputError(f"unknown up axis {up!r}: use one of {', '.join(UP_AXES)}")
+    axis = np.zeros(3)
+    axis["xyz".index(up[1])] = 1.0 if up[0] == "+" else -1.0
+    z = np.array([0.0, 0.0, 1.0])
+    if np.allclose(axis, z):
+        return np.eye(3)
+    if np.allclose(axis, -z):
+        return np.diag([1.0, -1.0, -1.0])
+    # Camera-style frames (+y down / +y up): keep the input's forward (+z) pointing along world +x
+    # where possible, so a camera capture looks along +x in the world.
+    if up in ("-y", "+y"):
+        forward = np.array([0.0, 0.0, 1.0])
+    else:
+        forward = np.cross(z, axis)
+        forward /= np.linalg.norm(forward)
+    left = np.cross(axis, forward)
+    # Rows are the world axes expressed in input coordinates: world x = forward, y = left, z = up.
+    return np.vstack([forward, left, axis])
+
+
+def _read_point_file(path: Path) -> RawCloud:
+    suffix = path.suffix.lower()
+    if suffix == ".pcd":
+        from realsim.pcd_io import read_pcd
+
+        data = read_pcd(path)
+        is_camera = data.grid_shape is not None and data.grid_shape[0] > 1
+        return RawCloud(data.points, data.colors, data.grid_shape, is_camera, "pcd")
+    if suffix in (".xyz", ".pts"):
+        try:
+            arr = np.loadtxt(path, ndmin=2)
+        except ValueError as exc:
+            raise InputError(f"{path}: not a whitespace-separated point list ({exc})") from None
+        if arr.shape[1] < 3:
+            raise InputError(f"{path}: each line needs x y z")
+        colors = arr[:, 3:6] / (255.0 if arr[:, 3:6].max(initial=0) > 1 else 1.0) if arr.shape[1] >= 6 else None
+        return RawCloud(arr[:, :3].astype(np.float64), colors, None, False, suffix[1:])
+    raise InputError(f"{path}: unsupported point cloud format {suffix!r}")
+
+
+def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
+    """Sample an environment mesh to points (seeded), keeping vertex/face colour when present."""
+    import trimesh
+
+    try:
+        loaded = trimesh.load(path, force="mesh", process=False)
+    except Exception as exc:  # trimesh raises many types for corrupt files
+        raise InputError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
+    if isinstance(loaded, trimesh.PointCloud):
+        pts = np.asarray(loaded.vertices, dtype=np.float64)
+        cols = None
+        if getattr(loaded, "colors", None) is not None and len(loaded.colors) == len(pts):
+            cols = np.asarray(loaded.colors)[:, :3] / 255.0
+        return RawCloud(pts, cols, None, False, path.suffix[1:].lower())
+    if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
+        verts = getattr(loaded, "vertices", np.zeros((0, 3)))
+        if len(verts) == 0:
+            raise InputError(f"{path}: the file holds no geometry")
+        return RawCloud(np.asarray(verts, dtype=np.float64), None, None, False, path.suffix[1:].lower())
+    pts, face_idx = trimesh.sample.sample_surface(loaded, count, seed=seed)
+    cols = None
+    try:
+        fc = loaded.visual.face_colors
+        if fc is not None and len(fc) == len(loaded.faces):
+            cols = np.asarray(fc)[face_idx, :3] / 255.0
+    except Exception:  # textured visuals have no face colours; colour is optional
+        cols = None
+    return RawCloud(np.asarray(pts, dtype=np.float64), cols, None, False, path.suffix[1:].lower())
+
+
+def _is_point_cloud_ply(path: Path) -> bool:
+    """True when a PLY file declares vertices but no faces."""
+    with path.open("rb") as fh:
+        header = fh.read(4096)
+    if not header.startswith(b"ply"):
+        raise InputError(f"{path}: not a PLY file (missing 'ply' magic)")
+    head = header.split(b"end_header")[0]
+    faces = [line for line in head.splitlines() if line.startswith(b"element face")]
+    return not faces or faces[0].split()[-1] == b"0"
+
+
+def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
+    """Read the environment file (point cloud or mesh) of a capture."""
+    if not path.exists():
+        raise InputError(f"{path}: no such file")
+    if path.is_file() and path.stat().st_size == 0:
+        raise InputError(f"{path}: the file is empty")
+    suffix = path.suffix.lower()
+    if suffix == ".ply" and _is_point_cloud_ply(path):
+        cloud = _load_mesh_points(path, params.mesh_sample_points, seed)
+    elif suffix in POINT_CLOUD_SUFFIXES - {".ply"}:
+        cloud = _read_point_file(path)
+    elif suffix in MESH_SUFFIXES:
+        cloud = _load_mesh_points(path, params.mesh_sample_points, seed)
+    else:
+        raise InputError(
+            f"{path}: unsupported capture format {suffix or '(no extension)'!r}; "
+            "use PCD, PLY, OBJ, STL, GLB or glTF"
+        )
+    finite = np.isfinite(cloud.points).all(axis=1)
+    if not finite.any():
+        raise InputError(f"{path}: the point cloud has no finite points (all NaN)")
+    return cloud
+
+
+def detect_units(points: np.ndarray, threshold: float) -> str:
+    """'mm' when the finite extent is implausibly large for metres, else 'm'."""
+    finite = points[np.isfinite(points).all(axis=1)]
+    lo, hi = np.percentile(finite, [1, 99], axis=0)
+    return "mm" if float(np.max(hi - lo)) > threshold else "m"
+
+
+def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
+    """Guess the input's up axis.
+
+    Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
+    axis closest to the dominant plane's normal, signed so most points lie above that plane.
+    """
+    if fmt_hint in ("glb", "gltf"):
+        return "+y"
+    if cloud.is_camera_view:
+        return "-y"
+    import open3d as o3d
+
+    pts = cloud.points[np.isfinite(cloud.points).all(axis=1)]
+    rng = np.random.default_rng(seed)
+    if len(pts) > 50_000:
+        pts = pts[rng.choice(len(pts), 50_000, replace=False)]
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(pts))
+    extent = float(np.max(np.ptp(pts, axis=0)))
+    o3d.utility.random.seed(seed)
+    model, _ = pcd.segment_plane(max(extent * 0.01, 1e-6), 3, 500)
+    normal = np.asarray(model[:3])
+    axis = int(np.argmax(np.abs(normal)))
+    signed = normal.copy()
+    side = pts @ normal + model[3]
+    if np.median(side) < 0:
+        signed = -signed
+    return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]
+
+
+def _read_capture_yaml(folder: Path) -> dict[str, Any]:
+    path = folder / "capture.yaml"
+    if not path.exists():
+        return {}
+    try:
+        data = yaml.safe_load(path.read_text()) or {}
+    except yaml.YAMLError as exc:
+        raise InputError(f"{path}: invalid YAML ({str(exc).splitlines()[0]})") from None
+    if not isinstance(data, dict):
+        raise InputError(f"{path}: expected a mapping of settings")
+    return data
+
+
+def _find_environment(folder: Path) -> Path | None:
+    candidates = sorted(p for p in folder.glob("scene.*") if p.suffix.lower() in POINT_CLOUD_SUFFIXES | MESH_SUFFIXES)
+    return candidates[0] if candidates else None
+
+
+def _object_files(folder: Path) -> list[Path]:
+    objects = folder / "objects"
+    if not objects.is_dir():
+        return []
+    files = sorted(p for p in objects.rglob("*") if p.is_file() and p.suffix.lower() in MESH_SUFFIXES)
+    return files
+
+
+def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
+    """Read a capture file or folder into a Scene in a gravity-agnostic Z-up frame.
+
+    Units and up axis come from ``params`` (the CLI's ``--units``/``--up``), then
+    ``capture.yaml``, then detection.
+    """
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: no such file or folder")
+    metadata: dict[str, Any] = {}
+    object_files: list[Path] = []
+    if path.is_dir():
+        metadata = _read_capture_yaml(path)
+        env = _find_environment(path)
+        object_files = _object_files(path)
+        if env is None and not object_files:
+            raise InputError(f"{path}: the capture folder holds neither scene.* nor objects/*")
+    else:
+        env = path
+    units = params.units or metadata.get("units")
+    up = params.up or metadata.get("up")
+    if units is not None and units not in UNIT_SCALE:
+        raise InputError(f"unknown units {units!r}: use m, cm or mm")
+    if up is not None and up not in UP_AXES:
+        raise InputError(f"unknown up axis {up!r}: use one of {', '.join(UP_AXES)}")
+
+    scene_points = scene_colors = None
+    grid_shape = None
+    kind = "objects"
+    units_detected = up_detected = False
+    transform = np.eye(4)
+    if env is not None:
+        cloud = read_environment(env, params, seed)
+        kind = "pointcloud" if cloud.fmt in ("pcd", "xyz", "pts") or (cloud.fmt == "ply" and _is_point_cloud_ply(env)) else "mesh"
+        if units is None:
+            units, units_detected = detect_units(cloud.points, params.mm_extent_threshold), True
+        if up is None:
+            up, up_detected = detect_up(cloud, cloud.fmt, seed), True
+        transform[:3, :3] = up_rotation(up) * UNIT_SCALE[units]
+        scene_points = cloud.points @ transform[:3, :3].T
+        scene_colors = cloud.colors
+        grid_shape = cloud.grid_shape
+        metadata.setdefault("camera_view", cloud.is_camera_view)
+    capture = CaptureInfo(
+        source=path,
+        kind=kind,
+        environment_file=env,
+        units=units or "m",
+        up=up or "+z",
+        units_detected=units_detected,
+        up_detected=up_detected,
+        input_to_world=transform,
+        metadata=metadata,
+    )
+    return Scene(
+        capture=capture,
+        seed=seed,
+        points=scene_points,
+        colors=scene_colors,
+        grid_shape=grid_shape,
+        object_files=object_files,
+    )

@@ -1,0 +1,170 @@
+"""Compose the MJCF with ``mujoco.MjSpec``: options, arena, objects and a capture camera.
+
+Mesh files are attached to the spec as in-memory assets (``spec.assets``) under the names they
+get in ``assets/``, so the spec compiles before anything is written and the written
+``scene.xml`` refers to them by relative path.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+import trimesh
+from scipy.spatial.transform import Rotation
+
+from realsim.arena import ArenaParams, add_arena
+from realsim.scene import Scene, SceneObject
+
+VISUAL_GROUP = 2
+COLLISION_GROUP = 3
+ASSET_DIR = "assets"
+
+
+@dataclass(frozen=True)
+class ComposeParams:
+    """Parameters of MJCF composition."""
+
+    timestep: float = 0.002
+    object_condim: int = 4
+    default_density: float = 300.0  # kg/m^3 for scan objects without a manifest
+    min_mass: float = 0.02
+    max_mass: float = 5.0
+    arena: ArenaParams = ArenaParams()
+
+
+def safe_name(text: str) -> str:
+    """An MJCF-safe identifier: lowercase letters, digits and underscores."""
+    name = re.sub(r"[^a-z0-9_]+", "_", text.lower()).strip("_")
+    return name or "object"
+
+
+def mesh_bytes(mesh: trimesh.Trimesh, file_type: str) -> bytes:
+    """Deterministic bytes of a mesh file (STL or OBJ)."""
+    if file_type == "stl":
+        return trimesh.exchange.stl.export_stl(mesh)
+    text = trimesh.exchange.obj.export_obj(mesh, include_normals=False, include_color=False, include_texture=True, header=None, write_texture=False, mtl_name=None)
+    if isinstance(text, tuple):
+        text = text[0]
+    return text.encode() if isinstance(text, str) else text
+
+
+def new_spec(params: ComposeParams) -> mujoco.MjSpec:
+    """An empty spec with realsim's physics options and rendering defaults."""
+    spec = mujoco.MjSpec()
+    spec.modelname = "realsim_scene"
+    spec.meshdir = ASSET_DIR
+    spec.texturedir = ASSET_DIR
+    spec.option.timestep = params.timestep
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    spec.option.impratio = 10.0
+    spec.visual.global_.offwidth = 1280
+    spec.visual.global_.offheight = 960
+    spec.worldbody.add_light(name="sun", pos=[0, 0, 4], dir=[0, 0, -1], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, diffuse=[0.7, 0.7, 0.7], castshadow=0)
+    return spec
+
+
+def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np.ndarray, np.ndarray]:
+    """Mass, centre of mass and inertia (about the com, object frame) of an object."""
+    if obj.mass is not None and obj.com is not None and obj.inertia is not None:
+        return obj.mass, obj.com, obj.inertia
+    solid = trimesh.util.concatenate(obj.collision) if len(obj.collision) > 1 else obj.collision[0]
+    volume = max(sum(abs(h.volume) for h in obj.collision), 1e-7)
+    mass = float(np.clip(volume * params.default_density, params.min_mass, params.max_mass))
+    com = solid.center_mass if solid.is_volume else solid.bounds.mean(axis=0)
+    if solid.is_volume:
+        inertia = solid.moment_inertia * (mass / max(solid.mass, 1e-12))
+    else:
+        ext = solid.extents
+        inertia = np.diag(mass / 12.0 * np.array([ext[1] ** 2 + ext[2] ** 2, ext[0] ** 2 + ext[2] ** 2, ext[0] ** 2 + ext[1] ** 2]))
+    obj.mass, obj.com, obj.inertia = mass, np.asarray(com), np.asarray(inertia)
+    return obj.mass, obj.com, obj.inertia
+
+
+def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, assets: dict[str, bytes]) -> mujoco.MjsBody:
+    """Add one free body: convex collision meshes (group 3), a visual mesh (group 2), inertia."""
+    body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
+    body.add_freejoint(name=f"{obj.name}_joint")
+    mass, com, inertia = _mass_properties(obj, params)
+    body.mass = mass
+    body.ipos = np.asarray(com).tolist()
+    body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
+    body.explicitinertial = True
+    for i, hull in enumerate(obj.collision):
+        file = f"{obj.name}_collision_{i}.stl"
+        assets[file] = mesh_bytes(hull, "stl")
+        spec.add_mesh(name=f"{obj.name}_collision_{i}", file=file)
+        body.add_geom(
+            name=f"{obj.name}_collision_{i}",
+            type=mujoco.mjtGeom.mjGEOM_MESH,
+            meshname=f"{obj.name}_collision_{i}",
+            group=COLLISION_GROUP,
+            contype=1,
+            conaffinity=1,
+            condim=params.object_condim,
+            friction=list(obj.friction),
+            solref=list(obj.solref),
+            density=0.0,
+            rgba=[0.8, 0.3, 0.3, 0.5],
+        )
+    if obj.visual is not None:
+        _add_visual(spec, body, obj, assets)
+    return body
+
+
+def _add_visual(spec: mujoco.MjSpec, body: mujoco.MjsBody, obj: SceneObject, assets: dict[str, bytes]) -> None:
+    file = f"{obj.name}_visual.obj"
+    assets[file] = mesh_bytes(obj.visual, "obj")
+    spec.add_mesh(name=f"{obj.name}_visual", file=file)
+    rgba = [*np.clip(obj.color, 0, 1).tolist(), 1.0] if obj.color is not None else [0.7, 0.7, 0.7, 1.0]
+    material = ""
+    if obj.texture_png is not None:
+        tex_file = f"{obj.name}_texture.png"
+        assets[tex_file] = obj.texture_png
+        spec.add_texture(name=f"{obj.name}_texture", file=tex_file, type=mujoco.mjtTexture.mjTEXTURE_2D)
+        mat = spec.add_material(name=f"{obj.name}_material")
+        mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = f"{obj.name}_texture"
+        material = mat.name
+        rgba = [1.0, 1.0, 1.0, 1.0]
+    body.add_geom(
+        name=f"{obj.name}_visual",
+        type=mujoco.mjtGeom.mjGEOM_MESH,
+        meshname=f"{obj.name}_visual",
+        group=VISUAL_GROUP,
+        contype=0,
+        conaffinity=0,
+        density=0.0,
+        rgba=rgba,
+        material=material,
+    )
+
+
+def add_capture_camera(spec: mujoco.MjSpec, scene: Scene) -> None:
+    """A camera at the capture's viewpoint (optical frame +z forward, +y down)."""
+    if not scene.capture.metadata.get("camera_view"):
+        return
+    transform = scene.capture.input_to_world
+    scale = np.cbrt(abs(np.linalg.det(transform[:3, :3])))
+    rot_optical = transform[:3, :3] / scale
+    rot_mujoco = rot_optical @ np.diag([1.0, -1.0, -1.0])  # MuJoCo cameras look along -z, y up
+    quat_xyzw = Rotation.from_matrix(rot_mujoco).as_quat()
+    spec.worldbody.add_camera(name="capture", pos=transform[:3, 3].tolist(), quat=[quat_xyzw[3], *quat_xyzw[:3]], fovy=50.0)
+
+
+def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scene:
+    """Build the MjSpec of the scene (arena, objects, camera) and check it compiles."""
+    spec = new_spec(params)
+    assets: dict[str, bytes] = {}
+    add_arena(spec, scene, params.arena)
+    for obj in scene.objects:
+        add_object(spec, obj, params, assets)
+    add_capture_camera(spec, scene)
+    spec.assets = assets
+    spec.compile()
+    scene.spec = spec
+    scene.assets = assets
+    return scene

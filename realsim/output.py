@@ -1,0 +1,130 @@
+"""Write a converted scene to its output folder, atomically.
+
+Everything goes to a temporary sibling folder first; the written ``scene.xml`` is compiled by
+MuJoCo from there, and only then is the folder moved into place. A failed run leaves nothing.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any, Iterator
+
+import mujoco
+import numpy as np
+
+from realsim.compose import ASSET_DIR
+from realsim.errors import InputError
+from realsim.scene import Scene
+
+
+@contextmanager
+def atomic_folder(dest: Path) -> Iterator[Path]:
+    """Yield a temporary folder that replaces ``dest`` on success and vanishes on failure."""
+    dest = Path(dest).resolve()
+    if dest.exists() and not dest.is_dir():
+        raise InputError(f"{dest}: exists and is not a folder")
+    dest.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.", dir=dest.parent))
+    try:
+        yield tmp
+        if dest.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old.", dir=dest.parent))
+            os.replace(dest, old / "x")
+            os.replace(tmp, dest)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(tmp, dest)
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _jsonable(value.tolist())
+    if isinstance(value, (np.floating, float)):
+        return round(float(value), 6)
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, Path):
+        return str(value)
+    if hasattr(value, "model_dump"):
+        return _jsonable(value.model_dump())
+    return value
+
+
+def scene_record(scene: Scene) -> dict[str, Any]:
+    """The scene.json content: capture, transform, planes, objects, settling and timings."""
+    cap = scene.capture
+    return _jsonable({
+        "format": "realsim-scene/1",
+        "capture": {
+            "source": str(cap.source),
+            "kind": cap.kind,
+            "environment_file": str(cap.environment_file) if cap.environment_file else None,
+            "units": cap.units,
+            "units_detected": cap.units_detected,
+            "up": cap.up,
+            "up_detected": cap.up_detected,
+            "input_to_world": cap.input_to_world,
+            "point_count": 0 if scene.points is None else len(scene.points),
+            "grid_shape": scene.grid_shape,
+        },
+        "seed": scene.seed,
+        "planes": [
+            {
+                "id": p.id, "kind": p.kind, "observed": p.observed, "normal": p.normal, "height": p.height,
+                "offset": p.offset, "polygon": p.polygon, "rectangle": {"center": p.rect_center, "size": p.rect_size, "yaw": p.rect_yaw},
+                "inlier_count": p.inlier_count,
+            }
+            for p in scene.planes
+        ],
+        "objects": [
+            {
+                "id": o.id, "name": o.name, "body": o.name, "label": o.label, "position": o.position, "quat_wxyz": o.quat,
+                "size": o.size, "support_id": o.support_id, "resting_on": o.resting_on, "point_count": o.point_count,
+                "color": o.color, "mass": o.mass, "friction": o.friction, "solref": o.solref,
+                "source_file": o.source_file, "manifest": o.manifest, "notes": o.notes,
+            }
+            for o in scene.objects
+        ],
+        "keyframe": "initial",
+        "settle": scene.settle_report,
+        "timings_s": scene.timings,
+        "warnings": scene.warnings,
+    })
+
+
+def verify_compiles(xml_path: Path) -> mujoco.MjModel:
+    """Compile a written scene from another working directory; raise if it does not load."""
+    cwd = os.getcwd()
+    try:
+        os.chdir(tempfile.gettempdir())
+        return mujoco.MjModel.from_xml_path(str(xml_path))
+    finally:
+        os.chdir(cwd)
+
+
+def write_scene(scene: Scene, dest: Path) -> Path:
+    """Write scene.xml, assets/, scene.json and labels.npy to ``dest`` atomically."""
+    with atomic_folder(dest) as tmp:
+        assets = tmp / ASSET_DIR
+        assets.mkdir()
+        for name, data in sorted(scene.assets.items()):
+            (assets / name).write_bytes(data)
+        xml = scene.spec.to_xml()
+        (tmp / "scene.xml").write_text(xml)
+        if scene.labels is not None:
+            np.save(tmp / "labels.npy", scene.labels.astype(np.int32))
+        (tmp / "scene.json").write_text(json.dumps(scene_record(scene), indent=2) + "\n")
+        verify_compiles(tmp / "scene.xml")
+    return Path(dest)

@@ -1,0 +1,375 @@
+"""Support planes: level the capture on its dominant support and find every horizontal surface.
+
+Open3D RANSAC (seeded) proposes planes on a voxel-downsampled copy; each horizontal proposal is
+split into connected regions in xy and refitted by least squares on the full-resolution points
+near it, which is what brings the height to millimetres.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import open3d as o3d
+import trimesh
+from scipy import ndimage
+from scipy.spatial import ConvexHull, QhullError
+
+from realsim.errors import InputError
+from realsim.scene import Scene, SupportPlane
+
+
+@dataclass(frozen=True)
+class PlaneParams:
+    """Parameters of plane detection and levelling."""
+
+    voxel_size: float = 0.01  # downsampling for RANSAC proposals (m)
+    distance_threshold: float = 0.01  # RANSAC inlier distance (m)
+    ransac_iterations: int = 1000
+    max_planes: int = 8  # proposals examined
+    min_plane_points: int = 100  # (downsampled) points for a proposal to count
+    level_max_tilt_deg: float = 60.0  # dominant support searched within this of the coarse up
+    support_max_tilt_deg: float = 8.0  # a support is horizontal within this after levelling
+    refine_threshold: float = 0.006  # full-resolution refit band (m)
+    region_cell: float = 0.02  # grid cell for splitting a plane into regions (m)
+    min_support_area: float = 0.03  # observed area (occupied grid cells) of a support, m^2
+    merge_height_tol: float = 0.02  # regions within this height are one surface (m)
+    merge_gap: float = 0.5  # ... when their hulls come this close in xy (m)
+    min_support_gap: float = 0.25  # a flat top closer than this above a support is an object (m)
+    floor_min_gap: float = 0.3  # a support this far below another one is the floor (m)
+    floor_min_size: float = 1.5  # a lowest support this large in both directions is the floor (m)
+    assumed_support_height: float = 0.75  # height given to the lowest support when no floor is seen
+    max_support_height: float = 2.5  # planes higher than this above the floor are ceilings
+
+
+def _finite(points: np.ndarray) -> np.ndarray:
+    return np.isfinite(points).all(axis=1)
+
+
+def _downsample(points: np.ndarray, voxel: float) -> o3d.geometry.PointCloud:
+    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    return pcd.voxel_down_sample(voxel)
+
+
+def fit_plane(points: np.ndarray) -> tuple[np.ndarray, float]:
+    """Least-squares plane (unit normal with +z component >= 0, offset d of n.x + d = 0)."""
+    centroid = points.mean(axis=0)
+    _, _, vt = np.linalg.svd(points - centroid, full_matrices=False)
+    normal = vt[-1]
+    if normal[2] < 0:
+        normal = -normal
+    return normal, float(-normal @ centroid)
+
+
+def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list[tuple[np.ndarray, float, np.ndarray]]:
+    """Planes found by repeated seeded RANSAC: (normal, d, inlier points) each, largest first."""
+    pcd = _downsample(points, params.voxel_size)
+    o3d.utility.random.seed(seed)
+    proposals = []
+    for _ in range(params.max_planes):
+        if len(pcd.points) < params.min_plane_points:
+            break
+        model, inliers = pcd.segment_plane(params.distance_threshold, 3, params.ransac_iterations)
+        if len(inliers) < params.min_plane_points:
+            break
+        normal = np.asarray(model[:3], dtype=np.float64)
+        d = float(model[3])
+        norm = np.linalg.norm(normal)
+        normal, d = normal / norm, d / norm
+        proposals.append((normal, d, np.asarray(pcd.points)[inliers]))
+        pcd = pcd.select_by_index(inliers, invert=True)
+    return proposals
+
+
+def refine_plane(points: np.ndarray, normal: np.ndarray, d: float, band: float, passes: int = 3) -> tuple[np.ndarray, float, np.ndarray]:
+    """Refit a plane on the points within ``band`` of it, shrinking the band each pass.
+
+    Returns the normal, offset and the mask of the final inliers.
+    """
+    mask = np.zeros(len(points), dtype=bool)
+    for i in range(passes):
+        dist = points @ normal + d
+        width = band * (0.6**i)
+        mask = np.abs(dist) < width
+        if mask.sum() < 3:
+            break
+        new_normal, new_d = fit_plane(points[mask])
+        if new_normal @ normal < 0:
+            new_normal, new_d = -new_normal, -new_d
+        normal, d = new_normal, new_d
+    return normal, d, mask
+
+
+def rotation_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The minimal rotation matrix taking unit vector ``a`` to unit vector ``b``."""
+    a = a / np.linalg.norm(a)
+    b = b / np.linalg.norm(b)
+    v = np.cross(a, b)
+    c = float(a @ b)
+    if np.linalg.norm(v) < 1e-12:
+        if c > 0:
+            return np.eye(3)
+        axis = np.cross(a, [1.0, 0.0, 0.0])
+        if np.linalg.norm(axis) < 1e-6:
+            axis = np.cross(a, [0.0, 1.0, 0.0])
+        axis /= np.linalg.norm(axis)
+        return 2.0 * np.outer(axis, axis) - np.eye(3)
+    vx = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + vx + vx @ vx * (1.0 / (1.0 + c))
+
+
+def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
+    """Connected regions of points on an xy grid covering at least ``min_area``; index arrays."""
+    lo = xy.min(axis=0)
+    ij = np.floor((xy - lo) / cell).astype(np.int64)
+    grid = np.zeros(ij.max(axis=0) + 1, dtype=bool)
+    grid[ij[:, 0], ij[:, 1]] = True
+    grid = ndimage.binary_closing(grid, structure=np.ones((3, 3)), iterations=1, border_value=0) | grid
+    labels, count = ndimage.label(grid, structure=np.ones((3, 3)))
+    point_labels = labels[ij[:, 0], ij[:, 1]]
+    occupied = np.bincount(point_labels, minlength=count + 1)
+    cells = np.zeros(count + 1, dtype=np.int64)
+    unique_cells = np.unique(ij, axis=0)
+    np.add.at(cells, labels[unique_cells[:, 0], unique_cells[:, 1]], 1)
+    big = [k for k in range(1, count + 1) if cells[k] * cell * cell >= min_area and occupied[k] >= 3]
+    return [np.flatnonzero(point_labels == k) for k in big]
+
+
+def polygon_and_rectangle(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Convex hull (counter-clockwise) and minimal oriented rectangle (centre, size, yaw) of xy."""
+    try:
+        hull = ConvexHull(xy)
+    except (QhullError, ValueError):
+        raise ValueError("degenerate region: fewer than three non-collinear points") from None
+    polygon = xy[hull.vertices]
+    to_rect, extents = trimesh.bounds.oriented_bounds_2D(polygon)
+    from_rect = np.linalg.inv(to_rect)
+    center = from_rect[:2, 2]
+    yaw = float(np.arctan2(from_rect[1, 0], from_rect[0, 0]))
+    size = np.asarray(extents, dtype=np.float64)
+    # Canonical yaw in (-pi/2, pi/2] so equal rectangles read the same.
+    if yaw > np.pi / 2:
+        yaw -= np.pi
+    elif yaw <= -np.pi / 2:
+        yaw += np.pi
+    return polygon, center, size, yaw
+
+
+def _transform(points: np.ndarray, rotation: np.ndarray, translation: np.ndarray) -> np.ndarray:
+    return points @ rotation.T + translation
+
+
+def _orient_up(normal: np.ndarray, d: float, viewpoint: np.ndarray | None) -> tuple[np.ndarray, float]:
+    """Sign a plane so its normal points up: toward the camera for camera views, else +z."""
+    if viewpoint is not None:
+        flip = normal @ viewpoint + d < 0
+    else:
+        flip = normal[2] < 0
+    return (-normal, -d) if flip else (normal, d)
+
+
+def _apply_rigid(scene: Scene, rotation: np.ndarray, translation: np.ndarray) -> None:
+    """Apply a rigid motion to the scene's points and compose it into input_to_world."""
+    step = np.eye(4)
+    step[:3, :3] = rotation
+    step[:3, 3] = translation
+    scene.points = _transform(scene.points, rotation, translation)
+    scene.capture.input_to_world = step @ scene.capture.input_to_world
+
+
+def _support_kind(height: float) -> str:
+    if height < 0.1:
+        return "floor"
+    if height <= 1.1:
+        return "table"
+    return "shelf"
+
+
+def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
+    """Level the scene on its dominant support, find every horizontal support, floor at z = 0.
+
+    1. Seeded RANSAC proposals on a downsampled copy. The largest one within
+       ``level_max_tilt_deg`` of the loaded up axis is the dominant support; its normal, refitted
+       on full-resolution points and signed toward the camera for camera views, becomes +Z.
+    2. Every horizontal proposal is split into connected xy regions; regions at one height close
+       to each other are one support (a table broken up by the objects occluding it), refitted by
+       least squares on the full-resolution points in a thin band.
+    3. Flat object tops (small planes just above a support) are dropped; the lowest support is the
+       floor when another stands well above it or a camera looks down from standing height,
+       otherwise it is a table at ``assumed_support_height`` over an assumed floor.
+    """
+    if scene.points is None:
+        return scene
+    finite = _finite(scene.points)
+    proposals = ransac_proposals(scene.points[finite], params, scene.seed)
+    viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.metadata.get("camera_view") else None
+    cos_level = np.cos(np.radians(params.level_max_tilt_deg))
+    candidates = [prop for prop in proposals if abs(prop[0][2]) >= cos_level]
+    if not candidates:
+        raise InputError(
+            f"{scene.capture.environment_file}: no support plane found (no large flat surface within "
+            f"{params.level_max_tilt_deg:.0f} deg of the up axis '{scene.capture.up}'); check --up"
+        )
+    normal, d, _ = max(candidates, key=lambda c: len(c[2]))
+    normal, d = _orient_up(normal, d, viewpoint)
+    normal, d, _ = refine_plane(scene.points[finite], normal, d, params.refine_threshold)
+    rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))
+    _apply_rigid(scene, rotation, np.zeros(3))
+    pts = scene.points[finite]
+
+    cos_support = np.cos(np.radians(params.support_max_tilt_deg))
+    regions: list[tuple[float, np.ndarray]] = []  # (height, downsampled region points)
+    for p_normal, _, inliers in proposals:
+        p_normal = rotation @ p_normal
+        if abs(p_normal[2]) < cos_support:
+            continue
+        inliers = inliers @ rotation.T
+        for region in _regions(inliers[:, :2], params.region_cell, params.min_support_area):
+            regions.append((float(np.median(inliers[region, 2])), inliers[region]))
+    supports = []
+    for group in _merge_regions(regions, params):
+        band = _support_points(pts, group, params)
+        if band is None:
+            continue
+        n, dd, mask = refine_plane(band, np.array([0.0, 0.0, 1.0]), -float(np.median(band[:, 2])), params.refine_threshold)
+        supports.append((float(-dd / n[2]), band[mask], n))
+    if not supports:
+        raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan")
+    supports.sort(key=lambda r: r[0])
+    supports = _drop_object_tops(supports, params)
+    _place_floor(scene, supports, params)
+    return scene
+
+
+def _merge_regions(regions: list[tuple[float, np.ndarray]], params: PlaneParams) -> list[np.ndarray]:
+    """Group regions at one height (within ``merge_height_tol``) lying within ``merge_gap`` in xy."""
+    order = sorted(range(len(regions)), key=lambda i: regions[i][0])
+    parent = list(range(len(regions)))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    hulls = [polygon_and_rectangle(r[1][:, :2])[0] for r in regions]
+    for a_pos, a in enumerate(order):
+        for b in order[a_pos + 1 :]:
+            if regions[b][0] - regions[a][0] > params.merge_height_tol:
+                break
+            gap = np.min(np.linalg.norm(hulls[a][:, None, :] - hulls[b][None, :, :], axis=2))
+            if gap < params.merge_gap:
+                parent[find(b)] = find(a)
+    groups: dict[int, list[np.ndarray]] = {}
+    for i in order:
+        groups.setdefault(find(i), []).append(regions[i][1])
+    return [np.vstack(g) for g in groups.values()]
+
+
+def _support_points(pts: np.ndarray, group: np.ndarray, params: PlaneParams) -> np.ndarray | None:
+    """Full-resolution points in a thin height band over the xy hull of a region group."""
+    z = float(np.median(group[:, 2]))
+    polygon = polygon_and_rectangle(group[:, :2])[0]
+    near = np.abs(pts[:, 2] - z) < params.distance_threshold
+    band = pts[near][inside_convex_polygon(pts[near, :2], polygon)]
+    cell = params.voxel_size
+    observed_area = len(np.unique(np.floor(band[:, :2] / cell).astype(np.int64), axis=0)) * cell * cell
+    return band if observed_area >= params.min_support_area else None
+
+
+def inside_convex_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
+    """Mask of points inside a counter-clockwise convex polygon grown by ``margin``."""
+    edges = np.roll(polygon, -1, axis=0) - polygon
+    lengths = np.linalg.norm(edges, axis=1)
+    keep = lengths > 1e-12
+    edges, starts, lengths = edges[keep], polygon[keep], lengths[keep]
+    rel = xy[:, None, :] - starts[None, :, :]
+    cross = edges[None, :, 0] * rel[:, :, 1] - edges[None, :, 1] * rel[:, :, 0]
+    return np.all(cross / lengths[None, :] >= -margin, axis=1)
+
+
+def _drop_object_tops(supports: list, params: PlaneParams) -> list:
+    """Keep real supports only.
+
+    A plane within ``min_support_gap`` above a larger support under it is a flat object top; a
+    plane within that gap below the largest support (sensor noise, a sheet under the table
+    edge) is dropped too.
+    """
+    primary_height = max(supports, key=lambda s: len(s[1]))[0]
+    kept: list = []
+    for height, pts, normal in supports:  # sorted by height
+        if 0 < primary_height - height < params.min_support_gap:
+            continue
+        polygon, *_ = polygon_and_rectangle(pts[:, :2])
+        centre = polygon.mean(axis=0, keepdims=True)
+        on_top = any(
+            height - h < params.min_support_gap and inside_convex_polygon(centre, poly, 0.05)[0]
+            for h, _, _, poly in kept
+        )
+        if not on_top:
+            kept.append((height, pts, normal, polygon))
+    return [(h, p, n) for h, p, n, _ in kept]
+
+
+def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> None:
+    """Decide which support is the floor, shift z so the floor is at 0, and record the planes."""
+    lowest, lowest_pts, _ = supports[0]
+    highest = supports[-1][0]
+    lowest_size = polygon_and_rectangle(lowest_pts[:, :2])[2]
+    sees_floor = (highest - lowest) >= params.floor_min_gap or bool(np.min(lowest_size) >= params.floor_min_size)
+    assumed = scene.capture.metadata.get("support_height")
+    if sees_floor:
+        shift = -lowest
+    else:
+        shift = float(assumed if assumed is not None else params.assumed_support_height) - lowest
+        scene.warn(
+            f"no floor in view: the lowest support is taken as a table at "
+            f"{shift + lowest:.2f} m (set support_height in capture.yaml to change)"
+        )
+    _apply_rigid(scene, np.eye(3), np.array([0.0, 0.0, shift]))
+    planes: list[SupportPlane] = []
+    for height, inlier_pts, normal in supports:
+        z = height + shift
+        if z > params.max_support_height:
+            continue
+        polygon, center, size, yaw = polygon_and_rectangle(inlier_pts[:, :2])
+        planes.append(
+            SupportPlane(
+                id=len(planes) + 1,
+                kind=_support_kind(z),
+                normal=normal,
+                height=z,
+                polygon=polygon,
+                rect_center=center,
+                rect_size=size,
+                rect_yaw=yaw,
+                inlier_count=len(inlier_pts),
+            )
+        )
+    if not sees_floor:
+        span = max(float(np.max(p.rect_size)) for p in planes) + 2.0
+        c = planes[0].rect_center
+        square = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=np.float64) * span / 2 + c
+        planes.insert(
+            0,
+            SupportPlane(0, "floor", np.array([0.0, 0.0, 1.0]), 0.0, square, c.copy(), np.array([span, span]), 0.0, 0, observed=False),
+        )
+    _recentre(scene, planes)
+
+
+def _recentre(scene: Scene, planes: list[SupportPlane]) -> None:
+    """Move the world origin (in xy) to the centre of the primary support."""
+    tables = [p for p in planes if p.kind != "floor" and p.observed]
+    primary = max(tables or planes, key=lambda p: p.inlier_count)
+    offset = -primary.rect_center
+    _apply_rigid(scene, np.eye(3), np.array([offset[0], offset[1], 0.0]))
+    for p in planes:
+        p.polygon = p.polygon + offset
+        p.rect_center = p.rect_center + offset
+    scene.planes = planes
+
+
+def primary_support(scene: Scene) -> SupportPlane:
+    """The main work surface: the largest observed non-floor support, else the floor."""
+    tables = [p for p in scene.planes if p.kind != "floor" and p.observed]
+    return max(tables or scene.planes, key=lambda p: p.inlier_count)

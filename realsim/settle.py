@@ -1,0 +1,124 @@
+"""Settle the composed scene and write the rest state into keyframe ``initial``.
+
+Objects are released at their captured poses and simulated until they stop (or a time limit);
+that state becomes the keyframe. A check then resets to the keyframe and simulates again,
+measuring how far each object still moves: the figure the conversion report shows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from realsim.scene import Scene
+
+KEYFRAME = "initial"
+
+
+@dataclass(frozen=True)
+class SettleParams:
+    """Parameters of settling and of the rest check."""
+
+    min_time: float = 0.5  # simulated seconds before testing for rest
+    max_time: float = 4.0
+    rest_speed: float = 2e-3  # m/s (and rad/s) below which every object is at rest
+    check_time: float = 2.0  # simulated seconds of the rest check
+    max_drift: float = 0.005  # m an object may move during the check
+
+
+def free_joint_bodies(model: mujoco.MjModel) -> list[tuple[str, int, int]]:
+    """(body name, qpos address, dof address) of every free-floating body."""
+    out = []
+    for j in range(model.njnt):
+        if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+            body = model.jnt_bodyid[j]
+            out.append((model.body(body).name, int(model.jnt_qposadr[j]), int(model.jnt_dofadr[j])))
+    return out
+
+
+def _max_speed(data: mujoco.MjData, free: list[tuple[str, int, int]]) -> float:
+    if not free:
+        return 0.0
+    return float(max(np.abs(data.qvel[d : d + 6]).max() for _, _, d in free))
+
+
+def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tuple[str, int, int]], params: SettleParams) -> float:
+    """Step until every free body is slower than ``rest_speed`` (after ``min_time``); return sim time."""
+    start = data.time
+    check_every = max(1, int(0.05 / model.opt.timestep))
+    step = 0
+    while data.time - start < params.max_time:
+        mujoco.mj_step(model, data)
+        step += 1
+        if data.time - start >= params.min_time and step % check_every == 0 and _max_speed(data, free) < params.rest_speed:
+            break
+    return data.time - start
+
+
+def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME) -> dict[str, Any]:
+    """Reset to ``key``, simulate ``duration`` s and report each free body's displacement."""
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
+    mujoco.mj_forward(model, data)
+    free = free_joint_bodies(model)
+    start = {name: data.qpos[q : q + 3].copy() for name, q, _ in free}
+    lowest = {name: data.qpos[q + 2] for name, q, _ in free}
+    steps = int(round(duration / model.opt.timestep))
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+        for name, q, _ in free:
+            lowest[name] = min(lowest[name], data.qpos[q + 2])
+    moved = {name: float(np.linalg.norm(data.qpos[q : q + 3] - start[name])) for name, q, _ in free}
+    sunk = {name: float(start[name][2] - lowest[name]) for name, _, _ in free}
+    return {"duration": duration, "displacement": moved, "max_displacement": max(moved.values(), default=0.0), "max_sink": max(sunk.values(), default=0.0)}
+
+
+def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
+    """Simulate the composed spec to rest, store keyframe ``initial``, and run the rest check."""
+    spec = scene.spec
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    home = _home_key(model)
+    if home is not None:
+        mujoco.mj_resetDataKeyframe(model, data, home)
+    mujoco.mj_forward(model, data)
+    free = free_joint_bodies(model)
+    settle_time = simulate_to_rest(model, data, free, params)
+    qpos = data.qpos.copy()
+    for _, q, _ in free:  # canonical quaternion sign for byte-stable output
+        quat = qpos[q + 3 : q + 7]
+        qpos[q + 3 : q + 7] = quat / np.linalg.norm(quat) * (1 if quat[0] >= 0 else -1)
+    for key in list(spec.keys):
+        if key.name == KEYFRAME:
+            spec.delete(key)
+    key = spec.add_key(name=KEYFRAME, qpos=np.round(qpos, 6).tolist(), qvel=np.zeros(model.nv).tolist())
+    if model.nu:
+        key.ctrl = np.round(data.ctrl, 6).tolist()
+    model = spec.compile()
+    report = rest_check(model, params.check_time)
+    report["settle_time"] = settle_time
+    report["moved_during_settling"] = {}
+    for obj in scene.objects:
+        for name, q, _ in free:
+            if name == obj.name:
+                settled = qpos[q : q + 3]
+                report["moved_during_settling"][name] = float(np.linalg.norm(settled - obj.position))
+                obj.position = settled.copy()
+                obj.quat = qpos[q + 3 : q + 7].copy()
+    unstable = [n for n, d in report["displacement"].items() if d > params.max_drift]
+    if unstable:
+        scene.warn(f"{len(unstable)} object(s) still move more than {params.max_drift * 1000:.0f} mm after settling: {', '.join(unstable)}")
+    scene.keyframe_qpos = qpos
+    scene.settle_report = report
+    return scene
+
+
+def _home_key(model: mujoco.MjModel) -> int | None:
+    """Id of a ``home`` keyframe (the robot's posture) if the model has one."""
+    for k in range(model.nkey):
+        if model.key(k).name == "home":
+            return k
+    return None
