@@ -6,7 +6,9 @@ GLB/glTF, sampled to points) — or a folder holding ``scene.*`` (the environmen
 
     units: m            # m | cm | mm (detected when absent)
     up: "-y"            # +z | -z | +y | -y | +x | -x (detected when absent)
-    labels: {1: mug}    # object labels by id, or by object file stem
+    labels: {2: mug}    # names of the objects annotated in the cloud's ``label`` field
+                        # (object id = label // 10 for labels >= 20, the mOSD convention),
+                        # or of object files by file stem
     support_height: 0.75  # assumed height of the lowest support when no floor is seen
 
 Loading converts units and the up axis; the `level` stage then aligns gravity with the
@@ -50,6 +52,7 @@ class RawCloud:
     grid_shape: tuple[int, int] | None
     is_camera_view: bool
     fmt: str
+    annotations: np.ndarray | None = None
 
 
 def up_rotation(up: str) -> np.ndarray:
@@ -82,7 +85,7 @@ def _read_point_file(path: Path) -> RawCloud:
 
         data = read_pcd(path)
         is_camera = data.grid_shape is not None and data.grid_shape[0] > 1
-        return RawCloud(data.points, data.colors, data.grid_shape, is_camera, "pcd")
+        return RawCloud(data.points, data.colors, data.grid_shape, is_camera, "pcd", data.labels)
     if suffix in (".xyz", ".pts"):
         try:
             arr = np.loadtxt(path, ndmin=2)
@@ -248,7 +251,7 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
     if up is not None and up not in UP_AXES:
         raise InputError(f"unknown up axis {up!r}: use one of {', '.join(UP_AXES)}")
 
-    scene_points = scene_colors = None
+    scene_points = scene_colors = annotations = None
     grid_shape = None
     kind = "objects"
     units_detected = up_detected = False
@@ -264,6 +267,7 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
         scene_points = cloud.points @ transform[:3, :3].T
         scene_colors = cloud.colors
         grid_shape = cloud.grid_shape
+        annotations = cloud.annotations
         metadata.setdefault("camera_view", cloud.is_camera_view)
     capture = CaptureInfo(
         source=path,
@@ -282,5 +286,6 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
         points=scene_points,
         colors=scene_colors,
         grid_shape=grid_shape,
+        annotations=annotations,
         object_files=object_files,
     )

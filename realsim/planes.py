@@ -13,7 +13,7 @@ import numpy as np
 import open3d as o3d
 import trimesh
 from scipy import ndimage
-from scipy.spatial import ConvexHull, QhullError
+from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from realsim.errors import InputError
 from realsim.scene import Scene, SupportPlane
@@ -214,8 +214,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     normal, d = _orient_up(normal, d, viewpoint)
     normal, d, _ = refine_plane(scene.points[finite], normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))
-    _apply_rigid(scene, rotation, np.zeros(3))
-    pts = scene.points[finite]
+    pts = scene.points[finite] @ rotation.T
 
     cos_support = np.cos(np.radians(params.support_max_tilt_deg))
     regions: list[tuple[float, np.ndarray]] = []  # (height, downsampled region points)
@@ -237,7 +236,10 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan")
     supports.sort(key=lambda r: r[0])
     supports = _drop_object_tops(supports, params)
-    _place_floor(scene, supports, params)
+    planes, shift = _place_floor(scene, supports, params)
+    offset = _recentre(planes)
+    scene.planes = planes
+    _apply_rigid(scene, rotation, np.array([offset[0], offset[1], shift]))
     return scene
 
 
@@ -252,13 +254,13 @@ def _merge_regions(regions: list[tuple[float, np.ndarray]], params: PlaneParams)
             i = parent[i]
         return i
 
-    hulls = [polygon_and_rectangle(r[1][:, :2])[0] for r in regions]
+    trees = [cKDTree(r[1][:, :2]) for r in regions]
     for a_pos, a in enumerate(order):
         for b in order[a_pos + 1 :]:
             if regions[b][0] - regions[a][0] > params.merge_height_tol:
                 break
-            gap = np.min(np.linalg.norm(hulls[a][:, None, :] - hulls[b][None, :, :], axis=2))
-            if gap < params.merge_gap:
+            gap, _ = trees[a].query(regions[b][1][:, :2], k=1, distance_upper_bound=params.merge_gap)
+            if np.isfinite(gap).any():
                 parent[find(b)] = find(a)
     groups: dict[int, list[np.ndarray]] = {}
     for i in order:
@@ -270,7 +272,8 @@ def _support_points(pts: np.ndarray, group: np.ndarray, params: PlaneParams) -> 
     """Full-resolution points in a thin height band over the xy hull of a region group."""
     z = float(np.median(group[:, 2]))
     polygon = polygon_and_rectangle(group[:, :2])[0]
-    near = np.abs(pts[:, 2] - z) < params.distance_threshold
+    lo, hi = polygon.min(axis=0), polygon.max(axis=0)
+    near = (np.abs(pts[:, 2] - z) < params.distance_threshold) & np.all((pts[:, :2] >= lo) & (pts[:, :2] <= hi), axis=1)
     band = pts[near][inside_convex_polygon(pts[near, :2], polygon)]
     cell = params.voxel_size
     observed_area = len(np.unique(np.floor(band[:, :2] / cell).astype(np.int64), axis=0)) * cell * cell
@@ -311,14 +314,20 @@ def _drop_object_tops(supports: list, params: PlaneParams) -> list:
     return [(h, p, n) for h, p, n, _ in kept]
 
 
-def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> None:
-    """Decide which support is the floor, shift z so the floor is at 0, and record the planes."""
+def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> tuple[list[SupportPlane], float]:
+    """Decide which support is the floor; return the planes with the floor at z = 0 and the z shift."""
     lowest, lowest_pts, _ = supports[0]
     highest = supports[-1][0]
     lowest_size = polygon_and_rectangle(lowest_pts[:, :2])[2]
     sees_floor = (highest - lowest) >= params.floor_min_gap or bool(np.min(lowest_size) >= params.floor_min_size)
     assumed = scene.capture.metadata.get("support_height")
     if sees_floor:
+        # The floor is one surface however the furniture splits it up in the view.
+        floor_parts = [s for s in supports if s[0] - lowest < params.merge_height_tol]
+        floor_pts = np.vstack([s[1] for s in floor_parts])
+        n, dd, _ = refine_plane(floor_pts, np.array([0.0, 0.0, 1.0]), -float(np.median(floor_pts[:, 2])), params.refine_threshold)
+        supports = [(float(-dd / n[2]), floor_pts, n)] + supports[len(floor_parts):]
+        lowest = supports[0][0]
         shift = -lowest
     else:
         shift = float(assumed if assumed is not None else params.assumed_support_height) - lowest
@@ -326,7 +335,6 @@ def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> None:
             f"no floor in view: the lowest support is taken as a table at "
             f"{shift + lowest:.2f} m (set support_height in capture.yaml to change)"
         )
-    _apply_rigid(scene, np.eye(3), np.array([0.0, 0.0, shift]))
     planes: list[SupportPlane] = []
     for height, inlier_pts, normal in supports:
         z = height + shift
@@ -354,19 +362,18 @@ def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> None:
             0,
             SupportPlane(0, "floor", np.array([0.0, 0.0, 1.0]), 0.0, square, c.copy(), np.array([span, span]), 0.0, 0, observed=False),
         )
-    _recentre(scene, planes)
+    return planes, shift
 
 
-def _recentre(scene: Scene, planes: list[SupportPlane]) -> None:
-    """Move the world origin (in xy) to the centre of the primary support."""
+def _recentre(planes: list[SupportPlane]) -> np.ndarray:
+    """Move the planes so the primary support is centred at the xy origin; return the xy offset."""
     tables = [p for p in planes if p.kind != "floor" and p.observed]
     primary = max(tables or planes, key=lambda p: p.inlier_count)
     offset = -primary.rect_center
-    _apply_rigid(scene, np.eye(3), np.array([offset[0], offset[1], 0.0]))
     for p in planes:
         p.polygon = p.polygon + offset
         p.rect_center = p.rect_center + offset
-    scene.planes = planes
+    return offset
 
 
 def primary_support(scene: Scene) -> SupportPlane:

@@ -90,6 +90,7 @@ class Scene:
     points: np.ndarray | None = None  # (N, 3) world frame, input order, NaN kept
     colors: np.ndarray | None = None  # (N, 3) float in [0, 1], or None
     grid_shape: tuple[int, int] | None = None  # (H, W) for organized clouds
+    annotations: np.ndarray | None = None  # (N,) per-point labels shipped with the capture, if any
     planes: list[SupportPlane] = field(default_factory=list)
     labels: np.ndarray | None = None  # (N,) int32: 0 support/background, -1 noise, k object
     objects: list[SceneObject] = field(default_factory=list)

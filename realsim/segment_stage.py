@@ -2,18 +2,26 @@
 
 from __future__ import annotations
 
+import numpy as np
+
 from realsim.compose import safe_name
 from realsim.scene import Scene, SceneObject
 from realsim.segment import SegmentParams, segment_objects
 
-import numpy as np
-
 __all__ = ["SegmentParams", "segment_scene"]
 
 
-def _label_for(scene: Scene, object_id: int) -> str:
-    labels = scene.capture.metadata.get("labels") or {}
-    label = labels.get(object_id, labels.get(str(object_id)))
+def _label_for(scene: Scene, mask: np.ndarray) -> str:
+    """The name capture.yaml gives the annotated object most of the cluster's points belong to."""
+    names = scene.capture.metadata.get("labels") or {}
+    if not names or scene.annotations is None:
+        return "object"
+    annotated = scene.annotations[mask]
+    ids = annotated[annotated >= 20] // 10
+    if len(ids) < 0.5 * mask.sum():
+        return "object"
+    majority = int(np.bincount(ids.astype(np.int64)).argmax())
+    label = names.get(majority, names.get(str(majority)))
     return str(label) if label else "object"
 
 
@@ -28,7 +36,7 @@ def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scen
     for k in range(1, len(counts)):
         if counts[k] == 0:
             continue
-        label = _label_for(scene, k)
+        label = _label_for(scene, scene.labels == k)
         scene.objects.append(
             SceneObject(
                 id=k,

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# One command: set everything up and run the test suite on the real data in ../shared/data.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+export MUJOCO_GL="${MUJOCO_GL:-egl}"
+export MENAGERIE_ROOT="${MENAGERIE_ROOT:-$(cd .. && pwd)/shared/data}"
+export REALSIM_CACHE="${REALSIM_CACHE:-$(mktemp -d)}"
+exec .venv/bin/python -m pytest -q "$@"
