@@ -1,0 +1,106 @@
+"""Place objects on a support by seeded rejection sampling: inside it, apart, upright.
+
+Footprints are convex polygons (the xy convex hull of the object's collision hulls, rotated by
+the sampled yaw); two footprints may not come closer than ``clearance``. Already present
+objects (for example the ones segmented from a scan) are obstacles.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+from realsim.errors import InputError
+from realsim.planes import inside_convex_polygon, polygon_and_rectangle
+from realsim.scene import SupportPlane
+
+
+@dataclass(frozen=True)
+class LayoutParams:
+    """Parameters of the placement."""
+
+    clearance: float = 0.04  # m between footprints (room for the gripper)
+    edge_margin: float = 0.05  # m between a footprint and the support's edge
+    attempts_per_object: int = 400
+    random_yaw: bool = True
+
+
+def footprint(points_xy: np.ndarray) -> np.ndarray:
+    """Convex footprint polygon (counter-clockwise) of an object's vertices projected to xy."""
+    try:
+        return points_xy[ConvexHull(points_xy).vertices]
+    except (QhullError, ValueError):
+        lo, hi = points_xy.min(axis=0) - 0.005, points_xy.max(axis=0) + 0.005
+        return np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+
+
+def _rotate(poly: np.ndarray, yaw: float) -> np.ndarray:
+    c, s = np.cos(yaw), np.sin(yaw)
+    return poly @ np.array([[c, s], [-s, c]])
+
+
+def polygons_apart(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
+    """True when convex polygons ``a`` and ``b`` are separated by at least ``gap`` (SAT)."""
+    for poly in (a, b):
+        edges = np.roll(poly, -1, axis=0) - poly
+        normals = np.column_stack([edges[:, 1], -edges[:, 0]])
+        lengths = np.linalg.norm(normals, axis=1)
+        normals = normals[lengths > 1e-12] / lengths[lengths > 1e-12, None]
+        pa, pb = a @ normals.T, b @ normals.T
+        separated = (pa.min(axis=0) - pb.max(axis=0) >= gap) | (pb.min(axis=0) - pa.max(axis=0) >= gap)
+        if np.any(separated):
+            return True
+    return False
+
+
+def declared_support(metadata: dict) -> SupportPlane:
+    """The support ``capture.yaml`` declares (``support: {size: [w, d], height: h}``), or a default table."""
+    spec = metadata.get("support") or {}
+    try:
+        size = np.asarray(spec.get("size", [1.2, 0.8]), dtype=np.float64)
+        height = float(spec.get("height", 0.75))
+        center = np.asarray(spec.get("center", [0.0, 0.0]), dtype=np.float64)
+        yaw = float(spec.get("yaw", 0.0))
+    except (TypeError, ValueError):
+        raise InputError("capture.yaml: support needs size: [w, d], height: h (metres)") from None
+    if size.shape != (2,) or np.any(size <= 0.05) or not 0.0 <= height <= 3.0:
+        raise InputError(f"capture.yaml: implausible support size {size.tolist()} / height {height}")
+    corners = _rotate(np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * size / 2, -yaw) + center
+    polygon, rect_center, rect_size, rect_yaw = polygon_and_rectangle(corners)
+    return SupportPlane(1, spec.get("kind", "table"), np.array([0.0, 0.0, 1.0]), height, polygon, rect_center, rect_size, rect_yaw, 0, observed=False)
+
+
+def place_on_support(
+    footprints: list[np.ndarray],
+    support: SupportPlane,
+    obstacles: list[np.ndarray],
+    rng: np.random.Generator,
+    params: LayoutParams = LayoutParams(),
+) -> list[tuple[np.ndarray, float]]:
+    """Sampled (xy, yaw) per footprint (object frame, origin at the base centre), largest first.
+
+    Raises InputError when an object does not fit after ``attempts_per_object`` tries.
+    """
+    order = sorted(range(len(footprints)), key=lambda i: -ConvexHull(footprints[i]).volume if len(footprints[i]) >= 3 else 0)
+    placed: list[np.ndarray] = list(obstacles)
+    result: dict[int, tuple[np.ndarray, float]] = {}
+    lo, hi = support.polygon.min(axis=0), support.polygon.max(axis=0)
+    for i in order:
+        for _ in range(params.attempts_per_object):
+            yaw = float(rng.uniform(-np.pi, np.pi)) if params.random_yaw else 0.0
+            xy = rng.uniform(lo, hi)
+            poly = _rotate(footprints[i], yaw) + xy
+            if not np.all(inside_convex_polygon(poly, support.polygon, -params.edge_margin)):
+                continue
+            if all(polygons_apart(poly, other, params.clearance) for other in placed):
+                placed.append(poly)
+                result[i] = (xy, yaw)
+                break
+        else:
+            raise InputError(
+                f"cannot place {len(footprints)} objects on a {support.rect_size[0]:.2f} x {support.rect_size[1]:.2f} m "
+                "support without overlap: declare a larger support in capture.yaml"
+            )
+    return [result[i] for i in range(len(footprints))]

@@ -1,0 +1,50 @@
+"""Natural-language commands to programs over the robot primitives, run in a sandbox.
+
+``make_planner()`` picks Claude when ``ANTHROPIC_API_KEY`` is set, else the offline rule
+planner; both return a :class:`Plan` whose program runs through :func:`sandbox.run`, and whose
+goals are checked afterwards (:mod:`realsim.planner.goals`).
+"""
+
+from __future__ import annotations
+
+from realsim import llm
+from realsim.planner.claude import ClaudePlanner, PlanningError
+from realsim.planner.goals import (
+    AtHome,
+    DrawerClosed,
+    DrawerOpen,
+    Goal,
+    GoalResult,
+    Inside,
+    Lifted,
+    Moved,
+    NextTo,
+    On,
+    WorldView,
+    evaluate_all,
+    prepare_all,
+    verdict,
+)
+from realsim.planner.rules import RulePlanner
+from realsim.planner.sandbox import ExecutionReport, Limits, PrimitiveCall, SandboxViolation, check, run
+from realsim.planner.types import ObjectInfo, Plan, Planner
+
+__all__ = [
+    "AtHome", "ClaudePlanner", "DrawerClosed", "DrawerOpen", "ExecutionReport", "Goal", "GoalResult",
+    "Inside", "Lifted", "Limits", "Moved", "NextTo", "ObjectInfo", "On", "Plan", "Planner",
+    "PlanningError", "PrimitiveCall", "RulePlanner", "SandboxViolation", "WorldView", "check",
+    "evaluate_all", "make_planner", "prepare_all", "run", "verdict",
+]
+
+
+def make_planner(kind: str = "auto", settings: llm.LLMSettings | None = None) -> Planner:
+    """``"rules"``, ``"claude"``, or ``"auto"`` (Claude when a key is set, else rules)."""
+    from realsim.errors import InputError
+
+    if kind == "rules" or (kind == "auto" and not llm.available(settings)):
+        return RulePlanner()
+    if kind in ("claude", "auto"):
+        if not llm.available(settings):
+            raise InputError("the Claude planner needs ANTHROPIC_API_KEY; set it or use the rule planner")
+        return ClaudePlanner(settings=settings or llm.LLMSettings())
+    raise InputError(f"unknown planner {kind!r}; use auto, rules or claude")

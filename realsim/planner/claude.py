@@ -1,0 +1,108 @@
+"""Planner with Claude: a versioned system prompt, the live scene, one repair round.
+
+The system prompt (``prompts/planner_system.md``) documents every primitive with units and
+frames; the scene's objects are appended to the user message at call time. The reply's
+```python block is validated with :func:`realsim.planner.sandbox.check`; when that fails, the
+errors go back to Claude once (``prompts/planner_repair.md``). Goals come from the rule parser
+when it reads the command, else there are none ("goal unknown").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+from realsim import llm
+from realsim.errors import InputError, RealsimError
+from realsim.planner import rules, sandbox
+from realsim.planner.goals import Goal
+from realsim.planner.types import ObjectInfo, Plan
+from realsim.resources import data_dir
+
+SYSTEM_PROMPT = "planner_system.md"
+REPAIR_PROMPT = "planner_repair.md"
+
+
+class PlanningError(RealsimError):
+    """Claude's program could not be made valid: the task fails (exit code 1)."""
+
+    exit_code = 1
+
+
+@lru_cache(maxsize=8)
+def load_prompt(name: str) -> tuple[str, str]:
+    """(version, text) of ``prompts/<name>``; the first line reads ``version: ...``."""
+    raw = (data_dir("prompts") / name).read_text(encoding="utf-8")
+    first, _, rest = raw.partition("\n")
+    if not first.startswith("version:"):
+        raise InputError(f"prompts/{name} must start with a 'version:' line")
+    return first.split(":", 1)[1].strip(), rest.strip() + "\n"
+
+
+def scene_text(objects: list[ObjectInfo]) -> str:
+    if not objects:
+        return "The scene has no movable objects."
+    return "Objects in the scene (live positions via object_pose):\n" + "\n".join(f"- {o.describe()}" for o in objects)
+
+
+_FENCE = re.compile(r"```(?:python|py)?[ \t]*\n(.*?)```", re.DOTALL | re.IGNORECASE)
+
+
+def extract_code(reply: str) -> str:
+    """The first fenced code block of ``reply`` (preferring ```python), else the whole reply."""
+    blocks = _FENCE.findall(reply)
+    if blocks:
+        return blocks[0].strip() + "\n"
+    unterminated = re.search(r"```(?:python|py)?[ \t]*\n(.*)$", reply, re.DOTALL | re.IGNORECASE)
+    if unterminated:
+        return unterminated.group(1).strip() + "\n"
+    return reply.strip() + "\n"
+
+
+@dataclass
+class ClaudePlanner:
+    """Plans with Claude through :mod:`realsim.llm`; ``repair_rounds`` re-asks after a rejection."""
+
+    settings: llm.LLMSettings = field(default_factory=llm.LLMSettings)
+    repair_rounds: int = 1
+    name: str = "claude"
+
+    def plan(self, command: str, scene_objects: list[ObjectInfo]) -> Plan:
+        if not command.strip():
+            raise InputError("the command is empty; say what the robot should do")
+        version, system = load_prompt(SYSTEM_PROMPT)
+        usage = llm.Usage()
+        messages: list[dict[str, str]] = [
+            {"role": "user", "content": f"{scene_text(scene_objects)}\n\nCommand: {command.strip()}"}
+        ]
+        notes = [f"prompt {version}, model {self.settings.model}"]
+        for attempt in range(self.repair_rounds + 1):
+            reply = llm.complete_text(system, messages, settings=self.settings, usage=usage)
+            code = extract_code(reply)
+            try:
+                sandbox.check(code)
+            except sandbox.SandboxViolation as exc:
+                notes.append(f"attempt {attempt + 1} rejected: {'; '.join(exc.violations[:5])}")
+                if attempt == self.repair_rounds:
+                    raise PlanningError(
+                        f"Claude's program was rejected {attempt + 1} time(s): {'; '.join(exc.violations[:3])}"
+                    ) from None
+                _, repair = load_prompt(REPAIR_PROMPT)
+                messages += [
+                    {"role": "assistant", "content": reply},
+                    {"role": "user", "content": repair.replace("{errors}", "\n".join(f"- {v}" for v in exc.violations))},
+                ]
+                continue
+            return Plan(program=code, goals=derive_goals(command, scene_objects, notes), planner=self.name, usage=usage, notes=notes)
+        raise AssertionError("unreachable")  # pragma: no cover
+
+
+def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | None = None) -> list[Goal]:
+    """Goals from the rule parser when it reads ``command``; otherwise none ("goal unknown")."""
+    try:
+        return rules.parse(command, objects)[1]
+    except InputError as exc:
+        if notes is not None:
+            notes.append(f"goal unknown (rule parser: {exc})")
+        return []

@@ -1,0 +1,62 @@
+"""What planners take and give: scene objects in, a program with its goals out."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Protocol
+
+from realsim.llm import Usage
+
+if TYPE_CHECKING:
+    from realsim.planner.goals import Goal
+
+AFFORDANCES = ("graspable", "container", "support", "pushable", "drawer", "door")
+
+
+@dataclass(frozen=True)
+class ObjectInfo:
+    """One object of the scene as a planner sees it.
+
+    ``name`` is the scene body name (``"obj3_mug"``), ``label`` its category (``"mug"``),
+    ``aliases`` other words for it (from the size table), ``position`` its centre (world frame,
+    m), ``size`` its extents (x, y, z in m), ``color`` a colour name when known, and
+    ``affordances`` a subset of :data:`AFFORDANCES`.
+    """
+
+    name: str
+    label: str
+    aliases: tuple[str, ...] = ()
+    position: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    size: tuple[float, float, float] = (0.05, 0.05, 0.05)
+    color: str | None = None
+    affordances: tuple[str, ...] = ("graspable",)
+
+    def describe(self) -> str:
+        x, y, z = self.position
+        sx, sy, sz = self.size
+        words = [f"{self.name}: {self.color + ' ' if self.color else ''}{self.label}"]
+        if self.aliases:
+            words.append(f"(also: {', '.join(self.aliases)})")
+        words.append(f"at ({x:.3f}, {y:.3f}, {z:.3f}) m, size {sx:.3f} x {sy:.3f} x {sz:.3f} m")
+        if self.affordances:
+            words.append(f"[{', '.join(self.affordances)}]")
+        return " ".join(words)
+
+
+@dataclass
+class Plan:
+    """A program over the primitives, the goals to check afterwards, who planned it, what it cost."""
+
+    program: str
+    goals: list[Goal] = field(default_factory=list)
+    planner: str = "rules"
+    usage: Usage = field(default_factory=Usage)
+    notes: list[str] = field(default_factory=list)
+
+
+class Planner(Protocol):
+    """Turns a sentence into a :class:`Plan` for the given scene objects."""
+
+    name: str
+
+    def plan(self, command: str, scene_objects: list[ObjectInfo]) -> Plan: ...

@@ -1,0 +1,133 @@
+"""The offline rule planner: sentences to programs and goals for a fixed scene."""
+
+from __future__ import annotations
+
+import pytest
+
+from realsim.errors import InputError
+from realsim.planner import AtHome, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, ObjectInfo, On, RulePlanner, check
+from realsim.planner.rules import split_command
+
+OBJECTS = [
+    ObjectInfo("obj1_mug", "mug", ("cup", "coffee mug"), (0.5, 0.1, 0.05), (0.08, 0.08, 0.1), "red"),
+    ObjectInfo("obj2_bowl", "bowl", (), (0.5, -0.2, 0.03), (0.16, 0.16, 0.06), "white", ("graspable", "container")),
+    ObjectInfo("obj3_soup_can", "tomato soup can", ("can", "soup can"), (0.4, 0.0, 0.05), (0.066, 0.066, 0.1), "red"),
+    ObjectInfo("obj4_block", "wood block", ("block", "cube"), (0.6, 0.2, 0.02), (0.05, 0.05, 0.05), "blue", ("graspable", "support")),
+    ObjectInfo("obj5_drawer", "drawer", (), (0.7, -0.4, 0.2), (0.4, 0.3, 0.15), None, ("drawer",)),
+    ObjectInfo("obj6_cracker_box", "cracker box", ("box",), (0.3, 0.3, 0.1), (0.06, 0.16, 0.21), "yellow", ("graspable", "support")),
+]
+
+# sentence -> (program lines without the comment, goals)
+CASES: list[tuple[str, list[str], list[object]]] = [
+    ("put the mug in the bowl", ["place_in('obj1_mug', 'obj2_bowl')"], [Inside("obj1_mug", "obj2_bowl")]),
+    ("Put the cup into the bowl.", ["place_in('obj1_mug', 'obj2_bowl')"], [Inside("obj1_mug", "obj2_bowl")]),
+    ("place the red can inside the bowl", ["place_in('obj3_soup_can', 'obj2_bowl')"], [Inside("obj3_soup_can", "obj2_bowl")]),
+    ("drop the cube into the bowl", ["place_in('obj4_block', 'obj2_bowl')"], [Inside("obj4_block", "obj2_bowl")]),
+    ("pick up the mug", ["grasp('obj1_mug')"], [Lifted("obj1_mug")]),
+    ("grab the soup can", ["grasp('obj3_soup_can')"], [Lifted("obj3_soup_can")]),
+    ("lift the blue block", ["grasp('obj4_block')"], [Lifted("obj4_block")]),
+    ("pick the coffee mug up", ["grasp('obj1_mug')"], [Lifted("obj1_mug")]),
+    ("take the yellow box", ["grasp('obj6_cracker_box')"], [Lifted("obj6_cracker_box")]),
+    ("stack the block on the cracker box", ["place_on('obj4_block', 'obj6_cracker_box')"], [On("obj4_block", "obj6_cracker_box")]),
+    ("put the mug on top of the box", ["place_on('obj1_mug', 'obj6_cracker_box')"], [On("obj1_mug", "obj6_cracker_box")]),
+    ("set the can onto the block", ["place_on('obj3_soup_can', 'obj4_block')"], [On("obj3_soup_can", "obj4_block")]),
+    ("push the soup can 5 cm left", ["push('obj3_soup_can', 'left', 0.050)"], [Moved("obj3_soup_can", (0.0, 1.0), 0.05)]),
+    ("slide the block to the right by 10 centimeters", ["push('obj4_block', 'right', 0.100)"], [Moved("obj4_block", (0.0, -1.0), 0.1)]),
+    ("push the mug forward", ["push('obj1_mug', 'forward', 0.100)"], [Moved("obj1_mug", (1.0, 0.0), 0.1)]),
+    ("move the cube 2 inches back", ["push('obj4_block', 'back', 0.051)"], [Moved("obj4_block", (-1.0, 0.0), 0.051)]),
+    ("nudge the mug a bit to the left", ["push('obj1_mug', 'left', 0.050)"], [Moved("obj1_mug", (0.0, 1.0), 0.05)]),
+    ("push the can 0.05 m right", ["push('obj3_soup_can', 'right', 0.050)"], [Moved("obj3_soup_can", (0.0, -1.0), 0.05)]),
+    ("shove the tomato soup can forward by five cm", ["push('obj3_soup_can', 'forward', 0.050)"], [Moved("obj3_soup_can", (1.0, 0.0), 0.05)]),
+    ("slide the box backwards 30 mm", ["push('obj6_cracker_box', 'back', 0.030)"], [Moved("obj6_cracker_box", (-1.0, 0.0), 0.03)]),
+    ("open the drawer", ["open_drawer('obj5_drawer')"], [DrawerOpen("obj5_drawer")]),
+    ("close the drawer", ["close_drawer('obj5_drawer')"], [DrawerClosed("obj5_drawer")]),
+    ("go home", ["go_home()"], [AtHome()]),
+    ("return to home position", ["go_home()"], [AtHome()]),
+    ("open the gripper", ["open_gripper()"], []),
+    ("close the gripper", ["close_gripper()"], []),
+    (
+        "pick up the cup then put it in the bowl",
+        ["grasp('obj1_mug')", "place_in('obj1_mug', 'obj2_bowl')"],
+        [Inside("obj1_mug", "obj2_bowl")],
+    ),
+    (
+        "grab the blue block and place it on the can",
+        ["grasp('obj4_block')", "place_on('obj4_block', 'obj3_soup_can')"],
+        [On("obj4_block", "obj3_soup_can")],
+    ),
+    (
+        "first pick up the mug, next put it in the bowl, finally go home",
+        ["grasp('obj1_mug')", "place_in('obj1_mug', 'obj2_bowl')", "go_home()"],
+        [Inside("obj1_mug", "obj2_bowl"), AtHome()],
+    ),
+    (
+        "open the drawer, then go home",
+        ["open_drawer('obj5_drawer')", "go_home()"],
+        [DrawerOpen("obj5_drawer"), AtHome()],
+    ),
+    (
+        "go home and then push the block left 3 cm",
+        ["go_home()", "push('obj4_block', 'left', 0.030)"],
+        [Moved("obj4_block", (0.0, 1.0), 0.03)],
+    ),
+    (
+        "put the mug in the bowl; put the can on the box",
+        ["place_in('obj1_mug', 'obj2_bowl')", "place_on('obj3_soup_can', 'obj6_cracker_box')"],
+        [Inside("obj1_mug", "obj2_bowl"), On("obj3_soup_can", "obj6_cracker_box")],
+    ),
+    ("put the mugg in the bowl", ["place_in('obj1_mug', 'obj2_bowl')"], [Inside("obj1_mug", "obj2_bowl")]),
+    ("put obj3_soup_can in obj2_bowl", ["place_in('obj3_soup_can', 'obj2_bowl')"], [Inside("obj3_soup_can", "obj2_bowl")]),
+    ("could you put the mug in the bowl please", ["place_in('obj1_mug', 'obj2_bowl')"], [Inside("obj1_mug", "obj2_bowl")]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines", "goals"), CASES, ids=[c[0][:40] for c in CASES])
+def test_sentence_to_program_and_goals(sentence: str, lines: list[str], goals: list[object]) -> None:
+    plan = RulePlanner().plan(sentence, OBJECTS)
+    body = [ln for ln in plan.program.splitlines() if ln and not ln.startswith("#")]
+    assert body == lines
+    assert plan.goals == goals
+    assert plan.planner == "rules" and plan.usage.calls == 0
+    check(plan.program)  # the rule planner's programs pass the same sandbox as Claude's
+
+
+def test_at_least_thirty_sentences() -> None:
+    assert len(CASES) >= 30
+
+
+def test_next_to_measures_live_pose() -> None:
+    plan = RulePlanner().plan("put the red can next to the bowl", OBJECTS)
+    assert "p, q = object_pose('obj2_bowl')" in plan.program
+    assert "place('obj3_soup_can', [p[0] + 0.000, p[1] + 0.143," in plan.program
+    assert plan.goals == [NextTo("obj3_soup_can", "obj2_bowl")]
+    left = RulePlanner().plan("put the mug to the left of the box", OBJECTS)
+    assert "p[1] + 0.150" in left.program
+
+
+def test_split_keeps_verbless_parts_together() -> None:
+    assert split_command("pick up the mug and then go home") == ["pick up the mug", "go home"]
+    assert split_command("put the salt and pepper in the bowl") == ["put the salt and pepper in the bowl"]
+
+
+@pytest.mark.parametrize(
+    ("sentence", "needle"),
+    [
+        ("put the banana in the bowl", "no object matches 'the banana'"),
+        ("dance with the mug", "cannot understand"),
+        ("put the red thing in the bowl", "ambiguous"),
+        ("put it in the bowl", "'it' does not refer"),
+        ("", "empty"),
+        ("push the mug 5 m left", "out of range"),
+    ],
+)
+def test_unknown_words_and_objects_are_input_errors(sentence: str, needle: str) -> None:
+    with pytest.raises(InputError) as info:
+        RulePlanner().plan(sentence, OBJECTS)
+    assert needle in str(info.value)
+    assert info.value.exit_code == 2
+
+
+def test_unknown_object_lists_the_scene() -> None:
+    with pytest.raises(InputError) as info:
+        RulePlanner().plan("pick up the spoon", OBJECTS)
+    assert "obj1_mug (red mug)" in str(info.value) and "obj2_bowl (white bowl)" in str(info.value)
