@@ -120,19 +120,25 @@ def run_pipeline(
     """
     spec = load_pipeline(pipeline or pipeline_for(source))
     overrides = overrides or {}
-    scene: Scene | None = None
+    unknown = set(overrides) - {name for name, _ in spec.stages}
+    if unknown - {"load"}:
+        raise InputError(f"pipeline {spec.name} has no stage(s) {', '.join(sorted(unknown))}")
+    # Build every stage's parameters first, so a bad override fails before any work.
+    plan = []
     for name, params in spec.stages:
-        params = {**params, **overrides.get(name, {})}
+        cls = LoadParams if name == "load" else STAGES[name].params
+        plan.append((name, build_params(cls, {**params, **overrides.get(name, {})})))
+    scene: Scene | None = None
+    for name, params in plan:
         started = time.perf_counter()
         if console is not None:
             console.log(f"[bold]{name}[/bold]")
         if name == "load":
-            scene = load_capture(source, build_params(LoadParams, params), seed=seed)
+            scene = load_capture(source, params, seed=seed)
+        elif scene is None:
+            raise InputError(f"pipeline {spec.name}: the first stage must be 'load'")
         else:
-            if scene is None:
-                raise InputError(f"pipeline {spec.name}: the first stage must be 'load'")
-            stage = STAGES[name]
-            scene = stage.run(scene, build_params(stage.params, params))
+            scene = STAGES[name].run(scene, params)
         scene.timings[name] = round(time.perf_counter() - started, 4)
     assert scene is not None
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
