@@ -148,13 +148,17 @@ def _bottom_up(objects: list[SceneObject]) -> list[SceneObject]:
 
 
 def _top_under(under: trimesh.Trimesh, pts: np.ndarray) -> float:
-    """Height of the top of the completed shape ``under`` below the footprint of ``pts``.
+    """Height of the top of the convex shape ``under`` below the footprint of ``pts``.
 
-    A vertical ray is cast down from each footprint point; the highest hit is the base.
+    The upper surface of a convex solid is the lower envelope of its upward-facing face planes;
+    the base is its highest point under the footprint (clamped to the solid's bounds).
     """
+    normals = under.face_normals
+    up = normals[:, 2] > 1e-6
+    n, p0 = normals[up], under.triangles[up, 0, :]
+    d = -(n * p0).sum(axis=1)
+    xy = pts[:, :2]
+    z = -(d[None, :] + xy @ n[:, :2].T) / n[None, :, 2]
+    top = z.min(axis=1)
     lo, hi = under.bounds
-    xy = pts[:, :2][:: max(1, len(pts) // 200)]
-    origins = np.column_stack([xy, np.full(len(xy), hi[2] + 1.0)])
-    directions = np.tile([0.0, 0.0, -1.0], (len(xy), 1))
-    hits, _, _ = under.ray.intersects_location(origins, directions, multiple_hits=False)
-    return float(hits[:, 2].max()) if len(hits) else float(hi[2])
+    return float(np.clip(top.max(), lo[2], hi[2]))
