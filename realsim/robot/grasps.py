@@ -1,0 +1,243 @@
+"""Grasp candidates from an object's collision geometry.
+
+The object's collision hulls are sampled into a surface point cloud (world frame). Candidates:
+
+- top-down grasps with the closing axis along the principal axes of the object's footprint
+  (and the diagonals), at a depth below the top the fingers can reach;
+- side grasps approaching horizontally from the robot, closing across the object;
+- rim grasps for open containers (mugs, bowls): top-down on the wall, closing radially.
+
+A candidate is kept only when everything between the finger pads' sweep fits in the hand's
+opening (80 mm minus a margin). Candidates are ranked by a score preferring a comfortable width,
+a grasp point near the object's centre and a top-down approach.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+import trimesh
+
+from realsim.robot.ik import mat_to_quat
+from realsim.robot.model import GRIPPER_MAX_OPENING
+
+MAX_WIDTH = GRIPPER_MAX_OPENING - 0.008  # widest graspable cross-section (m)
+FINGER_HALF_WIDTH = 0.012  # half the finger's extent across the closing axis (m)
+FINGER_BELOW_TCP = 0.011  # fingertip bottom below the tcp (m)
+PALM_BEHIND_TCP = 0.045  # palm / hand body this far behind the tcp along the approach (m)
+
+
+@dataclass
+class GraspCandidate:
+    """A tcp pose to close the hand at."""
+
+    kind: str  # "top" | "side" | "rim"
+    pos: np.ndarray  # (3,) tcp position, world
+    rot: np.ndarray  # (3, 3) tcp orientation, world: columns x, y (closing axis), z (approach)
+    width: float  # object width between the fingers (m)
+    score: float
+
+    @property
+    def quat(self) -> np.ndarray:
+        return mat_to_quat(self.rot)
+
+    @property
+    def approach(self) -> np.ndarray:
+        return self.rot[:, 2].copy()
+
+
+def frame_from(approach: np.ndarray, closing: np.ndarray) -> np.ndarray:
+    """Rotation with z = approach and y = closing (orthogonalized), x = y cross z."""
+    z = approach / np.linalg.norm(approach)
+    y = closing - z * (closing @ z)
+    y /= np.linalg.norm(y)
+    return np.column_stack([np.cross(y, z), y, z])
+
+
+def rotate_about(axis: np.ndarray, angle: float) -> np.ndarray:
+    axis = axis / np.linalg.norm(axis)
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
+
+
+def body_surface_points(model: mujoco.MjModel, body_id: int, count: int = 4000) -> np.ndarray:
+    """Surface samples of a body's collision geoms (group 3, or colliding), in the body frame."""
+    pts = []
+    geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == body_id and (model.geom_contype[g] or model.geom_conaffinity[g])]
+    for g in geoms:
+        t = model.geom_type[g]
+        size = model.geom_size[g]
+        if t == mujoco.mjtGeom.mjGEOM_MESH:
+            m = model.geom_dataid[g]
+            va, vn = model.mesh_vertadr[m], model.mesh_vertnum[m]
+            fa, fn = model.mesh_faceadr[m], model.mesh_facenum[m]
+            mesh = trimesh.Trimesh(model.mesh_vert[va : va + vn], model.mesh_face[fa : fa + fn], process=False)
+        elif t == mujoco.mjtGeom.mjGEOM_BOX:
+            mesh = trimesh.creation.box(extents=2 * size)
+        elif t == mujoco.mjtGeom.mjGEOM_CYLINDER:
+            mesh = trimesh.creation.cylinder(radius=size[0], height=2 * size[1], sections=32)
+        elif t == mujoco.mjtGeom.mjGEOM_SPHERE:
+            mesh = trimesh.creation.icosphere(subdivisions=2, radius=size[0])
+        elif t == mujoco.mjtGeom.mjGEOM_CAPSULE:
+            mesh = trimesh.creation.capsule(height=2 * size[1], radius=size[0])
+        else:
+            aabb = model.geom_aabb[g]
+            mesh = trimesh.creation.box(extents=2 * aabb[3:], transform=trimesh.transformations.translation_matrix(aabb[:3]))
+        n = max(200, int(count / max(len(geoms), 1)))
+        samples, _ = trimesh.sample.sample_surface(mesh, n, seed=0)
+        samples = np.vstack([samples, mesh.vertices])
+        rot = model.geom_quat[g]
+        mat = np.zeros(9)
+        mujoco.mju_quat2Mat(mat, rot)
+        pts.append(samples @ mat.reshape(3, 3).T + model.geom_pos[g])
+    return np.vstack(pts) if pts else np.zeros((0, 3))
+
+
+def _slab_extent(pts: np.ndarray, centre: np.ndarray, closing: np.ndarray, across: np.ndarray, low: float, high: float, along: np.ndarray) -> tuple[float, float] | None:
+    """Extent along ``closing`` of points in the slab |across . (p - c)| < finger half width with
+    ``low <= along . (p - c) <= high``."""
+    rel = pts - centre
+    a = rel @ across
+    b = rel @ along
+    mask = (np.abs(a) < FINGER_HALF_WIDTH) & (b >= low) & (b <= high)
+    if mask.sum() < 3:
+        return None
+    c = rel[mask] @ closing
+    return float(c.min()), float(c.max())
+
+
+def top_down_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, depth: float = 0.03, height_offset: float = 0.0) -> list[GraspCandidate]:
+    """Top-down grasps closing along the footprint's principal axes and diagonals, at several
+    slices across the object (so L-shaped or thin-bladed objects are pinched where they are thin)."""
+    xy = pts[:, :2]
+    centre_xy = xy.mean(axis=0)
+    dirs = np.pi * np.arange(36) / 36
+    widths = [np.ptp(xy @ np.array([np.cos(a), np.sin(a)])) for a in dirs]
+    phi0 = float(dirs[int(np.argmin(widths))])  # the footprint's narrowest direction (min-width, robust for squares)
+    angles = [phi0, phi0 + np.pi / 2, phi0 + np.pi / 4, phi0 - np.pi / 4]
+    out = []
+    for i, phi in enumerate(angles):
+        closing = np.array([np.cos(phi), np.sin(phi), 0.0])
+        if np.cos(phi - prefer_yaw) < 0:  # the sign nearest the preferred yaw keeps the wrist centred
+            closing = -closing
+        across = np.array([-closing[1], closing[0], 0.0])
+        proj_a = (xy - centre_xy) @ across[:2]
+        proj_c = (xy - centre_xy) @ closing[:2]
+        lo, hi = float(proj_a.min()), float(proj_a.max())
+        for frac in (0.5, 0.35, 0.65, 0.2, 0.8):
+            s_off = lo + frac * (hi - lo) if hi - lo > 2 * FINGER_HALF_WIDTH else 0.0
+            slab = np.abs(proj_a - s_off) < FINGER_HALF_WIDTH
+            if slab.sum() < 5:
+                continue
+            local_top = float(pts[slab, 2].max())
+            grasp_z = max(local_top - min(depth, max((local_top - surface_z) / 2, 0.0)), surface_z + FINGER_BELOW_TCP + 0.004) + height_offset
+            grasp_z = min(grasp_z, local_top - 0.004)
+            between = slab & (pts[:, 2] >= grasp_z - FINGER_BELOW_TCP)
+            if between.sum() < 3:
+                continue
+            c_lo, c_hi = float(proj_c[between].min()), float(proj_c[between].max())
+            width = c_hi - c_lo
+            if width > MAX_WIDTH:
+                continue
+            mid_c = (c_lo + c_hi) / 2
+            # the palm (about 0.2 m along the closing axis, 0.06 m across) must clear everything
+            palm = (np.abs(proj_c - mid_c) < 0.11) & (np.abs(proj_a - s_off) < 0.035) & (pts[:, 2] > grasp_z + PALM_BEHIND_TCP - 0.005)
+            if palm.any():
+                continue
+            centre = np.array([*(centre_xy + across[:2] * s_off + closing[:2] * mid_c), grasp_z])
+            rot = frame_from(np.array([0.0, 0.0, -1.0]), closing)
+            score = 1.0 - (0.05 * i if i < 2 else 0.25) - 4.0 * abs(s_off) - 4.0 * abs(mid_c) + 0.3 * (MAX_WIDTH - width) / MAX_WIDTH
+            out.append(GraspCandidate("top", centre, rot, width, score))
+    return out
+
+
+def side_candidates(pts: np.ndarray, surface_z: float, from_xy: np.ndarray, height_offset: float = 0.0) -> list[GraspCandidate]:
+    """Horizontal grasps approaching from ``from_xy`` (the robot base), for tall objects."""
+    top = float(pts[:, 2].max())
+    height = top - surface_z
+    if height < 0.07:
+        return []
+    centre_xy = pts[:, :2].mean(axis=0)
+    out = []
+    for k, dz in enumerate((0.5, 0.35, 0.65)):
+        z = surface_z + max(height * dz, 0.04) + height_offset
+        if z > top - 0.01:
+            continue
+        approach = np.array([*(centre_xy - from_xy), 0.0])
+        approach /= np.linalg.norm(approach)
+        closing = np.array([-approach[1], approach[0], 0.0])
+        centre = np.array([centre_xy[0], centre_xy[1], z])
+        rel = pts - centre
+        band = np.abs(rel[:, 2]) < FINGER_HALF_WIDTH
+        if band.sum() < 3:
+            continue
+        along = rel[band] @ approach
+        front = float(along.min())
+        tcp_along = min(0.0, front + 0.04)
+        tcp = centre + approach * tcp_along
+        rel2 = pts - tcp
+        m2 = (np.abs(rel2[:, 2]) < FINGER_HALF_WIDTH) & (rel2 @ approach > -0.01) & (rel2 @ approach < 0.06)
+        if m2.sum() < 3:
+            continue
+        c = rel2[m2] @ closing
+        width = float(c.max() - c.min())
+        if width > MAX_WIDTH:
+            continue
+        tcp = tcp + closing * (c.max() + c.min()) / 2
+        rot = frame_from(approach, closing)
+        out.append(GraspCandidate("side", tcp, rot, width, 0.6 - 0.05 * k + 0.3 * (MAX_WIDTH - width) / MAX_WIDTH))
+    return out
+
+
+def rim_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, height_offset: float = 0.0) -> list[GraspCandidate]:
+    """Top-down grasps on the wall of an open container, closing radially."""
+    top = float(pts[:, 2].max())
+    band = pts[pts[:, 2] > top - 0.02]
+    if len(band) < 10:
+        return []
+    centre = band[:, :2].mean(axis=0)
+    out = []
+    for k in range(8):
+        ang = prefer_yaw + np.pi + k * np.pi / 4
+        r = np.array([np.cos(ang), np.sin(ang)])
+        perp = np.array([-r[1], r[0]])
+        rel = band[:, :2] - centre
+        sector = (np.abs(rel @ perp) < FINGER_HALF_WIDTH) & (rel @ r > 0)
+        if sector.sum() < 4:
+            continue
+        radial = rel[sector] @ r
+        outer = float(radial.max())
+        wall = radial[radial > outer - 0.03]
+        inner = float(wall.min())
+        if (radial < inner - 0.003).any() and np.sort(radial)[-1] - np.sort(radial)[0] > MAX_WIDTH:
+            continue  # the top is closed across: no wall to pinch
+        thickness = outer - inner
+        if thickness > 0.03 or (radial.max() - radial.min()) > thickness + 0.005:
+            continue
+        mid = centre + r * (outer + inner) / 2
+        z = max(top - 0.02, surface_z + FINGER_BELOW_TCP + 0.004) + height_offset
+        rot = frame_from(np.array([0.0, 0.0, -1.0]), np.array([*r, 0.0]))
+        out.append(GraspCandidate("rim", np.array([mid[0], mid[1], z]), rot, thickness, 0.4 - 0.01 * k))
+    return out
+
+
+def grasp_candidates(pts: np.ndarray, surface_z: float, base_xy: np.ndarray, prefer_yaw: float = 0.0, height_offset: float = 0.0) -> list[GraspCandidate]:
+    """Every candidate for an object's world-frame surface points, best first."""
+    cands = top_down_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset)
+    cands += side_candidates(pts, surface_z, base_xy, height_offset=height_offset)
+    cands += rim_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset)
+    cands.sort(key=lambda c: -c.score)
+    return cands
+
+
+def narrowest_width(pts: np.ndarray, n: int = 36) -> float:
+    """The object's narrowest horizontal extent over ``n`` directions (m)."""
+    xy = pts[:, :2]
+    widths = []
+    for k in range(n):
+        d = np.array([np.cos(np.pi * k / n), np.sin(np.pi * k / n)])
+        p = xy @ d
+        widths.append(p.max() - p.min())
+    return float(min(widths))

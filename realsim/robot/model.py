@@ -1,0 +1,191 @@
+"""The Franka Panda from MuJoCo Menagerie, attached to a scene spec with ``MjSpec.attach``.
+
+The robot is attached under the prefix ``panda/`` at a base pose (x, y, yaw) on an optional box
+pedestal, with a tool-centre site ``panda/tcp`` between the fingertip pads. Its meshes become
+in-memory assets named ``panda_<file>`` so a written scene refers to them under ``assets/``.
+The spec gets a ``home`` keyframe: the robot at its home posture, objects at their poses, and
+the actuator controls that hold that posture (settle.py resets to it before settling).
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from realsim.errors import InputError
+
+PANDA_DIR = "franka_emika_panda"
+PREFIX = "panda/"
+ARM_JOINTS = tuple(f"joint{i}" for i in range(1, 8))
+FINGER_JOINTS = ("finger_joint1", "finger_joint2")
+ARM_ACTUATORS = tuple(f"actuator{i}" for i in range(1, 8))
+GRIPPER_ACTUATOR = "actuator8"
+HOME_ARM = (0.0, 0.0, 0.0, -1.57079, 0.0, 1.57079, -0.7853)
+GRIPPER_OPEN_CTRL = 255.0  # the Menagerie gripper maps ctrl 0..255 to opening 0..0.04 m per finger
+GRIPPER_MAX_OPENING = 0.08  # m between the fingers, fully open
+TCP_OFFSET = 0.1034  # m from the hand frame to the centre of the fingertip pads (hand z axis)
+BASE_FOOTPRINT = 0.14  # m, half side of a square that covers link0 (and the pedestal top)
+PEDESTAL_NAME = "robot_pedestal"
+
+
+@dataclass(frozen=True)
+class GripperParams:
+    """Stiffer gripper than the Menagerie default (whose ~2 N squeeze drops 0.5 kg objects)."""
+
+    stiffness: float = 1500.0  # N per m of tendon (Menagerie: 100)
+    damping: float = 60.0  # N s/m (Menagerie: 10)
+    max_force: float = 70.0  # N (Franka Hand: 70 N continuous)
+
+
+@dataclass
+class RobotHandles:
+    """Names of the attached robot's elements in the composed model."""
+
+    prefix: str
+    base_body: str
+    tcp_site: str
+    hand_body: str
+    finger_bodies: tuple[str, str]
+    arm_joints: tuple[str, ...]
+    finger_joints: tuple[str, ...]
+    arm_actuators: tuple[str, ...]
+    gripper_actuator: str
+    base_pose: tuple[float, float, float]  # x, y, yaw
+    base_z: float  # z of link0 (top of the pedestal)
+    pedestal_height: float
+    home_key: str = "home"
+    assets: dict[str, bytes] = field(default_factory=dict, repr=False)
+
+
+def menagerie_panda_dir() -> Path:
+    """The ``franka_emika_panda`` folder: ``$MENAGERIE_ROOT`` first, else the mujoco_menagerie package."""
+    root = os.environ.get("MENAGERIE_ROOT")
+    if root:
+        folder = Path(root).expanduser() / PANDA_DIR
+        if (folder / "panda.xml").is_file():
+            return folder
+        raise InputError(f"MENAGERIE_ROOT={root}: no {PANDA_DIR}/panda.xml there; point MENAGERIE_ROOT at a folder holding {PANDA_DIR}/")
+    try:
+        import mujoco_menagerie
+
+        folder = Path(mujoco_menagerie.get(PANDA_DIR).path(progress=None))
+    except Exception as exc:  # ImportError, download or registry errors
+        raise InputError(
+            f"the Franka Panda model could not be located ({type(exc).__name__}: {exc}); install mujoco-menagerie with "
+            f"internet access once, or set MENAGERIE_ROOT to a folder holding {PANDA_DIR}/"
+        ) from exc
+    if not (folder / "panda.xml").is_file():
+        raise InputError(f"{folder}: no panda.xml in the Menagerie download; set MENAGERIE_ROOT to a folder holding {PANDA_DIR}/")
+    return folder
+
+
+def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec, dict[str, bytes]]:
+    """The Menagerie Panda (with hand) as a spec with in-memory mesh assets, a ``tcp`` site and
+    gravity compensation; returns (spec, assets by file name)."""
+    folder = menagerie_panda_dir()
+    spec = mujoco.MjSpec.from_file(str(folder / "panda.xml"))
+    assets: dict[str, bytes] = {}
+    mesh_dir = folder / (spec.meshdir or "")
+    for mesh in spec.meshes:
+        name = f"panda_{Path(mesh.file).name}"
+        assets[name] = (mesh_dir / mesh.file).read_bytes()
+        mesh.file = name
+    spec.meshdir = ""
+    spec.assets = assets
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    for light in list(spec.lights):
+        spec.delete(light)
+    hand = spec.body("hand")
+    hand.add_site(name="tcp", pos=[0.0, 0.0, TCP_OFFSET], size=[0.006, 0.006, 0.006], group=4, rgba=[1, 0, 0, 0.6])
+    for body in spec.bodies:
+        if body.name != "world":
+            body.gravcomp = 1.0
+    act = spec.actuator(GRIPPER_ACTUATOR)
+    act.gainprm[0] = 0.04 * gripper.stiffness / 255.0
+    act.biasprm[1] = -gripper.stiffness
+    act.biasprm[2] = -gripper.damping
+    act.forcerange = [-gripper.max_force, gripper.max_force]
+    return spec, assets
+
+
+def yaw_quat(yaw: float) -> list[float]:
+    return [float(np.cos(yaw / 2)), 0.0, 0.0, float(np.sin(yaw / 2))]
+
+
+def attach_robot(
+    spec: mujoco.MjSpec,
+    base_pos_xy_yaw: tuple[float, float, float],
+    base_z: float = 0.0,
+    pedestal_height: float = 0.0,
+    prefix: str = PREFIX,
+    gripper: GripperParams = GripperParams(),
+) -> RobotHandles:
+    """Attach the Panda to ``spec`` with its base at (x, y) and yaw, standing at ``base_z``.
+
+    ``base_z`` is the floor under the robot; with ``pedestal_height`` > 0 a fixed box pedestal
+    (collision group 3 plus a visual twin) lifts link0 to ``base_z + pedestal_height``. The
+    robot's meshes are added to ``spec.assets``, and a ``home`` keyframe replaces any existing
+    one (robot at home posture, gripper open, every other joint at its ``qpos0``).
+    """
+    x, y, yaw = (float(v) for v in base_pos_xy_yaw)
+    top = float(base_z) + max(float(pedestal_height), 0.0)
+    child, assets = panda_spec(gripper)
+    if pedestal_height > 0:
+        half = [BASE_FOOTPRINT, BASE_FOOTPRINT, pedestal_height / 2]
+        pos = [x, y, base_z + pedestal_height / 2]
+        common = dict(type=mujoco.mjtGeom.mjGEOM_BOX, size=half, pos=pos, quat=yaw_quat(yaw))
+        spec.worldbody.add_geom(name=f"{PEDESTAL_NAME}_collision", group=3, contype=1, conaffinity=1, rgba=[0.4, 0.6, 0.8, 0.3], **common)
+        spec.worldbody.add_geom(name=f"{PEDESTAL_NAME}_visual", group=2, contype=0, conaffinity=0, rgba=[0.2, 0.2, 0.22, 1.0], **common)
+    frame = spec.worldbody.add_frame(pos=[x, y, top], quat=yaw_quat(yaw))
+    spec.attach(child, prefix=prefix, frame=frame)
+    spec.assets = {**spec.assets, **assets}
+    for mesh in spec.meshes:  # attach prefixes file names too; keep the flat assets/ layout
+        if mesh.file.startswith(prefix) and mesh.file[len(prefix):] in assets:
+            mesh.file = mesh.file[len(prefix):]
+    for key in list(spec.keys):
+        if key.name in ("home", f"{prefix}home"):
+            spec.delete(key)
+    model = spec.compile()
+    qpos = model.qpos0.copy()
+    for name, value in zip(ARM_JOINTS, HOME_ARM):
+        qpos[model.jnt_qposadr[model.joint(prefix + name).id]] = value
+    for name in FINGER_JOINTS:
+        qpos[model.jnt_qposadr[model.joint(prefix + name).id]] = GRIPPER_MAX_OPENING / 2
+    ctrl = np.zeros(model.nu)
+    for name, value in zip(ARM_ACTUATORS, HOME_ARM):
+        ctrl[model.actuator(prefix + name).id] = value
+    ctrl[model.actuator(prefix + GRIPPER_ACTUATOR).id] = GRIPPER_OPEN_CTRL
+    spec.add_key(name="home", qpos=qpos.tolist(), qvel=np.zeros(model.nv).tolist(), ctrl=ctrl.tolist())
+    spec.compile()
+    return RobotHandles(
+        prefix=prefix,
+        base_body=prefix + "link0",
+        tcp_site=prefix + "tcp",
+        hand_body=prefix + "hand",
+        finger_bodies=(prefix + "left_finger", prefix + "right_finger"),
+        arm_joints=tuple(prefix + j for j in ARM_JOINTS),
+        finger_joints=tuple(prefix + j for j in FINGER_JOINTS),
+        arm_actuators=tuple(prefix + a for a in ARM_ACTUATORS),
+        gripper_actuator=prefix + GRIPPER_ACTUATOR,
+        base_pose=(x, y, yaw),
+        base_z=top,
+        pedestal_height=max(float(pedestal_height), 0.0),
+        assets=assets,
+    )
+
+
+def robot_only_model(base_pos: np.ndarray, base_quat: np.ndarray, gripper: GripperParams = GripperParams()) -> mujoco.MjModel:
+    """The Panda alone at a base pose (world frame): the kinematic model IK works on."""
+    child, assets = panda_spec(gripper)
+    spec = mujoco.MjSpec()
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    frame = spec.worldbody.add_frame(pos=np.asarray(base_pos, float).tolist(), quat=np.asarray(base_quat, float).tolist())
+    spec.attach(child, prefix=PREFIX, frame=frame)
+    spec.assets = assets
+    for key in list(spec.keys):
+        spec.delete(key)
+    return spec.compile()

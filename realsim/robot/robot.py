@@ -1,0 +1,601 @@
+"""Motion primitives of the Panda over a loaded realsim scene.
+
+Every primitive steps the physics (simulated time only) with the position-controlled actuators
+following an interpolated joint trajectory, within a ``max_sim_time`` budget, and returns an
+:class:`ActionResult` whose ``success`` is measured in the simulation (contacts, poses), never
+assumed. Motions lift before they traverse: transits go up to a safe height above everything,
+across, and down; approaches are straight lines along the grasp axis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from realsim.robot.grasps import GraspCandidate, body_surface_points, grasp_candidates, narrowest_width, rotate_about, MAX_WIDTH
+from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
+from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
+from realsim.robot.optimizer import EpsilonGreedy, GraspParams
+
+COLLISION_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
+
+
+@dataclass(frozen=True)
+class RobotParams:
+    """Speeds, clearances and budgets of the primitives."""
+
+    max_joint_speed: float = 1.2  # rad/s along a trajectory
+    min_segment_time: float = 0.25  # s
+    cart_step: float = 0.02  # m between IK waypoints on straight-line moves
+    clearance: float = 0.10  # m above the tallest object when traversing
+    pregrasp: float = 0.10  # m back along the approach axis
+    lift: float = 0.15  # m lifted after closing
+    gripper_time: float = 0.6  # s to open or close
+    settle_speed: float = 0.02  # rad/s: joints at rest
+    max_settle: float = 0.6  # s waiting for rest after a trajectory
+    max_sim_time: float = 40.0  # s budget per primitive
+    grasp_attempts: int = 4
+    lifted_min: float = 0.04  # m the object must rise to count as lifted
+    place_drop: float = 0.01  # m above the surface at release
+    track_tol: float = 0.01  # m tcp error accepted at the end of a straight move
+
+
+@dataclass
+class ActionResult:
+    """What a primitive did: success, why, and the measured values."""
+
+    primitive: str
+    success: bool
+    reason: str
+    sim_time: float = 0.0
+    attempts: int = 0
+    values: dict[str, Any] = field(default_factory=dict)
+
+
+class _Budget(Exception):
+    pass
+
+
+class _Fail(Exception):
+    pass
+
+
+class Robot:
+    """The Panda in a loaded scene: primitives that act by stepping ``data``."""
+
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, prefix: str = PREFIX, params: RobotParams = RobotParams(),
+                 ik_params: IKParams = IKParams(), seed: int = 0):
+        self.model, self.data, self.prefix, self.params, self.seed = model, data, prefix, params, seed
+        try:
+            self.base_id = model.body(prefix + "link0").id
+        except KeyError as exc:
+            raise ValueError(f"no robot with prefix '{prefix}' in the model (attach it with realsim.robot.attach_robot)") from exc
+        self.jnt = [model.joint(prefix + j).id for j in ARM_JOINTS]
+        self.qadr = np.array([model.jnt_qposadr[j] for j in self.jnt])
+        self.dadr = np.array([model.jnt_dofadr[j] for j in self.jnt])
+        self.finger_qadr = np.array([model.jnt_qposadr[model.joint(prefix + j).id] for j in FINGER_JOINTS])
+        self.act = np.array([model.actuator(prefix + a).id for a in ARM_ACTUATORS])
+        self.grip_act = model.actuator(prefix + GRIPPER_ACTUATOR).id
+        self.tcp = model.site(prefix + "tcp").id
+        self.finger_bodies = {model.body(prefix + "left_finger").id, model.body(prefix + "right_finger").id}
+        self.robot_bodies = {b for b in range(model.nbody) if model.body(b).name.startswith(prefix)}
+        mujoco.mj_kinematics(model, data)
+        self.base_pos = data.xpos[self.base_id].copy()
+        self.base_quat = data.xquat[self.base_id].copy()
+        self.ik = ArmIK(self.base_pos, self.base_quat, ik_params)
+        self._points: dict[int, np.ndarray] = {}
+        self._deadline = np.inf
+        self.held: str | None = None
+        if not np.any(data.ctrl[self.act]):  # a model reset without keyframe: hold the current posture
+            data.ctrl[self.act] = data.qpos[self.qadr]
+            data.ctrl[self.grip_act] = GRIPPER_OPEN_CTRL
+
+    # --- reading the simulation ---------------------------------------------------------------
+    def object_names(self) -> list[str]:
+        """Names of the free bodies (the movable objects), in model order."""
+        out = []
+        for j in range(self.model.njnt):
+            if self.model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+                out.append(self.model.body(self.model.jnt_bodyid[j]).name)
+        return out
+
+    def object_pose(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Live (position, quaternion w,x,y,z) of a body."""
+        b = self._body(name)
+        return self.data.xpos[b].copy(), self.data.xquat[b].copy()
+
+    def tcp_pose(self) -> tuple[np.ndarray, np.ndarray]:
+        mujoco.mj_kinematics(self.model, self.data)
+        return self.data.site_xpos[self.tcp].copy(), self.data.site_xmat[self.tcp].reshape(3, 3).copy()
+
+    def gripper_opening(self) -> float:
+        return float(self.data.qpos[self.finger_qadr].sum())
+
+    def _body(self, name: str) -> int:
+        try:
+            return self.model.body(name).id
+        except KeyError:
+            raise KeyError(f"no body named '{name}'; objects: {', '.join(self.object_names())}") from None
+
+    def object_points(self, name: str) -> np.ndarray:
+        """World-frame surface samples of a body's collision geometry (live pose)."""
+        b = self._body(name)
+        if b not in self._points:
+            self._points[b] = body_surface_points(self.model, b)
+        return self._points[b] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+
+    def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None) -> float:
+        """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``."""
+        best = -np.inf
+        geomid = np.zeros(1, np.int32)
+        exclude_body = self._body(exclude) if exclude else -1
+        for dx, dy in ((0, 0), (0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01)):
+            start = np.array([xy[0] + dx, xy[1] + dy, z_from])
+            for _ in range(4):
+                d = mujoco.mj_ray(self.model, self.data, start, np.array([0, 0, -1.0]), COLLISION_GROUPS, 1, exclude_body, geomid)
+                if d < 0:
+                    break
+                hit_body = self.model.geom_bodyid[geomid[0]]
+                if hit_body in self.robot_bodies:
+                    start = start - np.array([0, 0, d + 1e-4])
+                    continue
+                best = max(best, start[2] - d)
+                break
+        return float(best) if np.isfinite(best) else 0.0
+
+    def _tallest(self, skip: str | None = None) -> float:
+        tops = [self.object_points(n)[:, 2].max() for n in self.object_names() if n != skip]
+        return float(max(tops)) if tops else float(self.base_pos[2])
+
+    def _contacts_with(self, name: str) -> set[int]:
+        """Robot finger bodies touching body ``name``."""
+        b = self._body(name)
+        out = set()
+        for i in range(self.data.ncon):
+            c = self.data.contact[i]
+            b1, b2 = self.model.geom_bodyid[c.geom1], self.model.geom_bodyid[c.geom2]
+            if b1 == b and b2 in self.finger_bodies:
+                out.add(int(b2))
+            elif b2 == b and b1 in self.finger_bodies:
+                out.add(int(b1))
+        return out
+
+    def holding(self, name: str) -> bool:
+        return len(self._contacts_with(name)) == 2 and self.gripper_opening() > 0.002
+
+    # --- execution ----------------------------------------------------------------------------
+    def _step(self) -> None:
+        if self.data.time > self._deadline:
+            raise _Budget()
+        mujoco.mj_step(self.model, self.data)
+
+    def _wait(self, duration: float) -> None:
+        end = self.data.time + duration
+        while self.data.time < end:
+            self._step()
+
+    def _settle(self) -> None:
+        end = self.data.time + self.params.max_settle
+        while self.data.time < end:
+            self._step()
+            if np.abs(self.data.qvel[self.dadr]).max() < self.params.settle_speed:
+                break
+
+    def _follow(self, path: list[np.ndarray]) -> None:
+        """Track a joint path (first point = current command) with a smooth time scaling."""
+        q_cmd = self.data.ctrl[self.act].copy()
+        pts = np.vstack([q_cmd] + list(path))
+        seg = np.abs(np.diff(pts, axis=0)).max(axis=1)
+        total = float(seg.sum())
+        if total < 1e-6:
+            return
+        cum = np.concatenate([[0.0], np.cumsum(seg)])
+        duration = max(1.875 * total / self.params.max_joint_speed, self.params.min_segment_time)  # peak speed of the quintic
+        start = self.data.time
+        while True:
+            t = min((self.data.time - start) / duration, 1.0)
+            s = (10 * t**3 - 15 * t**4 + 6 * t**5) * total
+            i = min(int(np.searchsorted(cum, s, side="right") - 1), len(seg) - 1)
+            f = 0.0 if seg[i] == 0 else (s - cum[i]) / seg[i]
+            self.data.ctrl[self.act] = pts[i] + f * (pts[i + 1] - pts[i])
+            if t >= 1.0:
+                break
+            self._step()
+        self._settle()
+
+    def _ik(self, pos: np.ndarray, rot: np.ndarray, q_init: np.ndarray) -> IKResult:
+        return self.ik.solve(pos, mat_to_quat(rot), q_init=q_init)
+
+    def _line(self, start: np.ndarray, end: np.ndarray, rot_start: np.ndarray, rot_end: np.ndarray, q_init: np.ndarray) -> list[np.ndarray]:
+        """IK waypoints along a straight tcp line (orientation interpolated); raises _Fail."""
+        n = max(1, int(np.ceil(np.linalg.norm(end - start) / self.params.cart_step)))
+        rel = rot_start.T @ rot_end
+        quat = mat_to_quat(rel)
+        axis_angle = np.zeros(3)
+        mujoco.mju_quat2Vel(axis_angle, quat, 1.0)
+        path, q = [], q_init
+        for k in range(1, n + 1):
+            f = k / n
+            ang = np.linalg.norm(axis_angle)
+            r = rot_start @ (rotate_about(axis_angle, f * ang) if ang > 1e-9 else np.eye(3))
+            res = self._ik(start + f * (end - start), r, q)
+            if not res.converged:
+                raise _Fail(f"target {np.round(start + f * (end - start), 3).tolist()} unreachable ({res.reason})")
+            if np.abs(res.q - q).max() > 0.6:
+                raise _Fail("the straight-line path needs a joint flip")
+            path.append(res.q)
+            q = res.q
+        return path
+
+    def _straight(self, end: np.ndarray, rot_end: np.ndarray | None = None) -> None:
+        pos, rot = self.tcp_pose()
+        rot_end = rot if rot_end is None else rot_end
+        q = self.data.ctrl[self.act].copy()
+        cmd_pos, cmd_rot = self.ik.fk(q)  # plan from the commanded pose, not the sagging one
+        self._follow(self._line(cmd_pos, end, cmd_rot, rot_end, q))
+
+    def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0) -> None:
+        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked)."""
+        q0 = self.data.ctrl[self.act].copy()
+        cmd_pos, cmd_rot = self.ik.fk(q0)
+        low = max(self._tallest(skip) + 0.03 + below_tcp, end[2])
+        safe = max(self._tallest(skip) + self.params.clearance + below_tcp, end[2])
+        last = None
+        for z in sorted({safe, max(safe - 0.04, low), max(safe - 0.08, low), low}, reverse=True):
+            try:
+                up = np.array([cmd_pos[0], cmd_pos[1], z])
+                over = np.array([end[0], end[1], z])
+                p1 = self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
+                p2 = self._line(up, over, cmd_rot, rot_end, p1[-1] if p1 else q0)
+                p3 = self._line(over, end, rot_end, rot_end, p2[-1])
+            except _Fail as exc:
+                last = exc
+                continue
+            self._follow(p1 + p2 + p3)
+            return
+        raise last or _Fail("no safe path")
+
+    def _gripper(self, ctrl: float) -> None:
+        self.data.ctrl[self.grip_act] = ctrl
+        end = self.data.time + self.params.gripper_time
+        while self.data.time < end:
+            self._step()
+            if self.data.time > end - self.params.gripper_time / 2 and np.abs(self.data.qvel[self.model.jnt_dofadr[self.model.joint(self.prefix + FINGER_JOINTS[0]).id]]) < 1e-3:
+                break
+
+    def _run(self, name: str, fn, budget: float | None = None) -> ActionResult:
+        start = self.data.time
+        self._deadline = start + (budget if budget is not None else self.params.max_sim_time)
+        try:
+            res: ActionResult = fn()
+        except _Budget:
+            res = ActionResult(name, False, f"simulated-time budget of {budget or self.params.max_sim_time:.0f} s exceeded")
+        except _Fail as exc:
+            res = ActionResult(name, False, str(exc))
+        finally:
+            self._deadline = np.inf
+        res.sim_time = self.data.time - start
+        return res
+
+    # --- primitives ---------------------------------------------------------------------------
+    def go_home(self, max_sim_time: float | None = None) -> ActionResult:
+        """Back to the home posture (lifting first if the hand is low)."""
+        def body() -> ActionResult:
+            pos, _ = self.tcp_pose()
+            home_pos, _ = self.ik.fk(np.array(HOME_ARM))
+            if pos[2] < home_pos[2] - 0.05:
+                try:
+                    self._straight(np.array([pos[0], pos[1], home_pos[2]]))
+                except _Fail:
+                    pass
+            self._follow([np.array(HOME_ARM)])
+            err = float(np.abs(self.data.qpos[self.qadr] - np.array(HOME_ARM)).max())
+            return ActionResult("go_home", err < 0.02, "" if err < 0.02 else f"joint error {err:.3f} rad", values={"joint_error": err})
+        return self._run("go_home", body, max_sim_time)
+
+    def move_ee_to(self, pos, quat=None, max_sim_time: float | None = None, direct: bool = False) -> ActionResult:
+        """Move the tcp to ``pos`` (world) with ``quat`` (w,x,y,z; None keeps the current orientation)."""
+        pos = np.asarray(pos, float)
+
+        def body() -> ActionResult:
+            _, rot = self.tcp_pose()
+            target_rot = rot if quat is None else quat_to_mat(np.asarray(quat, float))
+            res = self._ik(pos, target_rot, self.data.ctrl[self.act].copy())
+            if not res.converged:
+                return ActionResult("move_ee_to", False, f"target unreachable: {res.reason}", values={"ik_pos_error": res.pos_error, "ik_rot_error": res.rot_error})
+            if direct:
+                self._straight(pos, target_rot)
+            else:
+                self._transit(pos, target_rot, skip=self.held, below_tcp=self._held_below())
+            now, r_now = self.tcp_pose()
+            err = float(np.linalg.norm(now - pos))
+            ok = err < self.params.track_tol
+            return ActionResult("move_ee_to", ok, "" if ok else f"tcp ended {err * 1000:.1f} mm from the target", values={"pos_error": err, "ik_residual": res.pos_error, "manipulability": res.manipulability})
+        return self._run("move_ee_to", body, max_sim_time)
+
+    def open_gripper(self) -> ActionResult:
+        def body() -> ActionResult:
+            self._gripper(GRIPPER_OPEN_CTRL)
+            self.held = None
+            w = self.gripper_opening()
+            return ActionResult("open_gripper", w > 0.07, "" if w > 0.07 else f"opened only to {w * 1000:.0f} mm", values={"opening": w})
+        return self._run("open_gripper", body)
+
+    def close_gripper(self) -> ActionResult:
+        def body() -> ActionResult:
+            self._gripper(0.0)
+            return ActionResult("close_gripper", True, "", values={"opening": self.gripper_opening()})
+        return self._run("close_gripper", body)
+
+    def _held_below(self) -> float:
+        if not self.held:
+            return 0.0
+        pos, _ = self.tcp_pose()
+        return max(0.0, float(pos[2] - self.object_points(self.held)[:, 2].min()))
+
+    def _prefer_yaw(self) -> float:
+        _, r = self.ik.fk(np.array(HOME_ARM))
+        return float(np.arctan2(r[1, 1], r[0, 1]))
+
+    def graspability(self, obj: str) -> tuple[bool, str]:
+        """Whether the hand can hold ``obj`` at all (some cross-section within the opening)."""
+        pts = self.object_points(obj)
+        surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) - 0.001, exclude=obj)
+        cands = grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw())
+        if cands:
+            return True, ""
+        w = narrowest_width(pts)
+        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim or handle the hand can pinch: the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
+
+    def grasp(self, obj: str, max_attempts: int | None = None, max_sim_time: float | None = None) -> ActionResult:
+        """Grasp and lift ``obj``; failed attempts retry with epsilon-greedy grasp parameters."""
+        attempts = max_attempts or self.params.grasp_attempts
+        opt = EpsilonGreedy(seed=self.seed)
+        log: list[dict] = []
+
+        def body() -> ActionResult:
+            ok, why = self.graspability(obj)
+            if not ok:
+                return ActionResult("grasp", False, f"not graspable: {why}", values={"graspable": False})
+            for attempt in range(1, attempts + 1):
+                gp = opt.propose()
+                z0 = float(self.object_points(obj)[:, 2].min())
+                try:
+                    reward, info = self._attempt(obj, gp, opt)
+                except _Fail as exc:
+                    reward, info = -0.1, {"error": str(exc)}
+                opt.update(gp, reward)
+                log.append({"attempt": attempt, "params": gp.__dict__, "reward": reward, **info})
+                if reward >= 1.0:
+                    self.held = obj
+                    return ActionResult("grasp", True, "", attempts=attempt, values={"graspable": True, "lifted": info.get("lifted"), "kind": info.get("kind"), "log": log})
+                # reset for the next attempt: open, back up, home
+                self._gripper(GRIPPER_OPEN_CTRL)
+                pos, _ = self.tcp_pose()
+                try:
+                    self._straight(pos + np.array([0, 0, 0.12]))
+                except _Fail:
+                    pass
+                self._follow([np.array(HOME_ARM)])
+                if float(self.object_points(obj)[:, 2].min()) < z0 - 0.1:
+                    return ActionResult("grasp", False, f"{obj} fell off its support", attempts=attempt, values={"log": log})
+            last = log[-1] if log else {}
+            return ActionResult("grasp", False, f"no grasp held after {attempts} attempts (last: {last.get('error') or last.get('failure', '')})", attempts=attempts, values={"graspable": True, "log": log})
+        return self._run("grasp", body, max_sim_time or self.params.max_sim_time * 2)
+
+    def _attempt(self, obj: str, gp: GraspParams, opt: EpsilonGreedy) -> tuple[float, dict]:
+        pts = self.object_points(obj)
+        z_bottom = float(pts[:, 2].min())
+        surface = self.surface_below(pts[:, :2].mean(axis=0), z_bottom - 0.001, exclude=obj)
+        cands = grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=gp.height_offset)
+        reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
+        q_home = np.array(HOME_ARM)
+        for c in cands:
+            rot = rotate_about(c.rot[:, 1], gp.tilt) @ c.rot
+            rot = rotate_about(rot[:, 2], gp.yaw_offset) @ rot
+            for flip in (False, True):  # the hand is symmetric: closing axis +y or -y
+                r = rot @ np.diag([-1, -1, 1]) if flip else rot
+                pre = c.pos - r[:, 2] * self.params.pregrasp
+                res_pre = self._ik(pre, r, q_home)
+                if not res_pre.converged:
+                    continue
+                res = self._ik(c.pos, r, res_pre.q)
+                if res.converged:
+                    reachable.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + 0.5 * res.manipulability), res_pre.q, res))
+                    break
+            if len(reachable) >= 6:
+                break
+        if not reachable:
+            raise _Fail(f"none of {len(cands)} grasp candidates is reachable")
+        reachable.sort(key=lambda x: -x[0].score)
+        opt.n_candidates = len(reachable)
+        cand, _, _ = reachable[min(gp.candidate, len(reachable) - 1)]
+        self._gripper(GRIPPER_OPEN_CTRL)
+        pre = cand.pos - cand.approach * self.params.pregrasp
+        self._transit(pre, cand.rot, skip=None)
+        self._straight(cand.pos, cand.rot)
+        self._gripper(0.0)
+        touching = self._contacts_with(obj)
+        z_before = float(self.object_points(obj)[:, 2].min())
+        pos, _ = self.tcp_pose()
+        try:
+            self._straight(pos + np.array([0, 0, self.params.lift]))
+        except _Fail:
+            self._straight(pos + np.array([0, 0, self.params.lift / 2]))
+        self._wait(0.2)
+        lifted = float(self.object_points(obj)[:, 2].min()) - z_before
+        held = self.holding(obj)
+        info = {"kind": cand.kind, "width": cand.width, "lifted": lifted, "contacts_at_close": len(touching)}
+        if held and lifted >= self.params.lifted_min:
+            return 1.0, info
+        info["failure"] = f"fingers touching {len(self._contacts_with(obj))}/2, lifted {lifted * 1000:.0f} mm"
+        return 0.3 * len(touching) / 2 + 0.4 * max(0.0, min(lifted / self.params.lift, 1.0)), info
+
+    def place(self, obj: str, pos, tolerance: float = 0.03, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` down with its centre at ``pos`` (xy; z is found below it) and release."""
+        return self._run("place", lambda: self._place(obj, np.asarray(pos, float), None, tolerance, "place"), max_sim_time)
+
+    def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on top of body ``target``."""
+        def body() -> ActionResult:
+            tp = self.object_points(target)
+            centre = np.array([*tp[:, :2].mean(axis=0), tp[:, 2].max()])
+            return self._place(obj, centre, ("body", target), 0.04, "place_on")
+        return self._run("place_on", body, max_sim_time)
+
+    def place_in(self, obj: str, container: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` into ``container``: a body (bin, bowl) or a marked zone (a geom or site)."""
+        def body() -> ActionResult:
+            region = self._region(container)
+            centre = np.array([*region[0], np.nan])
+            return self._place(obj, centre, ("region", region), 0.0, "place_in")
+        return self._run("place_in", body, max_sim_time)
+
+    def _region(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(centre xy, half extents, xy rotation) of a zone geom/site or a body's footprint."""
+        m, d = self.model, self.data
+        for kind in (mujoco.mjtObj.mjOBJ_GEOM, mujoco.mjtObj.mjOBJ_SITE):
+            i = mujoco.mj_name2id(m, kind, name)
+            if i >= 0:
+                if kind == mujoco.mjtObj.mjOBJ_GEOM:
+                    pos, mat, size = d.geom_xpos[i], d.geom_xmat[i].reshape(3, 3), m.geom_size[i]
+                else:
+                    pos, mat, size = d.site_xpos[i], d.site_xmat[i].reshape(3, 3), m.site_size[i]
+                return pos[:2].copy(), np.asarray(size[:2], float).copy(), mat[:2, :2].copy()
+        pts = self.object_points(name)
+        lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+        return (lo + hi) / 2, (hi - lo) / 2 * 0.8, np.eye(2)
+
+    def _place(self, obj: str, target: np.ndarray, region, tolerance: float, name: str) -> ActionResult:
+        if self.held != obj or not self.holding(obj):
+            return ActionResult(name, False, f"{obj} is not held (grasp it first)")
+        pts = self.object_points(obj)
+        tcp, rot = self.tcp_pose()
+        obj_centre = np.array([*(pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2])
+        below = tcp[2] - float(pts[:, 2].min())
+        xy = target[:2]
+        surface = target[2] if np.isfinite(target[2]) else self.surface_below(xy, self._tallest(obj) + 0.05, exclude=obj)
+        if region is not None and region[0] == "body":
+            surface = self.surface_below(xy, self._tallest(obj) + 0.05, exclude=obj)
+        tcp_goal = np.array([xy[0] + tcp[0] - obj_centre[0], xy[1] + tcp[1] - obj_centre[1], surface + below + self.params.place_drop])
+        above = tcp_goal + np.array([0, 0, 0.08])
+        self._transit(above, rot, skip=obj, below_tcp=below)
+        self._straight(tcp_goal, rot)
+        self._gripper(GRIPPER_OPEN_CTRL)
+        self.held = None
+        pos, _ = self.tcp_pose()
+        try:
+            self._straight(pos + np.array([0, 0, 0.10]))
+        except _Fail:
+            pass
+        self._wait(0.4)
+        final, _ = self.object_pose(obj)
+        pts = self.object_points(obj)
+        centre = (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
+        resting = float(np.abs(self.data.qvel[self.model.jnt_dofadr[self.model.body(obj).jntadr[0]]:][:3]).max()) < 0.05
+        values = {"object_xy": centre.tolist(), "target_xy": xy.tolist(), "object_bottom_z": float(pts[:, 2].min()), "surface_z": surface}
+        if region is not None and region[0] == "region":
+            c, half, r2 = region[1]
+            local = r2.T @ (centre - c)
+            inside = bool(np.all(np.abs(local) <= half))
+            ok = inside and resting
+            values["inside"] = inside
+            reason = "" if ok else ("object came to rest outside the zone" if not inside else "object still moving")
+        else:
+            err = float(np.linalg.norm(centre - xy))
+            values["xy_error"] = err
+            ok = err <= tolerance and float(pts[:, 2].min()) > surface - 0.02
+            reason = "" if ok else f"object ended {err * 1000:.0f} mm from the target"
+        return ActionResult(name, ok, reason, values=values)
+
+    def push(self, obj: str, direction, distance: float, max_sim_time: float | None = None) -> ActionResult:
+        """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers."""
+        d = np.array([*np.asarray(direction, float)[:2], 0.0])
+        d /= np.linalg.norm(d)
+
+        def body() -> ActionResult:
+            pts = self.object_points(obj)
+            start_pos, _ = self.object_pose(obj)
+            bottom = float(pts[:, 2].min())
+            height = float(pts[:, 2].max()) - bottom
+            centre = np.array([*pts[:, :2].mean(axis=0), bottom + min(0.03, height / 2) + 0.005])
+            back = float(((pts - centre) @ d).min())
+            contact = centre + d * (back - 0.03)
+            closing = np.array([-d[1], d[0], 0.0])
+            from realsim.robot.grasps import frame_from
+            rot = frame_from(np.array([0, 0, -1.0]), closing)
+            self._gripper(0.0)
+            self._transit(contact + np.array([0, 0, 0.0]), rot, skip=None)
+            self._straight(contact + d * (distance + 0.03), rot)
+            pos, _ = self.tcp_pose()
+            self._straight(pos - d * 0.03 + np.array([0, 0, 0.1]), rot)
+            self._wait(0.3)
+            end_pos, _ = self.object_pose(obj)
+            moved = float((end_pos - start_pos) @ d)
+            ok = moved >= 0.7 * distance
+            return ActionResult("push", ok, "" if ok else f"object moved {moved * 1000:.0f} mm of {distance * 1000:.0f}", values={"moved": moved})
+        return self._run("push", body, max_sim_time)
+
+    def open_drawer(self, obj: str, amount: float | None = None, max_sim_time: float | None = None) -> ActionResult:
+        """Open a drawer (slide joint) or a door/lid (hinge joint) of body ``obj`` by its handle.
+
+        The handle is a geom of the body whose name contains "handle" (else the body's collision
+        geometry); the hand grasps it approaching against the opening direction and follows the
+        joint's motion (a line for slides, an arc for hinges).
+        """
+        def body() -> ActionResult:
+            b = self._body(obj)
+            jid = self.model.body_jntadr[b]
+            if jid < 0 or self.model.jnt_type[jid] not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
+                return ActionResult("open_drawer", False, f"{obj} has no hinge or slide joint")
+            qa = self.model.jnt_qposadr[jid]
+            q0 = float(self.data.qpos[qa])
+            lo, hi = self.model.jnt_range[jid] if self.model.jnt_limited[jid] else (q0, q0 + (0.25 if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE else 1.2))
+            target = min(hi, q0 + (amount if amount is not None else (hi - q0)))
+            handle = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] == b and "handle" in self.model.geom(g).name]
+            g = handle[0] if handle else None
+            hpos = self.data.geom_xpos[g].copy() if g is not None else self.data.xpos[b].copy()
+            axis = self.data.xaxis[jid].copy()
+            anchor = self.data.xanchor[jid].copy()
+            if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE:
+                pull = axis / np.linalg.norm(axis)
+            else:
+                arm = hpos - anchor
+                pull = np.cross(axis, arm)
+                pull /= np.linalg.norm(pull)
+            horiz = np.array([pull[0], pull[1], 0.0])
+            horiz /= max(np.linalg.norm(horiz), 1e-9)
+            from realsim.robot.grasps import frame_from
+            rot = frame_from(-horiz, np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0]))
+            self._gripper(GRIPPER_OPEN_CTRL)
+            self._transit(hpos + horiz * self.params.pregrasp, rot)
+            self._straight(hpos, rot)
+            self._gripper(0.0)
+            steps = 10
+            path, q = [], self.data.ctrl[self.act].copy()
+            for k in range(1, steps + 1):
+                dq = (target - q0) * k / steps
+                if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE:
+                    p, r = hpos + pull * dq, rot
+                else:
+                    rr = rotate_about(axis, dq)
+                    p, r = anchor + rr @ (hpos - anchor), rr @ rot
+                res = self._ik(p, r, q)
+                if not res.converged:
+                    break
+                path.append(res.q)
+                q = res.q
+            self._follow(path)
+            self._gripper(GRIPPER_OPEN_CTRL)
+            pos, r = self.tcp_pose()
+            try:
+                self._straight(pos - r[:, 2] * 0.08)
+            except _Fail:
+                pass
+            opened = float(self.data.qpos[qa]) - q0
+            ok = opened >= 0.6 * (target - q0)
+            return ActionResult("open_drawer", ok, "" if ok else f"opened {opened:.3f} of {target - q0:.3f}", values={"opened": opened, "target": target - q0})
+        return self._run("open_drawer", body, max_sim_time)
