@@ -31,6 +31,17 @@ def _parse_set(values: list[str]) -> dict[str, dict[str, Any]]:
     return overrides
 
 
+def _parse_pose(text: str) -> tuple[float, float, float]:
+    """``x,y,yaw`` (metres, metres, radians) for ``--robot-pose``."""
+    from realsim.errors import InputError
+
+    try:
+        x, y, yaw = (float(v) for v in text.split(","))
+    except ValueError:
+        raise InputError(f"--robot-pose {text!r}: expected x,y,yaw in metres and radians, e.g. --robot-pose -0.9,0,0") from None
+    return x, y, yaw
+
+
 def cmd_convert(args: argparse.Namespace) -> int:
     from rich.console import Console
 
@@ -44,6 +55,10 @@ def cmd_convert(args: argparse.Namespace) -> int:
         load["units"] = args.units
     if args.up:
         load["up"] = args.up
+    if args.no_robot:
+        overrides.setdefault("robot", {})["enabled"] = False
+    if args.robot_pose:
+        overrides.setdefault("robot", {})["pose"] = _parse_pose(args.robot_pose)
     scene = convert(Path(args.source), Path(args.output), pipeline=args.pipeline, seed=args.seed, overrides=overrides,
                     console=console if args.verbose else None)
     if not args.quiet:
@@ -70,6 +85,8 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("--seed", type=int, default=0, help="seed of every random source (default 0)")
     convert.add_argument("--units", choices=["m", "cm", "mm"], help="input units (detected by default)")
     convert.add_argument("--up", choices=["+x", "-x", "+y", "-y", "+z", "-z"], help="input up axis (detected by default)")
+    convert.add_argument("--robot-pose", metavar="X,Y,YAW", help="place the Panda's base here (m, m, rad) instead of searching")
+    convert.add_argument("--no-robot", action="store_true", help="compose the scene without the Panda")
     convert.add_argument("--pipeline", help="pipeline name in pipelines/ or a YAML path (chosen from the input by default)")
     convert.add_argument("--set", action="append", default=[], metavar="STAGE.PARAM=VALUE", help="override a stage parameter")
     convert.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")

@@ -97,6 +97,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
             }
             for o in scene.objects
         ],
+        "robot": scene.robot,
         "keyframe": "initial",
         "settle": scene.settle_report,
         "timings_s": scene.timings,

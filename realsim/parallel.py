@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 from concurrent.futures import ProcessPoolExecutor
 from typing import Callable, Iterable, TypeVar
@@ -44,7 +45,8 @@ def parallel_map(
                 results.append(fn(item))
                 bar.advance(task)
             return results
-        with ProcessPoolExecutor(max_workers=workers) as pool:
+        # forkserver: workers never inherit OpenMP state (CoACD, Open3D) that breaks after fork.
+        with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("forkserver")) as pool:
             futures = [pool.submit(fn, item) for item in items]
             results = []
             for fut in futures:

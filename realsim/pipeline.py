@@ -28,6 +28,7 @@ from realsim.errors import InputError
 from realsim.output import write_scene
 from realsim.planes import PlaneParams, detect_planes
 from realsim.resources import data_dir
+from realsim.robot_stage import RobotStageParams, robot_scene
 from realsim.scene import Scene
 from realsim.segment_stage import SegmentParams, segment_scene
 from realsim.settle import SettleParams, settle_scene
@@ -46,6 +47,7 @@ STAGES: dict[str, Stage] = {
     "segment": Stage(segment_scene, SegmentParams),
     "complete": Stage(complete_objects, CompletionParams),
     "compose": Stage(compose_scene, ComposeParams),
+    "robot": Stage(robot_scene, RobotStageParams),
     "settle": Stage(settle_scene, SettleParams),
 }
 

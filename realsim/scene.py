@@ -101,6 +101,7 @@ class Scene:
     assets: dict[str, bytes] = field(default_factory=dict)  # files of assets/, by name
     keyframe_qpos: np.ndarray | None = None
     settle_report: dict[str, Any] = field(default_factory=dict)
+    robot: dict[str, Any] | None = None  # where the Panda stands, when the robot stage ran
 
     @property
     def floor_height(self) -> float:

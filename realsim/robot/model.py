@@ -15,7 +15,9 @@ from pathlib import Path
 
 import mujoco
 import numpy as np
+import trimesh
 
+from realsim.cache import DiskCache, cache_key
 from realsim.errors import InputError
 
 PANDA_DIR = "franka_emika_panda"
@@ -90,9 +92,15 @@ def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec,
     spec = mujoco.MjSpec.from_file(str(folder / "panda.xml"))
     assets: dict[str, bytes] = {}
     mesh_dir = folder / (spec.meshdir or "")
+    cache = DiskCache()
     for mesh in spec.meshes:
-        name = f"panda_{Path(mesh.file).name}"
-        assets[name] = (mesh_dir / mesh.file).read_bytes()
+        path = mesh_dir / mesh.file
+        if path.suffix.lower() == ".obj":
+            name = f"panda_{path.stem}.stl"
+            assets[name] = cache.get_or_compute(cache_key("panda-mesh-stl", files=[path]), lambda path=path: _binary_stl(path))
+        else:
+            name = f"panda_{path.name}"
+            assets[name] = path.read_bytes()
         mesh.file = name
     spec.meshdir = ""
     spec.assets = assets
@@ -110,6 +118,13 @@ def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec,
     act.biasprm[2] = -gripper.damping
     act.forcerange = [-gripper.max_force, gripper.max_force]
     return spec, assets
+
+
+def _binary_stl(path: Path) -> bytes:
+    """A mesh file as binary STL: MuJoCo parses it about ten times faster than the Menagerie's
+    large OBJ visuals (0.13 s against 1.3-1.8 s for the whole Panda), at the same geometry."""
+    mesh = trimesh.load(path, force="mesh", process=False)
+    return trimesh.exchange.stl.export_stl(mesh)
 
 
 def yaw_quat(yaw: float) -> list[float]:

@@ -25,6 +25,8 @@ from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, RobotHandle
 from realsim.scene import Scene, SceneObject
 
 TOP_DOWN = np.array([0.0, 1.0, 0.0, 0.0])  # tcp z axis pointing down (w, x, y, z)
+COMFORT_DISTANCE = 0.5  # m, horizontal base-to-target distance the Panda reaches best from above
+COMFORT_BAND = 0.3  # m either side of it
 
 
 @dataclass(frozen=True)
@@ -35,6 +37,7 @@ class PlacementParams:
     side_offsets: tuple[float, ...] = (-0.3, -0.15, 0.0, 0.15, 0.3)  # fraction of the side length
     pedestal_drop: float = 0.0  # m, link0 this far below the table top
     hover: float = 0.05  # m above an object's top for the scored IK targets
+    ik_candidates: int = 8  # poses scored with IK after the cheap reach ranking
 
 
 def graspable_objects(scene: Scene) -> list[SceneObject]:
@@ -104,12 +107,25 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     if not targets:
         targets = [np.array([*plane.rect_center, plane.height + 0.1])]
     best, best_score = None, -np.inf
-    for pose in candidate_poses(scene, params):
+    for pose in _prefilter(candidate_poses(scene, params), targets, params.ik_candidates):
         s, _, _ = score_pose(pose, base_z, targets)
         if s > best_score + 1e-9:
             best, best_score = pose, s
     assert best is not None
     return best
+
+
+def _prefilter(poses: list[tuple[float, float, float]], targets: list[np.ndarray], keep: int) -> list[tuple[float, float, float]]:
+    """The ``keep`` poses whose horizontal distances to the targets sit best in the arm's
+    comfortable band (a cheap stand-in for IK, used to rank before the IK scoring)."""
+    pts = np.asarray(targets, float)[:, :2]
+
+    def comfort(pose: tuple[float, float, float]) -> float:
+        d = np.linalg.norm(pts - np.asarray(pose[:2]), axis=1)
+        return float(np.sum(np.clip(1.0 - np.abs(d - COMFORT_DISTANCE) / COMFORT_BAND, 0.0, 1.0)))
+
+    ranked = sorted(range(len(poses)), key=lambda i: (-comfort(poses[i]), i))
+    return [poses[i] for i in ranked[:keep]]
 
 
 def pedestal_height(scene: Scene, params: PlacementParams = PlacementParams()) -> float:
