@@ -43,13 +43,24 @@ def safe_name(text: str) -> str:
 
 
 def mesh_bytes(mesh: trimesh.Trimesh, file_type: str) -> bytes:
-    """Deterministic bytes of a mesh file (STL or OBJ)."""
+    """Deterministic bytes of a mesh file: binary STL, or OBJ with texture coordinates if any."""
     if file_type == "stl":
         return trimesh.exchange.stl.export_stl(mesh)
-    text = trimesh.exchange.obj.export_obj(mesh, include_normals=False, include_color=False, include_texture=True, header=None, write_texture=False, mtl_name=None)
-    if isinstance(text, tuple):
-        text = text[0]
-    return text.encode() if isinstance(text, str) else text
+    return obj_bytes(mesh)
+
+
+def obj_bytes(mesh: trimesh.Trimesh) -> bytes:
+    """A minimal OBJ (v, vt, f) written with numpy: ~50x faster than trimesh's exporter."""
+    out = io.StringIO()
+    np.savetxt(out, mesh.vertices, fmt="v %.6f %.6f %.6f")
+    uv = getattr(mesh.visual, "uv", None)
+    faces = np.asarray(mesh.faces) + 1
+    if uv is not None and len(uv) == len(mesh.vertices):
+        np.savetxt(out, uv, fmt="vt %.6f %.6f")
+        np.savetxt(out, np.repeat(faces, 2, axis=1), fmt="f %d/%d %d/%d %d/%d")
+    else:
+        np.savetxt(out, faces, fmt="f %d %d %d")
+    return out.getvalue().encode()
 
 
 def new_spec(params: ComposeParams) -> mujoco.MjSpec:

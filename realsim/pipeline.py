@@ -25,6 +25,7 @@ from realsim.capture import LoadParams, load_capture
 from realsim.completion import CompletionParams, complete_objects
 from realsim.compose import ComposeParams, compose_scene
 from realsim.errors import InputError
+from realsim.objects_stage import ObjectsParams, prepare_scene_objects
 from realsim.output import write_scene
 from realsim.planes import PlaneParams, detect_planes
 from realsim.resources import data_dir
@@ -46,6 +47,7 @@ STAGES: dict[str, Stage] = {
     "planes": Stage(detect_planes, PlaneParams),
     "segment": Stage(segment_scene, SegmentParams),
     "complete": Stage(complete_objects, CompletionParams),
+    "objects": Stage(prepare_scene_objects, ObjectsParams),
     "compose": Stage(compose_scene, ComposeParams),
     "robot": Stage(robot_scene, RobotStageParams),
     "settle": Stage(settle_scene, SettleParams),
