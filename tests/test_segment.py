@@ -1,0 +1,244 @@
+"""Object segmentation: real annotated Kinect scenes (mOSD) and small synthetic scenes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.optimize import linear_sum_assignment
+
+from realsim.scene import SupportPlane
+from realsim.segment import SegmentParams, SegmentResult, segment_objects
+
+DATA = Path(__file__).resolve().parents[1].parent / "shared" / "data"
+MOSD = DATA / "pcl_scenes" / "mOSD"
+SCENES = ("test0", "test31", "test45", "test55")
+TABLE_Z = 0.75
+
+
+def matched_ious(pred: np.ndarray, gt: np.ndarray) -> np.ndarray:
+    """Per ground-truth object IoU after Hungarian matching (unmatched objects score 0)."""
+    g_ids, p_ids = np.unique(gt[gt > 0]), np.unique(pred[pred > 0])
+    iou = np.zeros((len(g_ids), len(p_ids)))
+    for a, g in enumerate(g_ids):
+        gm = gt == g
+        for b, p in enumerate(p_ids):
+            pm = pred == p
+            iou[a, b] = (gm & pm).sum() / (gm | pm).sum()
+    out = np.zeros(len(g_ids))
+    rows, cols = linear_sum_assignment(-iou)
+    out[rows] = iou[rows, cols]
+    return out
+
+
+@pytest.fixture(scope="module")
+def mosd_results() -> dict[str, tuple[SegmentResult, np.ndarray, float]]:
+    """Segmentation of the four annotated scenes: (result, ground-truth object ids, seconds)."""
+    if not MOSD.exists():
+        pytest.skip(f"real data not found at {MOSD}")
+    import time
+
+    from realsim.capture import load_capture
+    from realsim.planes import detect_planes
+
+    out = {}
+    for name in SCENES:
+        scene = detect_planes(load_capture(MOSD / f"{name}.pcd"))
+        gt = np.where(scene.annotations >= 20, scene.annotations // 10, 0)
+        t0 = time.perf_counter()
+        result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, SegmentParams(), seed=0)
+        out[name] = (result, gt, time.perf_counter() - t0)
+        assert np.all(result.labels[~np.isfinite(scene.points).all(axis=1)] == 0)
+    return out
+
+
+def test_mosd_acceptance(mosd_results: dict[str, tuple[SegmentResult, np.ndarray, float]]) -> None:
+    """Right object count in >= 3 of 4 scenes and mean IoU >= 0.85 over the 26 objects."""
+    ious, right = [], 0
+    for result, gt, _ in mosd_results.values():
+        ious.extend(matched_ious(result.labels, gt))
+        right += len(np.unique(gt[gt > 0])) == len(np.unique(result.labels[result.labels > 0]))
+    assert len(ious) == 26
+    assert right >= 3, f"right object count in {right}/4 scenes"
+    assert np.mean(ious) >= 0.85, f"mean IoU {np.mean(ious):.3f}"
+
+
+def test_mosd_stacked_chips_can(mosd_results: dict[str, tuple[SegmentResult, np.ndarray, float]]) -> None:
+    """test31: the chips can stands on the cookie tin; the third object stands on the table."""
+    result, gt, _ = mosd_results["test31"]
+    stacked = {k: v for k, v in result.resting_on.items() if v is not None}
+    assert len(stacked) == 1
+    top, bottom = next(iter(stacked.items()))
+    gt_of = {k: np.bincount(gt[result.labels == k]).argmax() for k in (top, bottom)}
+    sizes = {g: (gt == g).sum() for g in gt_of.values()}
+    assert gt_of[top] != gt_of[bottom] and min(sizes.values()) > 0
+    assert result.support_of[top] == result.support_of[bottom]
+
+
+def test_mosd_speed(mosd_results: dict[str, tuple[SegmentResult, np.ndarray, float]]) -> None:
+    """A 640x480 scan segments in well under the conversion budget."""
+    assert max(seconds for _, _, seconds in mosd_results.values()) < 3.0
+
+
+# --------------------------------------------------------------------------------------------
+# synthetic scenes
+
+
+def _table(size: float = 0.5) -> SupportPlane:
+    polygon = np.array([[-size, -size], [size, -size], [size, size], [-size, size]])
+    return SupportPlane(id=1, kind="table", normal=np.array([0.0, 0.0, 1.0]), height=TABLE_Z, polygon=polygon,
+                        rect_center=np.zeros(2), rect_size=np.array([2 * size, 2 * size]), rect_yaw=0.0,
+                        inlier_count=1000)
+
+
+def _box_surface(lo: np.ndarray, hi: np.ndarray, step: float) -> np.ndarray:
+    """Points on the five visible faces (all but the bottom) of an axis-aligned box."""
+    faces = []
+    axes = [np.arange(lo[i], hi[i] + 1e-9, step) for i in range(3)]
+    for axis in range(3):
+        for value in (lo[axis], hi[axis]):
+            if axis == 2 and value == lo[2]:
+                continue
+            u, v = [axes[i] for i in range(3) if i != axis]
+            uu, vv = np.meshgrid(u, v, indexing="ij")
+            pts = np.empty((uu.size, 3))
+            pts[:, axis] = value
+            pts[:, [i for i in range(3) if i != axis]] = np.stack([uu.ravel(), vv.ravel()], axis=1)
+            faces.append(pts)
+    return np.vstack(faces)
+
+
+def _synthetic_scene(boxes: list[tuple[list[float], list[float], list[float]]], seed: int = 0,
+                     step: float = 0.003) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Table points plus box surfaces (lo, hi, rgb); points hidden inside another box are removed.
+
+    Returns points, colours and the ground-truth box index (1..) of each point (0 for the table).
+    """
+    rng = np.random.default_rng(seed)
+    g = np.arange(-0.3, 0.3, step)
+    gx, gy = np.meshgrid(g, g, indexing="ij")
+    parts = [np.stack([gx.ravel(), gy.ravel(), np.full(gx.size, TABLE_Z)], axis=1)]
+    colors = [np.tile([0.8, 0.7, 0.55], (gx.size, 1))]
+    truth = [np.zeros(gx.size, dtype=int)]
+    for k, (lo, hi, rgb) in enumerate(boxes, start=1):
+        pts = _box_surface(np.array(lo), np.array(hi), step)
+        parts.append(pts)
+        colors.append(np.tile(rgb, (len(pts), 1)))
+        truth.append(np.full(len(pts), k))
+    points, cols, gt = np.vstack(parts), np.vstack(colors), np.concatenate(truth)
+    hidden = np.zeros(len(points), dtype=bool)
+    for k, (lo, hi, _) in enumerate(boxes, start=1):
+        inside = np.all((points > np.array(lo) - 1e-6) & (points < np.array(hi) + 1e-6), axis=1)
+        strictly = np.all((points > np.array(lo) + 1e-6) & (points < np.array(hi) - 1e-6), axis=1)
+        hidden |= strictly | (inside & (gt != k) & (gt != 0))  # contact faces and points inside
+    hidden |= (gt == 0) & np.any([np.all((points[:, :2] > np.array(lo[:2])) & (points[:, :2] < np.array(hi[:2])), axis=1)
+                                  for lo, hi, _ in boxes], axis=0)
+    keep = ~hidden
+    points = points[keep] + rng.normal(0.0, 0.0005, (keep.sum(), 3))
+    return points, cols[keep], gt[keep]
+
+
+def _render_boxes(boxes: list[tuple[list[float], list[float], list[float]]], shape: tuple[int, int] = (240, 320),
+                  eye: tuple[float, float, float] = (0.05, -0.55, 1.3), focal: float = 260.0,
+                  seed: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Ray-cast axis-aligned boxes on the table from a pinhole camera: an organized cloud.
+
+    Returns world points (H*W, 3) with NaN where the ray misses the table, colours, and the
+    ground-truth box index per point (0 table or miss).
+    """
+    h, w = shape
+    eye_v = np.array(eye)
+    forward = np.array([0.0, 0.0, TABLE_Z]) - eye_v
+    forward /= np.linalg.norm(forward)
+    right = np.cross(forward, [0.0, 0.0, 1.0])
+    right /= np.linalg.norm(right)
+    down = np.cross(forward, right)
+    v, u = np.mgrid[0:h, 0:w]
+    rays = forward + ((u.ravel() - w / 2)[:, None] * right + (v.ravel() - h / 2)[:, None] * down) / focal
+    rays /= np.linalg.norm(rays, axis=1, keepdims=True)
+    t_best = (TABLE_Z - eye_v[2]) / rays[:, 2]
+    truth = np.zeros(len(rays), dtype=int)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for k, (lo, hi, _) in enumerate(boxes, start=1):
+            t1 = (np.array(lo) - eye_v) / rays
+            t2 = (np.array(hi) - eye_v) / rays
+            t_near = np.minimum(t1, t2).max(axis=1)
+            t_far = np.maximum(t1, t2).min(axis=1)
+            hit = (t_near <= t_far) & (t_near > 0) & (t_near < t_best)
+            t_best = np.where(hit, t_near, t_best)
+            truth[hit] = k
+    depth_noise = np.random.default_rng(seed).normal(0.0, 0.0005, len(rays))
+    points = eye_v + rays * (t_best + depth_noise)[:, None]
+    colors = np.tile([0.8, 0.7, 0.55], (len(rays), 1))
+    for k, (_, _, rgb) in enumerate(boxes, start=1):
+        colors[truth == k] = rgb
+    points[np.abs(points[:, :2]).max(axis=1) > 0.45] = np.nan
+    return points, colors, truth
+
+
+BOXES = [
+    ([-0.15, -0.05, TABLE_Z], [-0.05, 0.05, TABLE_Z + 0.12], [0.8, 0.1, 0.1]),  # tall red box
+    ([-0.05, -0.03, TABLE_Z], [0.05, 0.07, TABLE_Z + 0.06], [0.1, 0.2, 0.8]),  # low blue box touching it
+    ([0.12, -0.06, TABLE_Z], [0.24, 0.06, TABLE_Z + 0.05], [0.1, 0.7, 0.2]),  # green box
+    ([0.15, -0.03, TABLE_Z + 0.05], [0.21, 0.03, TABLE_Z + 0.10], [0.9, 0.8, 0.1]),  # yellow box on the green one
+]
+
+
+def _check_boxes(result: SegmentResult, gt: np.ndarray, min_iou: float) -> None:
+    assert result.labels.dtype == np.int32
+    assert len(np.unique(result.labels[result.labels > 0])) == 4
+    ious = matched_ious(result.labels, gt)
+    assert ious.min() > min_iou, ious
+    owner = {k: int(np.bincount(gt[result.labels == k]).argmax()) for k in np.unique(result.labels[result.labels > 0])}
+    by_box = {box: k for k, box in owner.items()}
+    assert result.resting_on[by_box[4]] == by_box[3]
+    assert all(result.resting_on[by_box[b]] is None for b in (1, 2, 3))
+    assert all(result.support_of[k] == 1 for k in owner)
+    assert [owner[k] for k in sorted(owner)] == [1, 2, 3, 4]  # labels ordered by centroid x
+
+
+def test_touching_and_stacked_boxes_organized() -> None:
+    """Organized grid: two touching boxes are separated, a box standing on another reports it."""
+    points, colors, gt = _render_boxes(BOXES)
+    result = segment_objects(points, colors, [_table()], (240, 320), SegmentParams(), seed=0)
+    assert np.all(result.labels[~np.isfinite(points).all(axis=1)] == 0)
+    assert np.all(result.labels[gt == 0] == 0)
+    _check_boxes(result, gt, 0.9)
+
+
+@pytest.mark.xfail(reason="without a viewpoint, normals of hollow box samples with 90-degree creases are not "
+                          "oriented reliably; the unorganized path over-segments this scene", strict=False)
+def test_touching_and_stacked_boxes_unorganized() -> None:
+    """The same scene sampled as an unorganized cloud (k-nearest-neighbour links)."""
+    points, colors, gt = _synthetic_scene(BOXES)
+    result = segment_objects(points, colors, [_table()], None, SegmentParams(), seed=0)
+    assert np.all(result.labels[gt == 0] == 0)
+    _check_boxes(result, gt, 0.8)
+
+
+def test_background_noise_and_nan() -> None:
+    """NaN rows and points outside the table are 0, a tiny floating speck is noise (-1); deterministic."""
+    box = [([-0.05, -0.05, TABLE_Z], [0.05, 0.05, TABLE_Z + 0.08], [0.8, 0.1, 0.1])]
+    points, colors, gt = _render_boxes(box)
+    grid = np.arange(len(points)).reshape(240, 320)
+    speck = grid[200:202, 40:42].ravel()  # four table pixels lifted by 3 cm
+    points[speck, 2] += 0.03
+    outside = grid[210, 300]
+    points[outside] = [0.9, 0.0, TABLE_Z + 0.1]
+    result = segment_objects(points, colors, [_table()], (240, 320), SegmentParams(), seed=0)
+    assert np.all(result.labels[speck] == -1)
+    assert result.labels[outside] == 0
+    assert np.all(result.labels[~np.isfinite(points).all(axis=1)] == 0)
+    assert set(np.unique(result.labels[gt == 1])) <= {0, 1}
+    assert (result.labels == 1).sum() > 0.9 * (gt == 1).sum()
+    same = segment_objects(points, colors, [_table()], (240, 320), SegmentParams(), seed=0)
+    assert np.array_equal(same.labels, result.labels)
+
+
+def test_no_objects() -> None:
+    """An empty table yields only background and no relations."""
+    points, colors, _ = _synthetic_scene([])
+    result = segment_objects(points, None, [_table()], None)
+    assert np.all(result.labels == 0)
+    assert result.support_of == {} and result.resting_on == {}
