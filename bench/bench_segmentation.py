@@ -18,13 +18,13 @@ from pathlib import Path
 
 import numpy as np
 import open3d as o3d
-from scipy.optimize import linear_sum_assignment
 from scipy.spatial import Delaunay, cKDTree
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from realsim.capture import load_capture  # noqa: E402
+from realsim.metrics import matched_iou, mosd_object_ids  # noqa: E402
 from realsim.planes import detect_planes  # noqa: E402
 from realsim.segment import SegmentParams, segment_objects  # noqa: E402
 
@@ -44,33 +44,8 @@ class Score:
         return float(self.ious.mean()) if len(self.ious) else 0.0
 
 
-def gt_objects(annotations: np.ndarray) -> np.ndarray:
-    """Ground-truth object id per point (0 = table, background or invalid)."""
-    return np.where(annotations >= 20, annotations // 10, 0).astype(np.int64)
-
-
-def matched_ious(pred: np.ndarray, gt: np.ndarray) -> np.ndarray:
-    """Per ground-truth object IoU after Hungarian matching with the predicted objects (> 0)."""
-    g_ids = np.unique(gt[gt > 0])
-    p_ids = np.unique(pred[pred > 0])
-    if len(p_ids) == 0:
-        return np.zeros(len(g_ids))
-    g_idx = np.searchsorted(g_ids, gt)
-    p_idx = np.searchsorted(p_ids, pred)
-    both = (gt > 0) & (pred > 0)
-    inter = np.zeros((len(g_ids), len(p_ids)))
-    np.add.at(inter, (g_idx[both], p_idx[both]), 1)
-    g_size = np.array([(gt == g).sum() for g in g_ids])
-    p_size = np.array([(pred == p).sum() for p in p_ids])
-    iou = inter / (g_size[:, None] + p_size[None, :] - inter)
-    rows, cols = linear_sum_assignment(-iou)
-    out = np.zeros(len(g_ids))
-    out[rows] = iou[rows, cols]
-    return out
-
-
 def score(pred: np.ndarray, gt: np.ndarray, seconds: float) -> Score:
-    return Score(len(np.unique(gt[gt > 0])), len(np.unique(pred[pred > 0])), matched_ious(pred, gt), seconds)
+    return Score(len(np.unique(gt[gt > 0])), len(np.unique(pred[pred > 0])), matched_iou(pred, gt)[0], seconds)
 
 
 def open3d_baseline(camera_points: np.ndarray, seed: int = 0, eps: float = 0.008) -> np.ndarray:
@@ -128,7 +103,7 @@ def main() -> None:
     for name in SCENES:
         path = MOSD / f"{name}.pcd"
         scene = detect_planes(load_capture(path))
-        gt = gt_objects(scene.annotations)
+        gt = mosd_object_ids(scene.annotations)
         t0 = time.perf_counter()
         result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=0)
         ours[name] = score(result.labels, gt, time.perf_counter() - t0)

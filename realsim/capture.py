@@ -103,7 +103,10 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
     import trimesh
 
     try:
-        loaded = trimesh.load(path, force="mesh", process=False)
+        as_points = path.suffix.lower() == ".ply" and _is_point_cloud_ply(path)
+        loaded = trimesh.load(path, process=False) if as_points else trimesh.load(path, force="mesh", process=False)
+    except InputError:
+        raise
     except Exception as exc:  # trimesh raises many types for corrupt files
         raise InputError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
     if isinstance(loaded, trimesh.PointCloud):

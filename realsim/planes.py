@@ -64,11 +64,11 @@ def fit_plane(points: np.ndarray) -> tuple[np.ndarray, float]:
 def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list[tuple[np.ndarray, float, np.ndarray]]:
     """Planes found by repeated seeded RANSAC: (normal, d, inlier points) each, largest first."""
     pcd = _downsample(points, params.voxel_size)
-    o3d.utility.random.seed(seed)
     proposals = []
-    for _ in range(params.max_planes):
+    for i in range(params.max_planes):
         if len(pcd.points) < params.min_plane_points:
             break
+        o3d.utility.random.seed(seed + i)
         model, inliers = pcd.segment_plane(params.distance_threshold, 3, params.ransac_iterations)
         if len(inliers) < params.min_plane_points:
             break
@@ -81,18 +81,23 @@ def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list
     return proposals
 
 
-def refine_plane(points: np.ndarray, normal: np.ndarray, d: float, band: float, passes: int = 3) -> tuple[np.ndarray, float, np.ndarray]:
-    """Refit a plane on the points within ``band`` of it, shrinking the band each pass.
+def refine_plane(points: np.ndarray, normal: np.ndarray, d: float, band: float, passes: int = 3, max_passes: int = 12) -> tuple[np.ndarray, float, np.ndarray]:
+    """Refit a plane on the points within a band of it: the band shrinks for ``passes`` passes,
+    then the fit is iterated until its inlier set stops changing.
 
-    Returns the normal, offset and the mask of the final inliers.
+    Iterating to a fixed point makes the result independent of small differences in the
+    starting plane (multi-threaded RANSAC does not always return the same model), so the same
+    input gives the same plane. Returns the normal, offset and the final inlier mask.
     """
     mask = np.zeros(len(points), dtype=bool)
-    for i in range(passes):
-        dist = points @ normal + d
-        width = band * (0.6**i)
-        mask = np.abs(dist) < width
-        if mask.sum() < 3:
+    for i in range(max_passes):
+        width = band * (0.6 ** min(i, passes - 1))
+        new_mask = np.abs(points @ normal + d) < width
+        if new_mask.sum() < 3:
             break
+        if i >= passes and np.array_equal(new_mask, mask):
+            break
+        mask = new_mask
         new_normal, new_d = fit_plane(points[mask])
         if new_normal @ normal < 0:
             new_normal, new_d = -new_normal, -new_d
@@ -189,7 +194,8 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     """Level the scene on its dominant support, find every horizontal support, floor at z = 0.
 
     1. Seeded RANSAC proposals on a downsampled copy. The largest one within
-       ``level_max_tilt_deg`` of the loaded up axis is the dominant support; its normal, refitted
+       ``level_max_tilt_deg`` of the loaded up axis (size weighted by cos^2 of the tilt) is the
+       dominant support; its normal, refitted
        on full-resolution points and signed toward the camera for camera views, becomes +Z.
     2. Every horizontal proposal is split into connected xy regions; regions at one height close
        to each other are one support (a table broken up by the objects occluding it), refitted by
@@ -210,7 +216,9 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
             f"{scene.capture.environment_file}: no support plane found (no large flat surface within "
             f"{params.level_max_tilt_deg:.0f} deg of the up axis '{scene.capture.up}'); check --up"
         )
-    normal, d, _ = max(candidates, key=lambda c: len(c[2]))
+    # Largest plane, weighted by cos^2 of its tilt from the loaded up axis: cameras are held
+    # roughly upright, so a big wall seen at a grazing angle does not win over the table.
+    normal, d, _ = max(candidates, key=lambda c: len(c[2]) * c[0][2] ** 2)
     normal, d = _orient_up(normal, d, viewpoint)
     normal, d, _ = refine_plane(scene.points[finite], normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))

@@ -38,7 +38,8 @@ def render_image(model: mujoco.MjModel, data: mujoco.MjData | None = None, *, ca
     if data is None:
         data = mujoco.MjData(model)
         if model.nkey:
-            mujoco.mj_resetDataKeyframe(model, data, 0)
+            initial = [k for k in range(model.nkey) if model.key(k).name == "initial"]
+            mujoco.mj_resetDataKeyframe(model, data, initial[0] if initial else 0)
     mujoco.mj_forward(model, data)
     with mujoco.Renderer(model, height=height, width=width) as renderer:
         if camera is not None:
@@ -53,3 +54,54 @@ def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width
     model = mujoco.MjModel.from_xml_path(str(scene_xml))
     Image.fromarray(render_image(model, camera=camera, width=width, height=height)).save(out_png)
     return out_png
+
+
+PREVIEW_FILE = "preview.png"
+
+
+def _scene_xml(scene: Path) -> Path:
+    from realsim.errors import InputError
+
+    scene = Path(scene)
+    xml = scene / "scene.xml" if scene.is_dir() else scene
+    if not xml.is_file():
+        raise InputError(f"{scene}: no scene.xml here; pass an output folder of `realsim convert`")
+    return xml
+
+
+def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:
+    """Render an output folder (or its scene.xml) at keyframe ``initial`` to ``out_png``.
+
+    ``camera`` names a camera of the model (``capture`` is the capture's viewpoint when the
+    input was a camera view); None is the overview camera. Unknown cameras are an InputError.
+    """
+    from realsim.errors import InputError
+
+    xml = _scene_xml(scene)
+    model = mujoco.MjModel.from_xml_path(str(xml))
+    if camera is not None:
+        names = [model.camera(i).name for i in range(model.ncam)]
+        if camera not in names:
+            raise InputError(f"--camera {camera!r}: the scene has {'cameras ' + ', '.join(names) if names else 'no cameras'}; omit --camera for the overview")
+    width = min(width, model.vis.global_.offwidth)
+    height = min(height, model.vis.global_.offheight)
+    data = mujoco.MjData(model)
+    key = next((k for k in range(model.nkey) if model.key(k).name == "initial"), 0 if model.nkey else None)
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    out_png = Path(out_png)
+    out_png.parent.mkdir(parents=True, exist_ok=True)
+    Image.fromarray(render_image(model, data, camera=camera, width=width, height=height)).save(out_png)
+    return out_png
+
+
+def write_preview(folder: Path, width: int = 640, height: int = 480) -> Path | None:
+    """Write ``folder/preview.png`` (overview at keyframe ``initial``); None if rendering is unavailable.
+
+    Meant for the end of a conversion: a machine without an offscreen GL context (no EGL/OSMesa)
+    still gets its scene, only without the preview.
+    """
+    try:
+        return render_scene(Path(folder), Path(folder) / PREVIEW_FILE, width=width, height=height)
+    except Exception:  # no GL context here: the scene is still valid
+        return None

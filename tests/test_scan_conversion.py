@@ -47,7 +47,7 @@ def test_output_folder_is_complete_and_loads_from_anywhere(converted: dict[str, 
         model = mujoco.MjModel.from_xml_path(str(moved / "scene.xml"))
     finally:
         os.chdir(cwd)
-    assert model.key("initial").id == 0
+    assert model.key("initial").name == "initial"
     record = json.loads((folder / "scene.json").read_text())
     for obj in record["objects"]:
         body = model.body(obj["body"])

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scipy.optimize import linear_sum_assignment
 
+from realsim.metrics import matched_iou
 from realsim.scene import SupportPlane
 from realsim.segment import SegmentParams, SegmentResult, segment_objects
 
@@ -19,17 +19,7 @@ TABLE_Z = 0.75
 
 def matched_ious(pred: np.ndarray, gt: np.ndarray) -> np.ndarray:
     """Per ground-truth object IoU after Hungarian matching (unmatched objects score 0)."""
-    g_ids, p_ids = np.unique(gt[gt > 0]), np.unique(pred[pred > 0])
-    iou = np.zeros((len(g_ids), len(p_ids)))
-    for a, g in enumerate(g_ids):
-        gm = gt == g
-        for b, p in enumerate(p_ids):
-            pm = pred == p
-            iou[a, b] = (gm & pm).sum() / (gm | pm).sum()
-    out = np.zeros(len(g_ids))
-    rows, cols = linear_sum_assignment(-iou)
-    out[rows] = iou[rows, cols]
-    return out
+    return matched_iou(pred, gt)[0]
 
 
 @pytest.fixture(scope="module")
