@@ -1,6 +1,6 @@
 """Support planes: level the capture on its dominant support and find every horizontal surface.
 
-Open3D RANSAC (seeded) proposes planes on a voxel-downsampled copy; each horizontal proposal is
+Seeded RANSAC proposes planes on a voxel-downsampled copy; each horizontal proposal is
 split into connected regions in xy and refitted by least squares on the full-resolution points
 near it, which is what brings the height to millimetres.
 """
@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import open3d as o3d
 import trimesh
 from scipy import ndimage
 from scipy.spatial import ConvexHull, QhullError, cKDTree
@@ -46,38 +45,78 @@ def _finite(points: np.ndarray) -> np.ndarray:
     return np.isfinite(points).all(axis=1)
 
 
-def _downsample(points: np.ndarray, voxel: float) -> o3d.geometry.PointCloud:
-    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
-    return pcd.voxel_down_sample(voxel)
+def voxel_downsample(points: np.ndarray, voxel: float) -> np.ndarray:
+    """Centroid of the points in each occupied voxel, in a deterministic (sorted-key) order."""
+    keys = np.floor(points / voxel).astype(np.int64)
+    _, inverse, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
+    inverse = inverse.reshape(-1)
+    sums = np.zeros((len(counts), 3))
+    for axis in range(3):
+        sums[:, axis] = np.bincount(inverse, weights=points[:, axis], minlength=len(counts))
+    return sums / counts[:, None]
+
+
+def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng: np.random.Generator,
+                 confidence: float = 0.999, batch: int = 128) -> tuple[np.ndarray, float, np.ndarray]:
+    """Seeded RANSAC plane: (unit normal, d, inlier indices) of the plane with most inliers.
+
+    Hypotheses are scored in vectorized batches; sampling stops once ``confidence`` says a
+    better plane is unlikely (the adaptive RANSAC bound), or after ``max_iterations``.
+    """
+    n = len(points)
+    best_count, best_normal, best_d = -1, np.array([0.0, 0.0, 1.0]), 0.0
+    done, needed = 0, max_iterations
+    while done < min(needed, max_iterations):
+        k = min(batch, max_iterations - done)
+        idx = rng.integers(0, n, size=(k, 3))
+        a, b, c = points[idx[:, 0]], points[idx[:, 1]], points[idx[:, 2]]
+        normals = np.cross(b - a, c - a)
+        norms = np.linalg.norm(normals, axis=1)
+        ok = norms > 1e-12
+        if ok.any():
+            normals = normals[ok] / norms[ok, None]
+            offsets = -np.einsum("ij,ij->i", normals, a[ok])
+            counts = (np.abs(points @ normals.T + offsets) < threshold).sum(axis=0)
+            j = int(np.argmax(counts))
+            if counts[j] > best_count:
+                best_count, best_normal, best_d = int(counts[j]), normals[j], float(offsets[j])
+        done += k
+        ratio = best_count / n
+        if 0.0 < ratio < 1.0:
+            needed = int(np.ceil(np.log(1.0 - confidence) / np.log(1.0 - ratio**3)))
+        elif ratio >= 1.0:
+            break
+    inliers = np.flatnonzero(np.abs(points @ best_normal + best_d) < threshold)
+    return best_normal, best_d, inliers
 
 
 def fit_plane(points: np.ndarray) -> tuple[np.ndarray, float]:
     """Least-squares plane (unit normal with +z component >= 0, offset d of n.x + d = 0)."""
     centroid = points.mean(axis=0)
-    _, _, vt = np.linalg.svd(points - centroid, full_matrices=False)
-    normal = vt[-1]
+    centred = points - centroid
+    _, vectors = np.linalg.eigh(centred.T @ centred)  # 3x3 scatter matrix: cheap for any N
+    normal = vectors[:, 0]
     if normal[2] < 0:
         normal = -normal
     return normal, float(-normal @ centroid)
 
 
 def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list[tuple[np.ndarray, float, np.ndarray]]:
-    """Planes found by repeated seeded RANSAC: (normal, d, inlier points) each, largest first."""
-    pcd = _downsample(points, params.voxel_size)
+    """Planes found by repeated seeded RANSAC on a voxel-downsampled copy: (normal, d, inlier
+    points) each, largest first. Deterministic: the same input and seed give the same planes."""
+    remaining = voxel_downsample(points, params.voxel_size)
+    rng = np.random.default_rng(seed)
     proposals = []
-    for i in range(params.max_planes):
-        if len(pcd.points) < params.min_plane_points:
+    for _ in range(params.max_planes):
+        if len(remaining) < params.min_plane_points:
             break
-        o3d.utility.random.seed(seed + i)
-        model, inliers = pcd.segment_plane(params.distance_threshold, 3, params.ransac_iterations)
+        normal, d, inliers = ransac_plane(remaining, params.distance_threshold, params.ransac_iterations, rng)
         if len(inliers) < params.min_plane_points:
             break
-        normal = np.asarray(model[:3], dtype=np.float64)
-        d = float(model[3])
-        norm = np.linalg.norm(normal)
-        normal, d = normal / norm, d / norm
-        proposals.append((normal, d, np.asarray(pcd.points)[inliers]))
-        pcd = pcd.select_by_index(inliers, invert=True)
+        proposals.append((normal, d, remaining[inliers]))
+        keep = np.ones(len(remaining), dtype=bool)
+        keep[inliers] = False
+        remaining = remaining[keep]
     return proposals
 
 
