@@ -328,14 +328,18 @@ def _support_points(pts: np.ndarray, group: np.ndarray, params: PlaneParams) -> 
 
 
 def inside_convex_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
-    """Mask of points inside a counter-clockwise convex polygon grown by ``margin``."""
+    """Mask of points inside a counter-clockwise convex polygon grown by ``margin``.
+
+    One edge at a time, so memory stays O(N) for full-resolution clouds.
+    """
     edges = np.roll(polygon, -1, axis=0) - polygon
     lengths = np.linalg.norm(edges, axis=1)
     keep = lengths > 1e-12
-    edges, starts, lengths = edges[keep], polygon[keep], lengths[keep]
-    rel = xy[:, None, :] - starts[None, :, :]
-    cross = edges[None, :, 0] * rel[:, :, 1] - edges[None, :, 1] * rel[:, :, 0]
-    return np.all(cross / lengths[None, :] >= -margin, axis=1)
+    inside = np.ones(len(xy), dtype=bool)
+    for e, start, length in zip(edges[keep], polygon[keep], lengths[keep]):
+        cross = e[0] * (xy[:, 1] - start[1]) - e[1] * (xy[:, 0] - start[0])
+        inside &= cross / length >= -margin
+    return inside
 
 
 def _drop_object_tops(supports: list, params: PlaneParams) -> list:

@@ -21,6 +21,7 @@ from scipy import ndimage, sparse
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from realsim.planes import inside_convex_polygon
 from realsim.scene import SupportPlane
 
 __all__ = ["SegmentParams", "SegmentResult", "segment_objects"]
@@ -34,6 +35,7 @@ class SegmentParams:
     min_height: float = 0.008  # points closer than this above their support belong to it
     max_height: float = 1.0  # points higher than this above every support are background
     polygon_margin: float = 0.02  # points beyond a support polygon by more than this are background
+    structure_margin: float = 0.03  # points this close under a higher support's polygon are its furniture
     use_assumed_planes: bool = False  # also segment above supports that were not observed
     # neighbourhoods and normals
     normal_window: int = 5  # grid window (pixels) averaging tangent normals, organized clouds
@@ -70,22 +72,12 @@ class SegmentResult:
     resting_on: dict[int, int | None] = field(default_factory=dict)
 
 
-def inside_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
-    """Mask of points inside a counter-clockwise convex polygon grown by ``margin``."""
-    edges = np.roll(polygon, -1, axis=0) - polygon
-    lengths = np.linalg.norm(edges, axis=1)
-    keep = lengths > 1e-12
-    edges, starts, lengths = edges[keep], polygon[keep], lengths[keep]
-    inside = np.ones(len(xy), dtype=bool)
-    for e, s, n in zip(edges, starts, lengths):  # one edge at a time keeps memory at O(N)
-        cross = e[0] * (xy[:, 1] - s[1]) - e[1] * (xy[:, 0] - s[0])
-        inside &= cross / n >= -margin
-    return inside
-
-
 def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: SegmentParams) -> tuple[np.ndarray, np.ndarray]:
     """Per point: index into ``planes`` of the highest support it stands above (within ``min_height``
-    .. ``max_height`` and inside the polygon), -1 for none; and the height above that support (NaN for none)."""
+    .. ``max_height`` and inside the polygon), -1 for none; and the height above that support (NaN for none).
+
+    Points under a higher support (within ``structure_margin`` of its polygon) belong to that
+    support's furniture (legs, sides), not to objects on the lower one."""
     n = len(points)
     support = np.full(n, -1, dtype=np.int64)
     height = np.full(n, np.nan)
@@ -98,7 +90,11 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
         with np.errstate(invalid="ignore"):
             h = z - plane.height
             candidate = np.flatnonzero((h > params.min_height) & (h < params.max_height))
-        candidate = candidate[inside_polygon(points[candidate, :2], plane.polygon, params.polygon_margin)]
+        candidate = candidate[inside_convex_polygon(points[candidate, :2], plane.polygon, params.polygon_margin)]
+        for upper in planes:  # the space under a higher support is its furniture (legs, sides)
+            if upper.observed and upper.height > plane.height + params.min_height:
+                under = inside_convex_polygon(points[candidate, :2], upper.polygon, params.structure_margin)
+                candidate = candidate[~(under & (z[candidate] < upper.height + params.min_height))]
         support[candidate] = i
         height[candidate] = h[candidate]
     return support, height
