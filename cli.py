@@ -57,6 +57,8 @@ def cmd_convert(args: argparse.Namespace) -> int:
         load["up"] = args.up
     if args.no_robot:
         overrides.setdefault("robot", {})["enabled"] = False
+    if args.photo:
+        overrides.setdefault("objects", {}).setdefault("understanding", {})["photo"] = args.photo
     if args.robot_pose:
         overrides.setdefault("robot", {})["pose"] = _parse_pose(args.robot_pose)
     scene = convert(Path(args.source), Path(args.output), pipeline=args.pipeline, seed=args.seed, overrides=overrides,
@@ -74,6 +76,49 @@ def cmd_example(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_export(args: argparse.Namespace) -> int:
+    from realsim.errors import InputError
+    from realsim.export import export_mjcf, export_objects, export_usd
+
+    if args.format == "usd":
+        if args.objects_only:
+            raise InputError("--objects-only works with --format mjcf only")
+        result = export_usd(Path(args.scene), Path(args.output))
+        for warning in result.warnings:
+            print(f"realsim: warning: {warning}", file=sys.stderr)
+        print(f"wrote {result.path} ({len(result.rigid_bodies)} rigid bodies, {len(result.static_colliders)} static colliders)")
+    elif args.objects_only:
+        objects = export_objects(Path(args.scene), Path(args.output))
+        print(f"wrote {len(objects)} object MJCF file(s) to {args.output}: " + ", ".join(str(o.xml) for o in objects))
+    else:
+        export_mjcf(Path(args.scene), Path(args.output))
+        print(f"wrote {Path(args.output) / 'scene.xml'} with its assets/")
+    return 0
+
+
+def cmd_view(args: argparse.Namespace) -> int:
+    from realsim.viewer import serve
+
+    serve(Path(args.scene), host=args.host, port=args.port, splat=Path(args.splat) if args.splat else None,
+          paused=args.paused, duration=args.duration, status_port=args.status_port)
+    return 0
+
+
+def cmd_render(args: argparse.Namespace) -> int:
+    from realsim.render import render_scene
+
+    out = render_scene(Path(args.scene), Path(args.output), camera=args.camera, width=args.width, height=args.height)
+    print(f"wrote {out}")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from realsim.runtime.console import run_cli
+
+    return run_cli(args.scene, args.text, args.program, planner=args.planner, seed=args.seed, video=args.video, log=args.log,
+                   video_fps=args.video_fps)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="realsim", description="Turn a captured real scene into a settled MuJoCo simulation.")
     parser.add_argument("--debug", action="store_true", help="show tracebacks of internal errors")
@@ -87,6 +132,7 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("--up", choices=["+x", "-x", "+y", "-y", "+z", "-z"], help="input up axis (detected by default)")
     convert.add_argument("--robot-pose", metavar="X,Y,YAW", help="place the Panda's base here (m, m, rad) instead of searching")
     convert.add_argument("--no-robot", action="store_true", help="compose the scene without the Panda")
+    convert.add_argument("--photo", metavar="PATH", help="a photo of the scene: Claude names the objects in it (default: photo.* in the capture folder)")
     convert.add_argument("--pipeline", help="pipeline name in pipelines/ or a YAML path (chosen from the input by default)")
     convert.add_argument("--set", action="append", default=[], metavar="STAGE.PARAM=VALUE", help="override a stage parameter")
     convert.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
@@ -97,6 +143,42 @@ def build_parser() -> argparse.ArgumentParser:
     example.add_argument("dest", help="folder to write the capture into")
     example.add_argument("--seed", type=int, default=0)
     example.set_defaults(func=cmd_example)
+
+    export = sub.add_parser("export", help="export a converted scene as self-contained MJCF or as USD")
+    export.add_argument("scene", help="an output folder of `realsim convert`")
+    export.add_argument("--format", choices=["mjcf", "usd"], default="mjcf", help="mjcf (a folder) or usd (a .usda/.usd file)")
+    export.add_argument("-o", "--output", required=True, help="destination folder (mjcf) or file (usd)")
+    export.add_argument("--objects-only", action="store_true", help="mjcf: one MJCF per object, for MjSpec.attach into another scene")
+    export.set_defaults(func=cmd_export)
+
+    view = sub.add_parser("view", help="view a converted scene live in the browser (viser) and send it commands")
+    view.add_argument("scene", help="an output folder of `realsim convert`")
+    view.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
+    view.add_argument("--port", type=int, default=8080, help="port to serve on (default 8080)")
+    view.add_argument("--splat", help="a Gaussian splat .ply shown as a backdrop (found next to the capture by default)")
+    view.add_argument("--paused", action="store_true", help="start with the physics paused")
+    view.add_argument("--duration", type=float, help="stop serving after this many seconds (default: until Ctrl-C)")
+    view.add_argument("--status-port", type=int, help="also serve GET /status (JSON: sim time, frames sent, body poses) on this port")
+    view.set_defaults(func=cmd_view)
+
+    render = sub.add_parser("render", help="render a converted scene at keyframe 'initial' to a PNG")
+    render.add_argument("scene", help="an output folder of `realsim convert` (or its scene.xml)")
+    render.add_argument("-o", "--output", default="preview.png", help="PNG to write (default preview.png)")
+    render.add_argument("--camera", help="a camera of the model, e.g. 'capture' (default: an overview)")
+    render.add_argument("--width", type=int, default=960)
+    render.add_argument("--height", type=int, default=720)
+    render.set_defaults(func=cmd_render)
+
+    run = sub.add_parser("run", help="command the Panda in a converted scene in plain English (or run a program)")
+    run.add_argument("scene", help="an output folder of `realsim convert`")
+    run.add_argument("text", nargs="?", metavar="COMMAND", help='what to do, e.g. "put the mug in the bowl"')
+    run.add_argument("--program", metavar="FILE", help="run this Python program over the primitives instead (same sandbox)")
+    run.add_argument("--planner", choices=["auto", "rules", "claude"], default="auto", help="auto: Claude when ANTHROPIC_API_KEY is set, else rules")
+    run.add_argument("--video", metavar="OUT.mp4", help="record an MP4 (30 fps of simulated time)")
+    run.add_argument("--video-fps", type=float, default=30.0, metavar="FPS", help="frames per simulated second of --video (default 30)")
+    run.add_argument("--log", metavar="PATH", help="JSON log path (default <scene>/runs/run_<n>.json)")
+    run.add_argument("--seed", type=int, default=0, help="seed of the grasp search (default 0)")
+    run.set_defaults(func=cmd_run)
     return parser
 
 

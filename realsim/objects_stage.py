@@ -17,9 +17,10 @@ from realsim.assets import AssetParams, PreparedObject, label_from_path, prepare
 from realsim.cache import DiskCache
 from realsim.compose import safe_name
 from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
-from realsim.physics import ObjectManifest, estimate_manifest
+from realsim.physics import ObjectManifest
 from realsim.planes import primary_support
 from realsim.scene import Scene, SceneObject, SupportPlane
+from realsim.understanding import Understanding, UnderstandingParams
 
 
 @dataclass(frozen=True)
@@ -31,6 +32,7 @@ class ObjectsParams:
     use_cache: bool = True
     progress: bool = True
     drop_clearance: float = 0.002  # m between a placed object's base and its support
+    understanding: UnderstandingParams = field(default_factory=UnderstandingParams)  # labels, photo, Claude manifests
 
 
 def _labels(scene: Scene) -> list[str | None]:
@@ -85,17 +87,28 @@ def _yaw_quat(yaw: float) -> np.ndarray:
 
 
 def prepare_scene_objects(scene: Scene, params: ObjectsParams = ObjectsParams()) -> Scene:
-    """Prepare every object mesh of the capture and place it on the support."""
-    if not scene.object_files:
-        return scene
+    """Prepare every object mesh of the capture and place it on the support.
+
+    Scene understanding (:mod:`realsim.understanding`) names unlabelled scan clusters (photo or
+    shape) and gives the manifests: Claude's when a key is set, else ``estimate_manifest``'s.
+    """
     cache = DiskCache(enabled=params.use_cache)
-    labels = _labels(scene)
-    prepared = prepare_objects(scene.object_files, labels, params.assets, cache, progress=params.progress)
+    understanding = Understanding(scene, params.understanding, cache)
+    understanding.label_scan_objects()
+    prepared: list[PreparedObject] = []
+    if scene.object_files:
+        labels = _labels(scene)
+        prepared = prepare_objects(scene.object_files, labels, params.assets, cache, progress=params.progress)
+    prepared += understanding.photo_primitives(prepared)
+    manifests = understanding.manifests(prepared)
+    understanding.finish()
+    if not prepared:
+        return scene
     first_id = max((o.id for o in scene.objects), default=0) + 1
     names = _unique_names([p.label for p in prepared], first_id)
     new_objects = []
-    for i, (prep, name) in enumerate(zip(prepared, names)):
-        obj = scene_object(prep, estimate_manifest(prep), first_id + i, name)
+    for i, (prep, name, manifest) in enumerate(zip(prepared, names, manifests)):
+        obj = scene_object(prep, manifest, first_id + i, name)
         for warning in prep.warnings:
             scene.warn(f"{prep.source.name}: {warning}")
         new_objects.append(obj)

@@ -12,4 +12,8 @@ if [ -z "${MENAGERIE_ROOT:-}" ] && [ -d ../shared/data/franka_emika_panda ]; the
 fi
 .venv/bin/realsim example examples/generated/tabletop
 .venv/bin/realsim convert examples/generated/tabletop -o out/tabletop
-.venv/bin/python -c "import mujoco; m = mujoco.MjModel.from_xml_path('out/tabletop/scene.xml'); print(f"out/tabletop/scene.xml loads: {m.nbody} bodies, {m.ngeom} geoms, keyframe {m.key(\"initial\").name!r}")"
+.venv/bin/python - <<'PY'
+import mujoco
+m = mujoco.MjModel.from_xml_path("out/tabletop/scene.xml")
+print(f"out/tabletop/scene.xml loads: {m.nbody} bodies, {m.ngeom} geoms, keyframe {m.key('initial').name!r}")
+PY

@@ -9,6 +9,7 @@ across, and down; approaches are straight lines along the grasp axis.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -41,6 +42,7 @@ class RobotParams:
     lifted_min: float = 0.04  # m the object must rise to count as lifted
     place_drop: float = 0.01  # m above the surface at release
     track_tol: float = 0.01  # m tcp error accepted at the end of a straight move
+    push_tilt: float = 0.4  # rad the hand leans back when pushing (fingertips lead)
 
 
 @dataclass
@@ -89,6 +91,9 @@ class Robot:
         self._points: dict[int, np.ndarray] = {}
         self._deadline = np.inf
         self.held: str | None = None
+        self.step_hook: Callable[[mujoco.MjModel, mujoco.MjData], None] | None = None
+        self.hook_every = 1  # physics steps between calls of ``step_hook`` (e.g. a video recorder)
+        self._steps = 0
         if not np.any(data.ctrl[self.act]):  # a model reset without keyframe: hold the current posture
             data.ctrl[self.act] = data.qpos[self.qadr]
             data.ctrl[self.grip_act] = GRIPPER_OPEN_CTRL
@@ -171,6 +176,9 @@ class Robot:
         if self.data.time > self._deadline:
             raise _Budget()
         mujoco.mj_step(self.model, self.data)
+        self._steps += 1
+        if self.step_hook is not None and self._steps % self.hook_every == 0:
+            self.step_hook(self.model, self.data)
 
     def _wait(self, duration: float) -> None:
         end = self.data.time + duration
@@ -492,10 +500,15 @@ class Robot:
         except _Fail:
             pass
         self._wait(0.4)
+        dof = self.model.jnt_dofadr[self.model.body(obj).jntadr[0]]
+        resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < 0.05
+        settle_end = self.data.time + 1.2  # a released object may rock a little before it rests
+        while not resting and self.data.time < settle_end:
+            self._wait(0.05)
+            resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < 0.05
         final, _ = self.object_pose(obj)
         pts = self.object_points(obj)
         centre = (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
-        resting = float(np.abs(self.data.qvel[self.model.jnt_dofadr[self.model.body(obj).jntadr[0]]:][:3]).max()) < 0.05
         values = {"object_xy": centre.tolist(), "target_xy": xy.tolist(), "object_bottom_z": float(pts[:, 2].min()), "surface_z": surface}
         if region is not None and region[0] == "region":
             c, half, r2 = region[1]
@@ -526,9 +539,21 @@ class Robot:
             contact = centre + d * (back - 0.03)
             closing = np.array([-d[1], d[0], 0.0])
             from realsim.robot.grasps import frame_from
-            rot = frame_from(np.array([0, 0, -1.0]), closing)
+            # the closed hand is symmetric: of the two yaws, try the one nearer the current first
+            _, now_rot = self.tcp_pose()
+            # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
+            tilt = rotate_about(np.array([d[1], -d[0], 0.0]), self.params.push_tilt)
+            upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
+            upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
+            rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
             self._gripper(0.0)
-            self._transit(contact + np.array([0, 0, 0.0]), rot, skip=None)
+            for i, rot in enumerate(rots):
+                try:
+                    self._transit(contact + np.array([0, 0, 0.0]), rot, skip=None)
+                    break
+                except _Fail:
+                    if i == len(rots) - 1:
+                        raise
             self._straight(contact + d * (distance + 0.03), rot)
             pos, _ = self.tcp_pose()
             self._straight(pos - d * 0.03 + np.array([0, 0, 0.1]), rot)
@@ -546,56 +571,77 @@ class Robot:
         geometry); the hand grasps it approaching against the opening direction and follows the
         joint's motion (a line for slides, an arc for hinges).
         """
-        def body() -> ActionResult:
-            b = self._body(obj)
-            jid = self.model.body_jntadr[b]
-            if jid < 0 or self.model.jnt_type[jid] not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
-                return ActionResult("open_drawer", False, f"{obj} has no hinge or slide joint")
-            qa = self.model.jnt_qposadr[jid]
-            q0 = float(self.data.qpos[qa])
-            lo, hi = self.model.jnt_range[jid] if self.model.jnt_limited[jid] else (q0, q0 + (0.25 if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE else 1.2))
+        return self._run("open_drawer", lambda: self._articulate("open_drawer", obj, amount, opening=True), max_sim_time)
+
+    def close_drawer(self, obj: str, max_sim_time: float | None = None) -> ActionResult:
+        """Close a drawer or door of body ``obj``: grasp its handle and follow the joint back to its
+        closed end (the lower limit, or 0 when the joint is unlimited)."""
+        return self._run("close_drawer", lambda: self._articulate("close_drawer", obj, None, opening=False), max_sim_time)
+
+    def _articulate(self, name: str, obj: str, amount: float | None, opening: bool) -> ActionResult:
+        b = self._body(obj)
+        jid = self.model.body_jntadr[b]
+        if jid < 0 or self.model.jnt_type[jid] not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
+            return ActionResult(name, False, f"{obj} has no hinge or slide joint")
+        slide = self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE
+        qa = self.model.jnt_qposadr[jid]
+        q0 = float(self.data.qpos[qa])
+        if self.model.jnt_limited[jid]:
+            lo, hi = (float(v) for v in self.model.jnt_range[jid])
+        else:
+            lo, hi = (q0, q0 + (0.25 if slide else 1.2)) if opening else (0.0, q0)
+        if opening:
             target = min(hi, q0 + (amount if amount is not None else (hi - q0)))
-            handle = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] == b and "handle" in self.model.geom(g).name]
-            g = handle[0] if handle else None
-            hpos = self.data.geom_xpos[g].copy() if g is not None else self.data.xpos[b].copy()
-            axis = self.data.xaxis[jid].copy()
-            anchor = self.data.xanchor[jid].copy()
-            if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE:
-                pull = axis / np.linalg.norm(axis)
+        else:
+            target = lo
+            if q0 - lo < 0.005:
+                return ActionResult(name, True, "already closed", values={"closed_by": 0.0, "target": 0.0, "position": q0})
+        handle = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] == b and "handle" in self.model.geom(g).name]
+        g = handle[0] if handle else None
+        hpos = self.data.geom_xpos[g].copy() if g is not None else self.data.xpos[b].copy()
+        axis = self.data.xaxis[jid].copy()
+        anchor = self.data.xanchor[jid].copy()
+        if slide:
+            pull = axis / np.linalg.norm(axis)
+        else:
+            arm = hpos - anchor
+            pull = np.cross(axis, arm)
+            pull /= np.linalg.norm(pull)
+        horiz = np.array([pull[0], pull[1], 0.0])
+        horiz /= max(np.linalg.norm(horiz), 1e-9)
+        from realsim.robot.grasps import frame_from
+        rot = frame_from(-horiz, np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0]))
+        self._gripper(GRIPPER_OPEN_CTRL)
+        self._transit(hpos + horiz * self.params.pregrasp, rot)
+        self._straight(hpos, rot)
+        self._gripper(0.0)
+        steps = 10
+        path, q = [], self.data.ctrl[self.act].copy()
+        for k in range(1, steps + 1):
+            dq = (target - q0) * k / steps
+            if slide:
+                p, r = hpos + pull * dq, rot
             else:
-                arm = hpos - anchor
-                pull = np.cross(axis, arm)
-                pull /= np.linalg.norm(pull)
-            horiz = np.array([pull[0], pull[1], 0.0])
-            horiz /= max(np.linalg.norm(horiz), 1e-9)
-            from realsim.robot.grasps import frame_from
-            rot = frame_from(-horiz, np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0]))
-            self._gripper(GRIPPER_OPEN_CTRL)
-            self._transit(hpos + horiz * self.params.pregrasp, rot)
-            self._straight(hpos, rot)
-            self._gripper(0.0)
-            steps = 10
-            path, q = [], self.data.ctrl[self.act].copy()
-            for k in range(1, steps + 1):
-                dq = (target - q0) * k / steps
-                if self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE:
-                    p, r = hpos + pull * dq, rot
-                else:
-                    rr = rotate_about(axis, dq)
-                    p, r = anchor + rr @ (hpos - anchor), rr @ rot
-                res = self._ik(p, r, q)
-                if not res.converged:
-                    break
-                path.append(res.q)
-                q = res.q
-            self._follow(path)
-            self._gripper(GRIPPER_OPEN_CTRL)
-            pos, r = self.tcp_pose()
-            try:
-                self._straight(pos - r[:, 2] * 0.08)
-            except _Fail:
-                pass
-            opened = float(self.data.qpos[qa]) - q0
+                rr = rotate_about(axis, dq)
+                p, r = anchor + rr @ (hpos - anchor), rr @ rot
+            res = self._ik(p, r, q)
+            if not res.converged:
+                break
+            path.append(res.q)
+            q = res.q
+        self._follow(path)
+        self._gripper(GRIPPER_OPEN_CTRL)
+        pos, r = self.tcp_pose()
+        try:
+            self._straight(pos - r[:, 2] * 0.08)
+        except _Fail:
+            pass
+        now = float(self.data.qpos[qa])
+        if opening:
+            opened = now - q0
             ok = opened >= 0.6 * (target - q0)
-            return ActionResult("open_drawer", ok, "" if ok else f"opened {opened:.3f} of {target - q0:.3f}", values={"opened": opened, "target": target - q0})
-        return self._run("open_drawer", body, max_sim_time)
+            return ActionResult(name, ok, "" if ok else f"opened {opened:.3f} of {target - q0:.3f}", values={"opened": opened, "target": target - q0})
+        closed = q0 - now
+        ok = now - lo <= max(0.01, 0.2 * (q0 - lo))
+        return ActionResult(name, ok, "" if ok else f"still open by {now - lo:.3f} (closed {closed:.3f} of {q0 - lo:.3f})",
+                            values={"closed_by": closed, "target": q0 - lo, "position": now})
