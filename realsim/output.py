@@ -19,6 +19,7 @@ import numpy as np
 
 from realsim.compose import ASSET_DIR
 from realsim.errors import InputError
+from realsim.render import write_preview
 from realsim.scene import Scene
 
 
@@ -116,7 +117,7 @@ def verify_compiles(xml_path: Path) -> mujoco.MjModel:
 
 
 def write_scene(scene: Scene, dest: Path) -> Path:
-    """Write scene.xml, assets/, scene.json and labels.npy to ``dest`` atomically."""
+    """Write scene.xml, assets/, scene.json, labels.npy and preview.png to ``dest`` atomically."""
     with atomic_folder(dest) as tmp:
         assets = tmp / ASSET_DIR
         assets.mkdir()
@@ -128,4 +129,5 @@ def write_scene(scene: Scene, dest: Path) -> Path:
             np.save(tmp / "labels.npy", scene.labels.astype(np.int32))
         (tmp / "scene.json").write_text(json.dumps(scene_record(scene), indent=2) + "\n")
         verify_compiles(tmp / "scene.xml")
+        write_preview(tmp)
     return Path(dest)

@@ -418,8 +418,8 @@ def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> tuple[lis
 
 def _recentre(planes: list[SupportPlane]) -> np.ndarray:
     """Move the planes so the primary support is centred at the xy origin; return the xy offset."""
-    tables = [p for p in planes if p.kind != "floor" and p.observed]
-    primary = max(tables or planes, key=lambda p: p.inlier_count)
+    tables = [p for p in planes if p.kind != "floor"]
+    primary = max(tables or planes, key=lambda p: (p.observed, p.inlier_count, float(np.prod(p.rect_size))))
     offset = -primary.rect_center
     for p in planes:
         p.polygon = p.polygon + offset
@@ -428,6 +428,6 @@ def _recentre(planes: list[SupportPlane]) -> np.ndarray:
 
 
 def primary_support(scene: Scene) -> SupportPlane:
-    """The main work surface: the largest observed non-floor support, else the floor."""
-    tables = [p for p in scene.planes if p.kind != "floor" and p.observed]
-    return max(tables or scene.planes, key=lambda p: p.inlier_count)
+    """The main work surface: the largest non-floor support (observed ones first), else the floor."""
+    tables = [p for p in scene.planes if p.kind != "floor"]
+    return max(tables or scene.planes, key=lambda p: (p.observed, p.inlier_count, float(np.prod(p.rect_size))))

@@ -1,0 +1,222 @@
+"""Export a scene folder as self-contained MJCF: the whole scene, or one MJCF per object.
+
+Both are built with ``mujoco.MjSpec``: the scene spec is loaded, pruned (for one object) and
+its file references are rewritten to a flat ``assets/`` folder next to the written XML, so the
+result compiles from any working directory and after being moved or copied elsewhere.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+from dataclasses import dataclass
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from realsim.compose import ASSET_DIR
+from realsim.errors import InputError
+from realsim.output import atomic_folder, verify_compiles
+from realsim.settle import KEYFRAME, free_joint_bodies
+
+ROBOT_PREFIX = "panda/"
+
+
+@dataclass(frozen=True)
+class ObjectExport:
+    """One object written by :func:`export_objects`."""
+
+    body: str
+    xml: Path  # relative to the export folder
+    mass: float
+    settled_pos: list[float]
+    settled_quat_wxyz: list[float]
+
+
+def scene_xml(folder: Path) -> Path:
+    """The ``scene.xml`` of a realsim output folder (InputError when there is none)."""
+    folder = Path(folder)
+    xml = folder / "scene.xml" if folder.is_dir() else folder
+    if not xml.is_file():
+        raise InputError(f"{folder}: no scene.xml here; pass an output folder of `realsim convert`")
+    return xml
+
+
+def load_spec(folder: Path) -> tuple[mujoco.MjSpec, Path]:
+    """The scene spec of an output folder and the folder its XML lives in."""
+    xml = scene_xml(folder)
+    try:
+        spec = mujoco.MjSpec.from_file(str(xml))
+    except Exception as exc:  # a corrupt or foreign XML is a user error
+        raise InputError(f"{xml}: MuJoCo cannot load it ({str(exc).splitlines()[0]})") from None
+    return spec, xml.parent
+
+
+def _resolve(base: Path, subdir: str, file: str) -> Path:
+    path = Path(file)
+    if path.is_absolute():
+        return path
+    return (base / subdir / path) if subdir else (base / path)
+
+
+def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[str]:
+    """Copy every file the spec refers to into ``dest_dir/assets`` and point the spec there.
+
+    Mesh, skin and texture (2D and cube-face) files are flattened to their base names (a
+    numeric suffix resolves a clash between different files of the same name). Returns the
+    names written.
+    """
+    assets = dest_dir / ASSET_DIR
+    assets.mkdir(parents=True, exist_ok=True)
+    written: dict[str, Path] = {}
+
+    def place(source: Path) -> str:
+        if not source.is_file():
+            raise InputError(f"{source}: an asset the scene refers to is missing; re-run `realsim convert`")
+        source = source.resolve()
+        for name, origin in written.items():
+            if origin == source:
+                return name
+        name, stem, suffix, k = source.name, source.stem, source.suffix, 1
+        while name in written:
+            name, k = f"{stem}_{k}{suffix}", k + 1
+        shutil.copyfile(source, assets / name)
+        written[name] = source
+        return name
+
+    for mesh in spec.meshes:
+        if mesh.file:
+            mesh.file = place(_resolve(src_dir, spec.meshdir, mesh.file))
+    for skin in spec.skins:
+        if skin.file:
+            skin.file = place(_resolve(src_dir, spec.meshdir, skin.file))
+    for tex in spec.textures:
+        if tex.file:
+            tex.file = place(_resolve(src_dir, spec.texturedir, tex.file))
+        faces = list(tex.cubefiles)
+        if any(faces):
+            tex.cubefiles = [place(_resolve(src_dir, spec.texturedir, f)) if f else "" for f in faces]
+    for hfield in spec.hfields:
+        if hfield.file:
+            hfield.file = place(_resolve(src_dir, spec.meshdir, hfield.file))
+    spec.meshdir = ASSET_DIR
+    spec.texturedir = ASSET_DIR
+    return sorted(written)
+
+
+def export_mjcf(source: Path, dest: Path) -> Path:
+    """Write the whole scene of ``source`` as a self-contained MJCF folder at ``dest``.
+
+    The folder holds ``scene.xml``, ``assets/`` (meshes and textures, relative paths) and the
+    source's ``scene.json``; it is written atomically and compiled before it is moved in place.
+    """
+    spec, src_dir = load_spec(source)
+    with atomic_folder(Path(dest)) as tmp:
+        relocate_assets(spec, src_dir, tmp)
+        (tmp / "scene.xml").write_text(spec.to_xml())
+        if (src_dir / "scene.json").is_file():
+            shutil.copyfile(src_dir / "scene.json", tmp / "scene.json")
+        verify_compiles(tmp / "scene.xml")
+    return Path(dest)
+
+
+def object_bodies(model: mujoco.MjModel, robot_prefix: str = ROBOT_PREFIX) -> list[str]:
+    """Names of the scene's movable objects: free bodies that are not part of the robot."""
+    return [name for name, _, _ in free_joint_bodies(model) if not name.startswith(robot_prefix)]
+
+
+def _prune_to_body(spec: mujoco.MjSpec, keep: str) -> mujoco.MjsBody:
+    """Delete everything from ``spec`` except body ``keep`` and the assets its geoms use."""
+    for group in (spec.keys, spec.actuators, spec.sensors, spec.tendons, spec.equalities, spec.excludes, spec.pairs,
+                  spec.texts, spec.numerics, spec.tuples):
+        for element in list(group):
+            spec.delete(element)
+    spec.nkey = 0  # else compiling (to_xml) re-creates the deleted keyframes from <size nkey>
+    world = spec.worldbody
+    for element in [b for b in world.bodies if b.name != keep] + list(world.geoms) + list(world.sites) + list(world.cameras) + list(world.lights):
+        spec.delete(element)
+    for frame in list(world.frames):
+        spec.delete(frame)
+    body = spec.body(keep)
+    used_meshes = {g.meshname for g in body.find_all(mujoco.mjtObj.mjOBJ_GEOM) if g.meshname}
+    used_materials = {g.material for g in body.find_all(mujoco.mjtObj.mjOBJ_GEOM) if g.material}
+    for mesh in list(spec.meshes):
+        if mesh.name not in used_meshes:
+            spec.delete(mesh)
+    for mat in list(spec.materials):
+        if mat.name not in used_materials:
+            spec.delete(mat)
+    used_textures = {t for m in spec.materials for t in m.textures if t}
+    for tex in list(spec.textures):
+        if tex.name not in used_textures:
+            spec.delete(tex)
+    for hfield in list(spec.hfields):
+        spec.delete(hfield)
+    used_classes = {e.classname.name for e in body.find_all(mujoco.mjtObj.mjOBJ_GEOM)} | {body.classname.name}
+    for default in _defaults(spec):
+        if default.name not in used_classes and default.name != "main":
+            try:
+                spec.delete(default)
+            except Exception:  # a parent of a used class
+                pass
+    return body
+
+
+def _defaults(spec: mujoco.MjSpec) -> list[mujoco.MjsDefault]:
+    """Every named default class (children before parents, so they can be deleted in order)."""
+    out = []
+    for text in spec.to_xml().split("<default class=\"")[1:]:
+        name = text.split("\"", 1)[0]
+        found = spec.find_default(name)
+        if found is not None:
+            out.append(found)
+    return out[::-1]
+
+
+def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> list[ObjectExport]:
+    """Write one MJCF per object to ``dest/<body>/<body>.xml`` with its own ``assets/``.
+
+    Each file holds the object's free body (convex collision hulls in group 3, the visual mesh
+    and its material in group 2, the explicit inertia) at the origin, ready for
+    ``MjSpec.attach`` into another scene; ``dest/objects.json`` lists the files with each
+    object's settled pose in the source scene (keyframe ``initial``). Element names are the
+    scene's (unique per object: ``obj<k>_<label>...``); pass ``prefix`` to ``attach`` to add
+    several copies.
+    """
+    spec, src_dir = load_spec(source)
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    if model.nkey:
+        key = next((k for k in range(model.nkey) if model.key(k).name == KEYFRAME), 0)
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_kinematics(model, data)
+    names = object_bodies(model, robot_prefix)
+    if not names:
+        raise InputError(f"{source}: the scene has no free-floating objects to export")
+    written: list[ObjectExport] = []
+    with atomic_folder(Path(dest)) as tmp:
+        for name in names:
+            child = mujoco.MjSpec.from_file(str(scene_xml(source)))
+            body = _prune_to_body(child, name)
+            body.pos = [0.0, 0.0, 0.0]
+            body.quat = [1.0, 0.0, 0.0, 0.0]
+            child.modelname = name
+            child.option = mujoco.MjSpec().option  # the host scene's options win on attach
+            folder = tmp / name
+            relocate_assets(child, src_dir, folder)
+            xml = folder / f"{name}.xml"
+            xml.write_text(child.to_xml())
+            verify_compiles(xml)
+            b = model.body(name).id
+            written.append(ObjectExport(body=name, xml=Path(name) / f"{name}.xml", mass=float(model.body_mass[b]),
+                                        settled_pos=np.round(data.xpos[b], 6).tolist(),
+                                        settled_quat_wxyz=np.round(data.xquat[b], 6).tolist()))
+        index = {
+            "format": "realsim-objects/1",
+            "source": str(scene_xml(source).resolve()),
+            "objects": [{"body": o.body, "xml": str(o.xml), "mass": o.mass, "settled_pos": o.settled_pos,
+                         "settled_quat_wxyz": o.settled_quat_wxyz} for o in written],
+        }
+        (tmp / "objects.json").write_text(json.dumps(index, indent=2) + "\n")
+    return written
