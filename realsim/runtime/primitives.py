@@ -1,0 +1,187 @@
+"""The functions a command program calls, bound to a :class:`Sim`'s robot.
+
+These follow the planner's contract (``prompts/planner_system.md``), which differs from the raw
+:class:`Robot` methods in a few conveniences:
+
+- ``place``/``place_on``/``place_in`` grasp the object first when the hand does not hold it;
+- ``place(obj, pos)``: ``pos`` is the target *centre*; its z is only a hint, the object is
+  lowered onto whatever surface lies below ``pos``'s xy;
+- ``push(obj, direction, distance)`` takes "left"/"right"/"forward"/"back" (world frame, the
+  robot facing +x) or an xy vector;
+- ``move_ee_to(pos, quat=None)``: None points the fingers straight down (keeping the yaw);
+- ``object_pose`` returns plain lists: the live bounding-box centre and the quaternion (w,x,y,z).
+
+Every robot action (including the grasp a place does first) is appended to :attr:`actions`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from realsim.planner.goals import DIRECTIONS
+from realsim.robot.ik import mat_to_quat
+from realsim.robot.robot import ActionResult
+from realsim.runtime.sim import Sim
+
+
+def _vec(value: Any, n: int, what: str) -> np.ndarray:
+    try:
+        arr = np.asarray(value, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise ValueError(f"{what} must be {n} numbers, got {value!r}") from None
+    if arr.size != n or not np.all(np.isfinite(arr)):
+        raise ValueError(f"{what} must be {n} finite numbers, got {value!r}")
+    return arr
+
+
+class ProgramAPI:
+    """The primitives as the sandbox exposes them; ``actions`` records every robot action."""
+
+    def __init__(self, sim: Sim):
+        self.sim = sim
+        self.actions: list[dict[str, Any]] = []
+
+    @property
+    def robot(self):  # the sim may be reset between runs: always the current robot
+        return self.sim.robot
+
+    def functions(self) -> dict[str, Callable[..., Any]]:
+        return {
+            "go_home": self.go_home, "move_ee_to": self.move_ee_to, "open_gripper": self.open_gripper,
+            "close_gripper": self.close_gripper, "grasp": self.grasp, "place": self.place,
+            "place_on": self.place_on, "place_in": self.place_in, "push": self.push,
+            "open_drawer": self.open_drawer, "close_drawer": self.close_drawer,
+            "object_pose": self.object_pose, "object_names": self.object_names,
+        }
+
+    def _record(self, res: ActionResult, call: str) -> ActionResult:
+        self.actions.append({
+            "call": call, "primitive": res.primitive, "success": bool(res.success), "reason": res.reason,
+            "sim_time": round(float(res.sim_time), 4), "attempts": int(res.attempts),
+            "values": _jsonable({k: v for k, v in res.values.items() if k != "log"}),
+        })
+        return res
+
+    def _obj(self, name: Any) -> str:
+        if not isinstance(name, str):
+            raise ValueError(f"an object is named by a string, got {name!r}")
+        names = self.sim.object_names()
+        if name not in names:
+            raise ValueError(f"no object named {name!r}; objects: {', '.join(names)}")
+        return name
+
+    # --- reading ------------------------------------------------------------------------------
+    def object_names(self) -> list[str]:
+        return list(self.sim.object_names())
+
+    def object_pose(self, name: str) -> tuple[list[float], list[float]]:
+        pos, quat = self.sim.object_pose(self._obj(name))
+        return list(pos), list(quat)
+
+    # --- actions ------------------------------------------------------------------------------
+    def go_home(self) -> ActionResult:
+        return self._record(self.robot.go_home(), "go_home()")
+
+    def move_ee_to(self, pos: Sequence[float], quat: Sequence[float] | None = None) -> ActionResult:
+        p = _vec(pos, 3, "pos")
+        if quat is None:
+            _, rot = self.robot.tcp_pose()
+            yaw = float(np.arctan2(rot[1, 0], rot[0, 0]))  # keep the hand's yaw, fingers down
+            down = np.array([[np.cos(yaw), np.sin(yaw), 0.0], [np.sin(yaw), -np.cos(yaw), 0.0], [0.0, 0.0, -1.0]])
+            q = mat_to_quat(down)
+        else:
+            q = _vec(quat, 4, "quat")
+            q = q / np.linalg.norm(q)
+        return self._record(self.robot.move_ee_to(p, q), f"move_ee_to({np.round(p, 3).tolist()})")
+
+    def open_gripper(self) -> ActionResult:
+        return self._record(self.robot.open_gripper(), "open_gripper()")
+
+    def close_gripper(self) -> ActionResult:
+        return self._record(self.robot.close_gripper(), "close_gripper()")
+
+    def grasp(self, obj: str) -> ActionResult:
+        obj = self._obj(obj)
+        if self.robot.held == obj and self.robot.holding(obj):
+            return self._record(ActionResult("grasp", True, "already held", values={"lifted": None}), f"grasp({obj!r})")
+        if self.robot.held and self.robot.held != obj:
+            return self._record(ActionResult("grasp", False, f"the hand holds {self.robot.held}; place it first"), f"grasp({obj!r})")
+        return self._record(self.robot.grasp(obj), f"grasp({obj!r})")
+
+    def _ensure_held(self, obj: str, name: str) -> ActionResult | None:
+        """Grasp ``obj`` unless held; a failed grasp becomes the failure of primitive ``name``."""
+        if self.robot.held == obj and self.robot.holding(obj):
+            return None
+        res = self.grasp(obj)
+        if res.success:
+            return None
+        return ActionResult(name, False, f"could not grasp {obj}: {res.reason}", sim_time=res.sim_time, attempts=res.attempts)
+
+    def place(self, obj: str, pos: Sequence[float]) -> ActionResult:
+        obj = self._obj(obj)
+        p = _vec(pos, 3, "pos")
+        fail = self._ensure_held(obj, "place")
+        if fail is not None:
+            return fail
+        target = np.array([p[0], p[1], np.nan])  # lowered onto whatever lies below
+        return self._record(self.robot.place(obj, target), f"place({obj!r}, {np.round(p, 3).tolist()})")
+
+    def place_on(self, obj: str, target: str) -> ActionResult:
+        obj, target = self._obj(obj), self._obj(target)
+        fail = self._ensure_held(obj, "place_on")
+        if fail is not None:
+            return fail
+        return self._record(self.robot.place_on(obj, target), f"place_on({obj!r}, {target!r})")
+
+    def place_in(self, obj: str, container: str) -> ActionResult:
+        obj, container = self._obj(obj), self._obj(container)
+        fail = self._ensure_held(obj, "place_in")
+        if fail is not None:
+            return fail
+        return self._record(self.robot.place_in(obj, container), f"place_in({obj!r}, {container!r})")
+
+    def push(self, obj: str, direction: Any, distance: float) -> ActionResult:
+        obj = self._obj(obj)
+        if isinstance(direction, str):
+            key = direction.strip().lower()
+            key = {"backward": "back", "backwards": "back", "forwards": "forward"}.get(key, key)
+            if key not in DIRECTIONS:
+                raise ValueError(f"direction {direction!r}: use left, right, forward, back or [dx, dy]")
+            d = np.array(DIRECTIONS[key], float)
+        else:
+            d = _vec(direction, 2, "direction")
+            if np.linalg.norm(d) < 1e-9:
+                raise ValueError("direction must not be zero")
+        dist = float(distance)
+        if not 0.0 < dist <= 1.0:
+            raise ValueError(f"push distance {dist} m is out of range (0 to 1 m)")
+        if self.robot.held:
+            return self._record(ActionResult("push", False, f"the hand holds {self.robot.held}; place it first"), f"push({obj!r})")
+        return self._record(self.robot.push(obj, d, dist), f"push({obj!r}, {direction!r}, {dist:.3f})")
+
+    def open_drawer(self, obj: str) -> ActionResult:
+        obj = self._obj(obj)
+        return self._record(self.robot.open_drawer(obj), f"open_drawer({obj!r})")
+
+    def close_drawer(self, obj: str) -> ActionResult:
+        obj = self._obj(obj)
+        return self._record(self.robot.close_drawer(obj), f"close_drawer({obj!r})")
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _jsonable(value.tolist())
+    if isinstance(value, (np.floating, float)):
+        return round(float(value), 5)
+    if isinstance(value, (np.integer,)):
+        return int(value)
+    if isinstance(value, (np.bool_,)):
+        return bool(value)
+    return value

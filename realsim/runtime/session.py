@@ -1,0 +1,227 @@
+"""Run a sentence or a program in a loaded scene: plan -> check -> run -> goals -> verdict.
+
+Both planners (rules, Claude) and a user's own program go through one path:
+:func:`realsim.planner.sandbox.check`, then :func:`realsim.planner.sandbox.run` with the
+primitives of :class:`ProgramAPI`, then the plan's goals evaluated on the simulation. Every run
+starts from keyframe "initial" and leaves the scene folder untouched; the :class:`RunRecord`
+holds everything that happened and is written as a JSON log.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+from realsim import llm
+from realsim.errors import InputError
+from realsim.planner import make_planner, sandbox
+from realsim.planner.goals import Goal, GoalResult, evaluate_all, prepare_all, verdict
+from realsim.planner.types import Plan
+from realsim.runtime.primitives import ProgramAPI, _jsonable
+from realsim.runtime.sim import Sim
+
+LOG_FORMAT = "realsim-run/1"
+
+
+@dataclass
+class RunRecord:
+    """What one run did and whether its goal holds; ``exit_code`` is the CLI's answer.
+
+    ``verdict`` is "met", "not met" or "goal unknown" (no goals: a user's program, or a sentence
+    the rule parser cannot read). ``error`` is the program's stop message (a failed primitive or
+    a budget), ``program_error`` says it was the program's own fault (not a failed primitive).
+    """
+
+    scene: str
+    command: str | None
+    planner: str
+    program: str
+    seed: int = 0
+    calls: list[dict[str, Any]] = field(default_factory=list)  # the program's primitive calls
+    actions: list[dict[str, Any]] = field(default_factory=list)  # every robot action, with values
+    output: list[str] = field(default_factory=list)  # the program's print() lines
+    error: str | None = None
+    program_error: bool = False
+    goals: list[dict[str, Any]] = field(default_factory=list)
+    verdict: str = "goal unknown"
+    sim_time: float = 0.0
+    wall_time: dict[str, float] = field(default_factory=dict)
+    usage: dict[str, Any] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    objects_before: dict[str, list[float]] = field(default_factory=dict)
+    objects_after: dict[str, list[float]] = field(default_factory=dict)
+    video: dict[str, Any] | None = None
+    log_path: str | None = None
+
+    @property
+    def success(self) -> bool:
+        if self.verdict == "met":
+            return True
+        if self.verdict == "not met":
+            return False
+        # no goal to check: the program must have finished with every primitive succeeding
+        return self.error is None and all(c["success"] for c in self.calls)
+
+    @property
+    def exit_code(self) -> int:
+        if self.program_error and self.command is None:
+            return 2  # a user's program broke a sandbox rule at run time: bad input
+        return 0 if self.success else 1
+
+    def to_json(self) -> dict[str, Any]:
+        d = asdict(self)
+        d = {"format": LOG_FORMAT, **d, "success": self.success, "exit_code": self.exit_code}
+        return _jsonable(d)
+
+    def summary(self) -> str:
+        """Human-readable lines: each call's outcome, the goal check, the verdict."""
+        lines = []
+        for c in self.calls:
+            lines.append(c["text"])
+        if self.output:
+            lines += [f"print: {o}" for o in self.output]
+        if self.error:
+            lines.append(f"stopped: {self.error}")
+        for g in self.goals:
+            lines.append(f"goal [{'met' if g['ok'] else 'NOT met'}] {g['goal']}: {g['measured']}")
+        if not self.goals:
+            lines.append("goal unknown: judged by the primitives' results" if self.command or self.calls else "no goal")
+        wall = self.wall_time.get("total", 0.0)
+        lines.append(f"verdict: {self.verdict}{'' if self.goals else (' (program ' + ('ok' if self.success else 'failed') + ')')}; "
+                     f"{self.sim_time:.1f} s simulated, {wall:.1f} s wall")
+        return "\n".join(lines)
+
+
+def _call_dict(call: sandbox.PrimitiveCall) -> dict[str, Any]:
+    res = call.result
+    d: dict[str, Any] = {"line": call.line, "call": call.call_text(), "text": str(call), "success": call.success}
+    if hasattr(res, "success"):
+        d.update(reason=res.reason, sim_time=round(float(res.sim_time), 4), attempts=int(res.attempts))
+    return d
+
+
+def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, video: str | Path | None,
+             on_call: Any = None, video_fps: float = 30.0) -> RunRecord:
+    """Reset, check, run ``plan.program``, evaluate ``plan.goals``; fills ``record``."""
+    t0 = time.perf_counter()
+    sandbox.check(plan.program, limits=limits)  # nothing moves when this raises
+    sim.reset()
+    api = ProgramAPI(sim)
+    record.objects_before = sim.state()
+    goals: list[Goal] = list(plan.goals)
+    prepare_all(goals, sim)
+    start_time = float(sim.data.time)
+    recorder = None
+    if video is not None:
+        from realsim.runtime.video import VideoRecorder
+
+        recorder = VideoRecorder(sim, video, fps=video_fps)
+        recorder.start()
+    funcs = api.functions()
+    if on_call is not None:
+        funcs = {k: _notify(k, f, on_call) for k, f in funcs.items()}
+    try:
+        report = sandbox.run(plan.program, funcs, limits=limits)
+    finally:
+        if recorder is not None:
+            recorder.close()
+    t_run = time.perf_counter() - t0
+    results: list[GoalResult] = evaluate_all(goals, sim)
+    record.calls = [_call_dict(c) for c in report.calls]
+    record.actions = api.actions
+    record.output = list(report.output)
+    record.error = report.error
+    failed_primitive = bool(report.calls) and not report.calls[-1].success
+    record.program_error = report.error is not None and not failed_primitive
+    record.goals = [{"goal": r.goal, "ok": r.ok, "measured": r.measured} for r in results]
+    record.verdict = verdict(results)
+    record.sim_time = round(float(sim.data.time) - start_time, 4)
+    record.objects_after = sim.state()
+    record.wall_time["run"] = round(t_run, 3)
+    if recorder is not None:
+        record.video = {"path": str(recorder.path), "frames": recorder.frames, "fps": round(recorder.fps, 3),
+                        "size": [recorder.width, recorder.height]}
+    return record
+
+
+def _notify(name: str, fn: Any, on_call: Any) -> Any:
+    def wrapped(*args: Any, **kwargs: Any) -> Any:
+        result = fn(*args, **kwargs)
+        if hasattr(result, "success"):
+            on_call(name, args, result)
+        return result
+
+    wrapped.__name__ = name
+    return wrapped
+
+
+def run_command(sim: Sim, text: str, planner: str = "auto", seed: int | None = None, *,
+                limits: sandbox.Limits = sandbox.Limits(), video: str | Path | None = None,
+                settings: llm.LLMSettings | None = None, on_plan: Any = None, on_call: Any = None,
+                video_fps: float = 30.0) -> RunRecord:
+    """Plan ``text`` with ``planner`` ("auto" | "rules" | "claude") and run it from keyframe
+    "initial". Raises :class:`InputError` for a sentence the planner cannot map to the scene (it
+    lists the objects) and :class:`SandboxViolation` for a rejected program; a plan that runs
+    gives a :class:`RunRecord` (``record.success`` / ``record.exit_code``)."""
+    t0 = time.perf_counter()
+    if seed is not None and seed != sim.seed:
+        sim.seed = seed
+    sim.reset()
+    p = make_planner(planner, settings)
+    usage_before = llm.Usage()
+    usage_before.add(llm.SESSION_USAGE)
+    plan = p.plan(text, sim.object_infos())
+    t_plan = time.perf_counter() - t0
+    record = RunRecord(scene=str(sim.folder), command=text, planner=plan.planner, program=plan.program, seed=sim.seed,
+                       notes=list(plan.notes))
+    record.usage = asdict(plan.usage)
+    record.wall_time["plan"] = round(t_plan, 3)
+    if on_plan is not None:
+        on_plan(plan)
+    _execute(sim, plan, record, limits, video, on_call, video_fps)
+    record.wall_time["total"] = round(time.perf_counter() - t0, 3)
+    return record
+
+
+def run_program(sim: Sim, source: str, seed: int | None = None, *, limits: sandbox.Limits = sandbox.Limits(),
+                video: str | Path | None = None, on_call: Any = None, name: str = "program",
+                video_fps: float = 30.0) -> RunRecord:
+    """Run a user's own program (same primitives, same sandbox) from keyframe "initial".
+
+    Raises :class:`SandboxViolation` (an :class:`InputError` naming the line) before anything
+    moves when the program breaks a rule. There are no goals: the verdict is "goal unknown" and
+    success means the program finished with every primitive succeeding."""
+    t0 = time.perf_counter()
+    if seed is not None:
+        sim.seed = seed
+    plan = Plan(program=source, goals=[], planner=name)
+    record = RunRecord(scene=str(sim.folder), command=None, planner=name, program=source, seed=sim.seed)
+    _execute(sim, plan, record, limits, video, on_call, video_fps)
+    record.wall_time["total"] = round(time.perf_counter() - t0, 3)
+    return record
+
+
+def next_log_path(scene: str | Path) -> Path:
+    """``<scene>/runs/run_<n>.json`` with the first free n (no wall-clock names)."""
+    runs = Path(scene) / "runs"
+    taken = [int(m.group(1)) for p in runs.glob("run_*.json") if (m := re.fullmatch(r"run_(\d+)\.json", p.name))]
+    return runs / f"run_{max(taken, default=0) + 1:04d}.json"
+
+
+def write_log(record: RunRecord, path: str | Path | None = None) -> Path:
+    """Write ``record`` as JSON (atomically) to ``path`` or the next ``<scene>/runs/run_<n>.json``."""
+    out = Path(path) if path is not None else next_log_path(record.scene)
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError(f"cannot write the run log to {out}: {exc.strerror}") from None
+    record.log_path = str(out)
+    tmp = out.with_name(f".{out.name}.tmp")
+    tmp.write_text(json.dumps(record.to_json(), indent=1) + "\n", encoding="utf-8")
+    os.replace(tmp, out)
+    return out
