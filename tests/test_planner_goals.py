@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from realsim.planner import (
@@ -17,6 +19,7 @@ class FakeWorld:
         self.size = {o.name: list(o.size) for o in OBJECTS}
         self.joints = {"obj5_drawer": 0.0}
         self.home = True
+        self.yaw = 0.0
 
     def object_pose(self, name):
         return self.pos[name], (1.0, 0.0, 0.0, 0.0)
@@ -32,6 +35,9 @@ class FakeWorld:
 
     def joint_position(self, name):
         return self.joints[name]
+
+    def robot_yaw(self):
+        return self.yaw
 
 
 def test_inside_and_on() -> None:
@@ -86,3 +92,18 @@ def test_rule_plan_runs_in_the_sandbox() -> None:
     assert [c[0] for c in rec.calls] == ["grasp", "object_pose", "place", "push", "go_home"]
     assert rec.calls[2] == ("place", "obj1_mug", [0.5, -0.05, 0.05])
     assert [g.describe() for g in plan.goals] == ["obj1_mug next to obj2_bowl", "obj4_block moved 5 cm toward (+0.00, +1.00)", "robot at home"]
+
+
+def test_direction_words_follow_the_robot_heading() -> None:
+    """'left' is the robot's left: for a robot facing +y (yaw pi/2) that is world -x."""
+    from realsim.planner.goals import DIRECTIONS, Moved
+
+    world = FakeWorld()
+    world.yaw = math.pi / 2
+    name = OBJECTS[0].name
+    goal = Moved(name, DIRECTIONS["left"], 0.1)
+    goal.prepare(world)
+    world.pos[name][0] -= 0.1
+    assert goal.evaluate(world).ok
+    world.pos[name][0] += 0.2  # the world's +y-left would be wrong: this is robot-right
+    assert not goal.evaluate(world).ok

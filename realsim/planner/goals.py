@@ -18,7 +18,14 @@ DIRECTIONS: dict[str, tuple[float, float]] = {
     "left": (0.0, 1.0),
     "right": (0.0, -1.0),
 }
-"""Named push directions in the world frame (the robot at the origin facing +x)."""
+"""Named push directions in the robot's frame: forward is away from the robot's base, left is
+the robot's left. :func:`direction_in_world` turns them into world xy vectors."""
+
+
+def direction_in_world(direction: Sequence[float], robot_yaw: float) -> tuple[float, float]:
+    """A robot-frame xy direction rotated by the robot base's yaw into the world frame."""
+    c, s = math.cos(robot_yaw), math.sin(robot_yaw)
+    return (c * direction[0] - s * direction[1], s * direction[0] + c * direction[1])
 
 
 class WorldView(Protocol):
@@ -33,6 +40,8 @@ class WorldView(Protocol):
     def at_home(self) -> bool: ...
 
     def joint_position(self, name: str) -> float: ...  # drawer opening (m) or door angle (rad)
+
+    def robot_yaw(self) -> float: ...  # yaw of the robot's base in the world (rad)
 
 
 @dataclass(frozen=True)
@@ -142,7 +151,8 @@ class NextTo(Goal):
 
 @dataclass
 class Moved(Goal):
-    """``obj`` moved about ``distance`` m along the xy ``direction`` (a unit vector)."""
+    """``obj`` moved about ``distance`` m along the xy ``direction`` (a unit vector in the
+    robot's frame: forward is away from the robot)."""
 
     obj: str
     direction: tuple[float, float]
@@ -159,7 +169,7 @@ class Moved(Goal):
         if self.start is None:
             return GoalResult(self.describe(), False, "start position not recorded (prepare() was not called)")
         p = _pos(world, self.obj)
-        ux, uy = self.direction
+        ux, uy = direction_in_world(self.direction, world.robot_yaw())
         dx, dy = p[0] - self.start[0], p[1] - self.start[1]
         along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
         tol = max(0.02, 0.4 * self.distance)

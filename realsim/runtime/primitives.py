@@ -6,8 +6,8 @@ These follow the planner's contract (``prompts/planner_system.md``), which diffe
 - ``place``/``place_on``/``place_in`` grasp the object first when the hand does not hold it;
 - ``place(obj, pos)``: ``pos`` is the target *centre*; its z is only a hint, the object is
   lowered onto whatever surface lies below ``pos``'s xy;
-- ``push(obj, direction, distance)`` takes "left"/"right"/"forward"/"back" (world frame, the
-  robot facing +x) or an xy vector;
+- ``push(obj, direction, distance)`` takes "left"/"right"/"forward"/"back" (as seen from the
+  robot: rotated by its base yaw) or a world-frame xy vector;
 - ``move_ee_to(pos, quat=None)``: None points the fingers straight down (keeping the yaw);
 - ``object_pose`` returns plain lists: the live bounding-box centre and the quaternion (w,x,y,z).
 
@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.planner.goals import DIRECTIONS
+from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.robot import ActionResult
 from realsim.runtime.sim import Sim
@@ -150,7 +150,7 @@ class ProgramAPI:
             key = {"backward": "back", "backwards": "back", "forwards": "forward"}.get(key, key)
             if key not in DIRECTIONS:
                 raise ValueError(f"direction {direction!r}: use left, right, forward, back or [dx, dy]")
-            d = np.array(DIRECTIONS[key], float)
+            d = np.array(direction_in_world(DIRECTIONS[key], self.sim.robot_yaw()), float)
         else:
             d = _vec(direction, 2, "direction")
             if np.linalg.norm(d) < 1e-9:

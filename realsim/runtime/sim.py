@@ -172,6 +172,10 @@ class Sim:
         lo, hi = self.bounds(name)
         return [float(v) for v in hi - lo]
 
+    def robot_yaw(self) -> float:
+        """Yaw of the robot's base (rad): direction words are relative to it."""
+        return float(((self.meta.get("robot") or {}).get("base_pose_xy_yaw") or [0.0, 0.0, 0.0])[2])
+
     def ee_pos(self) -> Sequence[float]:
         pos, _ = self.robot.tcp_pose()
         return [float(v) for v in pos]
