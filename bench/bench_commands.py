@@ -40,7 +40,6 @@ EXTRA = [
 
 # A table 0.55 m deep (x) and 0.8 m wide (y); the Panda at its -x edge facing +x, so "left" is +y.
 SUPPORT = "support: {size: [0.55, 0.8], height: 0.75}\n"
-ROBOT_POSE = (-0.435, 0.0, 0.0)
 SCENES: dict[str, tuple[str, ...]] = {
     "kitchen": ("003_cracker_box", "005_tomato_soup_can", "025_mug", "024_bowl", "011_banana"),
     "pantry": ("006_mustard_bottle", "010_potted_meat_can", "061_foam_brick", "077_rubiks_cube", "040_large_marker"),
@@ -100,8 +99,7 @@ def make_scene(name: str, root: Path) -> Path:
         for f in (YCB / folder).glob("*.png"):
             shutil.copy(f, dest / f.name)
     (cap / "capture.yaml").write_text(SUPPORT)
-    overrides = {"robot": {"pose": ROBOT_POSE, "placement": {"pedestal_drop": -0.75}}}
-    convert(cap, out, seed=0, overrides=overrides)
+    convert(cap, out, seed=0)  # the robot placed by realsim's own reach search
     return out
 
 

@@ -243,8 +243,9 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
         metadata = _read_capture_yaml(path)
         env = _find_environment(path)
         object_files = _object_files(path)
-        if env is None and not object_files:
-            raise InputError(f"{path}: the capture folder holds neither scene.* nor objects/*")
+        photos = [p for p in path.glob("photo.*") if p.suffix.lower() in (".jpg", ".jpeg", ".png", ".webp")]
+        if env is None and not object_files and not photos:
+            raise InputError(f"{path}: the capture folder holds neither scene.*, objects/* nor photo.*")
     else:
         env = path
     units = params.units or metadata.get("units")

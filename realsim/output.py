@@ -103,6 +103,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
         "settle": scene.settle_report,
         "timings_s": scene.timings,
         "warnings": scene.warnings,
+        "llm": scene.llm,
     })
 
 

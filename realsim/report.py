@@ -31,4 +31,8 @@ def print_conversion(scene: Scene, dest: Path, console: Console) -> None:
         console.print(f"[yellow]warning:[/yellow] {w}")
     timings = ", ".join(f"{k} {v:.2f}s" for k, v in scene.timings.items())
     console.print(f"timings: {timings}")
+    if scene.llm:
+        llm = scene.llm
+        console.print(f"claude ({llm['model']}): {llm['calls']} call(s), {llm['cache_hits']} cached, "
+                      f"{llm['input_tokens']} + {llm['output_tokens']} tokens, ~${llm['cost_usd']:.4f}, {len(llm['failures'])} failed")
     console.print(f"wrote {dest}/scene.xml (keyframe 'initial'), scene.json, labels.npy, assets/")

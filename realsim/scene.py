@@ -102,6 +102,7 @@ class Scene:
     keyframe_qpos: np.ndarray | None = None
     settle_report: dict[str, Any] = field(default_factory=dict)
     robot: dict[str, Any] | None = None  # where the Panda stands, when the robot stage ran
+    llm: dict[str, Any] | None = None  # Claude calls, tokens, cost, failures (realsim.understanding), when used
 
     @property
     def floor_height(self) -> float:

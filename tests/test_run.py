@@ -21,7 +21,6 @@ from realsim.errors import InputError
 from realsim.planner.sandbox import SandboxViolation
 from realsim.runtime import Sim, probe, run_command, run_program
 
-ROBOT = {"pose": (-0.435, 0.0, 0.0), "placement": {"pedestal_drop": -0.75}}  # Panda at the -x edge, facing +x
 
 
 @pytest.fixture(scope="session")
@@ -41,7 +40,7 @@ def scene(tmp_path_factory: pytest.TempPathFactory) -> Path:
             shutil.copy(f, dest / f.name)
     (cap / "capture.yaml").write_text("support: {size: [0.55, 0.8], height: 0.75}\n")
     out = root / "mugbowl"
-    convert(cap, out, seed=0, overrides={"robot": ROBOT})
+    convert(cap, out, seed=0)
     return out
 
 
