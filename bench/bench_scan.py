@@ -41,7 +41,7 @@ def run(repeat: int) -> None:
             times = []
             for r in range(repeat):
                 started = time.perf_counter()
-                scene = convert(path, Path(tmp) / f"{name}_{r}")
+                convert(path, Path(tmp) / f"{name}_{r}")
                 times.append(time.perf_counter() - started)
             out = Path(tmp) / f"{name}_0"
             record = json.loads((out / "scene.json").read_text())

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from realsim.assets import AssetParams, PreparedObject, label_from_path, prepare_objects
+from realsim.assets import AssetParams, PreparedObject, prepare_objects
 from realsim.cache import DiskCache
 from realsim.compose import safe_name
 from realsim.layout import LayoutParams, declared_support, footprint, place_on_support

@@ -47,9 +47,11 @@ def _finite(points: np.ndarray) -> np.ndarray:
 
 def voxel_downsample(points: np.ndarray, voxel: float) -> np.ndarray:
     """Centroid of the points in each occupied voxel, in a deterministic (sorted-key) order."""
-    keys = np.floor(points / voxel).astype(np.int64)
-    _, inverse, counts = np.unique(keys, axis=0, return_inverse=True, return_counts=True)
-    inverse = inverse.reshape(-1)
+    cells = np.floor(points / voxel).astype(np.int64)
+    cells -= cells.min(axis=0)
+    span = cells.max(axis=0) + 1
+    keys = (cells[:, 0] * span[1] + cells[:, 1]) * span[2] + cells[:, 2]  # one int64 per voxel
+    _, inverse, counts = np.unique(keys, return_inverse=True, return_counts=True)
     sums = np.zeros((len(counts), 3))
     for axis in range(3):
         sums[:, axis] = np.bincount(inverse, weights=points[:, axis], minlength=len(counts))
@@ -57,12 +59,16 @@ def voxel_downsample(points: np.ndarray, voxel: float) -> np.ndarray:
 
 
 def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng: np.random.Generator,
-                 confidence: float = 0.999, batch: int = 128) -> tuple[np.ndarray, float, np.ndarray]:
-    """Seeded RANSAC plane: (unit normal, d, inlier indices) of the plane with most inliers.
+                 confidence: float = 0.999, batch: int = 128, score_points: int = 4000) -> tuple[np.ndarray, float, np.ndarray]:
+    """Seeded RANSAC plane: (unit normal, d, inlier indices into ``points``) with most inliers.
 
-    Hypotheses are scored in vectorized batches; sampling stops once ``confidence`` says a
-    better plane is unlikely (the adaptive RANSAC bound), or after ``max_iterations``.
+    Hypotheses are scored in vectorized batches on a random subset of ``score_points`` points;
+    sampling stops once ``confidence`` says a better plane is unlikely (the adaptive RANSAC
+    bound), or after ``max_iterations``. The inliers of the winner are taken from all points.
     """
+    full = points
+    if len(points) > score_points:
+        points = points[rng.choice(len(points), score_points, replace=False)]
     n = len(points)
     best_count, best_normal, best_d = -1, np.array([0.0, 0.0, 1.0]), 0.0
     done, needed = 0, max_iterations
@@ -86,7 +92,7 @@ def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng:
             needed = int(np.ceil(np.log(1.0 - confidence) / np.log(1.0 - ratio**3)))
         elif ratio >= 1.0:
             break
-    inliers = np.flatnonzero(np.abs(points @ best_normal + best_d) < threshold)
+    inliers = np.flatnonzero(np.abs(full @ best_normal + best_d) < threshold)
     return best_normal, best_d, inliers
 
 

@@ -6,6 +6,7 @@ subpackages ``realsim.pipelines``, ``realsim.size_tables`` and ``realsim.prompts
 
 from __future__ import annotations
 
+from functools import lru_cache
 from importlib import resources
 from pathlib import Path
 
@@ -20,3 +21,15 @@ def data_dir(name: str) -> Path:
     if source.is_dir():
         return source
     return Path(str(resources.files(f"realsim.{name}")))
+
+
+@lru_cache(maxsize=32)
+def load_prompt(name: str) -> tuple[str, str]:
+    """(version, text) of ``prompts/<name>``, whose first line reads ``version: ...``."""
+    from realsim.errors import InputError
+
+    raw = (data_dir("prompts") / name).read_text(encoding="utf-8")
+    first, _, rest = raw.partition("\n")
+    if not first.startswith("version:"):
+        raise InputError(f"prompts/{name} must start with a 'version:' line")
+    return first.split(":", 1)[1].strip(), rest.strip() + "\n"

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 
-import pytest
 
 from realsim.planner import (
     AtHome, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, On, RulePlanner, evaluate_all, prepare_all, run, verdict,

@@ -12,7 +12,7 @@ import trimesh
 from realsim.compose import compose_scene
 from realsim.errors import InputError
 from realsim.output import write_scene
-from realsim.robot import ArmIK, Robot, add_robot, choose_robot_pose
+from realsim.robot import Robot, add_robot, choose_robot_pose
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.model import BASE_FOOTPRINT, HOME_ARM, menagerie_panda_dir
 from realsim.scene import CaptureInfo, Scene, SceneObject, SupportPlane

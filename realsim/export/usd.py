@@ -21,7 +21,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from realsim.compose import COLLISION_GROUP, VISUAL_GROUP
+from realsim.compose import VISUAL_GROUP
 from realsim.errors import InputError
 from realsim.export.mjcf import ROBOT_PREFIX, load_spec, object_bodies, _resolve
 from realsim.settle import KEYFRAME
@@ -213,7 +213,7 @@ def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> Us
     and renamed into place.
     """
     pxr = _pxr()
-    Gf, Sdf, Usd, UsdGeom, UsdPhysics = pxr.Gf, pxr.Sdf, pxr.Usd, pxr.UsdGeom, pxr.UsdPhysics
+    Gf, Usd, UsdGeom, UsdPhysics = pxr.Gf, pxr.Usd, pxr.UsdGeom, pxr.UsdPhysics
     dest = Path(dest)
     if dest.suffix.lower() not in (".usda", ".usd", ".usdc"):
         raise InputError(f"{dest}: a USD file name must end in .usda, .usd or .usdc")

@@ -11,14 +11,13 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 from realsim import llm
 from realsim.errors import InputError, RealsimError
 from realsim.planner import rules, sandbox
 from realsim.planner.goals import Goal
 from realsim.planner.types import ObjectInfo, Plan
-from realsim.resources import data_dir
+from realsim.resources import load_prompt
 
 SYSTEM_PROMPT = "planner_system.md"
 REPAIR_PROMPT = "planner_repair.md"
@@ -28,16 +27,6 @@ class PlanningError(RealsimError):
     """Claude's program could not be made valid: the task fails (exit code 1)."""
 
     exit_code = 1
-
-
-@lru_cache(maxsize=8)
-def load_prompt(name: str) -> tuple[str, str]:
-    """(version, text) of ``prompts/<name>``; the first line reads ``version: ...``."""
-    raw = (data_dir("prompts") / name).read_text(encoding="utf-8")
-    first, _, rest = raw.partition("\n")
-    if not first.startswith("version:"):
-        raise InputError(f"prompts/{name} must start with a 'version:' line")
-    return first.split(":", 1)[1].strip(), rest.strip() + "\n"
 
 
 def scene_text(objects: list[ObjectInfo]) -> str:

@@ -25,6 +25,9 @@ from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, RobotHandle
 from realsim.scene import Scene, SceneObject
 
 TOP_DOWN = np.array([0.0, 1.0, 0.0, 0.0])  # tcp z axis pointing down (w, x, y, z)
+SHOULDER_HEIGHT = 0.333  # m, joint 2 above link0
+MAX_REACH = 0.86  # m from the shoulder to the tcp when stretched (Panda datasheet reach 855 mm + tcp)
+SCORING_IK = IKParams(max_iters=120, dls_iters=80)  # ranking needs a verdict, not a polished solution
 COMFORT_DISTANCE = 0.5  # m, horizontal base-to-target distance the Panda reaches best from above
 COMFORT_BAND = 0.3  # m either side of it
 
@@ -69,11 +72,17 @@ def candidate_poses(scene: Scene, params: PlacementParams = PlacementParams()) -
     return out
 
 
-def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = IKParams()) -> tuple[float, int, float]:
-    """(score, reachable count, mean manipulability) of a base pose over hover targets."""
+def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK) -> tuple[float, int, float]:
+    """(score, reachable count, mean manipulability) of a base pose over hover targets.
+
+    Targets beyond the arm's reach sphere around the shoulder count as unreachable without IK.
+    """
     ik = ArmIK(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])), ik_params)
+    shoulder = np.array([pose[0], pose[1], base_z + SHOULDER_HEIGHT])
     reach, manip = 0, []
     for t in targets:
+        if np.linalg.norm(np.asarray(t) - shoulder) > MAX_REACH:
+            continue
         res = ik.solve(t, TOP_DOWN)
         if res.converged:
             reach += 1
