@@ -70,7 +70,7 @@ def main() -> None:
         iou = volume_iou(p.hulls, p.solid)
         man = estimate_manifest(p)
         d = drop_test(p, man, height=0.02)
-        kind = "cavity" if p.open_cavity else "solid"
+        kind = "cavity" if p.open_container else "solid"
         print(f"{p.label:18s} {len(p.hulls):5d} {p.decomposition.get('method', ''):>12s} {p.timings.get('decompose', 0):6.1f} "
               f"{np.percentile(a, 95) * 1e3:7.2f}mm {np.percentile(b, 95) * 1e3:7.2f}mm {iou:6.3f}{'*' if kind == 'cavity' else ' '} "
               f"{d['sinking'] * 1e3:13.2f} {d['drift'] * 1e3:8.2f} {d['tilt_deg']:5.1f}{'' if d['finite'] else ' EXPLODED'}")
@@ -78,7 +78,7 @@ def main() -> None:
         if ref:
             errs.append(abs(man.mass_kg - ref) / ref)
         rows_mass.append((p.label, man.mass_kg, man.sources["mass_kg"], ref, man.category, man.material_class, p.inertia_model))
-    print("(* open cavity: the scan shows the walls only, IoU of thin walls is not a fidelity measure)")
+    print("(* open container in the size table: its volume is walls, IoU of thin walls is not a fidelity measure)")
     print(f"\n## Offline mass estimates\n{'object':18s} {'est kg':>8s} {'source':>9s} {'official':>9s} {'rel err':>8s}  category / material / inertia")
     for label, m, src, ref, cat, mat, im in rows_mass:
         err = f"{abs(m - ref) / ref * 100:7.0f}%" if ref else "     n/a"

@@ -188,8 +188,12 @@ def _merge_hulls(parts: list[np.ndarray], params: AssetParams) -> list[np.ndarra
     return [alive[k][0] for k in sorted(alive)]
 
 
-def decompose(solid: trimesh.Trimesh, params: AssetParams) -> tuple[list[trimesh.Trimesh], dict]:
-    """Convex parts of ``solid`` (object frame) and a small report."""
+def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool | None = None) -> tuple[list[trimesh.Trimesh], dict]:
+    """Convex parts of ``solid`` (object frame) and a small report.
+
+    ``open_container`` (from the size table) says the mesh shows a cavity, so only surface
+    distance (not volume IoU) is checked; None guesses it from the solid / hull volume ratio.
+    """
     info: dict = {}
     hull = make_hull(solid.vertices, params.min_hull_thickness, 10**6)
     ratio = solid.volume / hull.volume if hull is not None and hull.volume > 0 else 0.0
@@ -206,7 +210,7 @@ def decompose(solid: trimesh.Trimesh, params: AssetParams) -> tuple[list[trimesh
     dec = decimate(solid, params.decimate_faces)
     pre = "off" if dec.is_watertight else params.preprocess_mode
     info["decimated_faces"] = len(dec.faces)
-    cavity = ratio < 0.6  # walls only: IoU is not meaningful, surface distance is
+    cavity = open_container if open_container is not None else ratio < 0.6  # walls only: IoU is not meaningful
     hulls: list[trimesh.Trimesh] = []
     threshold = params.threshold
     for attempt in range(1 + params.refine_attempts):

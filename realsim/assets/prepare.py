@@ -48,6 +48,13 @@ class PreparedObject:
     category: str | None = None
 
     @property
+    def open_container(self) -> bool:
+        """True when the size table calls the object an open container (mug, bowl, pitcher):
+        its volume is walls, so hull fidelity is judged by surface distance, not volume IoU."""
+        entry = lookup(self.label)
+        return entry is not None and entry.category.form == "open_container"
+
+    @property
     def open_cavity(self) -> bool:
         """True when the geometry itself shows a cavity (walls only: mugs, bowls as scanned)."""
         return self.convex_hull_volume > 0 and self.volume / self.convex_hull_volume < OPEN_CAVITY_RATIO
@@ -94,21 +101,26 @@ def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetPara
     warns += [f"{label}: {n}" for n in notes if "could not" in n]
     t["solid"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    hulls, info = decompose(solid, params)
+    category = lookup(label)
+    hulls, info = decompose(solid, params, open_container=category.category.form == "open_container" if category else None)
     t["decompose"] = time.perf_counter() - t0
     hull_vol = float(solid.convex_hull.volume)
     return dict(scale=scale, offset=offset, solid=solid, method=method, notes=notes, warnings=warns, hulls=hulls, info=info, hull_volume=hull_vol, timings=t)
 
 
+PREPARE_VERSION = 2  # bump when the preparation logic changes: old cache entries stop matching
+
+
 def _file_key(path: Path, label: str | None, params: AssetParams) -> str | None:
-    """Key of the whole prepared object from the file bytes (+ MTL/texture), label and params."""
+    """Key of the whole prepared object from the file bytes (+ MTL/texture), label, params and
+    :data:`PREPARE_VERSION`."""
     from realsim.assets.loading import texture_file
 
     path = Path(path)
     if not path.is_file():
         return None
     files = [path] + [f for f in path.parent.glob("*.mtl")][:1] + ([t] if (t := texture_file(path)) else [])
-    return cache_key("assets.prepared_file", files=files, params={"label": label, "params": params})
+    return cache_key("assets.prepared_file", files=files, params={"label": label, "params": params, "version": PREPARE_VERSION})
 
 
 def prepare_object(path: Path, label: str | None = None, params: AssetParams = AssetParams(), cache: DiskCache | None = None) -> PreparedObject:
@@ -136,7 +148,7 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
     cache = cache if cache is not None else DiskCache()
     v = np.ascontiguousarray(mesh.vertices, dtype=np.float64)
     f = np.ascontiguousarray(mesh.faces, dtype=np.int64)
-    key = cache_key("assets.prepare", data=v.tobytes() + f.tobytes() + label.encode(), params=params)
+    key = cache_key("assets.prepare", data=v.tobytes() + f.tobytes() + label.encode(), params={"params": params, "version": PREPARE_VERSION})
     t0 = time.perf_counter()
     heavy = cache.get(key)
     hit = heavy is not None
