@@ -58,10 +58,16 @@ def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tupl
     return data.time - start
 
 
-def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME) -> dict[str, Any]:
-    """Reset to ``key``, simulate ``duration`` s and report each free body's displacement."""
+def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME,
+               state: tuple[np.ndarray, np.ndarray] | None = None) -> dict[str, Any]:
+    """Reset to ``key`` (or to ``state`` = (qpos, ctrl)), simulate ``duration`` s and report each
+    free body's displacement."""
     data = mujoco.MjData(model)
-    mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
+    if state is None:
+        mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
+    else:
+        data.qpos[:] = state[0]
+        data.ctrl[:] = state[1]
     mujoco.mj_forward(model, data)
     free = free_joint_bodies(model)
     start = {name: data.qpos[q : q + 3].copy() for name, q, _ in free}
@@ -94,11 +100,13 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     for key in list(spec.keys):
         if key.name == KEYFRAME:
             spec.delete(key)
-    key = spec.add_key(name=KEYFRAME, qpos=np.round(qpos, 6).tolist(), qvel=np.zeros(model.nv).tolist())
+    key_qpos, key_ctrl = np.round(qpos, 6), np.round(data.ctrl, 6)
+    key = spec.add_key(name=KEYFRAME, qpos=key_qpos.tolist(), qvel=np.zeros(model.nv).tolist())
     if model.nu:
-        key.ctrl = np.round(data.ctrl, 6).tolist()
-    model = spec.compile()
-    report = rest_check(model, params.check_time)
+        key.ctrl = key_ctrl.tolist()
+    # The same state the keyframe holds, checked on the model already compiled (the written
+    # scene.xml is compiled again by the writer).
+    report = rest_check(model, params.check_time, state=(key_qpos, key_ctrl))
     report["settle_time"] = settle_time
     report["moved_during_settling"] = {}
     for obj in scene.objects:

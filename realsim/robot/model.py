@@ -175,7 +175,6 @@ def attach_robot(
         ctrl[model.actuator(prefix + name).id] = value
     ctrl[model.actuator(prefix + GRIPPER_ACTUATOR).id] = GRIPPER_OPEN_CTRL
     spec.add_key(name="home", qpos=qpos.tolist(), qvel=np.zeros(model.nv).tolist(), ctrl=ctrl.tolist())
-    spec.compile()
     return RobotHandles(
         prefix=prefix,
         base_body=prefix + "link0",
