@@ -40,7 +40,7 @@ class PlacementParams:
     side_offsets: tuple[float, ...] = (-0.3, -0.15, 0.0, 0.15, 0.3)  # fraction of the side length
     pedestal_drop: float = 0.0  # m, link0 this far below the table top
     hover: float = 0.05  # m above an object's top for the scored IK targets
-    ik_candidates: int = 4  # poses scored with IK after the cheap reach ranking
+    ik_candidates: int = 8  # poses scored with IK after the cheap reach ranking
 
 
 def graspable_objects(scene: Scene) -> list[SceneObject]:
