@@ -45,6 +45,7 @@ def _parse_pose(text: str) -> tuple[float, float, float]:
 def cmd_convert(args: argparse.Namespace) -> int:
     from rich.console import Console
 
+    from realsim.errors import InputError
     from realsim.pipeline import convert
     from realsim.report import print_conversion
 
@@ -61,7 +62,13 @@ def cmd_convert(args: argparse.Namespace) -> int:
         overrides.setdefault("objects", {}).setdefault("understanding", {})["photo"] = args.photo
     if args.robot_pose:
         overrides.setdefault("robot", {})["pose"] = _parse_pose(args.robot_pose)
-    scene = convert(Path(args.source), Path(args.output), pipeline=args.pipeline, seed=args.seed, overrides=overrides,
+    if args.text is not None:
+        if not args.text.strip():
+            raise InputError('--text is empty: describe the scene, e.g. --text "a table with a mug and two soda cans"')
+        load["text"] = args.text
+    elif args.source is None:
+        raise InputError('convert needs a capture (file or folder) or --text "a table with a mug"')
+    scene = convert(Path(args.source) if args.source else None, Path(args.output), pipeline=args.pipeline, seed=args.seed, overrides=overrides,
                     console=console if args.verbose else None)
     if not args.quiet:
         print_conversion(scene, Path(args.output), Console())
@@ -125,7 +132,8 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
 
     convert = sub.add_parser("convert", help="convert a capture (file or folder) into a MuJoCo scene folder")
-    convert.add_argument("source", help="a point cloud / mesh file, or a capture folder (scene.*, objects/*, capture.yaml)")
+    convert.add_argument("source", nargs="?", help="a point cloud / mesh file, or a capture folder (scene.*, objects/*, capture.yaml); optional with --text")
+    convert.add_argument("--text", metavar="DESCRIPTION", help='build the scene from a description, e.g. "a kitchen table with a mug and two soda cans"')
     convert.add_argument("-o", "--output", required=True, help="output folder (replaced atomically)")
     convert.add_argument("--seed", type=int, default=0, help="seed of every random source (default 0)")
     convert.add_argument("--units", choices=["m", "cm", "mm"], help="input units (detected by default)")

@@ -10,6 +10,10 @@ GLB/glTF, sampled to points) — or a folder holding ``scene.*`` (the environmen
                         # (object id = label // 10 for labels >= 20, the mOSD convention),
                         # or of object files by file stem
     support_height: 0.75  # assumed height of the lowest support when no floor is seen
+    text: "a table with a mug and two soda cans"  # a scene from a description (the `text` pipeline)
+
+A scene can also come from a description alone: ``load_capture(None, LoadParams(text=...))``
+(the CLI's ``--text``) or a ``.txt`` file holding it.
 
 Loading converts units and the up axis; the `level` stage then aligns gravity with the
 dominant support. Both transforms are composed into ``capture.input_to_world``.
@@ -41,6 +45,7 @@ class LoadParams:
     up: str | None = None  # override up-axis detection
     mesh_sample_points: int = 200_000  # points sampled from an environment mesh
     mm_extent_threshold: float = 30.0  # a scene larger than this many units is in millimetres
+    text: str | None = None  # a scene description (``--text``): wins over capture.yaml's ``text:``
 
 
 @dataclass
@@ -228,15 +233,35 @@ def _object_files(folder: Path) -> list[Path]:
     return files
 
 
-def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
+def _text_capture(text: str, source: Path) -> Scene:
+    """A capture made of a description only (realsim.text builds its objects)."""
+    capture = CaptureInfo(source=source, kind="text", environment_file=None, units="m", up="+z", units_detected=False,
+                          up_detected=False, input_to_world=np.eye(4), metadata={"text": text})
+    return Scene(capture=capture)
+
+
+def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
     """Read a capture file or folder into a Scene in a gravity-agnostic Z-up frame.
 
     Units and up axis come from ``params`` (the CLI's ``--units``/``--up``), then
     ``capture.yaml``, then detection.
     """
+    if path is None:
+        if not params.text:
+            raise InputError("no capture given: pass a capture file or folder, or --text \"a table with a mug\"")
+        scene = _text_capture(params.text, Path("text"))
+        scene.seed = seed
+        return scene
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: no such file or folder")
+    if path.is_file() and path.suffix.lower() == ".txt":
+        text = params.text or path.read_text(errors="replace").strip()
+        if not text:
+            raise InputError(f"{path}: the description file is empty")
+        scene = _text_capture(text, path)
+        scene.seed = seed
+        return scene
     metadata: dict[str, Any] = {}
     object_files: list[Path] = []
     if path.is_dir():
@@ -244,7 +269,9 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
         env = _find_environment(path)
         object_files = _object_files(path)
         photos = [p for p in path.glob("photo.*") if p.suffix.lower() in (".jpg", ".jpeg", ".png", ".webp")]
-        if env is None and not object_files and not photos:
+        if params.text:
+            metadata["text"] = params.text
+        if env is None and not object_files and not photos and not metadata.get("text"):
             raise InputError(f"{path}: the capture folder holds neither scene.*, objects/* nor photo.*")
     else:
         env = path
@@ -257,7 +284,7 @@ def load_capture(path: Path, params: LoadParams = LoadParams(), seed: int = 0) -
 
     scene_points = scene_colors = annotations = None
     grid_shape = None
-    kind = "objects"
+    kind = "text" if metadata.get("text") and env is None and not object_files else "objects"
     units_detected = up_detected = False
     transform = np.eye(4)
     if env is not None:

@@ -96,10 +96,29 @@ def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np
     return obj.mass, obj.com, obj.inertia
 
 
-def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, assets: dict[str, bytes]) -> mujoco.MjsBody:
-    """Add one free body: convex collision meshes (group 3), a visual mesh (group 2), inertia."""
-    body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
-    body.add_freejoint(name=f"{obj.name}_joint")
+JOINT_TYPES = {"slide": mujoco.mjtJoint.mjJNT_SLIDE, "hinge": mujoco.mjtJoint.mjJNT_HINGE}
+
+
+def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, assets: dict[str, bytes],
+               parent: mujoco.MjsBody | None = None, joint: dict | None = None) -> mujoco.MjsBody:
+    """Add one free body: convex collision meshes (group 3), a visual mesh (group 2), inertia.
+
+    With ``parent`` and ``joint`` (``{"type": "slide"|"hinge", "axis", "range", "pos", "damping"}``,
+    in the object frame) the body is instead a child of ``parent`` on that joint (a drawer in
+    its cabinet); its world pose is still ``obj.position``/``obj.quat``.
+    """
+    if parent is None or joint is None:
+        body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
+        body.add_freejoint(name=f"{obj.name}_joint")
+    else:
+        p_rot = Rotation.from_quat(np.roll(np.asarray(parent.quat, dtype=np.float64), -1))  # (w,x,y,z) -> scipy (x,y,z,w)
+        c_rot = Rotation.from_quat(np.roll(obj.quat, -1))
+        rel_pos = p_rot.inv().apply(obj.position - np.asarray(parent.pos, dtype=np.float64))
+        rel_xyzw = (p_rot.inv() * c_rot).as_quat()
+        body = parent.add_body(name=obj.name, pos=rel_pos.tolist(), quat=[rel_xyzw[3], *rel_xyzw[:3]])
+        body.add_joint(name=f"{obj.name}_joint", type=JOINT_TYPES[joint["type"]], axis=list(joint["axis"]),
+                       pos=list(joint.get("pos", [0.0, 0.0, 0.0])), range=list(joint["range"]),
+                       limited=mujoco.mjtLimited.mjLIMITED_TRUE, damping=float(joint.get("damping", 1.0)))
     mass, com, inertia = _mass_properties(obj, params)
     body.mass = mass
     body.ipos = np.asarray(com).tolist()
@@ -171,8 +190,12 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     spec = new_spec(params)
     assets: dict[str, bytes] = {}
     add_arena(spec, scene, params.arena)
+    articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
+    bodies: dict[str, mujoco.MjsBody] = {}
     for obj in scene.objects:
-        add_object(spec, obj, params, assets)
+        joint = articulations.get(obj.name)
+        parent = bodies.get(joint["parent"]) if joint else None
+        bodies[obj.name] = add_object(spec, obj, params, assets, parent, joint)
     add_capture_camera(spec, scene)
     spec.assets = assets
     spec.compile()

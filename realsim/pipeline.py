@@ -33,6 +33,7 @@ from realsim.robot_stage import RobotStageParams, robot_scene
 from realsim.scene import Scene
 from realsim.segment_stage import SegmentParams, segment_scene
 from realsim.settle import SettleParams, settle_scene
+from realsim.text.stage import TextParams, text_scene
 
 
 @dataclass(frozen=True)
@@ -47,6 +48,7 @@ STAGES: dict[str, Stage] = {
     "planes": Stage(detect_planes, PlaneParams),
     "segment": Stage(segment_scene, SegmentParams),
     "complete": Stage(complete_objects, CompletionParams),
+    "text": Stage(text_scene, TextParams),
     "objects": Stage(prepare_scene_objects, ObjectsParams),
     "compose": Stage(compose_scene, ComposeParams),
     "robot": Stage(robot_scene, RobotStageParams),
@@ -101,16 +103,26 @@ def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
     return PipelineSpec(name=data.get("name", str(name_or_path)), stages=stages)
 
 
-def pipeline_for(source: Path) -> str:
-    """The default pipeline for a capture: ``scan`` for an environment, ``objects`` otherwise."""
+def pipeline_for(source: Path | None, text: str | None = None) -> str:
+    """The default pipeline for a capture: ``scan`` for an environment, ``objects`` otherwise,
+    ``text`` for a description (``--text``, a ``.txt`` file, or ``text:`` in capture.yaml)."""
+    if source is None or text or Path(source).suffix.lower() == ".txt":
+        return "text"
     source = Path(source)
+    if source.is_dir() and not any(source.glob("scene.*")) and not any((source / "objects").glob("*")):
+        try:
+            meta = yaml.safe_load((source / "capture.yaml").read_text()) if (source / "capture.yaml").is_file() else None
+        except yaml.YAMLError:
+            meta = None
+        if isinstance(meta, dict) and meta.get("text"):
+            return "text"
     if source.is_dir() and not any(source.glob("scene.*")):
         return "objects"
     return "scan"
 
 
 def run_pipeline(
-    source: Path,
+    source: Path | None,
     *,
     pipeline: str | Path | None = None,
     seed: int = 0,
@@ -122,8 +134,8 @@ def run_pipeline(
     ``overrides`` maps stage names to parameter values that win over the pipeline file's
     (the CLI's ``--units``/``--up`` arrive as ``{"load": {"units": ..., "up": ...}}``).
     """
-    spec = load_pipeline(pipeline or pipeline_for(source))
     overrides = overrides or {}
+    spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))
     unknown = set(overrides) - {name for name, _ in spec.stages}
     if unknown - {"load"}:
         raise InputError(f"pipeline {spec.name} has no stage(s) {', '.join(sorted(unknown))}")
@@ -149,10 +161,10 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path, dest: Path, **kwargs: Any) -> Scene:
-    """Run the pipeline on ``source`` and write the scene folder ``dest`` atomically."""
+def convert(source: Path | None, dest: Path, **kwargs: Any) -> Scene:
+    """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically."""
     started = time.perf_counter()
-    scene = run_pipeline(Path(source), **kwargs)
+    scene = run_pipeline(Path(source) if source is not None else None, **kwargs)
     write_started = time.perf_counter()
     write_scene(scene, Path(dest))
     scene.timings["write"] = round(time.perf_counter() - write_started, 4)
