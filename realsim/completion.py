@@ -101,14 +101,15 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     if scene.labels is None or not scene.objects:
         return scene
     labels = scene.labels
+    by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
     order = _bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id
         pts = scene.points[mask]
         if obj.resting_on is not None and obj.resting_on in done:
-            under = done[obj.resting_on]
-            base_z = _top_under(under, pts)
+            base_z = _top_under(done[obj.resting_on], pts)
+            done[obj.resting_on] = _flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
         else:
             base_z = scene.plane(obj.support_id).height if obj.support_id is not None else float(np.min(pts[:, 2]))
         top_z = max(float(np.percentile(pts[:, 2], params.top_percentile)), base_z + params.min_height)
@@ -119,17 +120,36 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         kind = "cylinder" if shape is not None else "hull"
         mesh, base_centre = shape if shape is not None else complete_hull(pts, base_z, top_z)
         done[obj.id] = mesh
-        local = mesh.copy()
-        local.apply_translation(-base_centre)
-        obj.position = base_centre + np.array([0.0, 0.0, params.base_clearance])
+        _set_shape(obj, mesh, base_centre, params)
         obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
-        obj.size = local.extents.copy()
-        obj.collision = [local]
-        obj.visual = local
         if scene.colors is not None:
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
     return scene
+
+
+def _set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams) -> None:
+    """Give ``obj`` the world-frame ``mesh`` in its object frame (origin at ``base_centre``)."""
+    local = mesh.copy()
+    local.apply_translation(-base_centre)
+    obj.position = base_centre + np.array([0.0, 0.0, params.base_clearance])
+    obj.size = local.extents.copy()
+    obj.collision = [local]
+    obj.visual = local
+
+
+def _flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params: CompletionParams) -> trimesh.Trimesh:
+    """Cut the top of the convex shape another object stands on flat at ``top_z``.
+
+    The top of a completed scan is a shallow dome of noisy facets; a flat base resting on it
+    touches at one point, pivots and sinks (one contact), sliding about a centimetre while the
+    scene settles. A shared flat face gives MuJoCo a face-face contact (several points).
+    """
+    verts = mesh.vertices.copy()
+    verts[:, 2] = np.minimum(verts[:, 2], top_z - params.base_clearance)  # the upper object drops onto it
+    flat = trimesh.convex.convex_hull(verts)
+    _set_shape(under, flat, under.position - np.array([0.0, 0.0, params.base_clearance]), params)
+    return flat
 
 
 def _bottom_up(objects: list[SceneObject]) -> list[SceneObject]:

@@ -37,13 +37,9 @@ def test_objects_sit_where_they_were_rendered(converted: tuple[dict, dict]) -> N
     for g in gt["objects"]:
         ours = by_label[g["label"]]
         base = to_ours[:3, :3] @ np.asarray(g["position"]) + to_ours[:3, 3]
-        # Positions are read after settling. A stacked object rests on a single-view completion of
-        # the one below (whose far side it hides): it can slide up to about a centimetre while the
-        # scene settles (README, known limits); everything else stays within 5 mm.
-        tolerance = 0.015 if g["resting_on"] is not None else 0.005
-        assert np.linalg.norm(base[:2] - np.asarray(ours["position"][:2])) < tolerance, g["label"]
+        assert np.linalg.norm(base[:2] - np.asarray(ours["position"][:2])) < 0.005, g["label"]
         gt_top = base[2] + g["size"][2]
-        assert ours["position"][2] + ours["size"][2] == pytest.approx(gt_top, abs=0.003 if g["resting_on"] is None else 0.01), g["label"]
+        assert ours["position"][2] + ours["size"][2] == pytest.approx(gt_top, abs=0.003), g["label"]
         if g["shape"] == "cylinder":
             assert ours["size"][0] == pytest.approx(g["size"][0], abs=0.004), g["label"]
 
