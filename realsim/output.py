@@ -45,28 +45,31 @@ def atomic_folder(dest: Path) -> Iterator[Path]:
             shutil.rmtree(tmp, ignore_errors=True)
 
 
-def _jsonable(value: Any) -> Any:
+def jsonable(value: Any, digits: int = 6) -> Any:
+    """``value`` with numpy types, paths and pydantic models made JSON-ready (floats rounded)."""
     if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
+        return {str(k): jsonable(v, digits) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
+        return [jsonable(v, digits) for v in value]
     if isinstance(value, np.ndarray):
-        return _jsonable(value.tolist())
+        return jsonable(value.tolist(), digits)
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
     if isinstance(value, (np.floating, float)):
-        return round(float(value), 6)
+        return round(float(value), digits)
     if isinstance(value, np.integer):
         return int(value)
     if isinstance(value, Path):
         return str(value)
     if hasattr(value, "model_dump"):
-        return _jsonable(value.model_dump())
+        return jsonable(value.model_dump(), digits)
     return value
 
 
 def scene_record(scene: Scene) -> dict[str, Any]:
     """The scene.json content: capture, transform, planes, objects, settling and timings."""
     cap = scene.capture
-    return _jsonable({
+    return jsonable({
         "format": "realsim-scene/1",
         "capture": {
             "source": str(cap.source),

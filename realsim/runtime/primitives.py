@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from realsim.output import jsonable
 from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.robot import ActionResult
@@ -172,16 +173,5 @@ class ProgramAPI:
 
 
 def _jsonable(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return _jsonable(value.tolist())
-    if isinstance(value, (np.floating, float)):
-        return round(float(value), 5)
-    if isinstance(value, (np.integer,)):
-        return int(value)
-    if isinstance(value, (np.bool_,)):
-        return bool(value)
-    return value
+    """JSON-ready values for run logs (5 decimals)."""
+    return jsonable(value, digits=5)
