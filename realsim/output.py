@@ -45,6 +45,15 @@ def atomic_folder(dest: Path) -> Iterator[Path]:
             shutil.rmtree(tmp, ignore_errors=True)
 
 
+def scene_xml(folder: Path) -> Path:
+    """The ``scene.xml`` of a realsim output folder (or the file itself); InputError if none."""
+    folder = Path(folder)
+    xml = folder / "scene.xml" if folder.is_dir() else folder
+    if not xml.is_file():
+        raise InputError(f"{folder}: no scene.xml here; pass an output folder of `realsim convert`")
+    return xml
+
+
 def jsonable(value: Any, digits: int = 6) -> Any:
     """``value`` with numpy types, paths and pydantic models made JSON-ready (floats rounded)."""
     if isinstance(value, dict):

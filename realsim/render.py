@@ -59,16 +59,6 @@ def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width
 PREVIEW_FILE = "preview.png"
 
 
-def _scene_xml(scene: Path) -> Path:
-    from realsim.errors import InputError
-
-    scene = Path(scene)
-    xml = scene / "scene.xml" if scene.is_dir() else scene
-    if not xml.is_file():
-        raise InputError(f"{scene}: no scene.xml here; pass an output folder of `realsim convert`")
-    return xml
-
-
 def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:
     """Render an output folder (or its scene.xml) at keyframe ``initial`` to ``out_png``.
 
@@ -77,7 +67,9 @@ def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: i
     """
     from realsim.errors import InputError
 
-    xml = _scene_xml(scene)
+    from realsim.output import scene_xml  # output imports this module (write_preview)
+
+    xml = scene_xml(scene)
     model = mujoco.MjModel.from_xml_path(str(xml))
     if camera is not None:
         names = [model.camera(i).name for i in range(model.ncam)]

@@ -17,7 +17,7 @@ import numpy as np
 
 from realsim.compose import ASSET_DIR
 from realsim.errors import InputError
-from realsim.output import atomic_folder, verify_compiles
+from realsim.output import atomic_folder, scene_xml, verify_compiles
 from realsim.settle import KEYFRAME, free_joint_bodies
 
 ROBOT_PREFIX = "panda/"
@@ -32,15 +32,6 @@ class ObjectExport:
     mass: float
     settled_pos: list[float]
     settled_quat_wxyz: list[float]
-
-
-def scene_xml(folder: Path) -> Path:
-    """The ``scene.xml`` of a realsim output folder (InputError when there is none)."""
-    folder = Path(folder)
-    xml = folder / "scene.xml" if folder.is_dir() else folder
-    if not xml.is_file():
-        raise InputError(f"{folder}: no scene.xml here; pass an output folder of `realsim convert`")
-    return xml
 
 
 def load_spec(folder: Path) -> tuple[mujoco.MjSpec, Path]:

@@ -22,6 +22,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.settle import KEYFRAME
+from realsim.output import scene_xml
 from realsim.viewer.commands import on_command
 from realsim.viewer.frames import configure_up, to_viser
 from realsim.viewer.geoms import add_support_outlines, add_visual_geoms
@@ -58,10 +59,7 @@ class LiveSim:
 
 def load_live_sim(folder: Path) -> tuple[LiveSim, mujoco.MjSpec]:
     """Compile an output folder's scene.xml into a :class:`LiveSim` at keyframe ``initial``."""
-    folder = Path(folder)
-    xml = folder / "scene.xml" if folder.is_dir() else folder
-    if not xml.is_file():
-        raise InputError(f"{folder}: no scene.xml here; pass an output folder of `realsim convert`")
+    xml = scene_xml(folder)
     try:
         spec = mujoco.MjSpec.from_file(str(xml))
         model = spec.compile()
