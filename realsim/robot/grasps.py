@@ -24,9 +24,18 @@ from realsim.robot.ik import mat_to_quat
 from realsim.robot.model import GRIPPER_MAX_OPENING
 
 MAX_WIDTH = GRIPPER_MAX_OPENING - 0.008  # widest graspable cross-section (m)
+MAX_WIDTH_FLAT = GRIPPER_MAX_OPENING - 0.004  # between two flat parallel faces, approached from above (m)
+COS_FLAT = float(np.cos(np.radians(8.0)))  # "flat and parallel": contact normals within 8 degrees
 FINGER_HALF_WIDTH = 0.012  # half the finger's extent across the closing axis (m)
 FINGER_BELOW_TCP = 0.011  # fingertip bottom below the tcp (m)
 PALM_BEHIND_TCP = 0.045  # palm / hand body this far behind the tcp along the approach (m)
+RIM_DEPTH = 0.03  # tcp this far below the rim: about 2 cm of pad on the wall
+RIM_CAVITY_GAP = 0.005  # an empty radial gap this wide inside the wall means an open cavity (m)
+RIM_MAX_WALL = 0.025  # the wall band between the pads, including its curvature across the pads (m)
+RIM_MIN_WALLS = 6  # of the 8 directions that must find a thin wall around a cavity
+RIM_SCORE = 1.1  # an open container is held by its wall: a pinch across it squeezes two thin walls
+DOWN = np.array([0.0, 0.0, -1.0])  # the approach of top-down grasps
+COS_FRICTION_CONE = float(np.cos(np.radians(35.0)))  # pad contact normals within 35 degrees of the closing axis
 
 
 @dataclass
@@ -62,9 +71,9 @@ def rotate_about(axis: np.ndarray, angle: float) -> np.ndarray:
     return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
 
 
-def body_surface_points(model: mujoco.MjModel, body_id: int, count: int = 4000) -> np.ndarray:
-    """Surface samples of a body's collision geoms (group 3, or colliding), in the body frame."""
-    pts = []
+def body_surface(model: mujoco.MjModel, body_id: int, count: int = 4000) -> tuple[np.ndarray, np.ndarray]:
+    """Surface samples and their outward unit normals for a body's colliding geoms, body frame."""
+    pts, nrm = [], []
     geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == body_id and (model.geom_contype[g] or model.geom_conaffinity[g])]
     for g in geoms:
         t = model.geom_type[g]
@@ -74,6 +83,7 @@ def body_surface_points(model: mujoco.MjModel, body_id: int, count: int = 4000) 
             va, vn = model.mesh_vertadr[m], model.mesh_vertnum[m]
             fa, fn = model.mesh_faceadr[m], model.mesh_facenum[m]
             mesh = trimesh.Trimesh(model.mesh_vert[va : va + vn], model.mesh_face[fa : fa + fn], process=False)
+            mesh.fix_normals()
         elif t == mujoco.mjtGeom.mjGEOM_BOX:
             mesh = trimesh.creation.box(extents=2 * size)
         elif t == mujoco.mjtGeom.mjGEOM_CYLINDER:
@@ -86,31 +96,59 @@ def body_surface_points(model: mujoco.MjModel, body_id: int, count: int = 4000) 
             aabb = model.geom_aabb[g]
             mesh = trimesh.creation.box(extents=2 * aabb[3:], transform=trimesh.transformations.translation_matrix(aabb[:3]))
         n = max(200, int(count / max(len(geoms), 1)))
-        samples, _ = trimesh.sample.sample_surface(mesh, n, seed=0)
+        samples, faces = trimesh.sample.sample_surface(mesh, n, seed=0)
         samples = np.vstack([samples, mesh.vertices])
-        rot = model.geom_quat[g]
+        normals = np.vstack([mesh.face_normals[faces], mesh.vertex_normals])
         mat = np.zeros(9)
-        mujoco.mju_quat2Mat(mat, rot)
-        pts.append(samples @ mat.reshape(3, 3).T + model.geom_pos[g])
-    return np.vstack(pts) if pts else np.zeros((0, 3))
+        mujoco.mju_quat2Mat(mat, model.geom_quat[g])
+        rot = mat.reshape(3, 3)
+        pts.append(samples @ rot.T + model.geom_pos[g])
+        nrm.append(normals @ rot.T)
+    if not pts:
+        return np.zeros((0, 3)), np.zeros((0, 3))
+    return np.vstack(pts), np.vstack(nrm)
 
 
-def _slab_extent(pts: np.ndarray, centre: np.ndarray, closing: np.ndarray, across: np.ndarray, low: float, high: float, along: np.ndarray) -> tuple[float, float] | None:
-    """Extent along ``closing`` of points in the slab |across . (p - c)| < finger half width with
-    ``low <= along . (p - c) <= high``."""
-    rel = pts - centre
-    a = rel @ across
-    b = rel @ along
-    mask = (np.abs(a) < FINGER_HALF_WIDTH) & (b >= low) & (b <= high)
-    if mask.sum() < 3:
-        return None
-    c = rel[mask] @ closing
-    return float(c.min()), float(c.max())
+def antipodal(normals: np.ndarray | None, between: np.ndarray, proj_c: np.ndarray, closing: np.ndarray, approach: np.ndarray,
+              cos_cone: float = COS_FRICTION_CONE, flat: bool = False, band: float = 0.004) -> bool:
+    """Whether the surface the two pads would touch faces them (within the cone ``cos_cone``).
+
+    The contact patches are the points of ``between`` within ``band`` of each extreme of
+    ``proj_c`` (their coordinate along ``closing``). Normals are taken without their component
+    along the fingers (``approach``): a shoulder sloping along the fingers is fine, an
+    off-centre chord of a round body is not (the pads would slide off it). The patch's mean
+    normal must lie in the cone; with ``flat``, nine in ten of its normals must (a flat face,
+    not a curve). Without normals nothing can be checked (True).
+    """
+    if normals is None:
+        return True
+    c = proj_c[between]
+    for extreme, sign in ((c.min(), -1.0), (c.max(), 1.0)):
+        patch = np.flatnonzero(between)[np.abs(c - extreme) < band]
+        n = normals[patch]
+        n = n - np.outer(n @ approach, approach)  # the part of each normal a pad can push against
+        length = np.linalg.norm(n, axis=1)
+        side = length > 0.5  # faces, not caps seen edge-on from the pad
+        if not side.any():
+            return False
+        unit = n[side] / length[side, None]
+        if flat:
+            cosines = sign * (unit @ closing)
+            if np.quantile(cosines, 0.1) < cos_cone:
+                return False
+            continue
+        mean = unit.mean(axis=0)
+        norm = np.linalg.norm(mean)
+        if norm < 1e-9 or sign * float(mean @ closing) / norm < cos_cone:
+            return False
+    return True
 
 
-def top_down_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, depth: float = 0.03, height_offset: float = 0.0) -> list[GraspCandidate]:
+def top_down_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, depth: float = 0.03, height_offset: float = 0.0,
+                        normals: np.ndarray | None = None) -> list[GraspCandidate]:
     """Top-down grasps closing along the footprint's principal axes and diagonals, at several
-    slices across the object (so L-shaped or thin-bladed objects are pinched where they are thin)."""
+    slices across the object (so L-shaped or thin-bladed objects are pinched where they are thin).
+    With ``normals``, only slices whose contact patches face the pads are kept."""
     xy = pts[:, :2]
     centre_xy = xy.mean(axis=0)
     dirs = np.pi * np.arange(36) / 36
@@ -139,7 +177,8 @@ def top_down_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0
                 continue
             c_lo, c_hi = float(proj_c[between].min()), float(proj_c[between].max())
             width = c_hi - c_lo
-            if width > MAX_WIDTH:
+            flat_ok = normals is not None and width <= MAX_WIDTH_FLAT and antipodal(normals, between, proj_c, closing, DOWN, COS_FLAT, flat=True)
+            if (width > MAX_WIDTH and not flat_ok) or not antipodal(normals, between, proj_c, closing, DOWN):
                 continue
             mid_c = (c_lo + c_hi) / 2
             # the palm (about 0.2 m along the closing axis, 0.06 m across) must clear everything
@@ -149,11 +188,14 @@ def top_down_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0
             centre = np.array([*(centre_xy + across[:2] * s_off + closing[:2] * mid_c), grasp_z])
             rot = frame_from(np.array([0.0, 0.0, -1.0]), closing)
             score = 1.0 - (0.05 * i if i < 2 else 0.25) - 4.0 * abs(s_off) - 4.0 * abs(mid_c) + 0.3 * (MAX_WIDTH - width) / MAX_WIDTH
+            if width > MAX_WIDTH:
+                score -= 0.3  # little room either side of the pads: a last resort
             out.append(GraspCandidate("top", centre, rot, width, score))
     return out
 
 
-def side_candidates(pts: np.ndarray, surface_z: float, from_xy: np.ndarray, height_offset: float = 0.0) -> list[GraspCandidate]:
+def side_candidates(pts: np.ndarray, surface_z: float, from_xy: np.ndarray, height_offset: float = 0.0,
+                    normals: np.ndarray | None = None) -> list[GraspCandidate]:
     """Horizontal grasps approaching from ``from_xy`` (the robot base), for tall objects."""
     top = float(pts[:, 2].max())
     height = top - surface_z
@@ -183,7 +225,7 @@ def side_candidates(pts: np.ndarray, surface_z: float, from_xy: np.ndarray, heig
             continue
         c = rel2[m2] @ closing
         width = float(c.max() - c.min())
-        if width > MAX_WIDTH:
+        if width > MAX_WIDTH or not antipodal(normals, m2, rel2 @ closing, closing, approach):
             continue
         tcp = tcp + closing * (c.max() + c.min()) / 2
         rot = frame_from(approach, closing)
@@ -191,43 +233,51 @@ def side_candidates(pts: np.ndarray, surface_z: float, from_xy: np.ndarray, heig
     return out
 
 
-def rim_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, height_offset: float = 0.0) -> list[GraspCandidate]:
+def rim_candidates(pts: np.ndarray, surface_z: float, prefer_yaw: float = 0.0, height_offset: float = 0.0,
+                   normals: np.ndarray | None = None) -> list[GraspCandidate]:
     """Top-down grasps on the wall of an open container, closing radially."""
     top = float(pts[:, 2].max())
-    band = pts[pts[:, 2] > top - 0.02]
-    if len(band) < 10:
+    in_band = pts[:, 2] > top - 0.02
+    if in_band.sum() < 10:
         return []
-    centre = band[:, :2].mean(axis=0)
-    out = []
+    centre = pts[in_band, :2].mean(axis=0)
+    rel = pts[:, :2] - centre
+    out, walls = [], 0
     for k in range(8):
         ang = prefer_yaw + np.pi + k * np.pi / 4
         r = np.array([np.cos(ang), np.sin(ang)])
         perp = np.array([-r[1], r[0]])
-        rel = band[:, :2] - centre
-        sector = (np.abs(rel @ perp) < FINGER_HALF_WIDTH) & (rel @ r > 0)
+        radial_all = rel @ r
+        sector = in_band & (np.abs(rel @ perp) < FINGER_HALF_WIDTH) & (radial_all > 0)
         if sector.sum() < 4:
             continue
-        radial = rel[sector] @ r
-        outer = float(radial.max())
-        wall = radial[radial > outer - 0.03]
-        inner = float(wall.min())
-        if (radial < inner - 0.003).any() and np.sort(radial)[-1] - np.sort(radial)[0] > MAX_WIDTH:
-            continue  # the top is closed across: no wall to pinch
+        radial = np.sort(radial_all[sector])[::-1]  # from the outer surface inwards
+        gaps = -np.diff(np.append(radial, 0.0))
+        hollow = np.flatnonzero(gaps > RIM_CAVITY_GAP)
+        if not len(hollow):
+            continue  # the top is closed across (a lid, a solid): no wall to pinch
+        outer, inner = float(radial[0]), float(radial[hollow[0]])
         thickness = outer - inner
-        if thickness > 0.03 or (radial.max() - radial.min()) > thickness + 0.005:
+        if thickness > RIM_MAX_WALL:
+            continue
+        walls += 1
+        wall = sector & (radial_all >= inner - 1e-9)
+        closing = np.array([*r, 0.0])
+        if not antipodal(normals, wall, radial_all, closing, DOWN):
             continue
         mid = centre + r * (outer + inner) / 2
-        z = max(top - 0.02, surface_z + FINGER_BELOW_TCP + 0.004) + height_offset
-        rot = frame_from(np.array([0.0, 0.0, -1.0]), np.array([*r, 0.0]))
-        out.append(GraspCandidate("rim", np.array([mid[0], mid[1], z]), rot, thickness, 0.4 - 0.01 * k))
-    return out
+        z = max(top - RIM_DEPTH, surface_z + FINGER_BELOW_TCP + 0.004) + height_offset
+        rot = frame_from(np.array([0.0, 0.0, -1.0]), closing)
+        out.append(GraspCandidate("rim", np.array([mid[0], mid[1], z]), rot, thickness, RIM_SCORE - 0.01 * k))
+    return out if walls >= RIM_MIN_WALLS else []  # a rim goes (almost) all the way round
 
 
-def grasp_candidates(pts: np.ndarray, surface_z: float, base_xy: np.ndarray, prefer_yaw: float = 0.0, height_offset: float = 0.0) -> list[GraspCandidate]:
-    """Every candidate for an object's world-frame surface points, best first."""
-    cands = top_down_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset)
-    cands += side_candidates(pts, surface_z, base_xy, height_offset=height_offset)
-    cands += rim_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset)
+def grasp_candidates(pts: np.ndarray, surface_z: float, base_xy: np.ndarray, prefer_yaw: float = 0.0, height_offset: float = 0.0,
+                     normals: np.ndarray | None = None) -> list[GraspCandidate]:
+    """Every candidate for an object's world-frame surface points (and outward normals), best first."""
+    cands = top_down_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset, normals=normals)
+    cands += side_candidates(pts, surface_z, base_xy, height_offset=height_offset, normals=normals)
+    cands += rim_candidates(pts, surface_z, prefer_yaw, height_offset=height_offset, normals=normals)
     cands.sort(key=lambda c: -c.score)
     return cands
 

@@ -16,7 +16,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.robot.grasps import GraspCandidate, body_surface_points, grasp_candidates, narrowest_width, rotate_about, MAX_WIDTH
+from realsim.robot.grasps import GraspCandidate, body_surface, grasp_candidates, narrowest_width, rotate_about, MAX_WIDTH
 from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
 from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
@@ -88,7 +88,7 @@ class Robot:
         self.base_pos = data.xpos[self.base_id].copy()
         self.base_quat = data.xquat[self.base_id].copy()
         self.ik = ArmIK(self.base_pos, self.base_quat, ik_params)
-        self._points: dict[int, np.ndarray] = {}
+        self._points: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         self._deadline = np.inf
         self.held: str | None = None
         self.step_hook: Callable[[mujoco.MjModel, mujoco.MjData], None] | None = None
@@ -125,12 +125,32 @@ class Robot:
         except KeyError:
             raise KeyError(f"no body named '{name}'; objects: {', '.join(self.object_names())}") from None
 
-    def object_points(self, name: str) -> np.ndarray:
-        """World-frame surface samples of a body's collision geometry (live pose)."""
-        b = self._body(name)
+    def _subtree(self, b: int) -> list[int]:
+        """Body ``b`` and the bodies attached below it (a hinged lid, a drawer): one object to the hand."""
+        out = [b]
+        for c in range(b + 1, self.model.nbody):  # MuJoCo orders bodies depth-first: children follow parents
+            if self.model.body_parentid[c] in out:
+                out.append(c)
+        return out
+
+    def _surface(self, b: int) -> tuple[np.ndarray, np.ndarray]:
         if b not in self._points:
-            self._points[b] = body_surface_points(self.model, b)
-        return self._points[b] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+            self._points[b] = body_surface(self.model, b)
+        return self._points[b]
+
+    def object_points(self, name: str) -> np.ndarray:
+        """World-frame surface samples of an object's collision geometry (live pose, attached parts included)."""
+        return np.vstack([self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b] for b in self._subtree(self._body(name))])
+
+    def object_normals(self, name: str) -> np.ndarray:
+        """World-frame outward normals matching :meth:`object_points`."""
+        return np.vstack([self._surface(b)[1] @ self.data.xmat[b].reshape(3, 3).T for b in self._subtree(self._body(name))])
+
+    def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
+        pts = self.object_points(obj)
+        surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) + 0.01, exclude=obj)
+        return grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=height_offset,
+                                normals=self.object_normals(obj))
 
     def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None) -> float:
         """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``."""
@@ -156,15 +176,15 @@ class Robot:
         return float(max(tops)) if tops else float(self.base_pos[2])
 
     def _contacts_with(self, name: str) -> set[int]:
-        """Robot finger bodies touching body ``name``."""
-        b = self._body(name)
+        """Robot finger bodies touching object ``name`` (or a part attached to it)."""
+        parts = set(self._subtree(self._body(name)))
         out = set()
         for i in range(self.data.ncon):
             c = self.data.contact[i]
             b1, b2 = self.model.geom_bodyid[c.geom1], self.model.geom_bodyid[c.geom2]
-            if b1 == b and b2 in self.finger_bodies:
+            if b1 in parts and b2 in self.finger_bodies:
                 out.add(int(b2))
-            elif b2 == b and b1 in self.finger_bodies:
+            elif b2 in parts and b1 in self.finger_bodies:
                 out.add(int(b1))
         return out
 
@@ -350,12 +370,9 @@ class Robot:
 
     def graspability(self, obj: str) -> tuple[bool, str]:
         """Whether the hand can hold ``obj`` at all (some cross-section within the opening)."""
-        pts = self.object_points(obj)
-        surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) - 0.001, exclude=obj)
-        cands = grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw())
-        if cands:
+        if self._grasp_candidates(obj):
             return True, ""
-        w = narrowest_width(pts)
+        w = narrowest_width(self.object_points(obj))
         return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim or handle the hand can pinch: the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
 
     def grasp(self, obj: str, max_attempts: int | None = None, max_sim_time: float | None = None) -> ActionResult:
@@ -395,10 +412,7 @@ class Robot:
         return self._run("grasp", body, max_sim_time or self.params.max_sim_time * 2)
 
     def _attempt(self, obj: str, gp: GraspParams, opt: EpsilonGreedy) -> tuple[float, dict]:
-        pts = self.object_points(obj)
-        z_bottom = float(pts[:, 2].min())
-        surface = self.surface_below(pts[:, :2].mean(axis=0), z_bottom - 0.001, exclude=obj)
-        cands = grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=gp.height_offset)
+        cands = self._grasp_candidates(obj, gp.height_offset)
         reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
         q_home = np.array(HOME_ARM)
         for c in cands:
@@ -411,20 +425,30 @@ class Robot:
                 if not res_pre.converged:
                     continue
                 res = self._ik(c.pos, r, res_pre.q)
-                if res.converged:
-                    reachable.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + 0.5 * res.manipulability), res_pre.q, res))
-                    break
+                if not res.converged:
+                    continue
+                try:  # the final approach must be a straight line without a joint flip
+                    self._line(pre, c.pos, r, r, res_pre.q)
+                except _Fail:
+                    continue
+                reachable.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + 0.5 * res.manipulability), res_pre.q, res))
+                break
             if len(reachable) >= 6:
                 break
         if not reachable:
             raise _Fail(f"none of {len(cands)} grasp candidates is reachable")
         reachable.sort(key=lambda x: -x[0].score)
         opt.n_candidates = len(reachable)
-        cand, _, _ = reachable[min(gp.candidate, len(reachable) - 1)]
+        first = min(gp.candidate, len(reachable) - 1)
         self._gripper(GRIPPER_OPEN_CTRL)
-        pre = cand.pos - cand.approach * self.params.pregrasp
-        self._transit(pre, cand.rot, skip=None)
-        self._straight(cand.pos, cand.rot)
+        for k, (cand, _, _) in enumerate(reachable[first:] + reachable[:first]):
+            try:  # a path that cannot be planned moves nothing: try the next candidate
+                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None)
+                self._straight(cand.pos, cand.rot)
+                break
+            except _Fail:
+                if k == len(reachable) - 1:
+                    raise
         self._gripper(0.0)
         touching = self._contacts_with(obj)
         z_before = float(self.object_points(obj)[:, 2].min())
