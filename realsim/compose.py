@@ -104,8 +104,9 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
     """Add one free body: convex collision meshes (group 3), a visual mesh (group 2), inertia.
 
     With ``parent`` and ``joint`` (``{"type": "slide"|"hinge", "axis", "range", "pos", "damping"}``,
-    in the object frame) the body is instead a child of ``parent`` on that joint (a drawer in
-    its cabinet); its world pose is still ``obj.position``/``obj.quat``.
+    optionally ``"handle"``, in the object frame) the body is instead a child of ``parent`` on that
+    joint (a drawer in its cabinet), with a site ``<name>_handle`` where a hand pulls it; its world
+    pose is still ``obj.position``/``obj.quat``.
     """
     if parent is None or joint is None:
         body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
@@ -119,6 +120,8 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
         body.add_joint(name=f"{obj.name}_joint", type=JOINT_TYPES[joint["type"]], axis=list(joint["axis"]),
                        pos=list(joint.get("pos", [0.0, 0.0, 0.0])), range=list(joint["range"]),
                        limited=mujoco.mjtLimited.mjLIMITED_TRUE, damping=float(joint.get("damping", 1.0)))
+        if joint.get("handle"):
+            body.add_site(name=f"{obj.name}_handle", pos=list(joint["handle"]), size=[0.005, 0.005, 0.005], group=4)
     mass, com, inertia = _mass_properties(obj, params)
     body.mass = mass
     body.ipos = np.asarray(com).tolist()

@@ -99,3 +99,18 @@ def test_mug_goes_into_the_bowl(kitchen: Path) -> None:
     sim = Sim.load(kitchen)
     record = run_command(sim, "put the mug in the bowl", planner="rules")
     assert record.success, record.summary()
+
+
+def test_franka_opens_and_closes_the_drawer(tmp_path: Path) -> None:
+    """The cabinet's drawer has a handle site; the robot is placed to reach it and pulls it open."""
+    out = tmp_path / "drawer"
+    assert main(["convert", "--text", "a drawer cabinet, a mug and a can on the table", "--seed", "1", "-o", str(out), "-q"]) == 0
+    sim = Sim.load(out)
+    drawer = next(n for n in sim.object_names() if n.endswith("_drawer"))
+    assert sim.model.site(f"{drawer}_handle") is not None
+    record = run_command(sim, "open the drawer", planner="rules")
+    assert record.success, record.summary()
+    assert sim.joint_position(drawer) > 0.1
+    record = run_command(sim, "open the drawer, then close the drawer", planner="rules")
+    assert record.success, record.summary()
+    assert sim.joint_position(drawer) < 0.01

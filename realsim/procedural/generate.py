@@ -60,6 +60,7 @@ class Joint:
     child_pos: tuple[float, float, float]  # child frame origin in the parent frame (closed)
     pos: tuple[float, float, float] = (0.0, 0.0, 0.0)  # joint anchor in the child frame
     damping: float = 2.0
+    handle: tuple[float, float, float] | None = None  # where a hand pulls the child, in the child frame
 
 
 @dataclass
@@ -175,7 +176,9 @@ def _articulated(label: str, kind: str, parent, child, info: dict, jtype: str, r
     anchor = np.asarray(info.get("hinge_pos", [0.0, 0.0, 0.0])) + sc
     plabel, clabel = PART_LABELS[kind]
     darker = tuple(float(c) * 0.8 for c in rgb)
-    joint = Joint(jtype, tuple(info["axis"]), tuple(info["range"]), tuple(float(v) for v in child_pos), tuple(float(v) for v in anchor))
+    handle = tuple(float(v) for v in np.asarray(info["handle"]) + sc) if "handle" in info else None
+    joint = Joint(jtype, tuple(info["axis"]), tuple(info["range"]), tuple(float(v) for v in child_pos), tuple(float(v) for v in anchor),
+                  handle=handle)  # type: ignore[arg-type]
     return Generated(label, kind, [Part(plabel, pmesh, rgb), Part(clabel, cmesh, darker)], joint, tuple(float(v) for v in dims))  # type: ignore[arg-type]
 
 

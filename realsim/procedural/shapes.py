@@ -144,7 +144,7 @@ def drawer_cabinet(x: float, y: float, z: float, wall: float = 0.012) -> tuple[M
     """A cabinet carcass open at the front (+x) and a drawer that fits it.
 
     Returns (carcass, drawer, info) with the drawer in the carcass frame (closed position) and
-    ``info`` holding the slide axis, the travel and the drawer's base offset.
+    ``info`` holding the slide axis, the travel, the drawer's base offset and its handle's centre.
     """
     carcass = _box(x, y, z) - _box(x, y - 2 * wall, z - 2 * wall).translate([wall, 0.0, wall])
     gap = 0.003
@@ -158,7 +158,8 @@ def drawer_cabinet(x: float, y: float, z: float, wall: float = 0.012) -> tuple[M
     # The drawer's own frame has its origin at the base centre of its tray (the panel reaches below
     # it); in the carcass frame that point is at ``offset`` when the drawer is closed.
     offset = [round(x / 2 - dx / 2, 6), 0.0, wall + gap]
-    info = {"axis": [1.0, 0.0, 0.0], "range": [0.0, round(0.75 * dx, 4)], "offset": offset}
+    handle_centre = [dx / 2 + front + 0.0125, 0.0, dz / 2]  # in the drawer's (shape) frame
+    info = {"axis": [1.0, 0.0, 0.0], "range": [0.0, round(0.75 * dx, 4)], "offset": offset, "handle": handle_centre}
     return carcass, drawer, info
 
 

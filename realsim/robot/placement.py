@@ -7,8 +7,8 @@ table top and would reach the far half of the table only with a stretched arm; m
 at table height is what real setups do and gives top-down grasps over ~0.25-0.8 m of reach.
 
 Candidate poses lie along each side of the support rectangle, facing inward; each is scored by
-solving IK for top-down grasps above every graspable object and summing reachability and
-manipulability sqrt(det J J^T); the best candidate wins (ties broken by candidate order, so the
+solving IK for top-down grasps above every graspable object (and for the sideways pull of each
+drawer handle) and summing reachability and manipulability sqrt(det J J^T); the best candidate wins (ties broken by candidate order, so the
 choice is deterministic).
 """
 
@@ -20,7 +20,8 @@ import mujoco
 import numpy as np
 
 from realsim.planes import primary_support
-from realsim.robot.ik import ArmIK, IKParams
+from realsim.robot.grasps import frame_from
+from realsim.robot.ik import ArmIK, IKParams, mat_to_quat
 from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, RobotHandles, attach_robot, yaw_quat
 from realsim.scene import Scene, SceneObject
 
@@ -72,18 +73,46 @@ def candidate_poses(scene: Scene, params: PlacementParams = PlacementParams()) -
     return out
 
 
-def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK) -> tuple[float, int, float]:
-    """(score, reachable count, mean manipulability) of a base pose over hover targets.
+def handle_targets(model: mujoco.MjModel, pregrasp: float = 0.10) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(tcp position, quaternion) targets for pulling each articulated part by its handle site
+    (``<body>_handle``): in front of the handle, at it, where the pull ends and in front of that."""
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    out = []
+    for i in range(model.nsite):
+        if not model.site(i).name.endswith("_handle"):
+            continue
+        b = model.site_bodyid[i]
+        j = model.body_jntadr[b]
+        if j < 0 or int(model.jnt_type[j]) != mujoco.mjtJoint.mjJNT_SLIDE:
+            continue  # hinged lids are pulled up, not along a horizontal line
+        axis = model.jnt_axis[j] @ data.xmat[b].reshape(3, 3).T
+        horiz = np.array([axis[0], axis[1], 0.0])
+        if np.linalg.norm(horiz) < 1e-6:
+            continue
+        horiz /= np.linalg.norm(horiz)
+        quat = mat_to_quat(frame_from(-horiz, np.array([0.0, 0.0, 1.0])))
+        hpos = data.site_xpos[i].copy()
+        travel = float(model.jnt_range[j][1])
+        for p in (hpos + horiz * pregrasp, hpos, hpos + horiz * travel, hpos + horiz * (travel + pregrasp)):
+            out.append((p, quat))
+    return out
+
+
+def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK,
+               oriented: list[tuple[np.ndarray, np.ndarray]] = ()) -> tuple[float, int, float]:
+    """(score, reachable count, mean manipulability) of a base pose over top-down hover
+    ``targets`` and ``oriented`` (position, quaternion) targets such as drawer handles.
 
     Targets beyond the arm's reach sphere around the shoulder count as unreachable without IK.
     """
     ik = ArmIK(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])), ik_params)
     shoulder = np.array([pose[0], pose[1], base_z + SHOULDER_HEIGHT])
     reach, manip = 0, []
-    for t in targets:
+    for t, quat in [(t, TOP_DOWN) for t in targets] + list(oriented):
         if np.linalg.norm(np.asarray(t) - shoulder) > MAX_REACH:
             continue
-        res = ik.solve(t, TOP_DOWN)
+        res = ik.solve(t, quat)
         if res.converged:
             reach += 1
             manip.append(res.manipulability)
@@ -113,11 +142,12 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
         height = float(obj.size[2]) if obj.size is not None else 0.1
         targets.append(np.array([pos[0], pos[1], pos[2] + height + params.hover]))
     targets += [np.asarray(t, float) for t in extra_targets or []]
-    if not targets:
+    oriented = handle_targets(model_without_robot) if model_without_robot is not None else []
+    if not targets and not oriented:
         targets = [np.array([*plane.rect_center, plane.height + 0.1])]
     best, best_score = None, -np.inf
-    for pose in _prefilter(candidate_poses(scene, params), targets, params.ik_candidates):
-        s, _, _ = score_pose(pose, base_z, targets)
+    for pose in _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], params.ik_candidates):
+        s, _, _ = score_pose(pose, base_z, targets, oriented=oriented)
         if s > best_score + 1e-9:
             best, best_score = pose, s
     assert best is not None

@@ -272,17 +272,40 @@ class Robot:
         low = max(self._tallest(skip) + 0.03 + below_tcp, end[2])
         safe = max(self._tallest(skip) + self.params.clearance + below_tcp, end[2])
         last = None
-        for z in sorted({safe, max(safe - 0.04, low), max(safe - 0.08, low), low}, reverse=True):
+        heights = sorted({safe, max(safe - 0.04, low), max(safe - 0.08, low), low}, reverse=True)
+        # turn the hand while traversing; failing that (a sideways hand out of reach up high, as for
+        # a drawer handle), keep the current orientation across and turn while descending
+        for rot_over in (rot_end, cmd_rot):
+            for z in heights:
+                try:
+                    up = np.array([cmd_pos[0], cmd_pos[1], z])
+                    over = np.array([end[0], end[1], z])
+                    p1 = self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
+                    p2 = self._line(up, over, cmd_rot, rot_over, p1[-1] if p1 else q0)
+                    p3 = self._line(over, end, rot_over, rot_end, p2[-1])
+                except _Fail as exc:
+                    last = exc
+                    continue
+                self._follow(p1 + p2 + p3)
+                return
+        for z in heights:  # last resort: swing across in joint space at height, if the hand stays up there
             try:
                 up = np.array([cmd_pos[0], cmd_pos[1], z])
                 over = np.array([end[0], end[1], z])
                 p1 = self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
-                p2 = self._line(up, over, cmd_rot, rot_end, p1[-1] if p1 else q0)
-                p3 = self._line(over, end, rot_end, rot_end, p2[-1])
+                q_up = p1[-1] if p1 else q0
+                at_end = self._ik(end, rot_end, q_up)  # the descent planned upwards from the goal's own IK branch
+                if not at_end.converged:
+                    continue
+                rising = self._line(end, over, rot_end, rot_end, at_end.q)
+                p3 = [*rising[::-1][1:], at_end.q]
+                swing = [q_up + f * (rising[-1] - q_up) for f in np.linspace(0.1, 1.0, 10)]
+                if min(float(self.ik.fk(q)[0][2]) for q in swing) < low - 0.02:
+                    continue
             except _Fail as exc:
                 last = exc
                 continue
-            self._follow(p1 + p2 + p3)
+            self._follow(p1 + swing + p3)
             return
         raise last or _Fail("no safe path")
 
@@ -373,7 +396,7 @@ class Robot:
         if self._grasp_candidates(obj):
             return True, ""
         w = narrowest_width(self.object_points(obj))
-        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim or handle the hand can pinch: the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
+        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim the hand can pinch (handles are not used): the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
 
     def grasp(self, obj: str, max_attempts: int | None = None, max_sim_time: float | None = None) -> ActionResult:
         """Grasp and lift ``obj``; failed attempts retry with epsilon-greedy grasp parameters."""
@@ -602,10 +625,27 @@ class Robot:
         closed end (the lower limit, or 0 when the joint is unlimited)."""
         return self._run("close_drawer", lambda: self._articulate("close_drawer", obj, None, opening=False), max_sim_time)
 
+    def _handle(self, b: int, pull: np.ndarray | None) -> np.ndarray:
+        """Where to hold body ``b`` to move it: a site or geom named "...handle", else the middle of
+        its face furthest along ``pull`` (else its origin)."""
+        m = self.model
+        for i in range(m.nsite):
+            if m.site_bodyid[i] == b and "handle" in m.site(i).name:
+                return self.data.site_xpos[i].copy()
+        for g in range(m.ngeom):
+            if m.geom_bodyid[g] == b and "handle" in m.geom(g).name:
+                return self.data.geom_xpos[g].copy()
+        if pull is None:
+            return self.data.xpos[b].copy()
+        pts = self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+        along = pts @ pull
+        front = pts[along > along.max() - 0.005]
+        return (front.min(axis=0) + front.max(axis=0)) / 2
+
     def _articulate(self, name: str, obj: str, amount: float | None, opening: bool) -> ActionResult:
         b = self._body(obj)
         jid = self.model.body_jntadr[b]
-        if jid < 0 or self.model.jnt_type[jid] not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
+        if jid < 0 or int(self.model.jnt_type[jid]) not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
             return ActionResult(name, False, f"{obj} has no hinge or slide joint")
         slide = self.model.jnt_type[jid] == mujoco.mjtJoint.mjJNT_SLIDE
         qa = self.model.jnt_qposadr[jid]
@@ -620,11 +660,9 @@ class Robot:
             target = lo
             if q0 - lo < 0.005:
                 return ActionResult(name, True, "already closed", values={"closed_by": 0.0, "target": 0.0, "position": q0})
-        handle = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] == b and "handle" in self.model.geom(g).name]
-        g = handle[0] if handle else None
-        hpos = self.data.geom_xpos[g].copy() if g is not None else self.data.xpos[b].copy()
         axis = self.data.xaxis[jid].copy()
         anchor = self.data.xanchor[jid].copy()
+        hpos = self._handle(b, axis / np.linalg.norm(axis) if slide else None)
         if slide:
             pull = axis / np.linalg.norm(axis)
         else:

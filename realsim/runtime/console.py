@@ -84,6 +84,8 @@ def run_cli(scene: str, command: str | None, program_file: str | None, planner: 
         say(f"goal [{'met' if g['ok'] else 'NOT met'}] {g['goal']}: {g['measured']}")
     if not record.goals:
         say("goal: unknown (no goal to check); judged by the primitives' results")
+    for note in record.notes:
+        say(f"note: {note}")
     log_path = write_log(record, log)
     if record.video:
         say(f"video: {record.video['path']} ({record.video['frames']} frames at {record.video['fps']:.1f} fps of simulated time)")

@@ -140,6 +140,11 @@ def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, vi
     record.program_error = report.error is not None and not failed_primitive
     record.goals = [{"goal": r.goal, "ok": r.ok, "measured": r.measured} for r in results]
     record.verdict = verdict(results)
+    if record.verdict == "met" and report.error is not None:
+        # the end state may hold without the command having been carried out ("open, then close"
+        # when opening failed): a stopped program is not a success
+        record.verdict = "not met"
+        record.notes.append("the goals hold in the end state, but the program stopped before it finished")
     record.sim_time = round(float(sim.data.time) - start_time, 4)
     record.objects_after = sim.state()
     record.wall_time["run"] = round(t_run, 3)

@@ -191,7 +191,7 @@ class Sim:
         self._check(name)
         b = self.model.body(name).id
         j = self.model.body_jntadr[b]
-        if j < 0 or self.model.jnt_type[j] not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
+        if j < 0 or int(self.model.jnt_type[j]) not in (mujoco.mjtJoint.mjJNT_SLIDE, mujoco.mjtJoint.mjJNT_HINGE):
             raise KeyError(f"{name} has no hinge or slide joint")
         return float(self.data.qpos[self.model.jnt_qposadr[j]])
 

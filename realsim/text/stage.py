@@ -168,5 +168,6 @@ def _add_articulated(scene: Scene, items: list[tuple[Generated, list[Path]]], pa
         child.resting_on = parent.id
         obstacles.append(_world_footprint(parent))
         arts[child.name] = {"parent": parent.name, "type": joint.type, "axis": list(joint.axis), "range": list(joint.range),
-                            "pos": list(joint.pos), "damping": joint.damping, "object": gen.label}
+                            "pos": list(joint.pos), "damping": joint.damping, "object": gen.label,
+                            "handle": list(joint.handle) if joint.handle else None}
         scene.objects.extend([parent, child])
