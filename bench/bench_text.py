@@ -1,7 +1,8 @@
 """Ten varied scene descriptions -> settled scenes: objects, counts, sizes, rest, timings.
 
 With ``--robot`` the Panda is placed, the scene is written, and the robot tries to grasp and lift
-every free object from keyframe "initial" (one `grasp` per object, up to 4 attempts each).
+every free object from keyframe "initial" (one `grasp` per object, up to 4 attempts each), and to
+open and close every drawer; then the same for a drawer cabinet scene over 8 seeds.
 
     MENAGERIE_ROOT=../shared/data python bench/bench_text.py [--robot]
 """
@@ -13,6 +14,8 @@ import tempfile
 import time
 from collections import Counter
 from pathlib import Path
+
+import mujoco
 
 from realsim.pipeline import convert, run_pipeline
 from realsim.runtime import Sim
@@ -32,6 +35,8 @@ DESCRIPTIONS = [
     "a kitchen counter with a bottle of water, two glasses and a plate",
     "a table with a toy dinosaur, an apple and a white bowl",
 ]
+DRAWER_TEXT = "a drawer cabinet, a mug and a can on the table"
+DRAWER_SEEDS = 8
 
 
 def pick_every_object(folder: Path) -> list[tuple[str, str, str]]:
@@ -51,10 +56,28 @@ def pick_every_object(folder: Path) -> list[tuple[str, str, str]]:
     return out
 
 
+def open_and_close_drawers(folder: Path) -> list[tuple[str, bool, str]]:
+    """(drawer, opened and closed again, detail) for every slide-jointed part, from the keyframe."""
+    sim = Sim.load(folder)
+    out = []
+    for name in sim.object_names():
+        joint = sim.model.body_jntadr[sim.model.body(name).id]
+        if joint < 0 or int(sim.model.jnt_type[joint]) != mujoco.mjtJoint.mjJNT_SLIDE:
+            continue
+        sim.reset()
+        opened = sim.robot.open_drawer(name)
+        closed = sim.robot.close_drawer(name) if opened.success else None
+        ok = bool(opened.success and closed and closed.success)
+        detail = f"opened {opened.values.get('opened', 0.0) * 1000:.0f} mm" + (f", closed to {closed.values.get('position', 0.0) * 1000:.0f} mm" if closed else "")
+        out.append((name, ok, detail if opened.success else opened.reason))
+    return out
+
+
 def main() -> int:
     robot = "--robot" in sys.argv
     failures = 0
     picks: list[tuple[str, str, str]] = []
+    drawers: list[tuple[str, bool, str]] = []
     for i, text in enumerate(DESCRIPTIONS):
         started = time.perf_counter()
         try:
@@ -63,9 +86,13 @@ def main() -> int:
                 with tempfile.TemporaryDirectory() as tmp:
                     scene = convert(None, Path(tmp) / "scene", seed=i, overrides=overrides)
                     scene_picks = pick_every_object(Path(tmp) / "scene")
+                    scene_drawers = open_and_close_drawers(Path(tmp) / "scene")
                 picks += scene_picks
+                drawers += scene_drawers
                 for name, outcome, detail in scene_picks:
                     print(f"   {outcome:13s} {name}: {detail}")
+                for name, ok, detail in scene_drawers:
+                    print(f"   {'opened+closed' if ok else 'drawer FAILED'} {name}: {detail}")
             else:
                 scene = run_pipeline(None, seed=i, overrides=overrides)
             rest = rest_check(scene.spec.compile(), 2.0)
@@ -89,6 +116,16 @@ def main() -> int:
         tried = outcomes["lifted"] + outcomes["failed"]
         print(f"grasped and lifted {outcomes['lifted']}/{len(picks)} objects; {outcomes['lifted']}/{tried} of those the hand fits "
               f"({outcomes['not graspable']} declared not graspable before trying)")
+        print(f"drawers opened and closed again by the robot in the ten scenes: {sum(ok for _, ok, _ in drawers)}/{len(drawers)}")
+        seeded = []
+        for seed in range(DRAWER_SEEDS):
+            with tempfile.TemporaryDirectory() as tmp:
+                convert(None, Path(tmp) / "scene", seed=seed, overrides={"load": {"text": DRAWER_TEXT}})
+                result = open_and_close_drawers(Path(tmp) / "scene")
+            seeded += result
+            for name, ok, detail in result:
+                print(f"   seed {seed}: {'opened+closed' if ok else 'FAILED'} {name}: {detail}")
+        print(f"{DRAWER_TEXT!r}, seeds 0-{DRAWER_SEEDS - 1}: drawer opened and closed {sum(ok for _, ok, _ in seeded)}/{len(seeded)}")
     return 1 if failures else 0
 
 

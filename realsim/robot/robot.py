@@ -265,17 +265,19 @@ class Robot:
         cmd_pos, cmd_rot = self.ik.fk(q)  # plan from the commanded pose, not the sagging one
         self._follow(self._line(cmd_pos, end, cmd_rot, rot_end, q))
 
-    def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0) -> None:
-        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked)."""
+    def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False) -> None:
+        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked).
+
+        With ``turn_late`` (a sideways hand for a handle, out of reach up high) the hand may keep
+        its orientation across and turn while descending, or swing across in joint space at height.
+        """
         q0 = self.data.ctrl[self.act].copy()
         cmd_pos, cmd_rot = self.ik.fk(q0)
         low = max(self._tallest(skip) + 0.03 + below_tcp, end[2])
         safe = max(self._tallest(skip) + self.params.clearance + below_tcp, end[2])
         last = None
         heights = sorted({safe, max(safe - 0.04, low), max(safe - 0.08, low), low}, reverse=True)
-        # turn the hand while traversing; failing that (a sideways hand out of reach up high, as for
-        # a drawer handle), keep the current orientation across and turn while descending
-        for rot_over in (rot_end, cmd_rot):
+        for rot_over in (rot_end, cmd_rot) if turn_late else (rot_end,):
             for z in heights:
                 try:
                     up = np.array([cmd_pos[0], cmd_pos[1], z])
@@ -288,7 +290,7 @@ class Robot:
                     continue
                 self._follow(p1 + p2 + p3)
                 return
-        for z in heights:  # last resort: swing across in joint space at height, if the hand stays up there
+        for z in heights if turn_late else ():  # last resort: swing across in joint space at height, the hand staying up there
             try:
                 up = np.array([cmd_pos[0], cmd_pos[1], z])
                 over = np.array([end[0], end[1], z])
@@ -603,7 +605,12 @@ class Robot:
                         raise
             self._straight(contact + d * (distance + 0.03), rot)
             pos, _ = self.tcp_pose()
-            self._straight(pos - d * 0.03 + np.array([0, 0, 0.1]), rot)
+            for retreat in (pos - d * 0.03 + np.array([0, 0, 0.1]), pos + np.array([0, 0, 0.1]), pos - d * 0.03):
+                try:  # back off the object; the push itself is judged by how far the object moved
+                    self._straight(retreat, rot)
+                    break
+                except _Fail:
+                    continue
             self._wait(0.3)
             end_pos, _ = self.object_pose(obj)
             moved = float((end_pos - start_pos) @ d)
@@ -672,10 +679,17 @@ class Robot:
         horiz = np.array([pull[0], pull[1], 0.0])
         horiz /= max(np.linalg.norm(horiz), 1e-9)
         from realsim.robot.grasps import frame_from
-        rot = frame_from(-horiz, np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0]))
+        up = np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0])
         self._gripper(GRIPPER_OPEN_CTRL)
-        self._transit(hpos + horiz * self.params.pregrasp, rot)
-        self._straight(hpos, rot)
+        for k, closing in enumerate((up, -up)):  # the hand is symmetric: either wrist roll may be the reachable one
+            rot = frame_from(-horiz, closing)
+            try:
+                self._transit(hpos + horiz * self.params.pregrasp, rot, turn_late=True)
+                self._straight(hpos, rot)
+                break
+            except _Fail:
+                if k == 1:
+                    raise
         self._gripper(0.0)
         steps = 10
         path, q = [], self.data.ctrl[self.act].copy()
