@@ -25,6 +25,18 @@ class LayoutParams:
     edge_margin: float = 0.05  # m between a footprint and the support's edge
     attempts_per_object: int = 400
     random_yaw: bool = True
+    # m: keep objects within this distance of the middle of the support's first long edge, where a
+    # robot can stand and reach them all (None: anywhere). Falls back to the whole support when
+    # they do not fit.
+    reach_radius: float | None = None
+
+
+def reach_anchor(support: SupportPlane) -> np.ndarray:
+    """The middle of the support rectangle's long edge on its local -y (or -x) side, world xy."""
+    c, half = np.asarray(support.rect_center, float), np.asarray(support.rect_size, float) / 2
+    local = np.array([0.0, -half[1]]) if half[0] >= half[1] else np.array([-half[0], 0.0])
+    cy, sy = np.cos(support.rect_yaw), np.sin(support.rect_yaw)
+    return c + np.array([[cy, -sy], [sy, cy]]) @ local
 
 
 def footprint(points_xy: np.ndarray) -> np.ndarray:
@@ -81,18 +93,35 @@ def place_on_support(
 ) -> list[tuple[np.ndarray, float]]:
     """Sampled (xy, yaw) per footprint (object frame, origin at the base centre), largest first.
 
-    Raises InputError when an object does not fit after ``attempts_per_object`` tries.
+    With ``params.reach_radius`` the objects are first kept within reach of one long edge (see
+    :class:`LayoutParams`). Raises InputError when an object does not fit after
+    ``attempts_per_object`` tries.
     """
+    if params.reach_radius is not None:
+        state = rng.bit_generator.state
+        try:
+            return _place(footprints, support, obstacles, rng, params, reach_anchor(support))
+        except InputError:
+            rng.bit_generator.state = state  # the fallback draws as if the reach region had not been tried
+    return _place(footprints, support, obstacles, rng, params, None)
+
+
+def _place(footprints: list[np.ndarray], support: SupportPlane, obstacles: list[np.ndarray], rng: np.random.Generator,
+           params: LayoutParams, anchor: np.ndarray | None) -> list[tuple[np.ndarray, float]]:
     order = sorted(range(len(footprints)), key=lambda i: -ConvexHull(footprints[i]).volume if len(footprints[i]) >= 3 else 0)
     placed: list[np.ndarray] = list(obstacles)
     result: dict[int, tuple[np.ndarray, float]] = {}
     lo, hi = support.polygon.min(axis=0), support.polygon.max(axis=0)
+    if anchor is not None:
+        lo, hi = np.maximum(lo, anchor - params.reach_radius), np.minimum(hi, anchor + params.reach_radius)
     for i in order:
         for _ in range(params.attempts_per_object):
             yaw = float(rng.uniform(-np.pi, np.pi)) if params.random_yaw else 0.0
             xy = rng.uniform(lo, hi)
             poly = _rotate(footprints[i], yaw) + xy
             if not np.all(inside_convex_polygon(poly, support.polygon, -params.edge_margin)):
+                continue
+            if anchor is not None and np.linalg.norm(poly - anchor, axis=1).max() > params.reach_radius:
                 continue
             if all(polygons_apart(poly, other, params.clearance) for other in placed):
                 placed.append(poly)

@@ -114,6 +114,7 @@ def prepare_scene_objects(scene: Scene, params: ObjectsParams = ObjectsParams())
         new_objects.append(obj)
     support = _support_for(scene)
     obstacles = [_world_footprint(o) for o in scene.objects]
+    obstacles += [np.asarray(p, dtype=np.float64) for p in scene.capture.metadata.get("keep_clear", [])]  # e.g. a drawer's travel
     prints = [footprint(np.vstack([h.vertices[:, :2] for h in o.collision])) for o in new_objects]
     rng = np.random.default_rng(scene.seed)
     for obj, (xy, yaw) in zip(new_objects, place_on_support(prints, support, obstacles, rng, params.layout)):

@@ -24,14 +24,22 @@ from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
 from realsim.compose import safe_name
 from realsim.errors import InputError
-from realsim.layout import declared_support, footprint, place_on_support
-from realsim.objects_stage import ObjectsParams, _support_for, _world_footprint, _yaw_quat, prepare_scene_objects, scene_object
+from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
+from realsim.objects_stage import (
+    ObjectsParams,
+    _support_for,
+    _world_footprint,
+    _yaw_quat,
+    prepare_scene_objects,
+    scene_object,
+)
 from realsim.physics import estimate_manifest
 from realsim.procedural import Generated, generate, get_backend, write_ply
 from realsim.scene import Scene
 from realsim.text.parser import SceneRequest, parse_description
 
 ARTICULATIONS = "articulations"  # capture.metadata key read by compose
+KEEP_CLEAR = "keep_clear"  # capture.metadata key: xy polygons the layout of other objects avoids
 MAX_OBJECTS = 24
 
 
@@ -39,7 +47,8 @@ MAX_OBJECTS = 24
 class TextParams:
     """Parameters of the text stage."""
 
-    objects: ObjectsParams = field(default_factory=ObjectsParams)
+    # objects gathered within reach of one long edge of the table, where the Panda will stand
+    objects: ObjectsParams = field(default_factory=lambda: ObjectsParams(layout=LayoutParams(reach_radius=0.5)))
     use_llm: bool = True  # parse with Claude when ANTHROPIC_API_KEY is set (validated; offline fallback)
     variation: float = 0.08  # seeded relative size variation around the table's typical dims
     text_to_3d: str | None = None  # a registered text-to-3D backend (realsim.procedural.text_to_3d); off by default
@@ -119,10 +128,10 @@ def text_scene(scene: Scene, params: TextParams = TextParams()) -> Scene:
     scene.capture.metadata["labels"] = labels
     if req.support == "floor" and not scene.planes:
         _floor_only(scene)
+    if articulated:  # the largest first, with room kept clear for the drawer's or lid's travel
+        _add_articulated(scene, articulated, params.objects)
     scene.object_files = list(scene.object_files) + files
     prepare_scene_objects(scene, params.objects)
-    if articulated:
-        _add_articulated(scene, articulated, params.objects)
     return scene
 
 
@@ -166,7 +175,9 @@ def _add_articulated(scene: Scene, items: list[tuple[Generated, list[Path]]], pa
         child.position = parent.position + np.array([c * rel[0] - s * rel[1], s * rel[0] + c * rel[1], rel[2]])
         child.quat = parent.quat.copy()
         child.resting_on = parent.id
-        obstacles.append(_world_footprint(parent))
+        swept = footprint(np.vstack(pts)) @ np.array([[c, s], [-s, c]]) + xy  # the parent plus the child's travel
+        obstacles.append(swept)
+        scene.capture.metadata.setdefault(KEEP_CLEAR, []).append(swept.round(4).tolist())
         arts[child.name] = {"parent": parent.name, "type": joint.type, "axis": list(joint.axis), "range": list(joint.range),
                             "pos": list(joint.pos), "damping": joint.damping, "object": gen.label,
                             "handle": list(joint.handle) if joint.handle else None}
