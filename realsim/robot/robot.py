@@ -16,7 +16,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.robot.grasps import GraspCandidate, body_surface, grasp_candidates, narrowest_width, rotate_about, MAX_WIDTH
+from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, body_surface, frame_from, grasp_candidates, narrowest_width, rotate_about
 from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
 from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
@@ -138,9 +138,12 @@ class Robot:
             self._points[b] = body_surface(self.model, b)
         return self._points[b]
 
+    def _world_points(self, b: int) -> np.ndarray:
+        return self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+
     def object_points(self, name: str) -> np.ndarray:
         """World-frame surface samples of an object's collision geometry (live pose, attached parts included)."""
-        return np.vstack([self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b] for b in self._subtree(self._body(name))])
+        return np.vstack([self._world_points(b) for b in self._subtree(self._body(name))])
 
     def object_normals(self, name: str) -> np.ndarray:
         """World-frame outward normals matching :meth:`object_points`."""
@@ -275,40 +278,45 @@ class Robot:
         cmd_pos, cmd_rot = self.ik.fk(q0)
         low = max(self._tallest(skip) + 0.03 + below_tcp, end[2])
         safe = max(self._tallest(skip) + self.params.clearance + below_tcp, end[2])
-        last = None
         heights = sorted({safe, max(safe - 0.04, low), max(safe - 0.08, low), low}, reverse=True)
-        for rot_over in (rot_end, cmd_rot) if turn_late else (rot_end,):
+
+        def rise(z: float) -> tuple[np.ndarray, list[np.ndarray]]:
+            up = np.array([cmd_pos[0], cmd_pos[1], z])
+            return up, self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
+
+        def across(z: float, rot_over: np.ndarray) -> list[np.ndarray]:
+            """Straight lines up, across (turning to ``rot_over``) and down (turning to ``rot_end``)."""
+            up, p1 = rise(z)
+            over = np.array([end[0], end[1], z])
+            p2 = self._line(up, over, cmd_rot, rot_over, p1[-1] if p1 else q0)
+            return p1 + p2 + self._line(over, end, rot_over, rot_end, p2[-1])
+
+        def swing(z: float) -> list[np.ndarray]:
+            """Up in a line, across in joint space at height, down along the goal's own IK branch."""
+            up, p1 = rise(z)
+            q_up = p1[-1] if p1 else q0
+            at_end = self._ik(end, rot_end, q_up)
+            if not at_end.converged:
+                raise _Fail(f"target {np.round(end, 3).tolist()} unreachable ({at_end.reason})")
+            rising = self._line(end, np.array([end[0], end[1], z]), rot_end, rot_end, at_end.q)
+            across_q = [q_up + f * (rising[-1] - q_up) for f in np.linspace(0.1, 1.0, 10)]
+            if min(float(self.ik.fk(q)[0][2]) for q in across_q) < low - 0.02:
+                raise _Fail("the swing across dips below the safe height")
+            return p1 + across_q + [*rising[::-1][1:], at_end.q]
+
+        plans = [lambda z: across(z, rot_end)]
+        if turn_late:
+            plans += [lambda z: across(z, cmd_rot), swing]
+        last = None
+        for plan in plans:
             for z in heights:
                 try:
-                    up = np.array([cmd_pos[0], cmd_pos[1], z])
-                    over = np.array([end[0], end[1], z])
-                    p1 = self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
-                    p2 = self._line(up, over, cmd_rot, rot_over, p1[-1] if p1 else q0)
-                    p3 = self._line(over, end, rot_over, rot_end, p2[-1])
+                    path = plan(z)
                 except _Fail as exc:
                     last = exc
                     continue
-                self._follow(p1 + p2 + p3)
+                self._follow(path)
                 return
-        for z in heights if turn_late else ():  # last resort: swing across in joint space at height, the hand staying up there
-            try:
-                up = np.array([cmd_pos[0], cmd_pos[1], z])
-                over = np.array([end[0], end[1], z])
-                p1 = self._line(cmd_pos, up, cmd_rot, cmd_rot, q0)
-                q_up = p1[-1] if p1 else q0
-                at_end = self._ik(end, rot_end, q_up)  # the descent planned upwards from the goal's own IK branch
-                if not at_end.converged:
-                    continue
-                rising = self._line(end, over, rot_end, rot_end, at_end.q)
-                p3 = [*rising[::-1][1:], at_end.q]
-                swing = [q_up + f * (rising[-1] - q_up) for f in np.linspace(0.1, 1.0, 10)]
-                if min(float(self.ik.fk(q)[0][2]) for q in swing) < low - 0.02:
-                    continue
-            except _Fail as exc:
-                last = exc
-                continue
-            self._follow(p1 + swing + p3)
-            return
         raise last or _Fail("no safe path")
 
     def _gripper(self, ctrl: float) -> None:
@@ -587,7 +595,6 @@ class Robot:
             back = float(((pts - centre) @ d).min())
             contact = centre + d * (back - 0.03)
             closing = np.array([-d[1], d[0], 0.0])
-            from realsim.robot.grasps import frame_from
             # the closed hand is symmetric: of the two yaws, try the one nearer the current first
             _, now_rot = self.tcp_pose()
             # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
@@ -644,7 +651,7 @@ class Robot:
                 return self.data.geom_xpos[g].copy()
         if pull is None:
             return self.data.xpos[b].copy()
-        pts = self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+        pts = self._world_points(b)
         along = pts @ pull
         front = pts[along > along.max() - 0.005]
         return (front.min(axis=0) + front.max(axis=0)) / 2
@@ -678,7 +685,6 @@ class Robot:
             pull /= np.linalg.norm(pull)
         horiz = np.array([pull[0], pull[1], 0.0])
         horiz /= max(np.linalg.norm(horiz), 1e-9)
-        from realsim.robot.grasps import frame_from
         up = np.array([0, 0, 1.0]) if abs(horiz[2]) < 0.9 else np.array([1.0, 0, 0])
         self._gripper(GRIPPER_OPEN_CTRL)
         for k, closing in enumerate((up, -up)):  # the hand is symmetric: either wrist roll may be the reachable one
