@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 import yaml
 
+from realsim.capture_config import read_capture_config
 from realsim.errors import InputError
 from realsim.scene import CaptureInfo, Scene
 
@@ -207,19 +208,6 @@ def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
     return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]
 
 
-def _read_capture_yaml(folder: Path) -> dict[str, Any]:
-    path = folder / "capture.yaml"
-    if not path.exists():
-        return {}
-    try:
-        data = yaml.safe_load(path.read_text()) or {}
-    except yaml.YAMLError as exc:
-        raise InputError(f"{path}: invalid YAML ({str(exc).splitlines()[0]})") from None
-    if not isinstance(data, dict):
-        raise InputError(f"{path}: expected a mapping of settings")
-    return data
-
-
 def _find_environment(folder: Path) -> Path | None:
     candidates = sorted(p for p in folder.glob("scene.*") if p.suffix.lower() in POINT_CLOUD_SUFFIXES | MESH_SUFFIXES)
     return candidates[0] if candidates else None
@@ -265,7 +253,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     metadata: dict[str, Any] = {}
     object_files: list[Path] = []
     if path.is_dir():
-        metadata = _read_capture_yaml(path)
+        metadata = read_capture_config(path)
         env = _find_environment(path)
         object_files = _object_files(path)
         photos = [p for p in path.glob("photo.*") if p.suffix.lower() in (".jpg", ".jpeg", ".png", ".webp")]

@@ -8,41 +8,18 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import tempfile
-from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 import mujoco
 import numpy as np
 
 from realsim.compose import ASSET_DIR
+from realsim.destination import atomic_folder
 from realsim.errors import InputError
 from realsim.render import write_preview
 from realsim.scene import Scene
-
-
-@contextmanager
-def atomic_folder(dest: Path) -> Iterator[Path]:
-    """Yield a temporary folder that replaces ``dest`` on success and vanishes on failure."""
-    dest = Path(dest).resolve()
-    if dest.exists() and not dest.is_dir():
-        raise InputError(f"{dest}: exists and is not a folder")
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.", dir=dest.parent))
-    try:
-        yield tmp
-        if dest.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old.", dir=dest.parent))
-            os.replace(dest, old / "x")
-            os.replace(tmp, dest)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            os.replace(tmp, dest)
-    finally:
-        if tmp.exists():
-            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def scene_xml(folder: Path) -> Path:
@@ -129,9 +106,13 @@ def verify_compiles(xml_path: Path) -> mujoco.MjModel:
         os.chdir(cwd)
 
 
-def write_scene(scene: Scene, dest: Path) -> Path:
-    """Write scene.xml, assets/, scene.json, labels.npy and preview.png to ``dest`` atomically."""
-    with atomic_folder(dest) as tmp:
+def write_scene(scene: Scene, dest: Path, *, force: bool = False) -> Path:
+    """Write scene.xml, assets/, scene.json, labels.npy and preview.png to ``dest`` atomically.
+
+    ``dest`` must be new, empty, or realsim output (replaced only with ``force``): see
+    :mod:`realsim.destination`.
+    """
+    with atomic_folder(dest, force=force, kind="scene") as tmp:
         assets = tmp / ASSET_DIR
         assets.mkdir()
         for name, data in sorted(scene.assets.items()):

@@ -12,7 +12,6 @@ Every stage is a function ``(Scene, Params) -> Scene`` registered in :data:`STAG
 
 from __future__ import annotations
 
-import dataclasses
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -24,7 +23,9 @@ from rich.console import Console
 from realsim.capture import LoadParams, load_capture
 from realsim.completion import CompletionParams, complete_objects
 from realsim.compose import ComposeParams, compose_scene
+from realsim.destination import check_destination
 from realsim.errors import InputError
+from realsim.validation import build_params, check_seed, unknown_names
 from realsim.objects_stage import ObjectsParams, prepare_scene_objects
 from realsim.output import write_scene
 from realsim.planes import PlaneParams, detect_planes
@@ -64,24 +65,6 @@ class PipelineSpec:
     stages: list[tuple[str, dict[str, Any]]] = field(default_factory=list)
 
 
-def build_params(cls: type, overrides: dict[str, Any]) -> Any:
-    """``cls()`` with ``overrides`` applied (nested dataclasses from nested mappings)."""
-    if not overrides:
-        return cls()
-    fields = {f.name: f for f in dataclasses.fields(cls)}
-    unknown = set(overrides) - set(fields)
-    if unknown:
-        raise InputError(f"unknown parameter(s) for {cls.__name__}: {', '.join(sorted(unknown))}")
-    default = cls()
-    values = {}
-    for key, value in overrides.items():
-        current = getattr(default, key)
-        if dataclasses.is_dataclass(current) and isinstance(value, dict):
-            value = build_params(type(current), value)
-        values[key] = value
-    return dataclasses.replace(default, **values)
-
-
 def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
     """Read a pipeline by name (``pipelines/<name>.yaml``) or from a YAML file path."""
     path = Path(name_or_path)
@@ -93,12 +76,22 @@ def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
             known = ", ".join(sorted(p.stem for p in data_dir("pipelines").glob("*.yaml")))
             raise InputError(f"unknown pipeline {name_or_path!r}: use one of {known} or a YAML file")
         text = file.read_text()
-    data = yaml.safe_load(text)
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        raise InputError(f"pipeline {name_or_path}: invalid YAML ({str(exc).splitlines()[0]})") from None
+    if not isinstance(data, dict) or not isinstance(data.get("stages"), list):
+        raise InputError(f"pipeline {name_or_path}: expected a mapping with a 'stages' list")
     stages: list[tuple[str, dict[str, Any]]] = []
-    for entry in data.get("stages", []):
-        name, params = (entry, {}) if isinstance(entry, str) else next(iter(entry.items()))
-        if name != "load" and name not in STAGES:
-            raise InputError(f"pipeline {data.get('name')}: unknown stage {name!r}")
+    for entry in data["stages"]:
+        if isinstance(entry, dict) and len(entry) == 1:
+            name, params = next(iter(entry.items()))
+        else:
+            name, params = entry, {}
+        if not isinstance(name, str) or not isinstance(params or {}, dict):
+            raise InputError(f"pipeline {name_or_path}: a stage is a name or {{name: {{param: value}}}}, got {entry!r}")
+        if name != "load":
+            unknown_names([name], STAGES, f"pipeline {data.get('name')}")
         stages.append((name, params or {}))
     return PipelineSpec(name=data.get("name", str(name_or_path)), stages=stages)
 
@@ -135,10 +128,9 @@ def run_pipeline(
     (the CLI's ``--units``/``--up`` arrive as ``{"load": {"units": ..., "up": ...}}``).
     """
     overrides = overrides or {}
+    seed = check_seed(seed)
     spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))
-    unknown = set(overrides) - {name for name, _ in spec.stages}
-    if unknown - {"load"}:
-        raise InputError(f"pipeline {spec.name} has no stage(s) {', '.join(sorted(unknown))}")
+    unknown_names(overrides, {name for name, _ in spec.stages} | {"load"}, f"stages of pipeline {spec.name}")
     # Build every stage's parameters first, so a bad override fails before any work.
     plan = []
     for name, params in spec.stages:
@@ -161,12 +153,18 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path | None, dest: Path, **kwargs: Any) -> Scene:
-    """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically."""
+def convert(source: Path | None, dest: Path, *, force: bool = False, **kwargs: Any) -> Scene:
+    """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically.
+
+    ``dest`` is checked before any work (:func:`realsim.destination.check_destination`): a new
+    path, an empty folder, or earlier realsim output replaced only with ``force``.
+    """
     started = time.perf_counter()
+    photo = ((kwargs.get("overrides") or {}).get("objects", {}).get("understanding", {}) or {}).get("photo")
+    dest = check_destination(dest, inputs=[source, Path(photo) if photo else None], force=force)
     scene = run_pipeline(Path(source) if source is not None else None, **kwargs)
     write_started = time.perf_counter()
-    write_scene(scene, Path(dest))
+    write_scene(scene, dest, force=force)
     scene.timings["write"] = round(time.perf_counter() - write_started, 4)
     scene.timings["total"] = round(time.perf_counter() - started, 4)
     return scene

@@ -17,7 +17,8 @@ import numpy as np
 
 from realsim.compose import ASSET_DIR
 from realsim.errors import InputError
-from realsim.output import atomic_folder, scene_xml, verify_compiles
+from realsim.destination import atomic_folder, check_destination
+from realsim.output import scene_xml, verify_compiles
 from realsim.settle import KEYFRAME, free_joint_bodies
 
 ROBOT_PREFIX = "panda/"
@@ -96,14 +97,15 @@ def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[
     return sorted(written)
 
 
-def export_mjcf(source: Path, dest: Path) -> Path:
+def export_mjcf(source: Path, dest: Path, *, force: bool = False) -> Path:
     """Write the whole scene of ``source`` as a self-contained MJCF folder at ``dest``.
 
     The folder holds ``scene.xml``, ``assets/`` (meshes and textures, relative paths) and the
     source's ``scene.json``; it is written atomically and compiled before it is moved in place.
     """
+    dest = check_destination(dest, inputs=[source], force=force)
     spec, src_dir = load_spec(source)
-    with atomic_folder(Path(dest)) as tmp:
+    with atomic_folder(dest, force=force, kind="export-mjcf") as tmp:
         relocate_assets(spec, src_dir, tmp)
         (tmp / "scene.xml").write_text(spec.to_xml())
         if (src_dir / "scene.json").is_file():
@@ -165,7 +167,7 @@ def _defaults(spec: mujoco.MjSpec) -> list[mujoco.MjsDefault]:
     return out[::-1]
 
 
-def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> list[ObjectExport]:
+def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> list[ObjectExport]:
     """Write one MJCF per object to ``dest/<body>/<body>.xml`` with its own ``assets/``.
 
     Each file holds the object's free body (convex collision hulls in group 3, the visual mesh
@@ -175,6 +177,7 @@ def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -
     scene's (unique per object: ``obj<k>_<label>...``); pass ``prefix`` to ``attach`` to add
     several copies.
     """
+    dest = check_destination(dest, inputs=[source], force=force)
     spec, src_dir = load_spec(source)
     model = spec.compile()
     data = mujoco.MjData(model)
@@ -186,7 +189,7 @@ def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -
     if not names:
         raise InputError(f"{source}: the scene has no free-floating objects to export")
     written: list[ObjectExport] = []
-    with atomic_folder(Path(dest)) as tmp:
+    with atomic_folder(dest, force=force, kind="export-objects") as tmp:
         for name in names:
             child = mujoco.MjSpec.from_file(str(scene_xml(source)))
             body = _prune_to_body(child, name)

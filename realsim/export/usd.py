@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from realsim.compose import VISUAL_GROUP
+from realsim.destination import build_folder, check_destination, check_file_destination, publish
 from realsim.errors import InputError
 from realsim.export.mjcf import ROBOT_PREFIX, load_spec, object_bodies, _resolve
 from realsim.settle import KEYFRAME
@@ -205,7 +206,7 @@ def _sdf():
     return Sdf
 
 
-def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> UsdExport:
+def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> UsdExport:
     """Write the scene of output folder ``source`` to the USD file ``dest`` (.usda/.usd/.usdc).
 
     Poses are those of keyframe ``initial``. Texture images are copied to ``<dest stem>_textures/``
@@ -214,9 +215,12 @@ def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> Us
     """
     pxr = _pxr()
     Gf, Usd, UsdGeom, UsdPhysics = pxr.Gf, pxr.Usd, pxr.UsdGeom, pxr.UsdPhysics
-    dest = Path(dest)
-    if dest.suffix.lower() not in (".usda", ".usd", ".usdc"):
+    if Path(dest).suffix.lower() not in (".usda", ".usd", ".usdc"):
         raise InputError(f"{dest}: a USD file name must end in .usda, .usd or .usdc")
+    dest = check_file_destination(dest, inputs=[source], force=force)
+    tex_rel = f"{dest.stem}_textures"
+    if (dest.parent / tex_rel).exists():
+        check_destination(dest.parent / tex_rel, inputs=[source], force=force)
     spec, src_dir = load_spec(source)
     model = spec.compile()
     data = mujoco.MjData(model)
@@ -233,8 +237,7 @@ def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> Us
     fd, tmp_name = tempfile.mkstemp(prefix=f".{dest.stem}.", suffix=dest.suffix, dir=dest.parent)
     os.close(fd)
     tmp = Path(tmp_name)
-    tex_rel = f"{dest.stem}_textures"
-    tex_tmp = Path(tempfile.mkdtemp(prefix=f".{tex_rel}.", dir=dest.parent))
+    tex_tmp = build_folder(dest.parent / tex_rel)
     try:
         stage = Usd.Stage.CreateNew(str(tmp))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -311,10 +314,7 @@ def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX) -> Us
         del stage
         os.replace(tmp, dest)
         if writer.textures:
-            final = dest.parent / tex_rel
-            if final.exists():
-                shutil.rmtree(final)
-            os.replace(tex_tmp, final)
+            publish(tex_tmp, dest.parent / tex_rel, force=force, kind="export-usd-textures")
     finally:
         tmp.unlink(missing_ok=True)
         shutil.rmtree(tex_tmp, ignore_errors=True)
