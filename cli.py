@@ -7,10 +7,11 @@ line, never a traceback.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 import yaml
 
@@ -39,7 +40,38 @@ def _parse_pose(text: str) -> tuple[float, float, float]:
         x, y, yaw = (float(v) for v in text.split(","))
     except ValueError:
         raise InputError(f"--robot-pose {text!r}: expected x,y,yaw in metres and radians, e.g. --robot-pose -0.9,0,0") from None
+    if not all(math.isfinite(v) for v in (x, y, yaw)):
+        raise InputError(f"--robot-pose {text!r}: x, y and yaw must be finite numbers")
     return x, y, yaw
+
+
+def seed_arg(text: str) -> int:
+    """argparse type of ``--seed``: an integer from 0 to 2**32 - 1."""
+    from realsim.validation import MAX_SEED
+
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+    if not 0 <= value <= MAX_SEED:
+        raise argparse.ArgumentTypeError(f"{value} is out of range 0..{MAX_SEED}")
+    return value
+
+
+def bounded(kind: type, low: float, high: float):
+    """An argparse type: a finite ``kind`` number in [low, high]."""
+
+    def parse(text: str) -> float:
+        try:
+            value = kind(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a {kind.__name__}") from None
+        if not (math.isfinite(value) and low <= value <= high):
+            raise argparse.ArgumentTypeError(f"{text} is out of range {low:g}..{high:g}")
+        return value
+
+    parse.__name__ = kind.__name__  # argparse names the type in its messages
+    return parse
 
 
 def cmd_convert(args: argparse.Namespace) -> int:
@@ -68,14 +100,22 @@ def cmd_convert(args: argparse.Namespace) -> int:
         load["text"] = args.text
     elif args.source is None:
         raise InputError('convert needs a capture (file or folder) or --text "a table with a mug"')
-    scene = convert(Path(args.source) if args.source else None, Path(args.output), pipeline=args.pipeline, seed=args.seed, overrides=overrides,
-                    console=console if args.verbose else None)
+    scene = convert(Path(args.source) if args.source else None, args.output, force=args.force, pipeline=args.pipeline,
+                    seed=args.seed, overrides=overrides, console=console if args.verbose else None)
     if not args.quiet:
         print_conversion(scene, Path(args.output), Console())
     return 0
 
 
 def cmd_example(args: argparse.Namespace) -> int:
+    if args.layout:  # YCB scans on a table, counter or floor, in every capture form (realsim.synth)
+        from realsim.synth import SceneSpec, make_scene, write_all
+
+        objects = tuple(args.objects.split(",")) if args.objects else None
+        scene = make_scene(SceneSpec(layout=args.layout, objects=objects, n_objects=args.count, seed=args.seed))
+        path = write_all(scene, Path(args.dest), forms=tuple(args.forms.split(",")), cloud_points=args.points, seed=args.seed)
+        print(f"wrote synthetic {args.layout} capture ({args.forms}) with ground truth to {path}")
+        return 0
     from realsim.synthetic import make_tabletop_capture
 
     path = make_tabletop_capture(Path(args.dest), seed=args.seed)
@@ -90,15 +130,15 @@ def cmd_export(args: argparse.Namespace) -> int:
     if args.format == "usd":
         if args.objects_only:
             raise InputError("--objects-only works with --format mjcf only")
-        result = export_usd(Path(args.scene), Path(args.output))
+        result = export_usd(Path(args.scene), args.output, force=args.force)
         for warning in result.warnings:
             print(f"realsim: warning: {warning}", file=sys.stderr)
         print(f"wrote {result.path} ({len(result.rigid_bodies)} rigid bodies, {len(result.static_colliders)} static colliders)")
     elif args.objects_only:
-        objects = export_objects(Path(args.scene), Path(args.output))
+        objects = export_objects(Path(args.scene), args.output, force=args.force)
         print(f"wrote {len(objects)} object MJCF file(s) to {args.output}: " + ", ".join(str(o.xml) for o in objects))
     else:
-        export_mjcf(Path(args.scene), Path(args.output))
+        export_mjcf(Path(args.scene), args.output, force=args.force)
         print(f"wrote {Path(args.output) / 'scene.xml'} with its assets/")
     return 0
 
@@ -126,16 +166,24 @@ def cmd_run(args: argparse.Namespace) -> int:
                    video_fps=args.video_fps)
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """argparse with usage errors on one line (exit 2) and a pointer to ``--help``."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="realsim", description="Turn a captured real scene into a settled MuJoCo simulation.")
+    parser = OneLineParser(prog="realsim", description="Turn a captured real scene into a settled MuJoCo simulation.")
     parser.add_argument("--debug", action="store_true", help="show tracebacks of internal errors")
-    sub = parser.add_subparsers(dest="command", required=True)
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
 
     convert = sub.add_parser("convert", help="convert a capture (file or folder) into a MuJoCo scene folder")
     convert.add_argument("source", nargs="?", help="a point cloud / mesh file, or a capture folder (scene.*, objects/*, capture.yaml); optional with --text")
     convert.add_argument("--text", metavar="DESCRIPTION", help='build the scene from a description, e.g. "a kitchen table with a mug and two soda cans"')
-    convert.add_argument("-o", "--output", required=True, help="output folder (replaced atomically)")
-    convert.add_argument("--seed", type=int, default=0, help="seed of every random source (default 0)")
+    convert.add_argument("-o", "--output", required=True, help="output folder: a new path, an empty folder, or earlier realsim output (with --force)")
+    convert.add_argument("--force", action="store_true", help="replace an output folder realsim wrote before (atomically; nothing else is touched)")
+    convert.add_argument("--seed", type=seed_arg, default=0, help="seed of every random source (default 0)")
     convert.add_argument("--units", choices=["m", "cm", "mm"], help="input units (detected by default)")
     convert.add_argument("--up", choices=["+x", "-x", "+y", "-y", "+z", "-z"], help="input up axis (detected by default)")
     convert.add_argument("--robot-pose", metavar="X,Y,YAW", help="place the Panda's base here (m, m, rad) instead of searching")
@@ -149,7 +197,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     example = sub.add_parser("example", help="render the bundled synthetic tabletop capture (with ground truth)")
     example.add_argument("dest", help="folder to write the capture into")
-    example.add_argument("--seed", type=int, default=0)
+    example.add_argument("--seed", type=seed_arg, default=0)
+    example.add_argument("--layout", choices=["table", "counter", "floor"], help="YCB scans on this support, in every capture form")
+    example.add_argument("--objects", help="with --layout: comma-separated YCB names (default: --count drawn)")
+    example.add_argument("--count", type=int, default=4, help="with --layout: objects drawn when --objects is absent")
+    example.add_argument("--forms", default="view,sequence,cloud,mesh", help="with --layout: view,sequence,cloud,mesh")
+    example.add_argument("--points", type=int, default=200_000, help="with --layout: points of cloud.ply")
     example.set_defaults(func=cmd_example)
 
     export = sub.add_parser("export", help="export a converted scene as self-contained MJCF or as USD")
@@ -157,24 +210,25 @@ def build_parser() -> argparse.ArgumentParser:
     export.add_argument("--format", choices=["mjcf", "usd"], default="mjcf", help="mjcf (a folder) or usd (a .usda/.usd file)")
     export.add_argument("-o", "--output", required=True, help="destination folder (mjcf) or file (usd)")
     export.add_argument("--objects-only", action="store_true", help="mjcf: one MJCF per object, for MjSpec.attach into another scene")
+    export.add_argument("--force", action="store_true", help="replace an export realsim wrote before")
     export.set_defaults(func=cmd_export)
 
     view = sub.add_parser("view", help="view a converted scene live in the browser (viser) and send it commands")
     view.add_argument("scene", help="an output folder of `realsim convert`")
     view.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
-    view.add_argument("--port", type=int, default=8080, help="port to serve on (default 8080)")
+    view.add_argument("--port", type=bounded(int, 1, 65535), default=8080, help="port to serve on (default 8080)")
     view.add_argument("--splat", help="a Gaussian splat .ply shown as a backdrop (found next to the capture by default)")
     view.add_argument("--paused", action="store_true", help="start with the physics paused")
-    view.add_argument("--duration", type=float, help="stop serving after this many seconds (default: until Ctrl-C)")
-    view.add_argument("--status-port", type=int, help="also serve GET /status (JSON: sim time, frames sent, body poses) on this port")
+    view.add_argument("--duration", type=bounded(float, 0.0, 1e7), help="stop serving after this many seconds (default: until Ctrl-C)")
+    view.add_argument("--status-port", type=bounded(int, 1, 65535), help="also serve GET /status (JSON: sim time, frames sent, body poses) on this port")
     view.set_defaults(func=cmd_view)
 
     render = sub.add_parser("render", help="render a converted scene at keyframe 'initial' to a PNG")
     render.add_argument("scene", help="an output folder of `realsim convert` (or its scene.xml)")
     render.add_argument("-o", "--output", default="preview.png", help="PNG to write (default preview.png)")
     render.add_argument("--camera", help="a camera of the model, e.g. 'capture' (default: an overview)")
-    render.add_argument("--width", type=int, default=960)
-    render.add_argument("--height", type=int, default=720)
+    render.add_argument("--width", type=bounded(int, 16, 8192), default=960)
+    render.add_argument("--height", type=bounded(int, 16, 8192), default=720)
     render.set_defaults(func=cmd_render)
 
     run = sub.add_parser("run", help="command the Panda in a converted scene in plain English (or run a program)")
@@ -183,9 +237,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--program", metavar="FILE", help="run this Python program over the primitives instead (same sandbox)")
     run.add_argument("--planner", choices=["auto", "rules", "claude"], default="auto", help="auto: Claude when ANTHROPIC_API_KEY is set, else rules")
     run.add_argument("--video", metavar="OUT.mp4", help="record an MP4 (30 fps of simulated time)")
-    run.add_argument("--video-fps", type=float, default=30.0, metavar="FPS", help="frames per simulated second of --video (default 30)")
+    run.add_argument("--video-fps", type=bounded(float, 1.0, 240.0), default=30.0, metavar="FPS", help="frames per simulated second of --video (default 30)")
     run.add_argument("--log", metavar="PATH", help="JSON log path (default <scene>/runs/run_<n>.json)")
-    run.add_argument("--seed", type=int, default=0, help="seed of the grasp search (default 0)")
+    run.add_argument("--seed", type=seed_arg, default=0, help="seed of the grasp search (default 0)")
     run.set_defaults(func=cmd_run)
     return parser
 

@@ -23,3 +23,9 @@ class TaskFailed(RealsimError):
     """A commanded task ran but did not reach its goal."""
 
     exit_code = 1
+
+
+class SimulationDiverged(RealsimError):
+    """The physics blew up (non-finite or runaway state): stopped with a message, never a hang."""
+
+    exit_code = 3

@@ -153,7 +153,7 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path | None, dest: Path, *, force: bool = False, **kwargs: Any) -> Scene:
+def convert(source: Path | None, dest: Path | str, *, force: bool = False, **kwargs: Any) -> Scene:
     """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically.
 
     ``dest`` is checked before any work (:func:`realsim.destination.check_destination`): a new

@@ -4,8 +4,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from realsim.robot.placement import PlacementParams, add_robot
+import numpy as np
+
+from realsim.errors import InputError
+from realsim.planes import inside_convex_polygon
+from realsim.robot.placement import MAX_REACH, PlacementParams, add_robot
 from realsim.scene import Scene
+
+BASE_RADIUS = 0.12  # m, the Panda's base footprint around link0
 
 
 @dataclass(frozen=True)
@@ -22,13 +28,39 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
     if not params.enabled or scene.spec is None or not scene.planes:
         return scene
     pose = tuple(float(v) for v in params.pose) if params.pose is not None else None
+    if pose is not None:
+        check_robot_pose(scene, pose)
     handles = add_robot(scene, pose=pose, params=params.placement)
     scene.robot = {
         "model": "franka_emika_panda (mujoco-menagerie panda.xml)",
-        "prefix": handles.prefix,
+        **handles.record(),
         "base_pose_xy_yaw": list(handles.base_pose),
         "base_z": handles.base_z,
         "pedestal_height": handles.pedestal_height,
         "pose_source": "override" if pose is not None else "reach and manipulability search",
     }
     return scene
+
+
+def check_robot_pose(scene: Scene, pose: tuple[float, float, float], reach: float = MAX_REACH) -> None:
+    """Refuse a given base pose that stands inside furniture or cannot reach any object.
+
+    The base may not overlap a support (floor excepted) and must be within ``reach`` (plus the
+    base radius) of the nearest object, or of the nearest support edge when there are no objects.
+    """
+    x, y, _ = pose
+    if not all(np.isfinite(pose)):
+        raise InputError(f"--robot-pose {x},{y}: must be finite numbers")
+    base = np.array([[x, y]])
+    for plane in scene.planes:
+        if plane.kind != "floor" and inside_convex_polygon(base, plane.polygon, margin=BASE_RADIUS)[0]:
+            raise InputError(f"--robot-pose {x:g},{y:g}: the base stands inside the {plane.kind} (support {plane.id}); "
+                             "put it beside the furniture, or leave --robot-pose out to search for a pose")
+    if scene.objects:
+        targets = np.array([np.asarray(o.position, float)[:2] for o in scene.objects])
+    else:
+        targets = np.vstack([p.polygon for p in scene.planes if p.kind != "floor"] or [np.zeros((1, 2))])
+    nearest = float(np.min(np.linalg.norm(targets - base, axis=1)))
+    if nearest > reach + BASE_RADIUS:
+        raise InputError(f"--robot-pose {x:g},{y:g}: the nearest {'object' if scene.objects else 'support'} is {nearest:.2f} m away "
+                         f"and the Panda reaches {reach:.2f} m; put the base closer, or leave --robot-pose out to search for a pose")

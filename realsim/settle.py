@@ -13,6 +13,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from realsim.physics.divergence import check_state
 from realsim.scene import Scene
 
 KEYFRAME = "initial"
@@ -53,7 +54,10 @@ def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tupl
     while data.time - start < params.max_time:
         mujoco.mj_step(model, data)
         step += 1
-        if data.time - start >= params.min_time and step % check_every == 0 and _max_speed(data, free) < params.rest_speed:
+        if step % check_every:
+            continue
+        check_state(model, data, "settling")
+        if data.time - start >= params.min_time and _max_speed(data, free) < params.rest_speed:
             break
     return data.time - start
 
@@ -73,8 +77,11 @@ def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME,
     start = {name: data.qpos[q : q + 3].copy() for name, q, _ in free}
     lowest = {name: data.qpos[q + 2] for name, q, _ in free}
     steps = int(round(duration / model.opt.timestep))
-    for _ in range(steps):
+    check_every = max(1, int(0.05 / model.opt.timestep))
+    for step in range(steps):
         mujoco.mj_step(model, data)
+        if step % check_every == 0:
+            check_state(model, data, "rest check")
         for name, q, _ in free:
             lowest[name] = min(lowest[name], data.qpos[q + 2])
     moved = {name: float(np.linalg.norm(data.qpos[q : q + 3] - start[name])) for name, q, _ in free}

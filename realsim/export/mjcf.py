@@ -97,7 +97,7 @@ def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[
     return sorted(written)
 
 
-def export_mjcf(source: Path, dest: Path, *, force: bool = False) -> Path:
+def export_mjcf(source: Path, dest: Path | str, *, force: bool = False) -> Path:
     """Write the whole scene of ``source`` as a self-contained MJCF folder at ``dest``.
 
     The folder holds ``scene.xml``, ``assets/`` (meshes and textures, relative paths) and the
@@ -167,7 +167,7 @@ def _defaults(spec: mujoco.MjSpec) -> list[mujoco.MjsDefault]:
     return out[::-1]
 
 
-def export_objects(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> list[ObjectExport]:
+def export_objects(source: Path, dest: Path | str, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> list[ObjectExport]:
     """Write one MJCF per object to ``dest/<body>/<body>.xml`` with its own ``assets/``.
 
     Each file holds the object's free body (convex collision hulls in group 3, the visual mesh

@@ -206,7 +206,7 @@ def _sdf():
     return Sdf
 
 
-def export_usd(source: Path, dest: Path, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> UsdExport:
+def export_usd(source: Path, dest: Path | str, robot_prefix: str = ROBOT_PREFIX, *, force: bool = False) -> UsdExport:
     """Write the scene of output folder ``source`` to the USD file ``dest`` (.usda/.usd/.usdc).
 
     Poses are those of keyframe ``initial``. Texture images are copied to ``<dest stem>_textures/``
