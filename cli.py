@@ -104,6 +104,8 @@ def cmd_convert(args: argparse.Namespace) -> int:
                     seed=args.seed, overrides=overrides, console=console if args.verbose else None)
     if not args.quiet:
         print_conversion(scene, Path(args.output), Console())
+    for warning in scene.warnings:  # also in scene.json
+        print(f"realsim: warning: {warning}", file=sys.stderr)
     return 0
 
 

@@ -11,7 +11,7 @@ from realsim.scene import Scene
 
 
 def print_conversion(scene: Scene, dest: Path, console: Console) -> None:
-    """Supports, objects, settling figures, warnings and stage timings as rich tables."""
+    """Supports, objects, settling figures and stage timings as rich tables (warnings go to stderr: see cli.py)."""
     planes = Table(title="supports", title_justify="left")
     for col in ("id", "kind", "height m", "size m", "points"):
         planes.add_column(col)
@@ -27,12 +27,11 @@ def print_conversion(scene: Scene, dest: Path, console: Console) -> None:
         size = " x ".join(f"{v * 1000:.0f}" for v in o.size)
         objects.add_row(str(o.id), o.name, o.label, on, size, f"{o.mass:.3f}" if o.mass else "-", f"{moved.get(o.name, 0.0) * 1000:.2f}")
     console.print(objects)
-    for w in scene.warnings:
-        console.print(f"[yellow]warning:[/yellow] {w}")
     timings = ", ".join(f"{k} {v:.2f}s" for k, v in scene.timings.items())
     console.print(f"timings: {timings}")
     if scene.llm:
         llm = scene.llm
         console.print(f"claude ({llm['model']}): {llm['calls']} call(s), {llm['cache_hits']} cached, "
                       f"{llm['input_tokens']} + {llm['output_tokens']} tokens, ~${llm['cost_usd']:.4f}, {len(llm['failures'])} failed")
-    console.print(f"wrote {dest}/scene.xml (keyframe 'initial'), scene.json, labels.npy, assets/")
+    written = ["scene.json"] + (["labels.npy"] if scene.labels is not None else []) + ["preview.png", "assets/"]
+    console.print(f"wrote {dest}/scene.xml (keyframe 'initial'), {', '.join(written)}")

@@ -126,6 +126,30 @@ def texture_file(path: Path) -> Path | None:
     return None
 
 
+def missing_references(path: Path) -> list[str]:
+    """Files an OBJ names (its ``mtllib`` and the MTL's texture maps) that do not exist."""
+    path = Path(path)
+    if path.suffix.lower() != ".obj":
+        return []
+    missing: list[str] = []
+    try:
+        with path.open("r", errors="ignore") as fh:
+            mtllibs = [line.split(maxsplit=1)[1].strip() for _, line in zip(range(2000), fh)
+                       if line.startswith("mtllib") and len(line.split()) > 1]
+    except OSError:
+        return []
+    for name in mtllibs:
+        mtl = path.parent / name
+        if not mtl.is_file():
+            missing.append(name)
+            continue
+        for mline in mtl.read_text(errors="ignore").splitlines():
+            words = mline.split()
+            if words and words[0].lower().startswith("map_") and len(words) > 1 and not (mtl.parent / words[-1]).is_file():
+                missing.append(words[-1])
+    return missing
+
+
 def visual_appearance(mesh: trimesh.Trimesh, texture_path: Path | None = None) -> tuple[bytes | None, tuple[float, float, float, float], bool]:
     """(PNG bytes of the texture or None, RGBA material colour, has UVs)."""
     vis = mesh.visual

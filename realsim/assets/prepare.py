@@ -11,7 +11,7 @@ import trimesh
 
 from realsim.assets.decompose import decompose
 from realsim.assets.geometry import blend_inertia, clean_geometry, make_solid, plausible_scale, shell_inertia_unit, solid_inertia_unit
-from realsim.assets.loading import load_object_mesh, texture_file, visual_appearance
+from realsim.assets.loading import load_object_mesh, missing_references, texture_file, visual_appearance
 from realsim.assets.params import AssetParams
 from realsim.cache import DiskCache, cache_key
 from realsim.errors import InputError
@@ -180,7 +180,8 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
         com=com,
         inertia_unit_mass=inertia,
         scale_applied=float(heavy["scale"]),
-        warnings=list(heavy["warnings"]),
+        warnings=list(heavy["warnings"]) + [f"{name} is missing: the object is shown in a plain colour"
+                                            for name in missing_references(path)],
         timings=timings,
         solid=solid,
         surface_area=float(solid.area),

@@ -93,4 +93,7 @@ def run_cli(scene: str, command: str | None, program_file: str | None, planner: 
     verdict = record.verdict if record.goals else ("program finished" if record.success else "program failed")
     say(f"result: {verdict}; {record.sim_time:.1f} s simulated, {record.wall_time.get('total', 0.0):.1f} s wall; "
         f"exit {record.exit_code}")
+    if record.exit_code:  # the reason also goes to stderr, on one line, for scripts that read only it
+        kind = "error" if record.exit_code == 2 else "task failed"
+        print(f"realsim: {kind}: {record.error or verdict}", file=sys.stderr, flush=True)
     return record.exit_code
