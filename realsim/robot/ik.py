@@ -4,6 +4,8 @@ mink differential IK (a FrameTask on the tcp site, a PostureTask toward the home
 ConfigurationLimit and VelocityLimit, QP solver ``daqp``) with a damped-least-squares fallback
 and an optional wrist pin (joint 7 held at an angle). IK runs on a robot-only model at the world
 origin; targets are mapped into the robot's base frame, so one model serves every base pose.
+Given a loaded scene, that model (and the home posture) is copied out of the scene itself, so a
+scene runs without the Menagerie; without one (while converting) it is the Menagerie Panda.
 A solution is reported as converged only when its residual is within tolerance.
 """
 
@@ -16,7 +18,7 @@ import mink
 import mujoco
 import numpy as np
 
-from realsim.robot.model import ARM_JOINTS, HOME_ARM, PREFIX, robot_only_model
+from realsim.robot.model import ARM_JOINTS, HOME_ARM, PREFIX, describe_robot, robot_kinematics, robot_only_model
 
 
 @dataclass(frozen=True)
@@ -75,11 +77,13 @@ def rotation_angle(r_a: np.ndarray, r_b: np.ndarray) -> float:
 
 
 class ArmIK:
-    """IK of the tcp site for a Panda whose base stands at ``base_pos`` / ``base_quat`` (world)."""
+    """IK of the tcp site for a Panda whose base stands at ``base_pos`` / ``base_quat`` (world);
+    ``scene``: the compiled scene the robot stands in (its kinematics and home posture are used)."""
 
-    def __init__(self, base_pos: np.ndarray, base_quat: np.ndarray, params: IKParams = IKParams()):
+    def __init__(self, base_pos: np.ndarray, base_quat: np.ndarray, params: IKParams = IKParams(),
+                 scene: mujoco.MjModel | None = None):
         self.params = params
-        self.model = _origin_model()
+        self.model = _origin_model() if scene is None else robot_kinematics(scene, PREFIX + "link0")
         self.data = mujoco.MjData(self.model)
         self.base_pos = np.asarray(base_pos, float)
         self.base_rot = quat_to_mat(base_quat)
@@ -88,7 +92,7 @@ class ArmIK:
         self.dadr = np.array([self.model.jnt_dofadr[self.model.joint(PREFIX + j).id] for j in ARM_JOINTS])
         self.lower = self.model.jnt_range[[self.model.joint(PREFIX + j).id for j in ARM_JOINTS], 0]
         self.upper = self.model.jnt_range[[self.model.joint(PREFIX + j).id for j in ARM_JOINTS], 1]
-        self.home = np.array(HOME_ARM)
+        self.home = np.array(HOME_ARM if scene is None else describe_robot(scene, {"home_arm": HOME_ARM}).home_arm)
         self.configuration = mink.Configuration(self.model)
         self.frame_task = mink.FrameTask(PREFIX + "tcp", "site", position_cost=1.0, orientation_cost=1.0, lm_damping=params.lm_damping)
         self.posture_task = mink.PostureTask(self.model, cost=params.posture_cost)

@@ -5,6 +5,11 @@ pedestal, with a tool-centre site ``panda/tcp`` between the fingertip pads. Its 
 in-memory assets named ``panda_<file>`` so a written scene refers to them under ``assets/``.
 The spec gets a ``home`` keyframe: the robot at its home posture, objects at their poses, and
 the actuator controls that hold that posture (settle.py resets to it before settling).
+
+The Menagerie is read only while converting. At run time everything about the robot comes from
+the scene itself: :func:`describe_robot` reads the names, the home posture (keyframe ``home``)
+and the gripper's range from the compiled scene (with the names scene.json records), and
+:func:`robot_kinematics` copies the arm's kinematic chain out of it for IK.
 """
 
 from __future__ import annotations
@@ -12,6 +17,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -61,6 +67,43 @@ class RobotHandles:
     pedestal_height: float
     home_key: str = "home"
     assets: dict[str, bytes] = field(default_factory=dict, repr=False)
+
+    def record(self) -> dict[str, Any]:
+        """What scene.json records about the robot: the names the runtime looks up in scene.xml."""
+        return {
+            "prefix": self.prefix,
+            "base_body": self.base_body,
+            "tcp_site": self.tcp_site,
+            "hand_body": self.hand_body,
+            "finger_bodies": list(self.finger_bodies),
+            "arm_joints": list(self.arm_joints),
+            "finger_joints": list(self.finger_joints),
+            "arm_actuators": list(self.arm_actuators),
+            "gripper_actuator": self.gripper_actuator,
+            "home_key": self.home_key,
+            "home_arm": list(HOME_ARM),
+            "gripper_open_ctrl": GRIPPER_OPEN_CTRL,
+            "gripper_max_opening": GRIPPER_MAX_OPENING,
+        }
+
+
+@dataclass(frozen=True)
+class RobotDescription:
+    """The robot of a compiled scene, read from the scene alone (never from the Menagerie)."""
+
+    prefix: str
+    base_body: str
+    tcp_site: str
+    hand_body: str
+    finger_bodies: tuple[str, str]
+    arm_joints: tuple[str, ...]
+    finger_joints: tuple[str, ...]
+    arm_actuators: tuple[str, ...]
+    gripper_actuator: str
+    home_arm: tuple[float, ...]  # from keyframe ``home_key``
+    arm_limits: tuple[tuple[float, float], ...]  # joint ranges (rad)
+    gripper_open_ctrl: float  # upper end of the gripper actuator's ctrlrange
+    gripper_max_opening: float  # m between the fingers, from the finger joints' ranges
 
 
 def menagerie_panda_dir() -> Path:
@@ -202,4 +245,90 @@ def robot_only_model(base_pos: np.ndarray, base_quat: np.ndarray, gripper: Gripp
     spec.assets = assets
     for key in list(spec.keys):
         spec.delete(key)
+    return spec.compile()
+
+
+def describe_robot(model: mujoco.MjModel, record: dict[str, Any] | None = None) -> RobotDescription:
+    """The robot in ``model`` by the names in ``record`` (scene.json's ``robot``; the Panda's names
+    under ``panda/`` when absent). Raises :class:`InputError` naming an element the scene lacks."""
+    rec = dict(record or {})
+    prefix = str(rec.get("prefix") or PREFIX)
+
+    def names(key: str, default: tuple[str, ...]) -> tuple[str, ...]:
+        return tuple(str(n) for n in rec.get(key) or (prefix + n for n in default))
+
+    def one(key: str, default: str) -> str:
+        return str(rec.get(key) or prefix + default)
+
+    def need(kind: mujoco.mjtObj, name: str, what: str) -> int:
+        i = mujoco.mj_name2id(model, kind, name)
+        if i < 0:
+            raise InputError(f"the scene has no {what} '{name}' (scene.json names it); convert the scene again")
+        return i
+
+    arm = names("arm_joints", ARM_JOINTS)
+    fingers = names("finger_joints", FINGER_JOINTS)
+    finger_bodies = names("finger_bodies", ("left_finger", "right_finger"))
+    gripper = one("gripper_actuator", GRIPPER_ACTUATOR)
+    base, tcp, hand = one("base_body", "link0"), one("tcp_site", "tcp"), one("hand_body", "hand")
+    for body in (base, hand, *finger_bodies):
+        need(mujoco.mjtObj.mjOBJ_BODY, body, "robot body")
+    need(mujoco.mjtObj.mjOBJ_SITE, tcp, "tool-centre site")
+    joints = [need(mujoco.mjtObj.mjOBJ_JOINT, j, "robot joint") for j in arm + fingers]
+    actuators = names("arm_actuators", ARM_ACTUATORS)
+    for a in actuators:
+        need(mujoco.mjtObj.mjOBJ_ACTUATOR, a, "robot actuator")
+    grip = need(mujoco.mjtObj.mjOBJ_ACTUATOR, gripper, "gripper actuator")
+    qadr = [int(model.jnt_qposadr[j]) for j in joints[: len(arm)]]
+    key = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, str(rec.get("home_key") or "home"))
+    if key >= 0:
+        home = tuple(float(v) for v in model.key_qpos[key][qadr])
+    elif rec.get("home_arm"):
+        home = tuple(float(v) for v in rec["home_arm"])
+    else:
+        raise InputError("the scene has no 'home' keyframe for the robot; convert the scene again")
+    finger_upper = [float(model.jnt_range[j][1]) for j in joints[len(arm):]]
+    ctrl_upper = float(model.actuator_ctrlrange[grip][1]) if model.actuator_ctrllimited[grip] else float(rec.get("gripper_open_ctrl", GRIPPER_OPEN_CTRL))
+    return RobotDescription(
+        prefix=prefix, base_body=base, tcp_site=tcp, hand_body=hand, finger_bodies=(finger_bodies[0], finger_bodies[1]),
+        arm_joints=arm, finger_joints=fingers, arm_actuators=actuators, gripper_actuator=gripper, home_arm=home,
+        arm_limits=tuple((float(model.jnt_range[j][0]), float(model.jnt_range[j][1])) for j in joints[: len(arm)]),
+        gripper_open_ctrl=ctrl_upper, gripper_max_opening=float(sum(finger_upper)) or GRIPPER_MAX_OPENING,
+    )
+
+
+def robot_kinematics(scene: mujoco.MjModel, base_body: str = PREFIX + "link0") -> mujoco.MjModel:
+    """The robot's kinematic tree copied out of a compiled scene, its base at the world origin.
+
+    Bodies (with their inertia), joints (axes, ranges) and sites of ``base_body``'s subtree keep
+    their names, so IK built for the Menagerie model runs on it unchanged; geoms, actuators and
+    everything else are left out. Nothing is read from outside the scene.
+    """
+    root = mujoco.mj_name2id(scene, mujoco.mjtObj.mjOBJ_BODY, base_body)
+    if root < 0:
+        raise InputError(f"the scene has no robot base body '{base_body}'")
+    spec = mujoco.MjSpec()
+    spec.modelname = "robot_kinematics"
+    spec.compiler.degree = False  # the compiled scene's ranges are radians
+    made: dict[int, mujoco.MjsBody] = {}
+    for b in range(root, scene.nbody):  # depth-first order: a subtree is contiguous after its root
+        if b != root and int(scene.body_parentid[b]) not in made:
+            break
+        parent = spec.worldbody if b == root else made[int(scene.body_parentid[b])]
+        body = parent.add_body(name=scene.body(b).name)
+        if b != root:
+            body.pos, body.quat = scene.body_pos[b].tolist(), scene.body_quat[b].tolist()
+        body.mass = float(scene.body_mass[b])
+        body.ipos, body.iquat = scene.body_ipos[b].tolist(), scene.body_iquat[b].tolist()
+        body.inertia = scene.body_inertia[b].tolist()
+        body.explicitinertial = True
+        for j in range(int(scene.body_jntadr[b]), int(scene.body_jntadr[b] + scene.body_jntnum[b])):
+            limited = mujoco.mjtLimited.mjLIMITED_TRUE if scene.jnt_limited[j] else mujoco.mjtLimited.mjLIMITED_FALSE
+            body.add_joint(name=scene.joint(j).name, type=mujoco.mjtJoint(int(scene.jnt_type[j])), axis=scene.jnt_axis[j].tolist(),
+                           pos=scene.jnt_pos[j].tolist(), range=scene.jnt_range[j].tolist(), limited=limited)
+        made[b] = body
+    for s in range(scene.nsite):
+        if int(scene.site_bodyid[s]) in made:
+            made[int(scene.site_bodyid[s])].add_site(name=scene.site(s).name, pos=scene.site_pos[s].tolist(),
+                                                     quat=scene.site_quat[s].tolist())
     return spec.compile()

@@ -87,7 +87,7 @@ class Robot:
         mujoco.mj_kinematics(model, data)
         self.base_pos = data.xpos[self.base_id].copy()
         self.base_quat = data.xquat[self.base_id].copy()
-        self.ik = ArmIK(self.base_pos, self.base_quat, ik_params)
+        self.ik = ArmIK(self.base_pos, self.base_quat, ik_params, scene=model)
         self._points: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         self._deadline = np.inf
         self.held: str | None = None

@@ -2,7 +2,9 @@
 and goals read from it.
 
 ``Sim.load(folder)`` compiles ``folder/scene.xml`` and reads ``folder/scene.json`` (labels,
-manifests). Object positions and sizes given to planners and goals are *live*: the centre and
+manifests, the robot's names). The folder is all it needs: the robot's kinematics, home posture
+and limits are read from the scene, never from the Menagerie, so a moved or exported scene runs
+offline. Object positions and sizes given to planners and goals are *live*: the centre and
 the world-axis-aligned extents of each body's collision geometry at the current state, so a
 goal measured after a run sees where the objects really are. Nothing is ever written back to
 the scene folder.
@@ -21,7 +23,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner.types import ObjectInfo
-from realsim.robot.model import HOME_ARM, PREFIX
+from realsim.robot.model import PREFIX, describe_robot
 from realsim.robot.robot import Robot, RobotParams
 
 KEYFRAME = "initial"
@@ -90,6 +92,10 @@ class Sim:
                              "convert it again without --no-robot")
         if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, KEYFRAME) < 0:
             raise InputError(f"{self.folder}/scene.xml has no keyframe '{KEYFRAME}'; convert the scene again")
+        try:  # everything about the robot comes from the scene, never from the Menagerie
+            self.robot_description = describe_robot(model, meta.get("robot"))
+        except InputError as exc:
+            raise InputError(f"{self.folder}: {exc}") from None
         self.records: dict[str, SceneObjectRecord] = {}
         for o in meta.get("objects", []):
             body = o.get("body") or o.get("name")
@@ -181,7 +187,7 @@ class Sim:
         return [float(v) for v in pos]
 
     def home_error(self) -> float:
-        return float(np.abs(self.data.qpos[self.robot.qadr] - np.array(HOME_ARM)).max())
+        return float(np.abs(self.data.qpos[self.robot.qadr] - np.array(self.robot_description.home_arm)).max())
 
     def at_home(self) -> bool:
         return self.home_error() < HOME_TOLERANCE
