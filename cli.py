@@ -100,8 +100,12 @@ def cmd_convert(args: argparse.Namespace) -> int:
         load["text"] = args.text
     elif args.source is None:
         raise InputError('convert needs a capture (file or folder) or --text "a table with a mug"')
-    scene = convert(Path(args.source) if args.source else None, args.output, force=args.force, pipeline=args.pipeline,
-                    seed=args.seed, overrides=overrides, console=console if args.verbose else None)
+    scene = convert(Path(args.source) if args.source else None, args.output, force=args.force, check_only=args.check,
+                    pipeline=args.pipeline, seed=args.seed, overrides=overrides, console=console if args.verbose else None)
+    if scene is None:
+        if not args.quiet:
+            print(f"realsim: the capture, the flags and {args.output} are valid; nothing was run (--check)")
+        return 0
     if not args.quiet:
         print_conversion(scene, Path(args.output), Console())
     for warning in scene.warnings:  # also in scene.json
@@ -193,6 +197,7 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("--photo", metavar="PATH", help="a photo of the scene: Claude names the objects in it (default: photo.* in the capture folder)")
     convert.add_argument("--pipeline", help="pipeline name in pipelines/ or a YAML path (chosen from the input by default)")
     convert.add_argument("--set", action="append", default=[], metavar="STAGE.PARAM=VALUE", help="override a stage parameter")
+    convert.add_argument("--check", action="store_true", help="validate the capture, the flags and the output path, then stop")
     convert.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
     convert.add_argument("-v", "--verbose", action="store_true", help="log each stage as it starts")
     convert.set_defaults(func=cmd_convert)

@@ -21,6 +21,7 @@ import yaml
 from rich.console import Console
 
 from realsim.capture import LoadParams, load_capture
+from realsim.capture_config import read_capture_config
 from realsim.completion import CompletionParams, complete_objects
 from realsim.compose import ComposeParams, compose_scene
 from realsim.destination import check_destination
@@ -114,6 +115,34 @@ def pipeline_for(source: Path | None, text: str | None = None) -> str:
     return "scan"
 
 
+def plan_pipeline(
+    source: Path | None,
+    *,
+    pipeline: str | Path | None = None,
+    seed: int = 0,
+    overrides: dict[str, dict[str, Any]] | None = None,
+) -> tuple[PipelineSpec, list[tuple[str, Any]]]:
+    """Check everything the user gave before any work: the seed, the pipeline, every stage's
+    parameters, and that the capture exists with a valid ``capture.yaml``. Returns the pipeline
+    and each stage's validated parameters."""
+    overrides = overrides or {}
+    check_seed(seed)
+    if not isinstance(overrides, dict) or not all(isinstance(v, dict) for v in overrides.values()):
+        raise InputError("overrides must map stage names to {parameter: value} mappings")
+    if source is not None:
+        if not Path(source).exists():
+            raise InputError(f"{source}: no such file or folder")
+        if Path(source).is_dir():
+            read_capture_config(Path(source))
+    spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))
+    unknown_names(overrides, {name for name, _ in spec.stages} | {"load"}, f"stages of pipeline {spec.name}")
+    plan = []
+    for name, params in spec.stages:
+        cls = LoadParams if name == "load" else STAGES[name].params
+        plan.append((name, build_params(cls, {**params, **overrides.get(name, {})}, name)))
+    return spec, plan
+
+
 def run_pipeline(
     source: Path | None,
     *,
@@ -126,16 +155,9 @@ def run_pipeline(
 
     ``overrides`` maps stage names to parameter values that win over the pipeline file's
     (the CLI's ``--units``/``--up`` arrive as ``{"load": {"units": ..., "up": ...}}``).
+    Everything is validated (:func:`plan_pipeline`) before the first stage runs.
     """
-    overrides = overrides or {}
-    seed = check_seed(seed)
-    spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))
-    unknown_names(overrides, {name for name, _ in spec.stages} | {"load"}, f"stages of pipeline {spec.name}")
-    # Build every stage's parameters first, so a bad override fails before any work.
-    plan = []
-    for name, params in spec.stages:
-        cls = LoadParams if name == "load" else STAGES[name].params
-        plan.append((name, build_params(cls, {**params, **overrides.get(name, {})})))
+    spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
     scene: Scene | None = None
     for name, params in plan:
         started = time.perf_counter()
@@ -153,16 +175,22 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path | None, dest: Path | str, *, force: bool = False, **kwargs: Any) -> Scene:
+def convert(source: Path | None, dest: Path | str, *, force: bool = False, check_only: bool = False,
+            **kwargs: Any) -> Scene | None:
     """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically.
 
     ``dest`` is checked before any work (:func:`realsim.destination.check_destination`): a new
-    path, an empty folder, or earlier realsim output replaced only with ``force``.
+    path, an empty folder, or earlier realsim output replaced only with ``force``. With
+    ``check_only`` everything is validated and nothing is run or written (returns None).
     """
     started = time.perf_counter()
     photo = ((kwargs.get("overrides") or {}).get("objects", {}).get("understanding", {}) or {}).get("photo")
     dest = check_destination(dest, inputs=[source, Path(photo) if photo else None], force=force)
-    scene = run_pipeline(Path(source) if source is not None else None, **kwargs)
+    source = Path(source) if source is not None else None
+    if check_only:
+        plan_pipeline(source, **{k: v for k, v in kwargs.items() if k != "console"})
+        return None
+    scene = run_pipeline(source, **kwargs)
     write_started = time.perf_counter()
     write_scene(scene, dest, force=force)
     scene.timings["write"] = round(time.perf_counter() - write_started, 4)

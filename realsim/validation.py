@@ -45,8 +45,12 @@ def _all_finite(value: Any) -> bool:
     return True
 
 
-def check_param(cls: type, name: str, value: Any, default: Any) -> Any:
-    """``value`` converted to the type of ``cls.name`` and checked (finite; positive when the default is)."""
+def check_param(cls: type, name: str, value: Any, default: Any, where: str | None = None) -> Any:
+    """``value`` converted to the type of ``cls.name`` and checked (finite; positive when the default is).
+
+    ``where`` names the parameter in messages (``planes.distance_threshold``); default ``Class.name``.
+    """
+    shown = f"{where or cls.__name__}.{name}"
     try:
         adapter = TypeAdapter(typing.get_type_hints(cls)[name])
     except (PydanticSchemaGenerationError, NameError, TypeError):  # an arbitrary type: no schema to check
@@ -55,33 +59,35 @@ def check_param(cls: type, name: str, value: Any, default: Any) -> Any:
         converted = adapter.validate_python(value)
     except ValidationError as exc:
         first = exc.errors()[0]
-        raise InputError(f"{cls.__name__}.{name} = {value!r}: {first['msg'].lower()}") from None
+        item = f" (item {'.'.join(str(p) for p in first['loc'])})" if first["loc"] else ""
+        raise InputError(f"{shown} = {value!r}: {first['msg'].lower()}{item}") from None
     if not _all_finite(converted):
-        raise InputError(f"{cls.__name__}.{name} = {value!r}: must be a finite number")
+        raise InputError(f"{shown} = {value!r}: must be a finite number")
     is_number = isinstance(converted, (int, float)) and not isinstance(converted, bool)
     default_positive = isinstance(default, (int, float)) and not isinstance(default, bool) and default > 0
     if is_number and default_positive and (converted <= 0 if isinstance(default, float) else converted < 0):
-        raise InputError(f"{cls.__name__}.{name} = {value!r}: must be {'positive' if isinstance(default, float) else '>= 0'} "
+        raise InputError(f"{shown} = {value!r}: must be {'positive' if isinstance(default, float) else '>= 0'} "
                          f"(default {default})")
     return converted
 
 
-def build_params(cls: type, overrides: dict[str, Any]) -> Any:
-    """``cls()`` with ``overrides`` applied and validated (nested dataclasses from nested mappings)."""
+def build_params(cls: type, overrides: dict[str, Any], where: str | None = None) -> Any:
+    """``cls()`` with ``overrides`` applied and validated (nested dataclasses from nested mappings);
+    ``where`` (``planes``) names the parameters in messages."""
     default = cls()
     if not overrides:
         return default
     if not isinstance(overrides, dict):
-        raise InputError(f"{cls.__name__}: expected a mapping of parameters, got {overrides!r}")
+        raise InputError(f"{where or cls.__name__}: expected a mapping of parameters, got {overrides!r}")
     fields = {f.name for f in dataclasses.fields(cls)}
-    unknown_names(overrides, fields, f"parameters of {cls.__name__}")
+    unknown_names(overrides, fields, f"parameters of {where or cls.__name__}")
     values = {}
     for key, value in overrides.items():
         current = getattr(default, key)
         if dataclasses.is_dataclass(current) and isinstance(value, dict):
-            values[key] = build_params(type(current), value)
+            values[key] = build_params(type(current), value, f"{where or cls.__name__}.{key}")
         else:
-            values[key] = check_param(cls, key, value, current)
+            values[key] = check_param(cls, key, value, current, where)
     return dataclasses.replace(default, **values)
 
 
