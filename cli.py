@@ -19,16 +19,26 @@ os.environ.setdefault("MUJOCO_GL", "egl")
 
 
 def _parse_set(values: list[str]) -> dict[str, dict[str, Any]]:
-    """``stage.param=value`` pairs into pipeline overrides (values parsed as YAML scalars)."""
+    """``stage.param=value`` pairs into pipeline overrides (values parsed as YAML scalars; a dotted
+    ``stage.group.param`` reaches a nested parameter dataclass)."""
     from realsim.errors import InputError
 
     overrides: dict[str, dict[str, Any]] = {}
     for item in values:
         key, sep, raw = item.partition("=")
-        stage, dot, param = key.partition(".")
-        if not sep or not dot or not stage or not param:
+        stage, *path = key.split(".")
+        if not sep or not stage or not path or not all(path):
             raise InputError(f"--set {item!r}: expected stage.param=value, e.g. --set planes.distance_threshold=0.008")
-        overrides.setdefault(stage, {})[param] = yaml.safe_load(raw)
+        try:
+            value = yaml.safe_load(raw)
+        except yaml.YAMLError:
+            value = raw
+        node = overrides.setdefault(stage, {})
+        for part in path[:-1]:
+            node = node.setdefault(part, {})
+            if not isinstance(node, dict):
+                raise InputError(f"--set {item!r}: {part} is set twice, as a value and as a group")
+        node[path[-1]] = value
     return overrides
 
 
