@@ -1,173 +1,387 @@
-"""Constructive solid geometry (manifold3d) of everyday objects, in the object frame.
+"""Families of everyday objects built from convex pieces (:mod:`realsim.procedural.parts`).
 
-Every builder returns a watertight :class:`trimesh.Trimesh` in metres, Z up, the base centred at
-the origin (the convention of :mod:`realsim.assets`). Hollow objects (mug, cup, bowl, tray, bin,
-drawer) have real cavities, so the convex decomposition keeps them open.
+Every family is a function of the object's extents ``d`` (largest first, from the size table,
+already scaled) returning a :class:`~realsim.procedural.parts.Shape` in the object frame (Z up;
+the caller moves the base centre to the origin) with named sites where a hand or a program
+needs them: ``handle`` (and ``handle_2``), ``rim`` and ``cavity`` of open containers, ``lid``,
+``spout``, ``stem``, ``hinge``. Articulated families (drawer cabinet, hinged box, laptop) return
+an :class:`Articulated` with the parent, the child and the joint.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+from typing import Callable
+
 import numpy as np
-import trimesh
-from manifold3d import CrossSection, Manifold
+from manifold3d import Manifold
 
-SEGMENTS = 48  # circular resolution: enough for smooth rims, few faces for CoACD
+from realsim.procedural.parts import Shape, arc, box, cylinder, ellipsoid, hull_shape, open_box, rounded_slab, tube, union, vessel
 
-
-def to_trimesh(m: Manifold) -> trimesh.Trimesh:
-    """A manifold as a trimesh (base centred at the origin is the caller's job)."""
-    mesh = m.to_mesh()
-    verts = np.asarray(mesh.vert_properties, dtype=np.float64)[:, :3]
-    faces = np.asarray(mesh.tri_verts, dtype=np.int64)
-    return trimesh.Trimesh(verts, faces, process=True)
+D = tuple[float, float, float]
 
 
-def _revolve(profile: list[tuple[float, float]]) -> Manifold:
-    """Revolve an (r, z) polygon (r >= 0, counter-clockwise) around Z."""
-    return CrossSection([np.asarray(profile, dtype=np.float64)]).revolve(SEGMENTS)
+@dataclass
+class Articulated:
+    """A parent, a child hanging on it (closed pose, parent frame) and the joint between them."""
+
+    parent: Shape
+    child: Shape
+    joint: str  # "slide" | "hinge"
+    axis: tuple[float, float, float]
+    range: tuple[float, float]
+    hinge_pos: tuple[float, float, float] = (0.0, 0.0, 0.0)  # joint anchor, parent frame
+    child_sites: dict[str, tuple[float, float, float]] = field(default_factory=dict)
 
 
-def _box(x: float, y: float, z: float) -> Manifold:
-    """A box with its base centred at the origin."""
-    return Manifold.cube([x, y, z], center=True).translate([0.0, 0.0, z / 2])
+# ---------------------------------------------------------------- open containers and tableware
+def mug(d: D) -> Shape:
+    return mug_hd(d[1], d[1] * 0.9)
 
 
-def _torus(major: float, minor: float) -> Manifold:
-    """A torus around Z, centred at the origin."""
-    return CrossSection.circle(minor, 16).translate([major, 0.0]).revolve(SEGMENTS)
+def mug_hd(h: float, dia: float) -> Shape:
+    """A mug of height ``h`` and body diameter ``dia``: a cylindrical vessel, a ring handle on +x."""
+    r = dia / 2
+    body = vessel([(r, 0.0), (r, h)], wall=0.005, bottom=0.008, segments=1)
+    hr = h * 0.28
+    path = arc((r - 0.002, 0.0, h * 0.52), hr, -75, 75, "xz", 7)
+    path = np.vstack([[r - 0.004, 0.0, path[0, 2]], path, [r - 0.004, 0.0, path[-1, 2]]])  # ends inside the wall
+    handle = tube(path, max(0.0045, h * 0.04), 8)
+    return (body + handle).with_sites(handle=(r + hr, 0.0, h * 0.52))
 
 
-def mug(height: float, diameter: float, wall: float = 0.005) -> Manifold:
-    """A hollow cylindrical mug with a thick bottom and a ring handle on +x."""
-    r = diameter / 2
-    body = Manifold.cylinder(height, r, r, SEGMENTS)
-    hr = height * 0.28  # handle ring radius (centre line)
-    ht = max(wall * 1.2, 0.006)  # handle thickness
-    handle = _torus(hr, ht / 2).rotate([90.0, 0.0, 0.0]).translate([r, 0.0, height * 0.52])
-    handle = handle - Manifold.cylinder(height, r - wall / 2, r - wall / 2, SEGMENTS)  # no handle inside
-    cavity = Manifold.cylinder(height, r - wall, r - wall, SEGMENTS).translate([0.0, 0.0, max(wall * 1.6, 0.008)])
-    return (body + handle) - cavity
+def cup(d: D) -> Shape:
+    h, r = d[0], d[1] / 2
+    return vessel([(r * 0.78, 0.0), (r, h)], wall=0.004, bottom=0.006, segments=2)
 
 
-def cup(height: float, diameter: float, wall: float = 0.004) -> Manifold:
-    """A tapered open cup (tumbler): narrower base, open top."""
-    r_top, r_bot = diameter / 2, diameter / 2 * 0.78
-    base = max(wall * 1.5, 0.006)
-    profile = [(0.0, 0.0), (r_bot, 0.0), (r_top, height), (r_top - wall, height), (r_bot - wall + (r_top - r_bot) * base / height, base), (0.0, base)]
-    return _revolve(profile)
+def glass(d: D) -> Shape:
+    h, r = d[0], d[1] / 2
+    return vessel([(r * 0.9, 0.0), (r, h)], wall=0.003, bottom=0.008, segments=2)
 
 
-def bowl(height: float, diameter: float, wall: float = 0.004) -> Manifold:
-    """A bowl: a foot ring and a curved wall rising to a wide open rim."""
-    R = diameter / 2
-    foot = R * 0.45
-    n = 10
-    outer = [(foot + (R - foot) * np.sin(t * np.pi / 2), height * (1 - np.cos(t * np.pi / 2))) for t in np.linspace(0, 1, n)]
-    bottom = max(wall * 1.5, 0.005)
-    inner_foot = foot - wall
-    inner = [(inner_foot + (R - wall - inner_foot) * np.sin(t * np.pi / 2), bottom + (height - bottom) * (1 - np.cos(t * np.pi / 2))) for t in np.linspace(1, 0, n)]
-    profile = [(0.0, 0.0), *outer, *inner, (0.0, bottom)]
-    return _revolve(profile)
+def bowl(d: D) -> Shape:
+    return bowl_hd(d[2], d[0])
 
 
-def plate(height: float, diameter: float) -> Manifold:
-    """A plate: a flat well and a raised, sloped rim."""
-    R = diameter / 2
-    well = R * 0.62
-    floor = max(height * 0.35, 0.004)
-    profile = [(0.0, 0.0), (well * 0.8, 0.0), (R, height * 0.7), (R, height), (R - 0.006, height), (well, floor), (0.0, floor)]
-    return _revolve(profile)
+def bowl_hd(h: float, dia: float) -> Shape:
+    """A bowl: a foot and a curved wall rising to a wide rim."""
+    R = dia / 2
+    foot = R * 0.5
+    t = np.linspace(0.0, 1.0, 6)
+    outer = [(foot + (R - foot) * np.sin(v * np.pi / 2), h * (1 - np.cos(v * np.pi / 2))) for v in t]
+    return vessel(outer, wall=0.004, bottom=0.005, segments=2)
 
 
-def bottle(height: float, diameter: float) -> Manifold:
-    """A closed bottle: body, rounded shoulder, neck and cap (a closed container)."""
-    r = diameter / 2
-    neck_r = max(r * 0.32, 0.009)
-    body_h = height * 0.62
-    shoulder_h = height * 0.2
-    n = 8
-    shoulder = [(neck_r + (r - neck_r) * np.cos(t * np.pi / 2), body_h + shoulder_h * np.sin(t * np.pi / 2)) for t in np.linspace(0, 1, n)]
-    profile = [(0.0, 0.0), (r * 0.92, 0.0), (r, 0.006), *shoulder, (neck_r, height * 0.93), (neck_r * 1.15, height * 0.93), (neck_r * 1.15, height), (0.0, height)]
-    return _revolve(profile)
+def plate(d: D) -> Shape:
+    R, h = d[0] / 2, max(d[2], 0.015)
+    return vessel([(R * 0.55, 0.0), (R * 0.65, h * 0.35), (R, h)], wall=0.005, bottom=0.005, segments=1)
 
 
-def can(height: float, diameter: float) -> Manifold:
-    """A beverage/food can: a cylinder with a narrower base chime and a top rim."""
-    r = diameter / 2
-    profile = [(0.0, 0.0), (r * 0.85, 0.0), (r, height * 0.08), (r, height * 0.92), (r * 0.9, height * 0.985), (r * 0.88, height), (0.0, height)]
-    return _revolve(profile)
+def vase(d: D) -> Shape:
+    """Vase, flower pot, bucket: a tapered open vessel."""
+    h, r = d[0], d[1] / 2
+    return vessel([(r * 0.75, 0.0), (r, h)], wall=0.006, bottom=0.01, segments=2)
 
 
-def jar(height: float, diameter: float) -> Manifold:
-    """A jar with a slightly wider screw lid."""
-    r = diameter / 2
-    body = Manifold.cylinder(height * 0.82, r, r, SEGMENTS)
-    neck = Manifold.cylinder(height * 0.06, r * 0.85, r * 0.85, SEGMENTS).translate([0.0, 0.0, height * 0.82])
-    lid = Manifold.cylinder(height * 0.12, r * 0.9, r * 0.9, SEGMENTS).translate([0.0, 0.0, height * 0.88])
-    return body + neck + lid
+def pan(d: D) -> Shape:
+    """A frying pan: a shallow vessel and a long handle on +x at rim height."""
+    r, h = d[1] / 2, max(d[2], 0.03)
+    body = vessel([(r * 0.85, 0.0), (r, h)], wall=0.004, bottom=0.005, segments=1)
+    length = max(d[0] - d[1], 0.08)
+    path = np.array([[r - 0.004, 0.0, h * 0.8], [r + length * 0.4, 0.0, h * 0.95], [r + length, 0.0, h * 1.05]])
+    handle = tube(path, [0.009, 0.008, 0.009], 6)
+    return (body + handle).with_sites(handle=(r + length * 0.7, 0.0, h))
 
 
-def box(x: float, y: float, z: float) -> Manifold:
-    """A closed rectangular box (cereal box, carton)."""
-    return _box(x, y, z)
+def pot(d: D) -> Shape:
+    """A cooking pot: a deep vessel with two loop handles (+x and -x)."""
+    r, h = d[1] / 2, d[2]
+    body = vessel([(r, 0.0), (r, h)], wall=0.0025, bottom=0.005, segments=2)
+    loops = []
+    for sign in (1, -1):
+        path = arc((0.0, 0.0, 0.0), 0.025, -60, 60, "xz", 5)
+        path = np.vstack([[-0.02, 0.0, path[0, 2]], path, [-0.02, 0.0, path[-1, 2]]])  # ends inside the wall
+        path = np.column_stack([sign * (r - 0.003 + path[:, 0]), path[:, 1], h * 0.82 + path[:, 2]])
+        loops.append(tube(path, 0.005, 6))
+    return union(body, *loops).with_sites(handle=(r + 0.025, 0.0, h * 0.82), handle_2=(-r - 0.025, 0.0, h * 0.82))
 
 
-def book(x: float, y: float, z: float) -> Manifold:
-    """A closed book lying flat: covers slightly larger than the page block (fore-edge inset)."""
+def kettle(d: D) -> Shape:
+    """A kettle: a closed tapered body with a lid, an arched handle over the top and a spout."""
+    h, r = d[0] * 0.75, d[2] / 2 * 1.1
+    body = vessel([(r, 0.0), (r * 0.75, h)], wall=0.003, bottom=0.006, segments=1, closed_top=0.01)
+    knob = cylinder(0.015, 0.012).moved(z=h + 0.008)
+    path = arc((0.0, 0.0, h * 0.7), r * 0.8, 10, 170, "xz", 9)
+    handle = tube(path, 0.009, 8)
+    spout = tube(np.array([[r * 0.85, 0.0, h * 0.25], [r * 1.2, 0.0, h * 0.55], [r * 1.35, 0.0, h * 0.7]]), [0.014, 0.01, 0.008], 8)
+    top = h * 0.7 + r * 0.8
+    return union(body, knob, handle, spout).with_sites(handle=(0.0, 0.0, top), lid=(0.0, 0.0, h + 0.025), spout=(r * 1.35, 0.0, h * 0.7))
+
+
+def teapot(d: D) -> Shape:
+    """A teapot: a bulbous closed body with a lid knob, a spout (+x) and a loop handle (-x)."""
+    R, h = d[1] / 2, d[1] * 0.8
+    t = np.linspace(0.0, 1.0, 7)
+    outer = [(R * (0.65 + 0.35 * np.sin(v * np.pi)), h * v) for v in t]
+    outer[-1] = (R * 0.55, h)
+    body = vessel(outer, wall=0.005, bottom=0.006, segments=2, closed_top=0.008)
+    knob = cylinder(0.02, 0.012, 0.006).moved(z=h + 0.006)
+    reach = max(d[0] / 2 - R, 0.03)
+    spout = tube(np.array([[R * 0.8, 0.0, h * 0.3], [R + reach * 0.5, 0.0, h * 0.55], [R + reach, 0.0, h * 0.85]]), [0.013, 0.009, 0.006], 8)
+    loop = arc((-R * 0.9, 0.0, h * 0.5), h * 0.28, 100, 260, "xz", 7)
+    loop = np.vstack([[-R * 0.6, 0.0, loop[0, 2]], loop, [-R * 0.6, 0.0, loop[-1, 2]]])  # ends inside the body
+    handle = tube(loop, 0.006, 8)
+    return union(body, knob, spout, handle).with_sites(handle=(-R * 0.9 - h * 0.28, 0.0, h * 0.5), lid=(0.0, 0.0, h + 0.028),
+                                                       spout=(R + reach, 0.0, h * 0.85))
+
+
+def tray(d: D) -> Shape:
+    return open_box(d[0], d[1], max(d[2], 0.03), wall=0.006).with_sites(handle=(d[0] / 2 - 0.003, 0.0, max(d[2], 0.03)))
+
+
+def basket(d: D) -> Shape:
+    """A woven-look basket: tapered open box, slots cut in the visual walls only."""
+    x, y, z = d[0], d[1], d[2]
+    shape = open_box(x, y, z, wall=0.006, taper=0.88)
+    slots = [Manifold.cube([0.012, y * 1.2, z * 0.18], center=True).translate([sx, 0.0, z * 0.55]) for sx in np.linspace(-x * 0.3, x * 0.3, 5)]
+    cut = slots[0]
+    for s in slots[1:]:
+        cut = cut + s
+    return shape.minus(cut)
+
+
+def crate(d: D) -> Shape:
+    """A crate: a thick-walled open box with hand holes in the short (x) walls."""
+    x, y, z = d[0], d[1], d[2]
+    shape = open_box(x, y, z, wall=0.012, bottom=0.012)
+    hole = Manifold.cube([x * 1.2, min(0.09, y * 0.4), 0.03], center=True).translate([0.0, 0.0, z - 0.035])
+    return shape.minus(hole).with_sites(handle=(x / 2 - 0.006, 0.0, z - 0.035), handle_2=(-x / 2 + 0.006, 0.0, z - 0.035))
+
+
+def bin_(d: D) -> Shape:
+    """A bin (trash bin, tall storage bin): a tall tapered open box."""
+    return open_box(d[1], d[2], d[0], wall=0.005, bottom=0.015, taper=0.85)
+
+
+# ---------------------------------------------------------------- closed containers and solids
+def bottle(d: D) -> Shape:
+    h, r = d[0], d[1] / 2
+    neck = max(r * 0.32, 0.009)
+    body_h, shoulder_h = h * 0.62, h * 0.2
+    t = np.linspace(0.0, 1.0, 6)
+    rings = [(r, 0.0), (r, body_h)] + [(neck + (r - neck) * np.cos(v * np.pi / 2), body_h + shoulder_h * np.sin(v * np.pi / 2)) for v in t[1:]]
+    lower = np.vstack([_ring_pts(rr, z) for rr, z in rings])
+    upper = np.vstack([_ring_pts(neck, body_h + shoulder_h), _ring_pts(neck, h * 0.93), _ring_pts(neck * 1.15, h * 0.93), _ring_pts(neck * 1.15, h)])
+    return union(hull_shape(lower), hull_shape(upper)).with_sites(lid=(0.0, 0.0, h))
+
+
+def _ring_pts(r: float, z: float, n: int = 20) -> np.ndarray:
+    t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    return np.column_stack([r * np.cos(t), r * np.sin(t), np.full(n, z)])
+
+
+def can(d: D) -> Shape:
+    h, r = d[0], d[1] / 2
+    pts = np.vstack([_ring_pts(r * 0.88, 0.0), _ring_pts(r, h * 0.06), _ring_pts(r, h * 0.94), _ring_pts(r * 0.9, h)])
+    return hull_shape(pts).with_sites(lid=(0.0, 0.0, h))
+
+
+def jar(d: D) -> Shape:
+    h, r = d[0], d[1] / 2
+    return union(cylinder(h * 0.86, r), cylinder(h * 0.14, r * 0.9).moved(z=h * 0.86)).with_sites(lid=(0.0, 0.0, h))
+
+
+def cylinder_(d: D) -> Shape:
+    """A plain upright cylinder (candle, tube)."""
+    return cylinder(d[0], d[1] / 2)
+
+
+def box_(d: D) -> Shape:
+    """A closed box lying on its largest face (phone, remote, soap, block)."""
+    return box(d[0], d[1], d[2])
+
+
+def upright_box(d: D) -> Shape:
+    """A closed box standing on its smallest face's long edge (cereal box, carton)."""
+    return box(d[1], d[2], d[0])
+
+
+def book(d: D) -> Shape:
+    x, y, z = d[0], d[1], d[2]
     cover = min(0.003, z * 0.15)
-    pages = _box(x - 0.004, y - 0.002, z - 2 * cover).translate([0.002, 0.0, cover])
-    bottom = _box(x, y, cover)
-    top = _box(x, y, cover).translate([0.0, 0.0, z - cover])
-    spine = _box(cover, y, z).translate([-x / 2 + cover / 2, 0.0, 0.0])
-    return bottom + top + spine + pages
+    shape = box(x, y, z)
+    pages = Manifold.cube([0.01, y - 0.004, z - 2 * cover], center=True).translate([x / 2, 0.0, z / 2])  # fore-edge inset (visual)
+    return shape.minus(pages).with_sites(handle=(0.0, y / 2, z / 2))
 
 
-def tray(x: float, y: float, z: float, wall: float = 0.006) -> Manifold:
-    """An open rectangular tray."""
-    return _box(x, y, z) - _box(x - 2 * wall, y - 2 * wall, z).translate([0.0, 0.0, wall])
+def cutting_board(d: D) -> Shape:
+    x, y, z = d[0], d[1], max(d[2], 0.012)
+    board = rounded_slab(x, y, z, 0.02)
+    hole = Manifold.cylinder(z * 3, 0.012, 0.012, 24).translate([x / 2 - 0.03, 0.0, -z])
+    return board.minus(hole).with_sites(handle=(x / 2 - 0.03, 0.0, z))
 
 
-def bin_(x: float, y: float, z: float, wall: float = 0.005) -> Manifold:
-    """An open bin, wider at the top."""
-    taper = 0.85
-    outer = CrossSection.square([x * taper, y * taper], center=True).extrude(z, scale_top=(1 / taper, 1 / taper))
-    inner = CrossSection.square([x * taper - 2 * wall, y * taper - 2 * wall], center=True).extrude(z, scale_top=((x - 2 * wall) / (x * taper - 2 * wall), (y - 2 * wall) / (y * taper - 2 * wall)))
-    return outer - inner.translate([0.0, 0.0, wall])
+def lamp(d: D) -> Shape:
+    """A desk lamp: a heavy round base, a stem and a conical shade."""
+    h, shade = d[0], d[1]
+    base_r = shade * 0.38
+    base = cylinder(0.025, base_r, base_r * 0.92)
+    stem = cylinder(h * 0.65, 0.011).moved(z=0.025)
+    lampshade = cylinder(h * 0.32, shade / 2, shade * 0.3).moved(z=h * 0.68)
+    return union(base, stem, lampshade).with_sites(stem=(0.0, 0.0, h * 0.4), handle=(0.0, 0.0, h * 0.4))
 
 
-def cylinder(height: float, diameter: float) -> Manifold:
-    """A plain closed cylinder (fallback primitive)."""
-    return Manifold.cylinder(height, diameter / 2, diameter / 2, SEGMENTS)
+def fruit(d: D) -> Shape:
+    """A round fruit or vegetable (apple, orange, tomato, potato, egg) with a small flat where it rests."""
+    rx, ry, rz = d[0] / 2, d[1] / 2, d[2] / 2
+    e = ellipsoid(rx, ry, rz)
+    pts = e.hulls[0]
+    pts = pts[pts[:, 2] > -0.85 * rz]
+    flat = np.column_stack([_ring_pts(0.5 * min(rx, ry), -0.85 * rz, 16)[:, :2], np.full(16, -0.85 * rz)])
+    return hull_shape(np.vstack([pts, flat]))
 
 
-def drawer_cabinet(x: float, y: float, z: float, wall: float = 0.012) -> tuple[Manifold, Manifold, dict]:
-    """A cabinet carcass open at the front (+x) and a drawer that fits it.
+def banana(d: D) -> Shape:
+    length, width, thick = d[0], d[1], d[2]
+    t = np.linspace(-1.0, 1.0, 7)
+    bend = width - thick
+    path = np.column_stack([t * length / 2 * 0.95, bend * (1 - t ** 2) - bend / 2, np.zeros_like(t)])
+    radii = thick / 2 * (1 - 0.55 * t ** 2)
+    return tube(path, radii, 8)
 
-    Returns (carcass, drawer, info) with the drawer in the carcass frame (closed position) and
-    ``info`` holding the slide axis, the travel, the drawer's base offset and its handle's centre.
-    """
-    carcass = _box(x, y, z) - _box(x, y - 2 * wall, z - 2 * wall).translate([wall, 0.0, wall])
+
+def carrot(d: D) -> Shape:
+    length, r = d[0], d[1] / 2
+    path = np.array([[-length / 2, 0.0, 0.0], [0.0, 0.0, 0.0], [length / 2, 0.0, 0.0]])
+    return tube(path, [r, r * 0.7, r * 0.12], 8, phase=True)
+
+
+def pen(d: D) -> Shape:
+    length, r = d[0], d[1] / 2
+    return tube(np.array([[-length / 2, 0.0, 0.0], [length / 2, 0.0, 0.0]]), r, 6, phase=True)
+
+
+def ball(d: D) -> Shape:
+    r = d[0] / 2
+    return ellipsoid(r, r, r)
+
+
+# ---------------------------------------------------------------- cutlery and tools (lying flat)
+def knife(d: D) -> Shape:
+    length, width, thick = d[0], d[1], d[2]
+    grip = length * 0.42
+    handle = box(grip, width * 0.8, thick, at=(-length / 2 + grip / 2, 0.0, 0.0))
+    x0, x1 = -length / 2 + grip, length / 2
+    blade = hull_shape(np.array([[x0, -width / 2, 0], [x0, width / 2, 0], [x1, width * 0.1, 0], [x1, -width * 0.1, 0],
+                                 [x0, -width / 2, 0.003], [x0, width / 2, 0.003], [x1, width * 0.1, 0.0015], [x1, -width * 0.1, 0.0015]]))
+    return (handle + blade).with_sites(handle=(-length / 2 + grip / 2, 0.0, thick))
+
+
+def _flat_utensil(d: D, head: Shape, head_len: float) -> Shape:
+    length, thick = d[0], 0.005
+    bar = box(length - head_len + 0.01, max(d[1] * 0.35, 0.01), thick, at=(-head_len / 2 + 0.005, 0.0, 0.0))  # 1 cm into the head
+    return (bar + head).with_sites(handle=(-length / 2 + (length - head_len) * 0.3, 0.0, thick))
+
+
+def fork(d: D) -> Shape:
+    length, width = d[0], d[1]
+    head_len = length * 0.3
+    head = box(head_len, width, 0.006, at=(length / 2 - head_len / 2, 0.0, 0.0))
+    tines = Manifold.cube([head_len * 0.6, 0.003, 0.02], center=True)
+    cut = None
+    for yy in (-width / 6, width / 6, 0.0):
+        s = tines.translate([length / 2 - head_len * 0.3 + 0.001, yy, 0.0])
+        cut = s if cut is None else cut + s
+    return _flat_utensil(d, head.minus(cut), head_len)
+
+
+def spoon(d: D) -> Shape:
+    length, width = d[0], d[1]
+    head_len = length * 0.33
+    e = ellipsoid(head_len / 2, width / 2, 0.012)
+    pts = e.hulls[0]
+    pts = pts[pts[:, 2] <= 0.0005] + [length / 2 - head_len / 2, 0.0, 0.012]
+    head = hull_shape(np.vstack([pts, [[length / 2 - head_len / 2, 0.0, 0.0]]]))
+    return _flat_utensil(d, head, head_len)
+
+
+def hammer(d: D) -> Shape:
+    length, head_w, thick = d[0], d[1], max(d[2], 0.025)
+    handle = box(length - 0.03, 0.028, thick * 0.8, at=(-0.015, 0.0, 0.0))
+    head = box(0.03, head_w, thick, at=(length / 2 - 0.015, 0.0, 0.0))
+    return (handle + head).with_sites(handle=(-length / 2 + length * 0.25, 0.0, thick * 0.8))
+
+
+def screwdriver(d: D) -> Shape:
+    length, r = d[0], d[1] / 2
+    grip = length * 0.45
+    handle = tube(np.array([[-length / 2, 0.0, r], [-length / 2 + grip, 0.0, r]]), r, 6, phase=True)
+    shaft = tube(np.array([[-length / 2 + grip, 0.0, r], [length / 2, 0.0, r]]), max(r * 0.2, 0.0025), 6, phase=True)
+    return (handle + shaft).with_sites(handle=(-length / 2 + grip / 2, 0.0, 2 * r))
+
+
+def wrench(d: D) -> Shape:
+    length, width, thick = d[0], d[1], max(d[2], 0.006)
+    bar = box(length - width, width * 0.45, thick)
+    jaws = []
+    for sign in (1, -1):
+        cx = sign * (length / 2 - width / 2)
+        jaws += [box(width, width * 0.3, thick, at=(cx, width * 0.35, 0.0)), box(width, width * 0.3, thick, at=(cx, -width * 0.35, 0.0)),
+                 box(width * 0.3, width, thick, at=(cx - sign * width * 0.35, 0.0, 0.0))]
+    return union(bar, *jaws).with_sites(handle=(0.0, 0.0, thick))
+
+
+# ---------------------------------------------------------------- articulated
+def drawer_cabinet(d: D, wall: float = 0.012) -> Articulated:
+    """A cabinet carcass open at the front (+x) and a drawer with a handle that slides along +x."""
+    y = d[0]
+    x, z = 0.30 * y / 0.42, 0.26 * y / 0.42
+    carcass = union(box(x, y, wall), box(x, y, wall, at=(0, 0, z - wall)), box(x, wall, z, at=(0, -y / 2 + wall / 2, 0)),
+                    box(x, wall, z, at=(0, y / 2 - wall / 2, 0)), box(wall, y, z, at=(-x / 2 + wall / 2, 0, 0)))
     gap = 0.003
     dx, dy, dz = x - wall - gap, y - 2 * wall - 2 * gap, z - 2 * wall - 2 * gap
-    front = wall
-    tray_ = _box(dx, dy, dz) - _box(dx - 2 * wall, dy - 2 * wall, dz).translate([0.0, 0.0, wall])
-    panel = _box(front, y - 0.004, z - 0.004).translate([dx / 2 + front / 2, 0.0, -wall - gap + 0.002])
-    handle_w, handle_h = min(0.10, dy * 0.5), 0.018
-    handle = _box(0.025, handle_w, handle_h).translate([dx / 2 + front + 0.0125, 0.0, dz / 2 - handle_h / 2])
-    drawer = tray_ + panel + handle
-    # The drawer's own frame has its origin at the base centre of its tray (the panel reaches below
-    # it); in the carcass frame that point is at ``offset`` when the drawer is closed.
-    offset = [round(x / 2 - dx / 2, 6), 0.0, wall + gap]
-    handle_centre = [dx / 2 + front + 0.0125, 0.0, dz / 2]  # in the drawer's (shape) frame
-    info = {"axis": [1.0, 0.0, 0.0], "range": [0.0, round(0.75 * dx, 4)], "offset": offset, "handle": handle_centre}
-    return carcass, drawer, info
+    tray_ = open_box(dx, dy, dz, wall=wall)
+    panel = box(wall, y - 0.004, z - 0.004, at=(dx / 2 + wall / 2, 0.0, -wall - gap + 0.002))
+    hw = min(0.10, dy * 0.5)
+    handle = box(0.025, hw, 0.018, at=(dx / 2 + wall + 0.0125, 0.0, dz / 2 - 0.009))
+    drawer = union(tray_, panel, handle)
+    offset = np.array([x / 2 - dx / 2, 0.0, wall + gap])
+    child = drawer.moved(*offset)
+    return Articulated(carcass, child, "slide", (1.0, 0.0, 0.0), (0.0, round(0.75 * dx, 4)),
+                       child_sites={"handle": (dx / 2 + wall + 0.0125 + offset[0], 0.0, dz / 2 + offset[2])})
 
 
-def hinged_box(x: float, y: float, z: float, wall: float = 0.006) -> tuple[Manifold, Manifold, dict]:
-    """An open box and its lid, hinged along the back (-x) top edge."""
+def hinged_box(d: D, wall: float = 0.006) -> Articulated:
+    """An open box and its lid, hinged along the back (-x) top edge; the lid has a front tab."""
+    x, y, z = d[0], d[1], d[2]
     lid_t = max(wall, 0.008)
     base_h = z - lid_t
-    base = _box(x, y, base_h) - _box(x - 2 * wall, y - 2 * wall, base_h).translate([0.0, 0.0, wall])
-    lid = _box(x, y, lid_t)
-    info = {"axis": [0.0, -1.0, 0.0], "range": [0.0, 1.9], "offset": [0.0, 0.0, base_h + 0.001], "hinge_pos": [-x / 2, 0.0, 0.0]}
-    return base, lid, info
+    base = open_box(x, y, base_h, wall=wall)
+    lid = union(box(x, y, lid_t), box(0.015, y * 0.3, lid_t * 0.8, at=(x / 2 + 0.0075, 0.0, 0.0))).moved(z=base_h + 0.001)
+    return Articulated(base.with_sites(hinge=(-x / 2, 0.0, base_h)), lid, "hinge", (0.0, -1.0, 0.0), (0.0, 1.9), (-x / 2, 0.0, base_h + 0.001),
+                       child_sites={"handle": (x / 2 + 0.015, 0.0, base_h + 0.001 + lid_t / 2), "lid": (0.0, 0.0, base_h + lid_t)})
+
+
+def laptop(d: D) -> Articulated:
+    """A closed laptop: a base and a screen lid hinged along the back (-x) edge."""
+    w, depth, t = d[0], d[1], max(d[2], 0.015)
+    base_t, lid_t = t * 0.6, t * 0.4
+    base = box(depth, w, base_t)
+    lid = box(depth, w, lid_t).moved(z=base_t + 0.001)
+    return Articulated(base.with_sites(hinge=(-depth / 2, 0.0, base_t)), lid, "hinge", (0.0, -1.0, 0.0), (0.0, 2.0), (-depth / 2, 0.0, base_t + 0.001),
+                       child_sites={"handle": (depth / 2, 0.0, base_t + 0.001 + lid_t / 2), "lid": (0.0, 0.0, base_t + 0.001 + lid_t)})
+
+
+Builder = Callable[[D], "Shape | Articulated"]
+
+FAMILIES: dict[str, Builder] = {
+    "mug": mug, "cup": cup, "glass": glass, "bowl": bowl, "plate": plate, "vase": vase, "pan": pan, "pot": pot, "kettle": kettle,
+    "teapot": teapot, "tray": tray, "basket": basket, "crate": crate, "bin": bin_, "bottle": bottle, "can": can, "jar": jar,
+    "cylinder": cylinder_, "box": box_, "upright_box": upright_box, "book": book, "cutting_board": cutting_board, "lamp": lamp,
+    "fruit": fruit, "banana": banana, "carrot": carrot, "pen": pen, "ball": ball, "knife": knife, "fork": fork, "spoon": spoon,
+    "hammer": hammer, "screwdriver": screwdriver, "wrench": wrench, "drawer_cabinet": drawer_cabinet, "hinged_box": hinged_box,
+    "laptop": laptop,
+}
+# Families whose cavity holds things (checked with a 3 cm ball).
+CONTAINERS = {"mug", "cup", "glass", "bowl", "vase", "pan", "pot", "tray", "basket", "crate", "bin"}

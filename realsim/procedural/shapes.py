@@ -1,0 +1,34 @@
+"""Single CSG solids of a few families by height and diameter (for geometry tests and tools).
+
+The object families themselves, with their collision pieces and sites, are in
+:mod:`realsim.procedural.families`; these return just the watertight solid.
+"""
+
+from __future__ import annotations
+
+from manifold3d import Manifold
+
+from realsim.procedural import families as f
+from realsim.procedural.parts import to_trimesh
+
+__all__ = ["bowl", "box", "can", "jar", "mug", "to_trimesh"]
+
+
+def mug(height: float, diameter: float) -> Manifold:
+    return f.mug_hd(height, diameter).solid
+
+
+def bowl(height: float, diameter: float) -> Manifold:
+    return f.bowl_hd(height, diameter).solid
+
+
+def can(height: float, diameter: float) -> Manifold:
+    return f.can((height, diameter, diameter)).solid
+
+
+def jar(height: float, diameter: float) -> Manifold:
+    return f.jar((height, diameter, diameter)).solid
+
+
+def box(x: float, y: float, z: float) -> Manifold:
+    return f.box_((x, y, z)).solid
