@@ -2,7 +2,9 @@
 
 A floor plane, a box under each support reaching down to the floor, and perimeter walls so
 nothing leaves the scene. Collision geoms are group 3 (hidden in viewers by default); the floor
-and the supports also get group-2 visual twins so a rendered frame shows them.
+and the supports also get group-2 visual twins so a rendered frame shows them. A support whose
+top was captured (``slabs``) is shown as a thin slab under its textured top instead of a box down
+to the floor, so what the camera saw beneath it (the backdrop) stays visible.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ class ArenaParams:
     wall_margin: float = 0.6  # walls this far outside the supports (m)
     support_color: tuple[float, float, float, float] = (0.55, 0.42, 0.3, 1.0)
     floor_color: tuple[float, float, float, float] = (0.35, 0.37, 0.4, 1.0)
+    slab_thickness: float = 0.03  # visual thickness of a captured support (m)
 
 
 def _yaw_quat(yaw: float) -> list[float]:
@@ -47,8 +50,12 @@ def support_box(plane: SupportPlane, floor_z: float) -> tuple[list[float], list[
     return centre, half, _yaw_quat(plane.rect_yaw)
 
 
-def add_arena(spec: mujoco.MjSpec, scene: Scene, params: ArenaParams = ArenaParams()) -> None:
-    """Add the floor, one box per non-floor support, and perimeter walls to ``spec``."""
+def add_arena(spec: mujoco.MjSpec, scene: Scene, params: ArenaParams = ArenaParams(), slabs: dict[int, list[float]] | None = None) -> None:
+    """Add the floor, one box per non-floor support, and perimeter walls to ``spec``.
+
+    ``slabs`` maps the ids of supports with a captured, textured top to the colour of their slab.
+    """
+    slabs = slabs or {}
     world = spec.worldbody
     floor_z = scene.floor_height
     tex = spec.add_texture(name="floor_grid", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
@@ -65,7 +72,12 @@ def add_arena(spec: mujoco.MjSpec, scene: Scene, params: ArenaParams = ArenaPara
         if plane.kind == "floor":
             continue
         centre, half, quat = support_box(plane, floor_z)
-        _add_pair(world, f"support{plane.id}", params.support_color, type=mujoco.mjtGeom.mjGEOM_BOX, pos=centre, size=half, quat=quat)
+        _add_pair(world, f"support{plane.id}", params.support_color, visual=plane.id not in slabs, type=mujoco.mjtGeom.mjGEOM_BOX,
+                  pos=centre, size=half, quat=quat)
+        if plane.id in slabs:
+            t = min(params.slab_thickness, 2 * half[2]) / 2
+            world.add_geom(name=f"support{plane.id}_visual", type=mujoco.mjtGeom.mjGEOM_BOX, group=VISUAL_GROUP, contype=0, conaffinity=0,
+                           pos=[centre[0], centre[1], plane.height - t], size=[half[0], half[1], t], quat=quat, rgba=list(slabs[plane.id]))
     for obj in scene.objects:
         corners.append(obj.position[None, :2])
     if not corners:

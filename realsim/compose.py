@@ -16,7 +16,9 @@ import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
 
+from realsim.appearance import AppearanceParams, CaptureImage, capture_image, capture_intrinsics, projected_texture, support_mask, support_top, texture_object
 from realsim.arena import ArenaParams, add_arena
+from realsim.backdrop import BackdropParams, build_backdrop
 from realsim.scene import Scene, SceneObject
 
 VISUAL_GROUP = 2
@@ -34,6 +36,14 @@ class ComposeParams:
     min_mass: float = 0.02
     max_mass: float = 5.0
     arena: ArenaParams = ArenaParams()
+    appearance: AppearanceParams = AppearanceParams()
+    backdrop: BackdropParams = BackdropParams()
+    # Lights: textures baked from the capture already hold its light, so they are mostly emissive and
+    # the lights modest (ambient + emission ~ 0.85, a little shading on top; measured by bench_fidelity).
+    baked_emission: float = 0.45
+    headlight_ambient: float = 0.4
+    headlight_diffuse: float = 0.15
+    sun_diffuse: float = 0.15
 
 
 def safe_name(text: str) -> str:
@@ -75,8 +85,35 @@ def new_spec(params: ComposeParams) -> mujoco.MjSpec:
     spec.option.impratio = 10.0
     spec.visual.global_.offwidth = 1280
     spec.visual.global_.offheight = 960
-    spec.worldbody.add_light(name="sun", pos=[0, 0, 4], dir=[0, 0, -1], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, diffuse=[0.7, 0.7, 0.7], castshadow=0)
+    spec.visual.headlight.ambient = [params.headlight_ambient] * 3
+    spec.visual.headlight.diffuse = [params.headlight_diffuse] * 3
+    spec.visual.headlight.specular = [0.1] * 3
+    spec.worldbody.add_light(name="sun", pos=[0, 0, 4], dir=[0, 0, -1], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
+                             diffuse=[params.sun_diffuse] * 3, specular=[0.1] * 3, castshadow=0)
     return spec
+
+
+def add_baked_material(spec: mujoco.MjSpec, name: str, png: bytes, assets: dict[str, bytes], emission: float) -> str:
+    """A material textured with ``png``: colours baked from the capture, matte, partly emissive so
+    they read as photographed under the scene's modest lights. Returns its name."""
+    file = f"{name}_texture.png"
+    assets[file] = png
+    spec.add_texture(name=f"{name}_texture", file=file, type=mujoco.mjtTexture.mjTEXTURE_2D)
+    mat = spec.add_material(name=f"{name}_material", emission=emission, specular=0.0, shininess=0.0, reflectance=0.0)
+    mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = f"{name}_texture"
+    return mat.name
+
+
+def add_visual_mesh(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: trimesh.Trimesh, assets: dict[str, bytes],
+                    material: str = "", rgba: list[float] | None = None) -> None:
+    """A visual-only mesh geom (group 2, no contacts, no mass); open surfaces get shell inertia."""
+    file = f"{name}.obj"
+    assets[file] = mesh_bytes(mesh, "obj")
+    m = spec.add_mesh(name=name, file=file)
+    if not mesh.is_volume:
+        m.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
+    body.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, group=VISUAL_GROUP, contype=0, conaffinity=0,
+                  density=0.0, rgba=rgba or [1.0, 1.0, 1.0, 1.0], material=material)
 
 
 def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np.ndarray, np.ndarray]:
@@ -145,11 +182,15 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
             rgba=[0.8, 0.3, 0.3, 0.5],
         )
     if obj.visual is not None:
-        _add_visual(spec, body, obj, assets)
+        _add_visual(spec, body, obj, assets, params)
     return body
 
 
-def _add_visual(spec: mujoco.MjSpec, body: mujoco.MjsBody, obj: SceneObject, assets: dict[str, bytes]) -> None:
+def _add_visual(spec: mujoco.MjSpec, body: mujoco.MjsBody, obj: SceneObject, assets: dict[str, bytes], params: ComposeParams) -> None:
+    if obj.texture_png is not None and obj.source_file is None:  # scanned: the capture's own colours
+        material = add_baked_material(spec, obj.name, obj.texture_png, assets, params.baked_emission)
+        add_visual_mesh(spec, body, f"{obj.name}_visual", obj.visual, assets, material)
+        return
     file = f"{obj.name}_visual.obj"
     assets[file] = mesh_bytes(obj.visual, "obj")
     spec.add_mesh(name=f"{obj.name}_visual", file=file)
@@ -185,14 +226,52 @@ def add_capture_camera(spec: mujoco.MjSpec, scene: Scene) -> None:
     rot_optical = transform[:3, :3] / scale
     rot_mujoco = rot_optical @ np.diag([1.0, -1.0, -1.0])  # MuJoCo cameras look along -z, y up
     quat_xyzw = Rotation.from_matrix(rot_mujoco).as_quat()
-    spec.worldbody.add_camera(name="capture", pos=transform[:3, 3].tolist(), quat=[quat_xyzw[3], *quat_xyzw[:3]], fovy=50.0)
+    cam = spec.worldbody.add_camera(name="capture", pos=transform[:3, 3].tolist(), quat=[quat_xyzw[3], *quat_xyzw[:3]], fovy=50.0)
+    intr = capture_intrinsics(scene)
+    if intr is not None:  # the capture's own intrinsics: renders line up with the photo pixel for pixel
+        for key, value in intr.mujoco_camera().items():
+            setattr(cam, key, value)
+
+
+def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImage, params: ComposeParams,
+                           assets: dict[str, bytes]) -> dict[int, list[float]]:
+    """Textured tops of the observed supports and the backdrop; returns the supports' mean colours."""
+    exclude = np.isin(image.labels, [o.id for o in scene.objects])
+    colours: dict[int, list[float]] = {}
+    for plane in scene.planes:
+        if not plane.observed:
+            continue
+        mask = support_mask(image, plane, params.appearance.support_tolerance)
+        if not mask.any():
+            continue
+        exclude |= mask
+        top = support_top(plane, params.appearance.support_cell, params.appearance.top_lift)
+        result = projected_texture(image, mask, image.pixels(top.vertices), params.appearance.margin_px)
+        if result is None:
+            continue
+        png, uv = result
+        top.visual = trimesh.visual.TextureVisuals(uv=uv)
+        name = f"support{plane.id}_top"
+        add_visual_mesh(spec, spec.worldbody, f"{name}_visual", top, assets, add_baked_material(spec, name, png, assets, params.baked_emission))
+        colours[plane.id] = [*(np.median(image.rgb[mask], axis=0) / 255.0).tolist(), 1.0]
+    backdrop = build_backdrop(image, exclude, params.backdrop)
+    if backdrop is not None:
+        material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
+        add_visual_mesh(spec, spec.worldbody, "backdrop_visual", backdrop.mesh, assets, material)
+    return colours
 
 
 def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scene:
     """Build the MjSpec of the scene (arena, objects, camera) and check it compiles."""
     spec = new_spec(params)
     assets: dict[str, bytes] = {}
-    add_arena(spec, scene, params.arena)
+    image = capture_image(scene) if params.appearance.enabled else None
+    slabs: dict[int, list[float]] = {}
+    if image is not None:
+        for obj in scene.objects:
+            texture_object(obj, image, params.appearance)
+        slabs = _add_captured_surfaces(spec, scene, image, params, assets)
+    add_arena(spec, scene, params.arena, slabs)
     articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
     bodies: dict[str, mujoco.MjsBody] = {}
     for obj in scene.objects:

@@ -3,7 +3,8 @@
 An organized cloud is a camera view in the optical frame (+x right, +y down, +z forward); load
 and levelling compose every transform into ``capture.input_to_world``, so the camera sits at its
 translation and looks along the mapped +z. Intrinsics come from ``capture.yaml``
-(``camera: {fx, fy, cx, cy}`` or ``camera: {fovy_deg}``) or from the grid shape with a default
+(``camera: {fx, fy, cx, cy}`` or ``camera: {fovy_deg}``), else are fitted from the organized grid
+(:func:`realsim.appearance.capture_intrinsics`), else come from the grid shape with a default
 vertical field of view; ``cx = (W - 1) / 2`` (pixel centres at integers).
 """
 
@@ -15,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from realsim.appearance import capture_intrinsics
 from realsim.scene import Scene
 
 DEFAULT_FOVY_DEG = 45.0  # Kinect v1: 43-45 deg vertical
@@ -52,6 +54,9 @@ def capture_camera(scene: Scene) -> CaptureCamera | None:
     h, w = int(scene.grid_shape[0]), int(scene.grid_shape[1])
     cam = meta.get("camera") if isinstance(meta.get("camera"), dict) else {}
     fx, fy, cx, cy = (_num(cam, k) for k in ("fx", "fy", "cx", "cy"))
+    fitted = capture_intrinsics(scene) if fx is None or fy is None else None
+    if fitted is not None:  # the organized grid's own intrinsics
+        fx, fy, cx, cy = fitted.fx, fitted.fy, fitted.cx, fitted.cy
     if fx is None or fy is None:
         fovy = _num(cam, "fovy_deg") or DEFAULT_FOVY_DEG
         fx = fy = 0.5 * h / math.tan(math.radians(fovy) / 2)

@@ -1,0 +1,174 @@
+"""The capture's appearance on the visual layer: textures projected from the capture's own image.
+
+An organized cloud is a photo with depth. Every visual mesh built from it (scanned objects, the
+top of each observed support, the backdrop) is textured by projecting its vertices into that
+photo with the fitted intrinsics (:mod:`realsim.intrinsics`): the UV of a vertex is the pixel it
+is seen at. A layer's texture is the photo cropped to where its vertices land, with the pixels
+that do not belong to the layer (other objects, the table behind, nothing) filled with the
+nearest pixel that does; so the unseen side of an object takes the colour of the seen side in
+front of it and a table region hidden under an object takes the table colour around it. Meshes
+are subdivided to a few centimetres so the per-vertex projection stays perspective-correct.
+"""
+
+from __future__ import annotations
+
+import io
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+from PIL import Image
+from scipy.ndimage import distance_transform_edt
+from scipy.spatial.transform import Rotation
+
+from realsim.intrinsics import Intrinsics, fit_intrinsics
+from realsim.planes import inside_convex_polygon
+from realsim.scene import Scene, SceneObject, SupportPlane
+
+
+@dataclass(frozen=True)
+class AppearanceParams:
+    """How the captured photo becomes textures."""
+
+    enabled: bool = True
+    object_edge: float = 0.025  # object visual meshes subdivided to this edge (m)
+    support_cell: float = 0.03  # grid cell of a support's textured top (m)
+    support_tolerance: float = 0.012  # a pixel within this of a support plane, inside its polygon, is the support (m)
+    top_lift: float = 0.0005  # the textured top sits this far above the collision top (m)
+    margin_px: int = 2
+
+
+@dataclass(frozen=True)
+class CaptureImage:
+    """The capture as a photo: colours, per-pixel labels and world points on the grid, and its camera."""
+
+    rgb: np.ndarray  # (H, W, 3) uint8
+    labels: np.ndarray  # (H, W) int: 0 support/background, -1 noise, k object k
+    world: np.ndarray  # (H, W, 3) world points, NaN where no depth
+    intrinsics: Intrinsics
+    world_to_optical: np.ndarray  # (4, 4)
+
+    @property
+    def valid(self) -> np.ndarray:
+        return np.all(np.isfinite(self.world), axis=2)
+
+    def pixels(self, world_points: np.ndarray) -> np.ndarray:
+        """(N, 2) pixel coordinates (u, v) of world points."""
+        p = np.asarray(world_points, float) @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
+        return self.intrinsics.project(p)
+
+
+def capture_intrinsics(scene: Scene) -> Intrinsics | None:
+    """The intrinsics of a camera-view organized capture: declared in capture.yaml (``camera: {fx, fy,
+    cx, cy}``), else fitted from the grid (cached in the capture metadata); None if neither."""
+    meta = scene.capture.metadata
+    if scene.points is None or scene.grid_shape is None or not meta.get("camera_view"):
+        return None
+    declared = meta.get("camera") if isinstance(meta.get("camera"), dict) else {}
+    if all(isinstance(declared.get(k), (int, float)) for k in ("fx", "fy")):
+        h, w = scene.grid_shape
+        return Intrinsics(float(declared["fx"]), float(declared["fy"]), float(declared.get("cx", (w - 1) / 2)),
+                          float(declared.get("cy", (h - 1) / 2)), int(w), int(h))
+    if "_intrinsics" not in meta:
+        world_to_input = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+        optical = scene.points @ world_to_input[:3, :3].T + world_to_input[:3, 3]
+        meta["_intrinsics"] = fit_intrinsics(optical, scene.grid_shape)
+    return meta["_intrinsics"]
+
+
+def capture_image(scene: Scene) -> CaptureImage | None:
+    """The capture as a photo, or None (not an organized camera view with colours)."""
+    intr = capture_intrinsics(scene)
+    if intr is None or scene.colors is None or scene.labels is None:
+        return None
+    h, w = scene.grid_shape
+    rgb = (np.clip(np.nan_to_num(scene.colors), 0, 1) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
+    return CaptureImage(rgb, scene.labels.reshape(h, w), scene.points.reshape(h, w, 3), intr,
+                        np.linalg.inv(np.asarray(scene.capture.input_to_world, float)))
+
+
+def png_bytes(rgb: np.ndarray) -> bytes:
+    """Deterministic PNG bytes of an (H, W, 3) uint8 image."""
+    out = io.BytesIO()
+    Image.fromarray(rgb).save(out, format="PNG", compress_level=6)
+    return out.getvalue()
+
+
+def projected_texture(image: CaptureImage, mask: np.ndarray, pix: np.ndarray, margin: int = 2) -> tuple[bytes, np.ndarray] | None:
+    """The photo crop where ``pix`` (vertex pixels) land, non-``mask`` pixels filled from the nearest
+    ``mask`` pixel, and the vertices' UVs in it (OpenGL convention: v up). None if ``mask`` is empty."""
+    if not mask.any():
+        return None
+    h, w = mask.shape
+    rows, cols = np.nonzero(mask)
+    finite = np.all(np.isfinite(pix), axis=1)
+    u = np.clip(pix[finite, 0], 0, w - 1) if finite.any() else cols.astype(float)
+    v = np.clip(pix[finite, 1], 0, h - 1) if finite.any() else rows.astype(float)
+    u0 = int(max(0, np.floor(min(u.min(), cols.min())) - margin))
+    u1 = int(min(w, np.ceil(max(u.max(), cols.max())) + margin + 1))
+    v0 = int(max(0, np.floor(min(v.min(), rows.min())) - margin))
+    v1 = int(min(h, np.ceil(max(v.max(), rows.max())) + margin + 1))
+    crop_mask = mask[v0:v1, u0:u1]
+    crop = image.rgb[v0:v1, u0:u1]
+    if not crop_mask.all():
+        _, (ri, ci) = distance_transform_edt(~crop_mask, return_indices=True)
+        crop = crop[ri, ci]
+    ch, cw = crop.shape[:2]
+    pu = np.where(finite, pix[:, 0], u0 + cw / 2)
+    pv = np.where(finite, pix[:, 1], v0 + ch / 2)
+    uv = np.column_stack([(np.clip(pu, u0, u1 - 1) - u0 + 0.5) / cw, 1.0 - (np.clip(pv, v0, v1 - 1) - v0 + 0.5) / ch])
+    return png_bytes(np.ascontiguousarray(crop)), uv
+
+
+def _object_to_world(obj: SceneObject) -> tuple[np.ndarray, np.ndarray]:
+    rot = Rotation.from_quat(np.roll(np.asarray(obj.quat, float), -1)).as_matrix()
+    return rot, np.asarray(obj.position, float)
+
+
+def subdivided(mesh: trimesh.Trimesh, edge: float) -> trimesh.Trimesh:
+    """``mesh`` with no edge longer than ``edge`` (plain geometry, no visuals)."""
+    verts, faces = trimesh.remesh.subdivide_to_size(np.asarray(mesh.vertices), np.asarray(mesh.faces), max_edge=edge, max_iter=6)
+    return trimesh.Trimesh(verts, faces, process=False)
+
+
+def texture_object(obj: SceneObject, image: CaptureImage, params: AppearanceParams) -> bool:
+    """Give a scanned object's visual mesh UVs into its own crop of the photo (``obj.texture_png``)."""
+    if obj.visual is None or obj.source_file is not None:
+        return False
+    mesh = subdivided(obj.visual, params.object_edge)
+    rot, pos = _object_to_world(obj)
+    pix = image.pixels(np.asarray(mesh.vertices) @ rot.T + pos)
+    result = projected_texture(image, image.labels == obj.id, pix, params.margin_px)
+    if result is None:
+        return False
+    png, uv = result
+    mesh.visual = trimesh.visual.TextureVisuals(uv=uv)
+    obj.visual = mesh
+    obj.texture_png = png
+    return True
+
+
+def support_mask(image: CaptureImage, plane: SupportPlane, tolerance: float) -> np.ndarray:
+    """Pixels of the photo that show ``plane``: not an object, within ``tolerance`` of it, inside its polygon."""
+    world = image.world
+    near = image.valid & (image.labels <= 0) & (np.abs(np.nan_to_num(world[..., 2], nan=1e9) - plane.height) < tolerance)
+    idx = np.flatnonzero(near)
+    inside = inside_convex_polygon(world.reshape(-1, 3)[idx, :2], np.asarray(plane.polygon, float))
+    out = np.zeros(near.size, bool)
+    out[idx[inside]] = True
+    return out.reshape(near.shape)
+
+
+def support_top(plane: SupportPlane, cell: float, lift: float) -> trimesh.Trimesh:
+    """A flat grid over the support's oriented rectangle, ``lift`` above it (world frame)."""
+    nx = max(1, int(np.ceil(plane.rect_size[0] / cell)))
+    ny = max(1, int(np.ceil(plane.rect_size[1] / cell)))
+    gx, gy = np.meshgrid(np.linspace(-0.5, 0.5, nx + 1) * plane.rect_size[0], np.linspace(-0.5, 0.5, ny + 1) * plane.rect_size[1])
+    c, s = np.cos(plane.rect_yaw), np.sin(plane.rect_yaw)
+    x = plane.rect_center[0] + c * gx - s * gy
+    y = plane.rect_center[1] + s * gx + c * gy
+    verts = np.column_stack([x.ravel(), y.ravel(), np.full(x.size, plane.height + lift)])
+    idx = np.arange((nx + 1) * (ny + 1)).reshape(ny + 1, nx + 1)
+    a, b, cc, d = idx[:-1, :-1].ravel(), idx[:-1, 1:].ravel(), idx[1:, 1:].ravel(), idx[1:, :-1].ravel()
+    faces = np.vstack([np.column_stack([a, b, cc]), np.column_stack([a, cc, d])])
+    return trimesh.Trimesh(verts, faces, process=False)
