@@ -5,7 +5,9 @@ from __future__ import annotations
 import pytest
 
 from realsim.errors import InputError
-from realsim.planner import AtHome, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, ObjectInfo, On, RulePlanner, check
+from realsim.planner import (
+    AtHome, Between, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, ObjectInfo, On, RulePlanner, SideOf, check,
+)
 from realsim.planner.rules import split_command
 
 OBJECTS = [
@@ -31,14 +33,14 @@ CASES: list[tuple[str, list[str], list[object]]] = [
     ("stack the block on the cracker box", ["place_on('obj4_block', 'obj6_cracker_box')"], [On("obj4_block", "obj6_cracker_box")]),
     ("put the mug on top of the box", ["place_on('obj1_mug', 'obj6_cracker_box')"], [On("obj1_mug", "obj6_cracker_box")]),
     ("set the can onto the block", ["place_on('obj3_soup_can', 'obj4_block')"], [On("obj3_soup_can", "obj4_block")]),
-    ("push the soup can 5 cm left", ["push('obj3_soup_can', 'left', 0.050)"], [Moved("obj3_soup_can", (0.0, 1.0), 0.05)]),
-    ("slide the block to the right by 10 centimeters", ["push('obj4_block', 'right', 0.100)"], [Moved("obj4_block", (0.0, -1.0), 0.1)]),
-    ("push the mug forward", ["push('obj1_mug', 'forward', 0.100)"], [Moved("obj1_mug", (1.0, 0.0), 0.1)]),
+    ("push the soup can 5 cm left", ["push('obj3_soup_can', 'left', 0.05)"], [Moved("obj3_soup_can", (0.0, 1.0), 0.05)]),
+    ("slide the block to the right by 10 centimeters", ["push('obj4_block', 'right', 0.1)"], [Moved("obj4_block", (0.0, -1.0), 0.1)]),
+    ("push the mug forward", ["push('obj1_mug', 'forward', 0.1)"], [Moved("obj1_mug", (1.0, 0.0), 0.1)]),
     ("move the cube 2 inches back", ["push('obj4_block', 'back', 0.051)"], [Moved("obj4_block", (-1.0, 0.0), 0.051)]),
-    ("nudge the mug a bit to the left", ["push('obj1_mug', 'left', 0.050)"], [Moved("obj1_mug", (0.0, 1.0), 0.05)]),
-    ("push the can 0.05 m right", ["push('obj3_soup_can', 'right', 0.050)"], [Moved("obj3_soup_can", (0.0, -1.0), 0.05)]),
-    ("shove the tomato soup can forward by five cm", ["push('obj3_soup_can', 'forward', 0.050)"], [Moved("obj3_soup_can", (1.0, 0.0), 0.05)]),
-    ("slide the box backwards 30 mm", ["push('obj6_cracker_box', 'back', 0.030)"], [Moved("obj6_cracker_box", (-1.0, 0.0), 0.03)]),
+    ("nudge the mug a bit to the left", ["push('obj1_mug', 'left', 0.05)"], [Moved("obj1_mug", (0.0, 1.0), 0.05)]),
+    ("push the can 0.05 m right", ["push('obj3_soup_can', 'right', 0.05)"], [Moved("obj3_soup_can", (0.0, -1.0), 0.05)]),
+    ("shove the tomato soup can forward by five cm", ["push('obj3_soup_can', 'forward', 0.05)"], [Moved("obj3_soup_can", (1.0, 0.0), 0.05)]),
+    ("slide the box backwards 30 mm", ["push('obj6_cracker_box', 'back', 0.03)"], [Moved("obj6_cracker_box", (-1.0, 0.0), 0.03)]),
     ("open the drawer", ["open_drawer('obj5_drawer')"], [DrawerOpen("obj5_drawer")]),
     ("close the drawer", ["close_drawer('obj5_drawer')"], [DrawerClosed("obj5_drawer")]),
     ("go home", ["go_home()"], [AtHome()]),
@@ -67,7 +69,7 @@ CASES: list[tuple[str, list[str], list[object]]] = [
     ),
     (
         "go home and then push the block left 3 cm",
-        ["go_home()", "push('obj4_block', 'left', 0.030)"],
+        ["go_home()", "push('obj4_block', 'left', 0.03)"],
         [Moved("obj4_block", (0.0, 1.0), 0.03)],
     ),
     (
@@ -95,13 +97,17 @@ def test_at_least_thirty_sentences() -> None:
     assert len(CASES) >= 30
 
 
-def test_next_to_measures_live_pose() -> None:
+def test_relations_become_calls_decided_at_run_time() -> None:
+    """Beside/left of/between are primitives that find a free spot in the live scene."""
     plan = RulePlanner().plan("put the red can next to the bowl", OBJECTS)
-    assert "p, q = object_pose('obj2_bowl')" in plan.program
-    assert "place('obj3_soup_can', [p[0] + 0.000, p[1] + 0.143," in plan.program
+    assert [c.text() for c in plan.calls] == ["place_beside('obj3_soup_can', 'obj2_bowl', 'next')"]
     assert plan.goals == [NextTo("obj3_soup_can", "obj2_bowl")]
     left = RulePlanner().plan("put the mug to the left of the box", OBJECTS)
-    assert "p[1] + 0.150" in left.program
+    assert [c.text() for c in left.calls] == ["place_beside('obj1_mug', 'obj6_cracker_box', 'left')"]
+    assert left.goals == [SideOf("obj1_mug", "obj6_cracker_box", "left")]
+    between = RulePlanner().plan("set the block down between the mug and the can", OBJECTS)
+    assert between.goals == [Between("obj4_block", "obj1_mug", "obj3_soup_can")]
+    assert plan.program.splitlines()[1:] == [c.text() for c in plan.calls]  # the program is the calls' text
 
 
 def test_split_keeps_verbless_parts_together() -> None:

@@ -11,6 +11,7 @@ from realsim import llm
 from realsim.planner.claude import ClaudePlanner, PlanningError
 from realsim.planner.goals import (
     AtHome,
+    Between,
     DrawerClosed,
     DrawerOpen,
     Goal,
@@ -20,6 +21,9 @@ from realsim.planner.goals import (
     Moved,
     NextTo,
     On,
+    OnTable,
+    Placed,
+    SideOf,
     WorldView,
     evaluate_all,
     prepare_all,
@@ -27,12 +31,12 @@ from realsim.planner.goals import (
 )
 from realsim.planner.rules import RulePlanner
 from realsim.planner.sandbox import ExecutionReport, Limits, PrimitiveCall, SandboxViolation, check, run
-from realsim.planner.types import ObjectInfo, Plan, Planner
+from realsim.planner.types import Call, ObjectInfo, Plan, Planner
 
 __all__ = [
-    "AtHome", "ClaudePlanner", "DrawerClosed", "DrawerOpen", "ExecutionReport", "Goal", "GoalResult",
-    "Inside", "Lifted", "Limits", "Moved", "NextTo", "ObjectInfo", "On", "Plan", "Planner",
-    "PlanningError", "PrimitiveCall", "RulePlanner", "SandboxViolation", "WorldView", "check",
+    "AtHome", "Between", "Call", "ClaudePlanner", "DrawerClosed", "DrawerOpen", "ExecutionReport", "Goal", "GoalResult",
+    "Inside", "Lifted", "Limits", "Moved", "NextTo", "ObjectInfo", "On", "OnTable", "Placed", "Plan", "Planner",
+    "PlanningError", "PrimitiveCall", "RulePlanner", "SandboxViolation", "SideOf", "WorldView", "check",
     "evaluate_all", "make_planner", "prepare_all", "run", "verdict",
 ]
 

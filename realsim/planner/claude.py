@@ -16,6 +16,7 @@ from realsim import llm
 from realsim.errors import InputError, RealsimError
 from realsim.planner import rules, sandbox
 from realsim.planner.goals import Goal
+from realsim.planner.reference import scene_vocabulary
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.resources import load_prompt
 
@@ -29,10 +30,12 @@ class PlanningError(RealsimError):
     exit_code = 1
 
 
-def scene_text(objects: list[ObjectInfo]) -> str:
+def scene_text(objects: list[ObjectInfo], robot_yaw: float = 0.0) -> str:
+    """The scene in the rule planner's vocabulary (colours, kinds, left/right order, sizes)."""
     if not objects:
         return "The scene has no movable objects."
-    return "Objects in the scene (live positions via object_pose):\n" + "\n".join(f"- {o.describe()}" for o in objects)
+    return ("Objects in the scene (live positions via object_pose; left/right/forward as seen from the robot):\n"
+            + "\n".join(f"- {line}" for line in scene_vocabulary(objects, robot_yaw)))
 
 
 _FENCE = re.compile(r"```(?:python|py)?[ \t]*\n(.*?)```", re.DOTALL | re.IGNORECASE)
@@ -57,13 +60,13 @@ class ClaudePlanner:
     repair_rounds: int = 1
     name: str = "claude"
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo]) -> Plan:
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
         if not command.strip():
             raise InputError("the command is empty; say what the robot should do")
         version, system = load_prompt(SYSTEM_PROMPT)
         usage = llm.Usage()
         messages: list[dict[str, str]] = [
-            {"role": "user", "content": f"{scene_text(scene_objects)}\n\nCommand: {command.strip()}"}
+            {"role": "user", "content": f"{scene_text(scene_objects, robot_yaw)}\n\nCommand: {command.strip()}"}
         ]
         notes = [f"prompt {version}, model {self.settings.model}"]
         for attempt in range(self.repair_rounds + 1):
@@ -83,14 +86,14 @@ class ClaudePlanner:
                     {"role": "user", "content": repair.replace("{errors}", "\n".join(f"- {v}" for v in exc.violations))},
                 ]
                 continue
-            return Plan(program=code, goals=derive_goals(command, scene_objects, notes), planner=self.name, usage=usage, notes=notes)
+            return Plan(program=code, goals=derive_goals(command, scene_objects, notes, robot_yaw), planner=self.name, usage=usage, notes=notes)
         raise AssertionError("unreachable")  # pragma: no cover
 
 
-def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | None = None) -> list[Goal]:
+def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | None = None, robot_yaw: float = 0.0) -> list[Goal]:
     """Goals from the rule parser when it reads ``command``; otherwise none ("goal unknown")."""
     try:
-        return rules.parse(command, objects)[1]
+        return rules.parse_calls(command, objects, robot_yaw)[1]
     except InputError as exc:
         if notes is not None:
             notes.append(f"goal unknown (rule parser: {exc})")

@@ -2,7 +2,9 @@
 
 Each goal is a small dataclass: :meth:`Goal.prepare` records what it needs before the program
 runs (start poses), :meth:`Goal.evaluate` measures afterwards through a :class:`WorldView`.
-Extents from ``object_size`` are treated as axis-aligned (a tilted object is approximated).
+Relations between objects (in, on, next to, a side of, between) are decided by
+:mod:`realsim.planner.relations` on the objects' surface points and contacts when the world
+provides them (a :class:`Sim`), else on their axis-aligned boxes.
 """
 
 from __future__ import annotations
@@ -11,6 +13,10 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Protocol
+
+import numpy as np
+
+from realsim.planner import relations
 
 DIRECTIONS: dict[str, tuple[float, float]] = {
     "forward": (1.0, 0.0),
@@ -26,6 +32,14 @@ def direction_in_world(direction: Sequence[float], robot_yaw: float) -> tuple[fl
     """A robot-frame xy direction rotated by the robot base's yaw into the world frame."""
     c, s = math.cos(robot_yaw), math.sin(robot_yaw)
     return (c * direction[0] - s * direction[1], s * direction[0] + c * direction[1])
+
+
+class GeometryView(Protocol):
+    """Surfaces and contacts of the objects (a :class:`realsim.robot.world.SceneGeometry`)."""
+
+    def points(self, name: str) -> np.ndarray: ...  # world-frame surface samples (N x 3)
+
+    def touching(self, name: str) -> set[str]: ...  # "world", "robot" or object names in contact
 
 
 class WorldView(Protocol):
@@ -80,9 +94,30 @@ class Goal:
         raise NotImplementedError
 
 
+def _geometry(world: WorldView) -> GeometryView | None:
+    """The simulation's surface/contact view when the world has one (a :class:`Sim` through its
+    robot), else None: goals then judge on the bounding boxes alone."""
+    geo = getattr(world, "geometry", None)
+    if geo is None:
+        geo = getattr(getattr(world, "robot", None), "geometry", None)
+    return geo
+
+
+def _shape(world: WorldView, name: str) -> tuple[np.ndarray, set[str] | None]:
+    """Surface points of ``name`` and what it touches (None without contact information)."""
+    geo = _geometry(world)
+    if geo is not None:
+        return geo.points(name), set(geo.touching(name))
+    return relations.box_points(_pos(world, name), _size(world, name)), None
+
+
+def _result(goal: Goal, rel: relations.Relation) -> GoalResult:
+    return GoalResult(goal.describe(), rel.ok, rel.measured)
+
+
 @dataclass
 class Inside(Goal):
-    """``obj``'s centre lies over ``container``'s footprint and its bottom below the rim."""
+    """``obj`` rests in ``container`` (see :func:`realsim.planner.relations.inside`)."""
 
     obj: str
     container: str
@@ -91,21 +126,13 @@ class Inside(Goal):
         return f"{self.obj} inside {self.container}"
 
     def evaluate(self, world: WorldView) -> GoalResult:
-        (px, py, pz), (cx, cy, cz) = _pos(world, self.obj), _pos(world, self.container)
-        so, sc = _size(world, self.obj), _size(world, self.container)
-        dx, dy = abs(px - cx), abs(py - cy)
-        bottom, rim, floor = pz - so[2] / 2, cz + sc[2] / 2, cz - sc[2] / 2
-        ok = dx <= sc[0] / 2 and dy <= sc[1] / 2 and bottom < rim - 0.005 and bottom > floor - 0.02
-        measured = (
-            f"xy offset ({dx:.3f}, {dy:.3f}) m within ({sc[0] / 2:.3f}, {sc[1] / 2:.3f}); "
-            f"object bottom {bottom - floor:+.3f} m above the container bottom, rim at {rim - floor:.3f} m"
-        )
-        return GoalResult(self.describe(), ok, measured)
+        pts, touching = _shape(world, self.obj)
+        return _result(self, relations.inside(pts, _shape(world, self.container)[0], touching, self.container))
 
 
 @dataclass
 class On(Goal):
-    """``obj`` rests on top of ``support``: centre over its footprint, bottom at its top."""
+    """``obj`` rests on top of ``support`` (see :func:`realsim.planner.relations.on`)."""
 
     obj: str
     support: str
@@ -115,21 +142,13 @@ class On(Goal):
         return f"{self.obj} on {self.support}"
 
     def evaluate(self, world: WorldView) -> GoalResult:
-        (px, py, pz), (cx, cy, cz) = _pos(world, self.obj), _pos(world, self.support)
-        so, sc = _size(world, self.obj), _size(world, self.support)
-        dx, dy = abs(px - cx), abs(py - cy)
-        gap = (pz - so[2] / 2) - (cz + sc[2] / 2)
-        ok = dx <= sc[0] / 2 and dy <= sc[1] / 2 and abs(gap) <= self.tolerance
-        measured = (
-            f"xy offset ({dx:.3f}, {dy:.3f}) m within ({sc[0] / 2:.3f}, {sc[1] / 2:.3f}); "
-            f"gap bottom-to-top {gap:+.3f} m (|gap| <= {self.tolerance:.3f})"
-        )
-        return GoalResult(self.describe(), ok, measured)
+        pts, touching = _shape(world, self.obj)
+        return _result(self, relations.on(pts, _shape(world, self.support)[0], touching, self.support, self.tolerance))
 
 
 @dataclass
 class NextTo(Goal):
-    """``obj`` stands beside ``ref``: horizontal gap at most ``max_gap``, not on top of it."""
+    """``obj`` stands beside ``ref`` on the same surface, at most ``max_gap`` away."""
 
     obj: str
     ref: str
@@ -139,14 +158,87 @@ class NextTo(Goal):
         return f"{self.obj} next to {self.ref}"
 
     def evaluate(self, world: WorldView) -> GoalResult:
-        (px, py, pz), (rx, ry, rz) = _pos(world, self.obj), _pos(world, self.ref)
-        so, sr = _size(world, self.obj), _size(world, self.ref)
-        dist = math.hypot(px - rx, py - ry)
-        gap = dist - max(so[0], so[1]) / 2 - max(sr[0], sr[1]) / 2
-        dz = (pz - so[2] / 2) - (rz - sr[2] / 2)
-        ok = gap <= self.max_gap and dist > 0.5 * max(sr[0], sr[1]) and abs(dz) < 0.05
-        measured = f"centres {dist:.3f} m apart, gap ~{gap:.3f} m (<= {self.max_gap:.2f}), bottoms differ {dz:+.3f} m"
-        return GoalResult(self.describe(), ok, measured)
+        pts, touching = _shape(world, self.obj)
+        return _result(self, relations.next_to(pts, _shape(world, self.ref)[0], touching, self.max_gap))
+
+
+SIDES: dict[str, str] = {"left": "left", "right": "right", "front": "back", "behind": "forward"}
+"""Side words to robot-frame directions: "in front of" an object is toward the robot (the
+robot faces the table, as the person giving the command is assumed to)."""
+
+
+@dataclass
+class SideOf(Goal):
+    """``obj`` lies on one ``side`` ("left", "right", "front", "behind", as seen from the robot)
+    of ``ref``, within ``max_gap`` of it."""
+
+    obj: str
+    ref: str
+    side: str
+    max_gap: float = 0.15
+
+    def describe(self) -> str:
+        words = {"left": "left of", "right": "right of", "front": "in front of", "behind": "behind"}
+        return f"{self.obj} {words.get(self.side, self.side)} {self.ref}"
+
+    def evaluate(self, world: WorldView) -> GoalResult:
+        d = direction_in_world(DIRECTIONS[SIDES[self.side]], world.robot_yaw())
+        pts, touching = _shape(world, self.obj)
+        return _result(self, relations.side_of(pts, _shape(world, self.ref)[0], d, touching, self.max_gap))
+
+
+@dataclass
+class Between(Goal):
+    """``obj`` lies between ``a`` and ``b``."""
+
+    obj: str
+    a: str
+    b: str
+
+    def describe(self) -> str:
+        return f"{self.obj} between {self.a} and {self.b}"
+
+    def evaluate(self, world: WorldView) -> GoalResult:
+        pts, touching = _shape(world, self.obj)
+        return _result(self, relations.between(pts, _shape(world, self.a)[0], _shape(world, self.b)[0], touching))
+
+
+@dataclass
+class OnTable(Goal):
+    """``obj`` rests on the static surface (table, counter), out of the hand."""
+
+    obj: str
+
+    def describe(self) -> str:
+        return f"{self.obj} on the table"
+
+    def evaluate(self, world: WorldView) -> GoalResult:
+        geo = _geometry(world)
+        if geo is None:
+            return GoalResult(self.describe(), False, "needs contact information (no simulation)")
+        touching = set(geo.touching(self.obj))
+        ok = relations.WORLD in touching and relations.ROBOT not in touching
+        return GoalResult(self.describe(), ok, "touching " + (", ".join(sorted(touching)) or "nothing"))
+
+
+@dataclass
+class Placed(Goal):
+    """``obj`` rests with its centre within ``tolerance`` of ``xy`` (world, m), out of the hand."""
+
+    obj: str
+    xy: tuple[float, float]
+    tolerance: float = 0.04
+
+    def describe(self) -> str:
+        return f"{self.obj} put down at ({self.xy[0]:.3f}, {self.xy[1]:.3f})"
+
+    def evaluate(self, world: WorldView) -> GoalResult:
+        pts, touching = _shape(world, self.obj)
+        c = (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
+        err = float(np.hypot(c[0] - self.xy[0], c[1] - self.xy[1]))
+        ok = err <= self.tolerance and (touching is None or (relations.ROBOT not in touching and bool(touching)))
+        return GoalResult(self.describe(), ok, f"centre {err * 1000:.0f} mm from it (<= {self.tolerance * 1000:.0f})"
+                          + ("" if touching is None else "; touching " + (", ".join(sorted(touching)) or "nothing")))
 
 
 @dataclass

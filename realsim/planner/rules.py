@@ -1,393 +1,407 @@
-"""Offline rule-based planner: a small English grammar to the same program text Claude writes.
+"""Offline rule planner: English as people say it -> primitive calls and the goals to check.
 
-Understands, joined by "then", "and", commas or semicolons::
-
-    pick up / grab / lift / take X            put / place / drop / set / move X on / in / into Y
-    stack X on Y                              put X next to / beside / left of / behind Y
-    push / slide / move X left|right|forward|back (by) N cm|mm|m|inches
-    open / close the drawer|door (X)          open / close the gripper, release
-    go home / return home / reset             put X down
-
-Objects are matched against labels, aliases, colour names and body names, tolerating articles,
-plurals, a few synonyms ("cup" finds a mug) and typos; "it" is the last object named. Anything
-it cannot read raises :class:`InputError` that lists the scene's objects.
+A command is cleaned of polite and filler words ("could you please", "go ahead and", "for me"),
+split into clauses ("then", "and then", "after that", commas, "and" before a verb), and each
+clause is read as a verb phrase ("pick up", "set down", "drop into", "put back", "slide"...),
+the objects it acts on (see :mod:`realsim.planner.reference`: pronouns, colours, sizes,
+ordinals, locators, quantities), and a relation to a target (in, on, onto, next to, left of,
+right of, behind, in front of, between, on the table) or a push direction and distance.
+Quantities ("all the cans", "both blocks", "the mug and the can") become one call per object.
+The planner emits :class:`Call` objects; the program text the sandbox runs is made from them.
+Anything it cannot read, or any reference that is unknown or ambiguous, raises
+:class:`InputError` naming the candidates: nothing is done to a wrong object.
 """
 
 from __future__ import annotations
 
-import difflib
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+
+import numpy as np
 
 from realsim.errors import InputError
-from realsim.planner.goals import DIRECTIONS, AtHome, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On
-from realsim.planner.types import ObjectInfo, Plan
+from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
+from realsim.planner.reference import Context, Resolver
+from realsim.planner.types import Call, ObjectInfo, Plan, program_text
+from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES, norm
 
-SYNONYMS: dict[str, tuple[str, ...]] = {
-    "cup": ("mug", "glass"),
-    "mug": ("cup",),
-    "can": ("tin", "soup can", "tomato soup can", "chips can", "potted meat can"),
-    "tin": ("can",),
-    "box": ("carton", "cracker box", "sugar box", "gelatin box", "pudding box", "block"),
-    "block": ("cube", "box", "wood block", "foam brick"),
-    "cube": ("block",),
-    "dish": ("plate",),
-    "plate": ("dish",),
-    "bottle": ("mustard bottle", "bleach cleanser"),
-    "ball": ("tennis ball", "baseball", "softball"),
-    "container": ("bowl", "basket", "bin", "box"),
-    "bin": ("basket", "container"),
-}
-COLORS = (
-    "red", "green", "blue", "yellow", "orange", "purple", "pink", "black", "white", "gray",
-    "grey", "brown", "silver", "gold",
-)
-STOPWORDS = {"the", "a", "an", "that", "this", "my", "your", "its", "some", "of", "please", "object", "thing", "one"}
-NUMBER_WORDS = {
-    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
-    "ten": 10, "fifteen": 15, "twenty": 20, "thirty": 30, "half": 0.5,
-}
-UNITS = {
-    "cm": 0.01, "centimeter": 0.01, "centimetre": 0.01, "mm": 0.001, "millimeter": 0.001,
-    "millimetre": 0.001, "m": 1.0, "meter": 1.0, "metre": 1.0, "in": 0.0254, "inch": 0.0254,
-    "inche": 0.0254, "ft": 0.3048, "foot": 0.3048, "feet": 0.3048,
-}
 DEFAULT_PUSH = 0.10  # m, when no distance is given
-VAGUE_DISTANCES = {"a bit": 0.05, "a little": 0.05, "slightly": 0.03, "a lot": 0.20}
-DIRECTION_WORDS = {
-    "left": "left", "right": "right", "forward": "forward", "forwards": "forward", "ahead": "forward",
-    "away": "forward", "back": "back", "backward": "back", "backwards": "back", "toward me": "back",
-    "towards me": "back", "closer": "back",
-}
 HELP = (
-    "the offline planner understands: pick up X; put X on/in/next to Y; stack X on Y; "
-    "push X left/right/forward/back by N cm; open/close the drawer; open/close the gripper; go home "
-    "(joined by 'then', 'and' or commas); set ANTHROPIC_API_KEY to use Claude for free-form commands"
+    "the offline planner understands: pick up X; put X in/on/next to/left of/behind/between Y; put X on the table; "
+    "put X back/down; push X left/right/forward/back (by N cm); open/close the drawer; open/close the gripper; go home "
+    "(joined by 'then', 'and' or commas; X may be 'it', 'all the cans', 'the big red box', 'the second can from the left'); "
+    "set ANTHROPIC_API_KEY to use Claude for free-form commands"
 )
 
-_VERBS = (
-    "pick", "grab", "lift", "take", "grasp", "raise", "hold", "put", "place", "drop", "set", "move",
-    "stack", "insert", "transfer", "push", "slide", "shove", "nudge", "open", "close", "shut", "go",
-    "return", "reset", "release", "home", "bring", "carry", "drag",
+FILLERS = (
+    r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
+    r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
+    r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
+    r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
+    r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
+    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"robot",
 )
+GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
+           "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
+           "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
+           "getting": "get", "returning": "return", "placing it": "place it"}
+TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
+        "collect", "hand me", "give me", "pass me", "bring me", "retrieve")
+PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
+       "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
+       "move", "shift", "slide", "drag", "stand", "rest")
+PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
+ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
+                                                  "come", "head", "pull open", "pull out", "push in"))))
+PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|carefully|gently|again|too))*"
 
-
-def _singular(word: str) -> str:
-    if len(word) > 3 and word.endswith("ies"):
-        return word[:-3] + "y"
-    if len(word) > 3 and word.endswith(("ches", "shes", "xes", "sses")):
-        return word[:-2]
-    if len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is")):
-        return word[:-1]
-    return word
-
-
-def _norm(text: str) -> str:
-    s = text.lower().replace("_", " ").replace("-", " ")
-    s = re.sub(r"[^a-z0-9. ]+", " ", s)
-    return " ".join(_singular(w) for w in s.split())
-
-
-def _words(text: str) -> list[str]:
-    return [w for w in _norm(text).split() if w not in STOPWORDS]
-
-
-@dataclass(frozen=True)
-class _Match:
-    obj: ObjectInfo
-    score: float
-
-
-class ObjectResolver:
-    """Finds the scene object a noun phrase means."""
-
-    def __init__(self, objects: Sequence[ObjectInfo]):
-        self.objects = list(objects)
-
-    def listing(self) -> str:
-        if not self.objects:
-            return "the scene has no objects"
-        items = [f"{o.name} ({(o.color + ' ') if o.color else ''}{o.label})" for o in self.objects]
-        return "objects in the scene: " + ", ".join(items)
-
-    def _names(self, o: ObjectInfo) -> list[str]:
-        names = [_norm(o.label), _norm(o.name), *(_norm(a) for a in o.aliases)]
-        return [n for n in dict.fromkeys(names) if n]
-
-    def _score(self, phrase_words: list[str], o: ObjectInfo) -> float:
-        colors = [w for w in phrase_words if w in COLORS]
-        nouns = [w for w in phrase_words if w not in COLORS]
-        color = (o.color or "").lower().replace("grey", "gray")
-        if colors and color and all(c.replace("grey", "gray") not in color for c in colors):
-            return 0.0
-        if colors and not color and not nouns:
-            return 0.0
-        color_bonus = 0.5 if colors and color else 0.0
-        if not nouns:
-            return 1.0 + color_bonus if colors else 0.0
-        phrase = " ".join(nouns)
-        best = 0.0
-        for name in self._names(o):
-            name_words = name.split()
-            if phrase == name:
-                best = max(best, 3.0)
-            elif all(w in name_words for w in nouns):
-                best = max(best, 2.0 + 0.1 * len(nouns))
-            elif name_words and name_words[-1] == nouns[-1]:
-                best = max(best, 1.8)  # same head noun: "soup can" vs "can"
-            elif any(w in name_words for w in nouns):
-                best = max(best, 1.2)
-            else:
-                ratio = difflib.SequenceMatcher(None, phrase, name).ratio()
-                if ratio >= 0.8:
-                    best = max(best, 1.0 + ratio / 2)
-        if best < 1.2:
-            for word in nouns:
-                for syn in SYNONYMS.get(word, ()):
-                    if any(syn == n or syn in n.split() or n.endswith(" " + syn) for n in self._names(o)):
-                        best = max(best, 1.5)
-        return best + color_bonus if best > 0 else 0.0
-
-    def resolve(self, phrase: str, *, want: str | None = None) -> ObjectInfo:
-        """The object ``phrase`` names; ``want`` (an affordance) breaks ties and fills 'the drawer'."""
-        words = _words(phrase)
-        if not words:
-            raise InputError(f"which object? nothing named in {phrase!r}; {self.listing()}")
-        scored = [_Match(o, self._score(words, o)) for o in self.objects]
-        if want:
-            scored = [_Match(m.obj, m.score + (0.3 if want in m.obj.affordances and m.score > 0 else 0.0)) for m in scored]
-            if not any(m.score > 0 for m in scored) and words[-1] in (want, "drawer", "door"):
-                scored = [_Match(o, 1.0) for o in self.objects if want in o.affordances]
-        scored = sorted((m for m in scored if m.score > 0), key=lambda m: -m.score)
-        if not scored:
-            raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
-        if len(scored) > 1 and scored[1].score >= scored[0].score - 1e-9:
-            tied = [m.obj for m in scored if m.score >= scored[0].score - 1e-9]
-            options = ", ".join(f"{o.name} ({(o.color + ' ') if o.color else ''}{o.label})" for o in tied)
-            raise InputError(f"{phrase.strip()!r} is ambiguous: {options}; name it by colour or body name")
-        return scored[0].obj
+RELATIONS: tuple[tuple[str, str], ...] = (
+    ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
+    ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
+    ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
+    ("behind", "behind"), ("in between", "between"), ("between", "between"),
+    ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
+    ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
+    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
+    ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
+    ("toward", "to"), ("towards", "to"), ("to", "to"),
+)
+SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
 
 
 @dataclass
 class _Step:
-    code: list[str]
+    calls: list[Call]
     goals: list[Goal]
-    objects: tuple[str, ...]  # objects whose state the step changes
+    objects: tuple[str, ...] = ()  # objects whose state the step changes
+    moves_robot: bool = True
 
 
-def _distance(text: str) -> float | None:
-    for phrase, value in VAGUE_DISTANCES.items():
-        if re.search(rf"\b{phrase}\b", text):
-            return value
-    numbers = "|".join(NUMBER_WORDS)
-    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|{numbers})\s*(cm|mm|m|in|inch|inches|inche|ft|foot|feet|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?)\b", text)
-    if not m:
-        return None
-    raw, unit = m.group(1), m.group(2)
-    if raw in NUMBER_WORDS:
-        value = float(NUMBER_WORDS[raw])
-    else:
-        try:
-            value = float(raw)
-        except ValueError:
-            return None
-    unit = unit.rstrip("s") if unit not in ("s",) else unit
-    scale = UNITS.get(unit) or UNITS.get(unit[:-1] if unit.endswith("e") else unit)
-    if scale is None:
-        for key, s in UNITS.items():
-            if unit.startswith(key) and len(key) > 2:
-                scale = s
-                break
-    if scale is None:
-        return None
-    dist = value * scale
-    if not 0.0 < dist <= 1.0:
-        raise InputError(f"push distance {dist:.3f} m is out of range (0 to 1 m)")
-    return dist
+@dataclass
+class _Parser:
+    objects: Sequence[ObjectInfo]
+    robot_yaw: float = 0.0
+    ctx: Context = field(default_factory=Context)
 
-
-def _direction(text: str) -> str | None:
-    for phrase in sorted(DIRECTION_WORDS, key=len, reverse=True):
-        if re.search(rf"\b{phrase}\b", text):
-            return DIRECTION_WORDS[phrase]
-    return None
-
-
-_PUSH_TAIL = (
-    r"\b(?:by|about|around|roughly|some|to the|to|toward|towards|a bit|a little|slightly|a lot|"
-    + "|".join(sorted(DIRECTION_WORDS, key=len, reverse=True))
-    + "|" + "|".join(NUMBER_WORDS) + r")\b|(?<![a-z])\.?\d"
-)
-
-_RELATIONS = (
-    (r"on top of|onto|on", "on"),
-    (r"inside of|inside|into|in", "in"),
-    (r"next to|beside|near|by|alongside", "next"),
-    (r"to the left of|left of", "left"),
-    (r"to the right of|right of", "right"),
-    (r"in front of", "front"),
-    (r"behind|in back of", "behind"),
-)
+    def __post_init__(self) -> None:
+        self.resolver = Resolver(self.objects, self.robot_yaw)
+        self.by_name = {o.name: o for o in self.objects}
 
 
 class RulePlanner:
-    """The offline planner; its programs use the same primitives as Claude's."""
+    """The offline planner; its calls are the same primitives Claude's programs use."""
 
     name = "rules"
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo]) -> Plan:
-        program, goals = parse(command, scene_objects)
-        return Plan(program=program, goals=goals, planner=self.name)
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
+        calls, goals = parse_calls(command, scene_objects, robot_yaw)
+        return Plan(program=program_text(calls, command), goals=goals, planner=self.name, calls=calls)
+
+
+def clean(command: str) -> str:
+    """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
+    text = command.lower().replace("’", "'")
+    text = re.sub(r"[!?]+", ".", text)
+    text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
+    text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
+    for filler in FILLERS:
+        text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
+    for g, v in GERUNDS.items():
+        text = re.sub(rf"\b{g}\b", v, text)
+    text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
+    return " ".join(text.split())
 
 
 def split_command(command: str) -> list[str]:
-    """Split a command into clauses at 'then', 'and', commas, semicolons and full stops; clauses
-    without a verb are glued back ("the salt and pepper")."""
-    text = command.strip().lower()
-    text = re.sub(r"\b(after that|afterwards|and then|please)\b", ",", text)
-    parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b)\s*", text) if p and p.strip()]
-    parts = [re.sub(r"^(?:(?:first|next|finally|now|also|lastly)\s+)+", "", p) for p in parts]
+    """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
+    a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
+    text = clean(command)
+    text = re.sub(r"\b(?:and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
+    parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
+    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
+    verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+    rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
-        first = part.split()[0] if part.split() else ""
-        if clauses and first not in _VERBS:
-            clauses[-1] = f"{clauses[-1]} and {part}"
+        if clauses and not verb_re.match(part):
+            verb = verb_re.match(clauses[-1])
+            if verb and verb.group(0) in PUT and rel_re.search(f" {clauses[-1]} ") and rel_re.search(f" {part} "):
+                clauses.append(f"{verb.group(0)} {part}")  # "put the can in the bowl and the mug on the box"
+            else:
+                clauses[-1] = f"{clauses[-1]} and {part}"
         else:
             clauses.append(part)
     return clauses
 
 
-def parse(command: str, objects: Sequence[ObjectInfo]) -> tuple[str, list[Goal]]:
-    """Program text and goals for ``command``; raises :class:`InputError` when it cannot."""
-    resolver = ObjectResolver(objects)
+def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
+    """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
-    steps: list[_Step] = []
-    last: list[ObjectInfo | None] = [None]
-    for clause in clauses:
-        steps.append(_parse_clause(clause, resolver, last))
-    lines = [f"# {command.strip()}"]
-    for step in steps:
-        lines.extend(step.code)
-    return "\n".join(lines) + "\n", _final_goals(steps)
+    p = _Parser(objects, robot_yaw)
+    steps = [_clause(c, p) for c in clauses]
+    return [c for s in steps for c in s.calls], _final_goals(steps)
+
+
+def parse(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[str, list[Goal]]:
+    """Program text and goals for ``command`` (see :func:`parse_calls`)."""
+    calls, goals = parse_calls(command, objects, robot_yaw)
+    return program_text(calls, command), goals
 
 
 def _final_goals(steps: list[_Step]) -> list[Goal]:
-    """Keep only goals not undone by later steps (a lifted mug later placed; home then moved)."""
+    """Goals not undone by later steps (a lifted mug later placed; home, then the arm moved again)."""
     goals: list[Goal] = []
     for i, step in enumerate(steps):
-        later_objects = {o for s in steps[i + 1 :] for o in s.objects}
-        later_moves_robot = any(not (s.goals and isinstance(s.goals[0], AtHome)) for s in steps[i + 1 :])
+        later = steps[i + 1 :]
+        later_objects = {o for s in later for o in s.objects}
         for g in step.goals:
             if isinstance(g, AtHome):
-                if not later_moves_robot:
+                if not any(s.moves_robot and not any(isinstance(h, AtHome) for h in s.goals) for s in later):
                     goals.append(g)
-            elif getattr(g, "obj", None) not in later_objects:
+            elif getattr(g, "obj", None) not in later_objects and not _disturbed(g, later_objects):
                 goals.append(g)
     return goals
 
 
-def _obj(phrase: str, resolver: ObjectResolver, last: list[ObjectInfo | None], want: str | None = None) -> ObjectInfo:
-    words = _words(phrase)
-    if words in (["it"], ["them"], ["thi"]) or (not words and phrase.strip() in ("it", "them")):
-        if last[0] is None:
-            raise InputError(f"'it' does not refer to anything yet; name the object; {resolver.listing()}")
-        return last[0]
-    o = resolver.resolve(phrase, want=want)
-    last[0] = o
-    return o
+def _disturbed(goal: Goal, later_objects: set[str]) -> bool:
+    """A relation to an object that a later step moves is not checked (it was true when made)."""
+    refs = [getattr(goal, a, None) for a in ("container", "support", "ref", "a", "b")]
+    return any(r in later_objects for r in refs if r)
 
 
-def _q(name: str) -> str:
-    return repr(name)
+# ----------------------------------------------------------------------------------------------
+# clauses
 
 
-def _parse_clause(clause: str, resolver: ObjectResolver, last: list[ObjectInfo | None]) -> _Step:
-    c = " ".join(clause.replace("'", " ").split())
-    c = re.sub(r"^(can you|could you|would you|i want you to|now|also)\s+", "", c)
-
-    if re.fullmatch(r"(go|return|move|come)( back)?( to)?( the)? home( position| pose)?|reset|home|go back home|return to home( position)?|(go|move) to( the)? home( position| pose)?", c):
-        return _Step(["go_home()"], [AtHome()], ())
-
-    m = re.fullmatch(r"(open|close|shut) (?:the )?(gripper|hand|fingers)|release(?: it)?|let go(?: of it)?|drop it", c)
+def _clause(clause: str, p: _Parser) -> _Step:
+    c = " ".join(clause.split())
+    if re.fullmatch(r"(?:(?:go|return|move|come|head|get)(?: back)?(?: to)?(?: (?:the|your))? (?:home|start|starting|rest|resting|initial|ready)"
+                    r"(?: position| pose| posture| point| spot)?|reset(?: yourself| the arm| arm)?|home|go back|return|retract(?: the arm)?"
+                    r"|(?:go|move|return|come) home)", c):
+        return _Step([Call("go_home")], [AtHome()])
+    m = re.fullmatch(r"(open|close|shut) (?:the |your )?(?:gripper|hand|fingers|claw)|release(?: it| that| the object)?|let (?:it )?go(?: of it)?|drop it|let go of (.+)", c)
     if m:
-        if c.startswith(("release", "let go", "drop")) or m.group(1) == "open":
-            return _Step(["open_gripper()"], [], ())
-        return _Step(["close_gripper()"], [], ())
-
-    m = re.fullmatch(r"(open|pull open|pull out|close|shut|push in|push closed)\s+(.+?)(\s+(?:all the way|fully|please))?", c)
-    if m and (m.group(1) in ("open", "close", "shut") or any(w in m.group(2) for w in ("drawer", "door", "cabinet"))):
-        want = "door" if "door" in m.group(2) else "drawer"
-        o = _obj(m.group(2), resolver, last, want=want)
-        if m.group(1) in ("open", "pull open", "pull out"):
-            return _Step([f"open_drawer({_q(o.name)})"], [DrawerOpen(o.name, 0.3 if want == "door" else 0.05)], (o.name,))
-        return _Step([f"close_drawer({_q(o.name)})"], [DrawerClosed(o.name)], (o.name,))
-
-    m = re.fullmatch(r"(?:push|slide|shove|nudge|move|drag|shift) (.+)", c)
-    if m and _direction(m.group(1)) and not re.search(r"\b(on|onto|into|inside|next to|beside|of)\b", m.group(1)):
-        rest = m.group(1)
-        cut = re.search(_PUSH_TAIL, rest)
-        obj_phrase = rest[: cut.start()] if cut else rest
-        o = _obj(obj_phrase, resolver, last)
-        tail = rest[len(obj_phrase) :]
-        direction = _direction(tail)
-        if direction is None:
-            raise InputError(f"which way? say left, right, forward or back in {clause!r}")
-        dist = _distance(tail) or DEFAULT_PUSH
-        return _Step(
-            [f"push({_q(o.name)}, {direction!r}, {dist:.3f})"],
-            [Moved(o.name, DIRECTIONS[direction], round(dist, 3))],
-            (o.name,),
-        )
-
-    m = re.fullmatch(r"(?:stack|put|place|set|drop|move|insert|transfer|bring|carry|lay|position) (.+?) (down|back down)", c) or re.fullmatch(
-        r"(?:put|set|place|lay) down (.+)", c
-    )
-    if m:
-        o = _obj(m.group(1), resolver, last)
-        code = [f"p, q = object_pose({_q(o.name)})", f"place({_q(o.name)}, [p[0], p[1], p[2]])"]
-        return _Step(code, [], (o.name,))
-
-    rel_pattern = "|".join(p for p, _ in _RELATIONS)
-    m = re.fullmatch(
-        rf"(?:stack|put|place|set|drop|move|insert|transfer|bring|carry|lay|position|pick up|take|grab) (.+?) (?:and )?(?:(?:put|place) (?:it )?)?({rel_pattern}) (.+)",
-        c,
-    )
-    if m:
-        rel = next(kind for pat, kind in _RELATIONS if re.fullmatch(pat, m.group(2)))
-        o = _obj(m.group(1), resolver, last)
-        want = {"on": "support", "in": "container"}.get(rel)
-        target = resolver.resolve(m.group(3), want=want)
-        if target.name == o.name:
-            raise InputError(f"cannot put {o.name} {m.group(2)} itself")
-        return _relation_step(o, rel, target)
-
-    m = re.fullmatch(r"(?:pick up|pick|grab|lift|lift up|take|grasp|raise|hold|get)\s+(.+?)(?:\s+up)?", c)
-    if m:
-        o = _obj(m.group(1), resolver, last)
-        return _Step([f"grasp({_q(o.name)})"], [Lifted(o.name)], (o.name,))
-
+        if c.startswith(("release", "let", "drop")) or m.group(1) == "open":
+            return _Step([Call("open_gripper")], [], moves_robot=False)
+        return _Step([Call("close_gripper")], [], moves_robot=False)
+    m = re.fullmatch(r"(pull open|pull out|open|close|shut|push in|push closed|push shut) (.+?)(?: all the way| fully| completely| halfway)?", c)
+    if m and (m.group(1) in ("open", "close", "shut") or re.search(r"drawer|door|cabinet|lid", m.group(2))):
+        return _articulate(m.group(1), m.group(2), p)
+    verb, rest = _verb(c)
+    if verb is None:
+        raise InputError(f"cannot understand {clause!r}; {HELP}")
+    if verb in PUSH and _is_push(rest):
+        return _push(rest, p, clause)
+    if verb in ("hand me", "give me", "pass me", "bring me"):
+        return _take(rest, p)
+    if verb in PUT:
+        step = _put(verb, rest, p, clause)
+        if step is not None:
+            return step
+        if verb in TAKE:
+            return _take(rest, p)
+        raise InputError(f"where to? {clause!r} names no place I can read (in, on, next to, left of, behind, between, "
+                         f"on the table, back, down); {HELP}")
+    if verb in TAKE:
+        step = _put(verb, rest, p, clause) if _find_relation(rest) else None
+        return step if step is not None else _take(rest, p)
     raise InputError(f"cannot understand {clause!r}; {HELP}")
 
 
-def _relation_step(o: ObjectInfo, rel: str, target: ObjectInfo) -> _Step:
-    if rel == "on":
-        return _Step([f"place_on({_q(o.name)}, {_q(target.name)})"], [On(o.name, target.name)], (o.name,))
-    if rel == "in":
-        return _Step([f"place_in({_q(o.name)}, {_q(target.name)})"], [Inside(o.name, target.name)], (o.name,))
-    # beside the target: offset by both half-widths plus a 3 cm gap, on the requested side
-    gap = 0.03
-    if rel == "next":
-        side_y = 1.0 if o.position[1] >= target.position[1] else -1.0
-        dx, dy = 0.0, side_y * (target.size[1] / 2 + o.size[1] / 2 + gap)
-    else:
-        axis = {"left": (0.0, 1.0), "right": (0.0, -1.0), "front": (-1.0, 0.0), "behind": (1.0, 0.0)}[rel]
-        ext = target.size[0] / 2 + o.size[0] / 2 if axis[0] else target.size[1] / 2 + o.size[1] / 2
-        dx, dy = axis[0] * (ext + gap), axis[1] * (ext + gap)
-    code = [
-        f"p, q = object_pose({_q(target.name)})",
-        f"place({_q(o.name)}, [p[0] + {dx:.3f}, p[1] + {dy:.3f}, p[2] - {target.size[2] / 2:.3f} + {o.size[2] / 2:.3f}])",
-    ]
-    return _Step(code, [NextTo(o.name, target.name)], (o.name,))
+def _verb(c: str) -> tuple[str | None, str]:
+    for v in sorted(ALL_VERBS, key=len, reverse=True):
+        if c == v or c.startswith(v + " "):
+            return v, c[len(v):].strip()
+    return None, c
+
+
+def _objs(phrase: str, p: _Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list:
+    phrase = re.sub(rf"{PARTICLES}$", "", " " + phrase).strip()
+    phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
+    objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
+    return objs
+
+
+def _take(rest: str, p: _Parser) -> _Step:
+    rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it)$", "", rest)
+    objs = _objs(rest, p)
+    if len(objs) > 1:
+        raise InputError(f"the hand holds one object at a time: {', '.join(o.name for o in objs)}; say what to do with each")
+    o = objs[0]
+    p.ctx.set(objs)
+    return _Step([Call("grasp", (o.name,))], [Lifted(o.name)], (o.name,))
+
+
+def _find_relation(rest: str) -> list[tuple[int, int, str]]:
+    """(start, end, kind) of every relation word in ``rest``, left to right, longest first."""
+    out = []
+    for words, kind in RELATIONS:
+        for m in re.finditer(rf"(?<![a-z]){re.escape(words)}(?![a-z])", rest):
+            out.append((m.start(), m.end(), kind))
+    out.sort(key=lambda t: (t[0], -(t[1] - t[0])))
+    return out
+
+
+def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
+    # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
+    m = re.fullmatch(rf"(.+?)\s+(back|down)(?: where it (?:was|came from|belongs)| in its (?:place|spot)| on its spot)?", rest)
+    if verb in ("put back", "put down", "set down", "lay down") and not _find_relation(rest):
+        m = re.fullmatch(r"(.+)", rest)
+    if m and not _relation_tail(rest):
+        objs = _objs(m.group(1), p)
+        p.ctx.set(objs)
+        return _Step([Call("place", (o.name, [round(v, 3) for v in o.position])) for o in objs],
+                     [Placed(o.name, (round(o.position[0], 3), round(o.position[1], 3))) for o in objs], tuple(o.name for o in objs))
+    last_error: InputError | None = None
+    for start, end, kind in _find_relation(rest):
+        obj_phrase, target_phrase = rest[:start].strip(), rest[end:].strip()
+        if not obj_phrase or not target_phrase:
+            continue
+        try:
+            return _relation(obj_phrase, kind, target_phrase, p, verb)
+        except InputError as exc:
+            last_error = last_error or exc
+    if last_error is not None:
+        raise last_error
+    return None
+
+
+def _relation_tail(rest: str) -> bool:
+    return any(s > 0 and rest[e:].strip() for s, e, _ in _find_relation(rest))
+
+
+def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: str) -> _Step:
+    target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
+    target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
+    if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):
+        objs = _objs(obj_phrase, p)
+        p.ctx.set(objs)
+        calls, goals = [], []
+        for o in objs:
+            calls.append(Call("place_down", (o.name,)))
+            goals.append(OnTable(o.name))
+        return _Step(calls, goals, tuple(o.name for o in objs))
+    if kind == "between":
+        refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
+        if len(refs) != 2:
+            raise InputError(f"between needs two objects; {target_phrase!r} names {len(refs)}")
+        objs = _objs(obj_phrase, p, exclude=[r.name for r in refs])
+        p.ctx.set(objs)
+        a, b = refs
+        return _Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
+                     [Between(o.name, a.name, b.name) for o in objs], tuple(o.name for o in objs))
+    want = {"in": "container", "on": "support"}.get(kind)
+    targets = p.resolver.resolve(target_phrase, Context(p.ctx.last), want=want, allow_plural=False)
+    target = targets[0]
+    objs = _objs(obj_phrase, p, exclude=[target.name])
+    if not objs:
+        raise InputError(f"nothing to put {kind} {target.name}")
+    p.ctx.set(objs)
+    if kind == "to":
+        kind = "in" if "container" in target.affordances else "on" if "support" in target.affordances else "next"
+    calls, goals = [], []
+    for o in objs:
+        if kind == "in":
+            calls.append(Call("place_in", (o.name, target.name)))
+            goals.append(Inside(o.name, target.name))
+        elif kind == "on":
+            calls.append(Call("place_on", (o.name, target.name)))
+            goals.append(On(o.name, target.name))
+        elif kind == "next":
+            calls.append(Call("place_beside", (o.name, target.name, "next")))
+            goals.append(NextTo(o.name, target.name))
+        else:
+            calls.append(Call("place_beside", (o.name, target.name, kind)))
+            goals.append(SideOf(o.name, target.name, kind))
+    return _Step(calls, goals, tuple(o.name for o in objs))
+
+
+def _articulate(verb: str, phrase: str, p: _Parser) -> _Step:
+    want = "door" if "door" in phrase or "lid" in phrase else "drawer"
+    words = norm(phrase).split()
+    if words and words[-1] in ("drawer", "door", "cabinet") and not any(w in o.affordances for o in p.objects for w in (want,)):
+        raise InputError(f"the scene has no {want}; {p.resolver.listing()}")
+    try:
+        objs = _objs(phrase, p, want=want)
+    except InputError:
+        objs = [o for o in p.objects if want in o.affordances]
+        if len(objs) != 1:
+            raise
+    o = objs[0]
+    p.ctx.set([o])
+    if verb in ("open", "pull open", "pull out"):
+        return _Step([Call("open_drawer", (o.name,))], [DrawerOpen(o.name, 0.3 if want == "door" else 0.05)], (o.name,))
+    return _Step([Call("close_drawer", (o.name,))], [DrawerClosed(o.name)], (o.name,))
+
+
+# ----------------------------------------------------------------------------------------------
+# pushes
+
+_DIR_ALT = "|".join(re.escape(w) for w in sorted(DIRECTION_WORDS, key=len, reverse=True))
+_NUM_ALT = "|".join(re.escape(w) for w in sorted(NUMBERS, key=len, reverse=True)) + "|half"
+_UNIT_ALT = r"cm|mm|m|in|inch|inches|inche|ft|foot|feet|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?"
+_TAIL = re.compile(rf"\b(?:by|about|around|roughly|some|approximately|like|to the|to|toward|towards|over to the|over|{_DIR_ALT}|{_NUM_ALT}|"
+                   + "|".join(re.escape(v) for v in VAGUE_DISTANCES) + r")\b|(?<![a-z])\.?\d")
+
+
+def _is_push(rest: str) -> bool:
+    """A direction word outside any object relation ("push the mug left", not "put it left of the box")."""
+    if re.search(r"\b(?:left|right) (?:of|side of)\b|\bin front of\b|\bbehind\b|\bnext to\b|\bbeside\b|\bbetween\b|\b(?:in|into|onto|inside|on top of)\b", rest):
+        return False
+    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", rest)) or _distance(rest) is not None
+
+
+def _distance(text: str) -> float | None:
+    for phrase, value in sorted(VAGUE_DISTANCES.items(), key=lambda kv: -len(kv[0])):
+        if re.search(rf"\b{re.escape(phrase)}\b", text):
+            return value
+    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|{_NUM_ALT}|a)\s*(?:and a half\s*)?({_UNIT_ALT})\b", text)
+    if not m:
+        return None
+    raw, unit = m.group(1), m.group(2)
+    value = {"a": 1.0, "half": 0.5}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
+    if "and a half" in m.group(0):
+        value += 0.5
+    unit = unit[:-1] if unit.endswith("s") and unit not in ("s",) else unit
+    scale = UNITS.get(unit) or next((s for k, s in UNITS.items() if len(k) > 2 and unit.startswith(k)), None)
+    if scale is None:
+        return None
+    dist = float(value) * scale
+    if not 0.0 < dist <= 1.0:
+        raise InputError(f"push distance {dist:.3f} m is out of range (0 to 1 m)")
+    return dist
+
+
+def _push(rest: str, p: _Parser, clause: str) -> _Step:
+    cut = _TAIL.search(rest)
+    obj_phrase = rest[: cut.start()].strip() if cut else rest
+    tail = rest[len(obj_phrase):] if cut else ""
+    if not obj_phrase:
+        raise InputError(f"push what? {clause!r}; {HELP}")
+    objs = _objs(obj_phrase, p)
+    direction = None
+    for phrase in sorted(DIRECTION_WORDS, key=len, reverse=True):
+        if re.search(rf"(?<![a-z]){re.escape(phrase)}(?![a-z])", tail):
+            direction = DIRECTION_WORDS[phrase]
+            break
+    if direction is None:
+        raise InputError(f"which way? say left, right, forward or back in {clause!r}")
+    dist = _distance(tail) or DEFAULT_PUSH
+    p.ctx.set(objs)
+    return _Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
+                 [Moved(o.name, DIRECTIONS[direction], round(dist, 3)) for o in objs], tuple(o.name for o in objs))
+
+
+def free_spot(o: ObjectInfo, objects: Sequence[ObjectInfo], near: np.ndarray, gap: float = 0.03) -> np.ndarray:
+    """The xy nearest ``near`` where ``o``'s footprint clears every other object's box by ``gap``."""
+    r = float(np.hypot(o.size[0], o.size[1])) / 2
+    others = [x for x in objects if x.name != o.name]
+    for radius in np.arange(0.0, 0.4, 0.02):
+        for ang in np.linspace(0, 2 * np.pi, max(1, int(radius / 0.02) * 6), endpoint=False):
+            xy = np.asarray(near, float) + radius * np.array([np.cos(ang), np.sin(ang)])
+            if all(np.any(np.abs(xy - np.asarray(x.position[:2])) > np.asarray(x.size[:2]) / 2 + r + gap) for x in others):
+                return xy
+    return np.asarray(near, float)

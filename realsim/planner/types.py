@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from realsim.llm import Usage
 
@@ -43,20 +43,51 @@ class ObjectInfo:
         return " ".join(words)
 
 
+@dataclass(frozen=True)
+class Call:
+    """One primitive call: its name and arguments (strings, numbers, lists of numbers)."""
+
+    name: str
+    args: tuple[Any, ...] = ()
+
+    def text(self) -> str:
+        return f"{self.name}({', '.join(_literal(a) for a in self.args)})"
+
+
+def _literal(value: Any) -> str:
+    if isinstance(value, float):
+        return repr(round(value, 4))
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_literal(v) for v in value) + "]"
+    return repr(value)
+
+
+def program_text(calls: list[Call], comment: str = "") -> str:
+    """The program that makes ``calls`` in order (what the sandbox runs)."""
+    head = [f"# {' '.join(comment.split())}"] if comment.strip() else []
+    return "\n".join(head + [c.text() for c in calls]) + "\n"
+
+
 @dataclass
 class Plan:
-    """A program over the primitives, the goals to check afterwards, who planned it, what it cost."""
+    """A program over the primitives, the goals to check afterwards, who planned it, what it cost.
+
+    ``calls`` holds the primitive calls when the planner emits them directly (the rule planner);
+    ``program`` is then their text. Claude writes ``program`` itself (``calls`` is None).
+    """
 
     program: str
     goals: list[Goal] = field(default_factory=list)
     planner: str = "rules"
     usage: Usage = field(default_factory=Usage)
     notes: list[str] = field(default_factory=list)
+    calls: list[Call] | None = None
 
 
 class Planner(Protocol):
-    """Turns a sentence into a :class:`Plan` for the given scene objects."""
+    """Turns a sentence into a :class:`Plan` for the given scene objects (``robot_yaw``: the
+    robot base's heading in the world, rad; "left" is the robot's left)."""
 
     name: str
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo]) -> Plan: ...
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan: ...

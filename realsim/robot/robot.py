@@ -16,12 +16,14 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, body_surface, frame_from, grasp_candidates, narrowest_width, rotate_about
+from realsim.planner import relations
+from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
+from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, frame_from, grasp_candidates, narrowest_width, rotate_about
 from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
 from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
-
-COLLISION_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
+from realsim.robot.placing import ReleaseParams, cavity_centre, footprint_radius, release_poses, spots, top_area
+from realsim.robot.world import SceneGeometry
 
 
 @dataclass(frozen=True)
@@ -40,7 +42,6 @@ class RobotParams:
     max_sim_time: float = 40.0  # s budget per primitive
     grasp_attempts: int = 4
     lifted_min: float = 0.04  # m the object must rise to count as lifted
-    place_drop: float = 0.01  # m above the surface at release
     track_tol: float = 0.01  # m tcp error accepted at the end of a straight move
     push_tilt: float = 0.4  # rad the hand leans back when pushing (fingertips lead)
 
@@ -57,6 +58,15 @@ class ActionResult:
     values: dict[str, Any] = field(default_factory=dict)
 
 
+_WORDS = {"place": "at the target", "place_on": "on the target", "place_in": "inside the target", "place_beside": "beside the target",
+          "place_between": "between the targets", "place_down": "on the table"}
+
+
+def _on_table(touching: set[str]) -> relations.Relation:
+    ok = relations.WORLD in touching and relations.ROBOT not in touching
+    return relations.Relation(ok, "touching " + (", ".join(sorted(touching)) or "nothing"))
+
+
 class _Budget(Exception):
     pass
 
@@ -69,8 +79,9 @@ class Robot:
     """The Panda in a loaded scene: primitives that act by stepping ``data``."""
 
     def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, prefix: str = PREFIX, params: RobotParams = RobotParams(),
-                 ik_params: IKParams = IKParams(), seed: int = 0):
+                 ik_params: IKParams = IKParams(), seed: int = 0, release: ReleaseParams = ReleaseParams()):
         self.model, self.data, self.prefix, self.params, self.seed = model, data, prefix, params, seed
+        self.release = release
         try:
             self.base_id = model.body(prefix + "link0").id
         except KeyError as exc:
@@ -87,8 +98,10 @@ class Robot:
         mujoco.mj_kinematics(model, data)
         self.base_pos = data.xpos[self.base_id].copy()
         self.base_quat = data.xquat[self.base_id].copy()
+        base_rot = quat_to_mat(self.base_quat)
+        self.base_yaw = float(np.arctan2(base_rot[1, 0], base_rot[0, 0]))  # direction words are relative to it
         self.ik = ArmIK(self.base_pos, self.base_quat, ik_params, scene=model)
-        self._points: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self.geometry = SceneGeometry(model, data, self.robot_bodies)
         self._deadline = np.inf
         self.held: str | None = None
         self.step_hook: Callable[[mujoco.MjModel, mujoco.MjData], None] | None = None
@@ -101,11 +114,7 @@ class Robot:
     # --- reading the simulation ---------------------------------------------------------------
     def object_names(self) -> list[str]:
         """Names of the free bodies (the movable objects), in model order."""
-        out = []
-        for j in range(self.model.njnt):
-            if self.model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
-                out.append(self.model.body(self.model.jnt_bodyid[j]).name)
-        return out
+        return self.geometry.object_names()
 
     def object_pose(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """Live (position, quaternion w,x,y,z) of a body."""
@@ -120,34 +129,21 @@ class Robot:
         return float(self.data.qpos[self.finger_qadr].sum())
 
     def _body(self, name: str) -> int:
-        try:
-            return self.model.body(name).id
-        except KeyError:
-            raise KeyError(f"no body named '{name}'; objects: {', '.join(self.object_names())}") from None
+        return self.geometry.body(name)
 
     def _subtree(self, b: int) -> list[int]:
-        """Body ``b`` and the bodies attached below it (a hinged lid, a drawer): one object to the hand."""
-        out = [b]
-        for c in range(b + 1, self.model.nbody):  # MuJoCo orders bodies depth-first: children follow parents
-            if self.model.body_parentid[c] in out:
-                out.append(c)
-        return out
-
-    def _surface(self, b: int) -> tuple[np.ndarray, np.ndarray]:
-        if b not in self._points:
-            self._points[b] = body_surface(self.model, b)
-        return self._points[b]
+        return self.geometry.subtree(b)
 
     def _world_points(self, b: int) -> np.ndarray:
-        return self._surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+        return self.geometry.body_points(b)
 
     def object_points(self, name: str) -> np.ndarray:
         """World-frame surface samples of an object's collision geometry (live pose, attached parts included)."""
-        return np.vstack([self._world_points(b) for b in self._subtree(self._body(name))])
+        return self.geometry.points(name)
 
     def object_normals(self, name: str) -> np.ndarray:
         """World-frame outward normals matching :meth:`object_points`."""
-        return np.vstack([self._surface(b)[1] @ self.data.xmat[b].reshape(3, 3).T for b in self._subtree(self._body(name))])
+        return self.geometry.normals(name)
 
     def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
         pts = self.object_points(obj)
@@ -157,26 +153,10 @@ class Robot:
 
     def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None) -> float:
         """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``."""
-        best = -np.inf
-        geomid = np.zeros(1, np.int32)
-        exclude_body = self._body(exclude) if exclude else -1
-        for dx, dy in ((0, 0), (0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01)):
-            start = np.array([xy[0] + dx, xy[1] + dy, z_from])
-            for _ in range(4):
-                d = mujoco.mj_ray(self.model, self.data, start, np.array([0, 0, -1.0]), COLLISION_GROUPS, 1, exclude_body, geomid)
-                if d < 0:
-                    break
-                hit_body = self.model.geom_bodyid[geomid[0]]
-                if hit_body in self.robot_bodies:
-                    start = start - np.array([0, 0, d + 1e-4])
-                    continue
-                best = max(best, start[2] - d)
-                break
-        return float(best) if np.isfinite(best) else 0.0
+        return self.geometry.surface_below(xy, z_from, exclude)
 
     def _tallest(self, skip: str | None = None) -> float:
-        tops = [self.object_points(n)[:, 2].max() for n in self.object_names() if n != skip]
-        return float(max(tops)) if tops else float(self.base_pos[2])
+        return self.geometry.tallest(skip, default=float(self.base_pos[2]))
 
     def _contacts_with(self, name: str) -> set[int]:
         """Robot finger bodies touching object ``name`` (or a part attached to it)."""
@@ -501,26 +481,120 @@ class Robot:
 
     def place(self, obj: str, pos, tolerance: float = 0.03, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` down with its centre at ``pos`` (xy; z is found below it) and release."""
-        return self._run("place", lambda: self._place(obj, np.asarray(pos, float), None, tolerance, "place"), max_sim_time)
+        def body() -> ActionResult:
+            target = np.asarray(pos, float)
+            r = footprint_radius(self.object_points(obj))
+            near = spots(target[:2], min(tolerance, r), self.base_pos[:2], self.release.ring)
+            return self._place(obj, near, target[2], "place", lambda: self._near(obj, target[:2], tolerance))
+        return self._run("place", body, max_sim_time)
 
     def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
-        """Put the held ``obj`` on top of body ``target``."""
+        """Put the held ``obj`` on top of body ``target`` (spots within its top face)."""
         def body() -> ActionResult:
             tp = self.object_points(target)
-            centre = np.array([*tp[:, :2].mean(axis=0), tp[:, 2].max()])
-            return self._place(obj, centre, ("body", target), 0.04, "place_on")
+            centre, r_in = top_area(tp)
+            near = self._free(spots(centre, r_in, self.base_pos[:2], self.release.ring), obj, {target}, float(tp[:, 2].max()) - 0.01)
+            return self._place(obj, near, np.nan, "place_on", lambda: relations.on(
+                self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target))
         return self._run("place_on", body, max_sim_time)
 
     def place_in(self, obj: str, container: str, max_sim_time: float | None = None) -> ActionResult:
-        """Put the held ``obj`` into ``container``: a body (bin, bowl) or a marked zone (a geom or site)."""
+        """Put the held ``obj`` into ``container``: a body (bin, bowl, mug: spots within its
+        opening) or a marked zone (a geom or site)."""
         def body() -> ActionResult:
-            region = self._region(container)
-            centre = np.array([*region[0], np.nan])
-            return self._place(obj, centre, ("region", region), 0.0, "place_in")
+            r = footprint_radius(self.object_points(obj))
+            zone = self._zone(container)
+            if zone is not None:
+                c, half, rot2 = zone
+                near = spots(c, float(max(0.0, half.min() - r)), self.base_pos[:2], self.release.ring)
+                return self._place(obj, near, np.nan, "place_in", lambda: self._in_zone(obj, zone))
+            cp = self.object_points(container)
+            centre, r_in = cavity_centre(cp)
+            near = self._free(spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring), obj, {container},
+                              float(cp[:, 2].min()) + 0.005, radius=min(r, r_in) * 0.8)
+            return self._place(obj, near, np.nan, "place_in", lambda: relations.inside(
+                self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container))
         return self._run("place_in", body, max_sim_time)
 
-    def _region(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(centre xy, half extents, xy rotation) of a zone geom/site or a body's footprint."""
+    def place_beside(self, obj: str, ref: str, side: str = "next", gap: float = 0.03, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on the table beside ``ref``: ``side`` is "next" (any free side) or
+        "left", "right", "front", "behind" as seen from the robot; spots clear of other objects."""
+        if side != "next" and side not in SIDES:
+            return ActionResult("place_beside", False, f"unknown side {side!r}: use next, left, right, front or behind")
+
+        def body() -> ActionResult:
+            o, r = self.object_points(obj), self.object_points(ref)
+            rc = (r[:, :2].min(axis=0) + r[:, :2].max(axis=0)) / 2
+            rad = footprint_radius(o)
+            if side == "next":
+                dirs = [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]
+                lats: tuple[float, ...] = (0.0,)
+            else:
+                dirs = [np.array(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw))]
+                lats = (0.0, 0.03, -0.03, 0.06, -0.06)
+            cands = []
+            for d in dirs:
+                ext, perp = float(((r[:, :2] - rc) @ d).max()), np.array([-d[1], d[0]])
+                for extra in (0.0, 0.03, 0.06):
+                    cands += [rc + d * (ext + rad + gap + extra) + perp * lat for lat in lats]
+            if side == "next":
+                cands.sort(key=lambda xy: float(np.linalg.norm(xy - self.base_pos[:2])))
+            level = float(r[:, 2].min())
+            near = [xy for xy in self._free(cands, obj, set(), -np.inf, radius=rad + 0.01)
+                    if abs(self.geometry.surface_below(xy, level + 0.3, exclude=obj) - level) < 0.02]
+            if not near:
+                return ActionResult("place_beside", False, f"no free spot {'next to' if side == 'next' else side + ' of'} {ref} "
+                                    f"for {obj} ({rad * 2 * 1000:.0f} mm across)")
+            if side == "next":
+                judge = lambda: relations.next_to(self.object_points(obj), self.object_points(ref), self.geometry.touching(obj))  # noqa: E731
+            else:
+                d = direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw)
+                judge = lambda: relations.side_of(self.object_points(obj), self.object_points(ref), d, self.geometry.touching(obj))  # noqa: E731
+            return self._place(obj, near, np.nan, "place_beside", judge)
+        return self._run("place_beside", body, max_sim_time)
+
+    def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on the table between objects ``a`` and ``b``."""
+        def body() -> ActionResult:
+            pa, pb, o = self.object_points(a), self.object_points(b), self.object_points(obj)
+            ca, cb = (pa[:, :2].min(axis=0) + pa[:, :2].max(axis=0)) / 2, (pb[:, :2].min(axis=0) + pb[:, :2].max(axis=0)) / 2
+            u = (cb - ca) / max(float(np.linalg.norm(cb - ca)), 1e-9)
+            perp = np.array([-u[1], u[0]])
+            t = (float(((pa[:, :2] - ca) @ u).max()) + float(((pb[:, :2] - ca) @ u).min())) / 2
+            rad = footprint_radius(o)
+            cands = [ca + u * t + perp * lat for lat in (0.0, 0.02, -0.02, 0.04, -0.04)]
+            near = self._free(cands, obj, set(), -np.inf, radius=rad * 0.8)
+            if not near:
+                return ActionResult("place_between", False, f"no room between {a} and {b} for {obj} ({rad * 2 * 1000:.0f} mm across)")
+            return self._place(obj, near, np.nan, "place_between", lambda: relations.between(
+                self.object_points(obj), pa, pb, self.geometry.touching(obj)))
+        return self._run("place_between", body, max_sim_time)
+
+    def place_down(self, obj: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` down on the table (the static surface) at the free spot nearest
+        the hand."""
+        def body() -> ActionResult:
+            o = self.object_points(obj)
+            rad = footprint_radius(o)
+            start = self._centre_xy(obj)
+            cands = [start + rr * np.array([np.cos(a), np.sin(a)]) for rr in np.arange(0.0, 0.31, 0.03)
+                     for a in np.linspace(0, 2 * np.pi, max(1, int(rr / 0.03) * 6), endpoint=False)]
+            cands.sort(key=lambda xy: float(np.linalg.norm(xy - start)))
+            near = [xy for xy in self._free(cands, obj, set(), -np.inf, radius=rad + 0.015)
+                    if self.geometry.surface_below(xy, float(o[:, 2].max()), exclude=obj) <= self.geometry.surface_below(
+                        xy, float(o[:, 2].max()), exclude=obj, static_only=True) + 0.002][:8]
+            if not near:
+                return ActionResult("place_down", False, f"no free spot on the table within 30 cm for {obj}")
+            return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)))
+        return self._run("place_down", body, max_sim_time)
+
+    def _free(self, cands: list[np.ndarray], obj: str, skip: set[str], above: float, radius: float | None = None) -> list[np.ndarray]:
+        """The candidate spots where ``obj`` (footprint ``radius``) would touch no other object."""
+        rad = footprint_radius(self.object_points(obj)) if radius is None else radius
+        return [xy for xy in cands if self.geometry.clear(xy, rad, skip | {obj}, above)]
+
+    def _zone(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """(centre xy, half extents, xy rotation) of a zone geom or site named ``name``, else None."""
         m, d = self.model, self.data
         for kind in (mujoco.mjtObj.mjOBJ_GEOM, mujoco.mjtObj.mjOBJ_SITE):
             i = mujoco.mj_name2id(m, kind, name)
@@ -530,25 +604,51 @@ class Robot:
                 else:
                     pos, mat, size = d.site_xpos[i], d.site_xmat[i].reshape(3, 3), m.site_size[i]
                 return pos[:2].copy(), np.asarray(size[:2], float).copy(), mat[:2, :2].copy()
-        pts = self.object_points(name)
-        lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
-        return (lo + hi) / 2, (hi - lo) / 2 * 0.8, np.eye(2)
+        return None
 
-    def _place(self, obj: str, target: np.ndarray, region, tolerance: float, name: str) -> ActionResult:
+    def _centre_xy(self, obj: str) -> np.ndarray:
+        pts = self.object_points(obj)
+        return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
+
+    def _in_zone(self, obj: str, zone: tuple[np.ndarray, np.ndarray, np.ndarray]) -> relations.Relation:
+        c, half, r2 = zone
+        local = r2.T @ (self._centre_xy(obj) - c)
+        inside = bool(np.all(np.abs(local) <= half))
+        return relations.Relation(inside, f"centre at ({local[0]:+.3f}, {local[1]:+.3f}) m in the zone of half size "
+                                          f"({half[0]:.3f}, {half[1]:.3f})")
+
+    def _near(self, obj: str, xy: np.ndarray, tolerance: float) -> relations.Relation:
+        err = float(np.linalg.norm(self._centre_xy(obj) - xy))
+        return relations.Relation(err <= tolerance, f"centre {err * 1000:.0f} mm from the target (<= {tolerance * 1000:.0f})")
+
+    def _place(self, obj: str, candidates: list[np.ndarray], surface_hint: float, name: str,
+               judge: Callable[[], relations.Relation]) -> ActionResult:
+        """Carry the held ``obj`` over the first reachable release pose (spot, hand yaw, height),
+        lower it there, release, retreat; ``judge`` says whether the end state is what was asked."""
         if self.held != obj or not self.holding(obj):
             return ActionResult(name, False, f"{obj} is not held (grasp it first)")
         pts = self.object_points(obj)
         tcp, rot = self.tcp_pose()
-        obj_centre = np.array([*(pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2])
+        offset = self._centre_xy(obj) - tcp[:2]  # object centre relative to the tcp, turns with the hand
         below = tcp[2] - float(pts[:, 2].min())
-        xy = target[:2]
-        surface = target[2] if np.isfinite(target[2]) else self.surface_below(xy, self._tallest(obj) + 0.05, exclude=obj)
-        if region is not None and region[0] == "body":
-            surface = self.surface_below(xy, self._tallest(obj) + 0.05, exclude=obj)
-        tcp_goal = np.array([xy[0] + tcp[0] - obj_centre[0], xy[1] + tcp[1] - obj_centre[1], surface + below + self.params.place_drop])
-        above = tcp_goal + np.array([0, 0, 0.08])
-        self._transit(above, rot, skip=obj, below_tcp=below)
-        self._straight(tcp_goal, rot)
+        poses = release_poses(candidates, self.release)
+        last: _Fail | None = None
+        for k, (xy, yaw, drop) in enumerate(poses):
+            turn = rotate_about(np.array([0.0, 0.0, 1.0]), yaw)
+            r_goal = turn @ rot
+            surface = surface_hint if np.isfinite(surface_hint) else self.surface_below(xy, self._tallest(obj) + 0.05, exclude=obj)
+            goal = np.array([*(xy - turn[:2, :2] @ offset), surface + below + drop])
+            if not self._ik(goal, r_goal, self.data.ctrl[self.act].copy()).converged:
+                last = _Fail(f"release pose {np.round(goal, 3).tolist()} unreachable")
+                continue
+            try:
+                self._transit(goal + np.array([0, 0, 0.08]), r_goal, skip=obj, below_tcp=below)
+                self._straight(goal, r_goal)
+                break
+            except _Fail as exc:
+                last = exc
+        else:
+            raise _Fail(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, heights; last: {last})")
         self._gripper(GRIPPER_OPEN_CTRL)
         self.held = None
         pos, _ = self.tcp_pose()
@@ -563,22 +663,11 @@ class Robot:
         while not resting and self.data.time < settle_end:
             self._wait(0.05)
             resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < 0.05
-        final, _ = self.object_pose(obj)
-        pts = self.object_points(obj)
-        centre = (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
-        values = {"object_xy": centre.tolist(), "target_xy": xy.tolist(), "object_bottom_z": float(pts[:, 2].min()), "surface_z": surface}
-        if region is not None and region[0] == "region":
-            c, half, r2 = region[1]
-            local = r2.T @ (centre - c)
-            inside = bool(np.all(np.abs(local) <= half))
-            ok = inside and resting
-            values["inside"] = inside
-            reason = "" if ok else ("object came to rest outside the zone" if not inside else "object still moving")
-        else:
-            err = float(np.linalg.norm(centre - xy))
-            values["xy_error"] = err
-            ok = err <= tolerance and float(pts[:, 2].min()) > surface - 0.02
-            reason = "" if ok else f"object ended {err * 1000:.0f} mm from the target"
+        verdict = judge()
+        values = {"object_xy": self._centre_xy(obj).tolist(), "target_xy": np.asarray(xy).tolist(), "release_pose": k,
+                  "release_yaw": yaw, "release_drop": drop, "measured": verdict.measured, "resting": resting}
+        ok = verdict.ok and resting
+        reason = "" if ok else (f"not {_WORDS[name]} after release: {verdict.measured}" if not verdict.ok else "object still moving")
         return ActionResult(name, ok, reason, values=values)
 
     def push(self, obj: str, direction, distance: float, max_sim_time: float | None = None) -> ActionResult:

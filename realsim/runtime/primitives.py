@@ -3,7 +3,8 @@
 These follow the planner's contract (``prompts/planner_system.md``), which differs from the raw
 :class:`Robot` methods in a few conveniences:
 
-- ``place``/``place_on``/``place_in`` grasp the object first when the hand does not hold it;
+- ``place``/``place_on``/``place_in``/``place_beside``/``place_between``/``place_down`` grasp the
+  object first when the hand does not hold it;
 - ``place(obj, pos)``: ``pos`` is the target *centre*; its z is only a hint, the object is
   lowered onto whatever surface lies below ``pos``'s xy;
 - ``push(obj, direction, distance)`` takes "left"/"right"/"forward"/"back" (as seen from the
@@ -53,7 +54,8 @@ class ProgramAPI:
         return {
             "go_home": self.go_home, "move_ee_to": self.move_ee_to, "open_gripper": self.open_gripper,
             "close_gripper": self.close_gripper, "grasp": self.grasp, "place": self.place,
-            "place_on": self.place_on, "place_in": self.place_in, "push": self.push,
+            "place_on": self.place_on, "place_in": self.place_in, "place_beside": self.place_beside,
+            "place_between": self.place_between, "place_down": self.place_down, "push": self.push,
             "open_drawer": self.open_drawer, "close_drawer": self.close_drawer,
             "object_pose": self.object_pose, "object_names": self.object_names,
         }
@@ -143,6 +145,30 @@ class ProgramAPI:
         if fail is not None:
             return fail
         return self._record(self.robot.place_in(obj, container), f"place_in({obj!r}, {container!r})")
+
+    def place_beside(self, obj: str, ref: str, side: str = "next") -> ActionResult:
+        obj, ref = self._obj(obj), self._obj(ref)
+        if not isinstance(side, str) or side.strip().lower() not in ("next", "left", "right", "front", "behind"):
+            raise ValueError(f"side {side!r}: use 'next', 'left', 'right', 'front' or 'behind'")
+        fail = self._ensure_held(obj, "place_beside")
+        if fail is not None:
+            return fail
+        side = side.strip().lower()
+        return self._record(self.robot.place_beside(obj, ref, side), f"place_beside({obj!r}, {ref!r}, {side!r})")
+
+    def place_between(self, obj: str, a: str, b: str) -> ActionResult:
+        obj, a, b = self._obj(obj), self._obj(a), self._obj(b)
+        fail = self._ensure_held(obj, "place_between")
+        if fail is not None:
+            return fail
+        return self._record(self.robot.place_between(obj, a, b), f"place_between({obj!r}, {a!r}, {b!r})")
+
+    def place_down(self, obj: str) -> ActionResult:
+        obj = self._obj(obj)
+        fail = self._ensure_held(obj, "place_down")
+        if fail is not None:
+            return fail
+        return self._record(self.robot.place_down(obj), f"place_down({obj!r})")
 
     def push(self, obj: str, direction: Any, distance: float) -> ActionResult:
         obj = self._obj(obj)

@@ -1,0 +1,387 @@
+"""Which scene objects a noun phrase means: "the big can", "the second box from the right",
+"all the fruit", "it", "the mug next to the bowl".
+
+A phrase is read as: quantifier, ordinal or extreme, colour and size words, a noun (matched
+against labels, aliases and body names, with synonyms, kinds such as "fruit" and typos), and
+an optional locator ("on the left", "next to the bowl", "closest to you"). Directions are the
+robot's (it faces the table like the person talking to it). A singular phrase must name exactly
+one object; otherwise :class:`InputError` lists the candidates, so a wrong object is never
+acted on.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from realsim.errors import InputError
+from realsim.planner import relations
+from realsim.planner.types import ObjectInfo
+from realsim.planner.vocab import (
+    BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SIZE_AXIS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular,
+)
+
+DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those"}
+SINGULAR_PRONOUNS = {"it", "this", "that", "this one", "that one", "the same one", "same one", "the same", "same", "itself",
+                     "the one", "same thing", "the same thing", "that thing", "this thing", "it again", "the object", "one"}
+PLURAL_PRONOUNS = {"them", "they", "those", "these", "both", "both of them", "all of them", "them all", "all of those",
+                   "all of these", "those ones", "these ones", "the two", "both objects"}
+LOCATOR_RELATIONS = (
+    (r"(?:that is |thats |which is |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
+    (r"(?:that is |thats |which is |sitting |lying )?(?:on top of|on)", "on"),
+    (r"(?:that is |thats |which is |sitting |lying )?(?:inside of|inside|in)", "in"),
+    (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
+    (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
+    (r"(?:that is |thats |which is )?behind", "behind"),
+    (r"(?:that is |thats |which is )?in front of", "front"),
+)
+# robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
+EXTREMES: dict[str, tuple[int, float]] = {
+    "leftmost": (1, 1.0), "left most": (1, 1.0), "left": (1, 1.0), "rightmost": (1, -1.0), "right most": (1, -1.0), "right": (1, -1.0),
+    "farthest": (0, 1.0), "furthest": (0, 1.0), "far": (0, 1.0), "back": (0, 1.0), "rear": (0, 1.0), "backmost": (0, 1.0),
+    "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0), "front": (0, -1.0), "frontmost": (0, -1.0),
+}
+
+
+@dataclass
+class Context:
+    """What earlier clauses referred to ("it", "them", "the other one")."""
+
+    last: list[ObjectInfo] = field(default_factory=list)
+
+    def set(self, objs: list[ObjectInfo]) -> None:
+        if objs:
+            self.last = list(objs)
+
+
+def describe(o: ObjectInfo) -> str:
+    return f"{o.name} ({(o.color + ' ') if o.color else ''}{o.label})"
+
+
+class Resolver:
+    """Resolves noun phrases against ``objects``; ``robot_yaw`` turns left/right into the world."""
+
+    def __init__(self, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0):
+        self.objects = list(objects)
+        c, s = math.cos(robot_yaw), math.sin(robot_yaw)
+        self.forward, self.left = np.array([c, s]), np.array([-s, c])
+        self._words = {o.name: self._name_sets(o) for o in self.objects}
+
+    # --- vocabulary of one object -----------------------------------------------------------
+    def _name_sets(self, o: ObjectInfo) -> list[list[str]]:
+        names = [name_words(o.label), name_words(o.name), *(name_words(a) for a in o.aliases)]
+        rec = record(o.label)
+        if rec is not None:
+            names.append(name_words(rec[0]))
+        out: list[list[str]] = []
+        for n in names:
+            n = [w for w in n if w not in COLOR_WORDS]
+            if n and n not in out:
+                out.append(n)
+        return out
+
+    def color_of(self, o: ObjectInfo) -> str | None:
+        if o.color:
+            return COLOR_WORDS.get(o.color.lower(), o.color.lower())
+        for w in norm(o.name).split() + norm(o.label).split():
+            if w in COLOR_WORDS:
+                return COLOR_WORDS[w]
+        return None
+
+    def kinds_of(self, o: ObjectInfo) -> set[str]:
+        words = {w for n in self._words[o.name] for w in n}
+        rec = record(o.label)
+        out = {k for k, members in KINDS.items() if words & set(members)}
+        if rec is not None and rec[1] == "fruit":
+            out.add("fruit")
+        if "container" in o.affordances:
+            out.add("container")
+        return out
+
+    def listing(self) -> str:
+        if not self.objects:
+            return "the scene has no objects"
+        return "objects in the scene: " + ", ".join(describe(o) for o in self.objects)
+
+    def robot_xy(self, o: ObjectInfo) -> tuple[float, float]:
+        p = np.asarray(o.position[:2], float)
+        return float(p @ self.forward), float(p @ self.left)
+
+    # --- noun scoring -----------------------------------------------------------------------
+    def noun_score(self, nouns: list[str], o: ObjectInfo) -> float:
+        """How well ``nouns`` name ``o`` (0: not at all; 3 exact; ~2 all words; 1.8 same head noun;
+        1.5 synonym or kind; ~1.2 fuzzy)."""
+        if not nouns or all(w in GENERIC for w in nouns):
+            return 1.0
+        nouns = [w for w in nouns if w not in GENERIC] or nouns
+        phrase = " ".join(nouns)
+        best = 0.0
+        for name in self._words[o.name]:
+            if nouns == name:
+                best = max(best, 3.0)
+            elif all(w in name for w in nouns):
+                best = max(best, 2.0 + 0.1 * len(nouns))
+            elif name[-1] == nouns[-1] or (len(nouns) == 1 and nouns[0] in name):
+                best = max(best, 1.8 if name[-1] == nouns[-1] else 1.7)
+            elif any(w in name for w in nouns) and nouns[-1] in {w for n in self._words[o.name] for w in n}:
+                best = max(best, 1.6)
+            else:
+                ratio = difflib.SequenceMatcher(None, phrase, " ".join(name)).ratio()
+                if ratio >= 0.8:
+                    best = max(best, 1.0 + ratio / 4)
+        if best < 1.5:
+            head = nouns[-1]
+            all_words = {w for n in self._words[o.name] for w in n}
+            if any(s in all_words or s in " ".join(" ".join(n) for n in self._words[o.name]) for s in SYNONYMS.get(head, ())):
+                best = max(best, 1.5)
+            elif head in KINDS and head in self.kinds_of(o):
+                best = max(best, 1.5)
+        return best
+
+    # --- the phrase -------------------------------------------------------------------------
+    def resolve(self, phrase: str, ctx: Context, *, want: str | None = None, exclude: Sequence[str] = (),
+                allow_plural: bool = True) -> list[ObjectInfo]:
+        """The objects ``phrase`` names (one, unless the phrase is plural or a quantity)."""
+        text = norm(phrase)
+        text = re.sub(r"^(?:(?:the|a|an|my|your|our)\s+)+", "", text).strip()
+        text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
+        if not text:
+            raise InputError(f"which object? nothing named in {phrase.strip()!r}; {self.listing()}")
+        if text in SINGULAR_PRONOUNS or text in PLURAL_PRONOUNS:
+            if not ctx.last:
+                raise InputError(f"{phrase.strip()!r} does not refer to anything yet; name the object; {self.listing()}")
+            if text in SINGULAR_PRONOUNS and len(ctx.last) > 1 and text not in ("it", "one"):
+                return list(ctx.last)
+            return list(ctx.last)
+        m = re.fullmatch(r"(?:the )?other(?: one)?|(?:the )?other (.+)", text)
+        if m:
+            noun = m.group(1) or (ctx.last[0].label if ctx.last else "")
+            if not noun:
+                raise InputError(f"'the other one' does not refer to anything yet; {self.listing()}")
+            taken = {o.name for o in ctx.last}
+            return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False)
+        parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
+        if len(parts) > 1 and allow_plural:
+            out: list[ObjectInfo] = []
+            for p in parts:
+                for o in self.resolve(p, ctx, want=want, exclude=exclude, allow_plural=True):
+                    if o not in out:
+                        out.append(o)
+            return out
+        m = re.fullmatch(r"(.+?)\s+(?:except(?: for)?|but(?: not)?|other than|apart from)\s+(.+)", text)
+        if m:
+            excluded = self.resolve(m.group(2), Context(), allow_plural=True)
+            return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)])
+        return self._single_phrase(text, phrase, ctx, want, exclude, allow_plural)
+
+    def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
+                       allow_plural: bool) -> list[ObjectInfo]:
+        cands = [o for o in self.objects if o.name not in exclude]
+        # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
+        order: tuple[str, object] | None = None
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:closest|nearest) to (?!me$|you$|the robot$)(.+)", text)
+        if m:
+            ref = self.resolve(m.group(2), Context(), allow_plural=False)[0]
+            text, order = m.group(1), ("near", ref)
+            cands = [o for o in cands if o.name != ref.name]
+        else:
+            for pattern, rel in LOCATOR_RELATIONS:
+                m = re.fullmatch(rf"(.+?)\s+{pattern}\s+(?!the (?:left|right|far left|far right|front|back|middle|center|centre|end)(?: side| end)?$)(.+)", text)
+                if m and not re.fullmatch(r"(?:the )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?|me|you|the robot", m.group(2)):
+                    try:
+                        ref = self.resolve(m.group(2), Context(), allow_plural=False)[0]
+                    except InputError:
+                        continue
+                    text = m.group(1)
+                    cands = [o for o in cands if o.name != ref.name and _relation_holds(rel, o, ref, self)]
+                    break
+        # positional locators: "on the left", "in the back", "closest to you", "in the middle"
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
+                         r"|(closest|nearest) to (?:me|you|the robot)|(farthest|furthest) from (?:me|you|the robot))", text)
+        if m:
+            text = m.group(1)
+            word = m.group(3) or ("nearest" if m.group(4) else "farthest")
+            order = ("middle", None) if word in ("middle", "center", "centre") else ("extreme", word)
+        words = text.split()
+        # ordinal "second from the right", "the third can from the left", "the last box"
+        ordinal: int | None = None
+        m = re.search(r"\b(first|second|third|fourth|fifth|1st|2nd|3rd|4th|5th|last)\b", text)
+        if m:
+            idx = -1 if m.group(1) == "last" else ORDINALS[m.group(1)]
+            d = re.search(r"\bfrom (?:the )?(left|right|front|back|far end|near end)\b", text)
+            side = d.group(1) if d else (order[1] if order and order[0] == "extreme" else "left")
+            side = {"far end": "back", "near end": "front"}.get(str(side), str(side))
+            ordinal = idx
+            order = ("extreme", side)
+            text = re.sub(r"\bfrom (?:the )?(?:left|right|front|back|far end|near end)\b", " ", text)
+            text = re.sub(rf"\b{m.group(1)}\b", " ", text)
+            words = text.split()
+        quantity: int | None = None
+        plural = False
+        if words and words[0] in ("all", "every", "each", "both", "everything"):
+            plural = True
+            if words[0] == "both":
+                quantity = 2
+            words = [w for w in words[1:] if w not in ("of", "the")] or (["thing"] if words[0] == "everything" else [])
+        joined = " ".join(words)
+        for phrase_n, n in sorted(NUMBERS.items(), key=lambda kv: -len(kv[0])):
+            if re.match(rf"(?:the )?{phrase_n}\b", joined) and n > 1:
+                quantity, plural = n, True
+                joined = re.sub(rf"^(?:the )?{phrase_n}\b\s*", "", joined)
+                break
+        m = re.match(r"(?:the )?(\d+)\s+(.+)", joined)
+        if m and int(m.group(1)) > 1:
+            quantity, plural, joined = int(m.group(1)), True, m.group(2)
+        words = [w for w in joined.split() if w not in DETERMINERS]
+        colors = [COLOR_WORDS[w] for w in words if w in COLOR_WORDS]
+        sizes = [w for w in words if w in BIG or w in SMALL]
+        extreme_words = [w for w in words if w in EXTREMES and w not in ("near", "far")]
+        if extreme_words and order is None:
+            order = ("extreme", extreme_words[-1])
+        if any(w in ("middle", "center", "centre", "central") for w in words):
+            order = ("middle", None)
+        skip = set(COLOR_WORDS) | set(BIG) | set(SMALL) | set(EXTREMES) | {"middle", "center", "centre", "central", "one", "ones", "most", "colored", "coloured"}
+        nouns_raw = [w for w in words if w not in skip]
+        if any(is_plural(w) for w in nouns_raw[-1:]):
+            plural = True
+        nouns = [singular(w) for w in nouns_raw]
+        if plural and not allow_plural:
+            plural = False
+        # noun
+        scored = [(o, self.noun_score(nouns, o)) for o in cands]
+        if want:
+            scored = [(o, s + (0.3 if s > 0 and want in o.affordances else 0.0)) for o, s in scored]
+        scored = [(o, s) for o, s in scored if s > 0]
+        if not scored:
+            raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
+        best = max(s for _, s in scored)
+        floor = min(best, 1.7) - 1e-9 if (plural or order or ordinal is not None or sizes or colors) else best - 1e-9
+        found = [o for o, s in scored if s >= floor]
+        # colour
+        if colors:
+            known = [o for o in found if self.color_of(o) is not None]
+            if not known:
+                raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o in found)}; "
+                                 "name it another way")
+            found = [o for o in found if self.color_of(o) in colors]
+            if not found:
+                raise InputError(f"no {' '.join(colors)} object matches {phrase.strip()!r}; {self.listing()}")
+        # size and position
+        if sizes and len(found) > 1:
+            found = [_extreme_by_size(found, sizes[-1])]
+        if order is not None and len(found) > 1:
+            found = self._ordered(found, order, ordinal, phrase)
+        elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:
+            raise InputError(f"there is no {phrase.strip()!r}: only {len(found)} such object(s)")
+        if plural:
+            if quantity is not None and len(found) != quantity:
+                raise InputError(f"{phrase.strip()!r}: the scene has {len(found)}, not {quantity}: "
+                                 f"{', '.join(describe(o) for o in found)}")
+            return found
+        if len(found) > 1:
+            raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
+                             "say which one (colour, size, left/right, or the body name)")
+        return found
+
+    def _ordered(self, found: list[ObjectInfo], order: tuple[str, object], ordinal: int | None, phrase: str) -> list[ObjectInfo]:
+        kind, arg = order
+        if kind == "near":
+            ref = arg
+            assert isinstance(ref, ObjectInfo)
+            return [min(found, key=lambda o: relations.xy_gap(_pts(o), _pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
+        if kind == "middle":
+            ys = sorted(found, key=lambda o: self.robot_xy(o)[1])
+            if len(ys) % 2 == 0:
+                raise InputError(f"{phrase.strip()!r}: there is no middle one of {len(ys)}: {', '.join(self._distinguish(ys))}")
+            return [ys[len(ys) // 2]]
+        axis, sign = EXTREMES[str(arg)]
+        ranked = sorted(found, key=lambda o: -sign * self.robot_xy(o)[axis])
+        k = 1 if ordinal is None else ordinal
+        if k == -1:
+            return [ranked[-1]]
+        if k > len(ranked):
+            raise InputError(f"there is no {phrase.strip()!r}: only {len(ranked)} such objects")
+        return [ranked[k - 1]]
+
+    def _distinguish(self, objs: list[ObjectInfo]) -> list[str]:
+        """Each candidate with its colour, size and position word among the others."""
+        ranked = sorted(objs, key=lambda o: -self.robot_xy(o)[1])
+        out = []
+        for i, o in enumerate(ranked):
+            where = "leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{_nth(i + 1)} from the left"
+            out.append(f"{o.name} ({' '.join(w for w in (self.color_of(o), o.label) if w)}, {where})")
+        return out
+
+
+def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> list[str]:
+    """One line per object in the words the rule planner reads: body name, colour, label, other
+    names, kinds, and its place among objects of the same label (leftmost, larger...), then its
+    box in the world frame and its affordances."""
+    res = Resolver(objects, robot_yaw)
+    lines = []
+    for o in objects:
+        same = [x for x in objects if x.label == o.label]
+        words = []
+        if len(same) > 1:
+            ranked = sorted(same, key=lambda x: -res.robot_xy(x)[1])
+            i = ranked.index(o)
+            words.append("leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{_nth(i + 1)} from the left")
+            words.append(f"{'largest' if o is max(same, key=lambda x: float(np.prod(x.size))) else 'smallest' if o is min(same, key=lambda x: float(np.prod(x.size))) else 'middle-sized'}"
+                         f" of {len(same)} {o.label}s")
+        f, l = res.robot_xy(o)
+        kinds = sorted(res.kinds_of(o) - {"container"})
+        x, y, z = o.position
+        sx, sy, sz = o.size
+        line = f"{o.name}: {' '.join(w for w in (res.color_of(o), o.label) if w)}"
+        if o.aliases:
+            line += f" (also: {', '.join(o.aliases)})"
+        if kinds:
+            line += f" [kind: {', '.join(kinds)}]"
+        if words:
+            line += f" [{'; '.join(words)}]"
+        line += (f" at ({x:.3f}, {y:.3f}, {z:.3f}) m, size {sx:.3f} x {sy:.3f} x {sz:.3f} m; "
+                 f"{f:.2f} m forward, {l:+.2f} m left in the robot's frame")
+        if o.affordances:
+            line += f" [{', '.join(o.affordances)}]"
+        lines.append(line)
+    return lines
+
+
+def _nth(k: int) -> str:
+    return {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth"}.get(k, f"{k}th")
+
+
+def _pts(o: ObjectInfo) -> np.ndarray:
+    return relations.box_points(o.position, o.size)
+
+
+def _volume(o: ObjectInfo, word: str) -> float:
+    axis = SIZE_AXIS.get(word)
+    if axis == 2:
+        return float(o.size[2])
+    if axis == -1:
+        return float(max(o.size))
+    return float(np.prod(o.size))
+
+
+def _extreme_by_size(objs: list[ObjectInfo], word: str) -> ObjectInfo:
+    big = word in BIG
+    ranked = sorted(objs, key=lambda o: _volume(o, word), reverse=big)
+    return ranked[0]
+
+
+def _relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, resolver: Resolver) -> bool:
+    a, b = _pts(o), _pts(ref)
+    if rel == "next":
+        return relations.xy_gap(a, b) <= 0.12
+    if rel == "on":
+        return relations.on(a, b, tolerance=0.03).ok
+    if rel == "in":
+        return relations.inside(a, b).ok or (relations.xy_gap(a, b) == 0.0 and a[:, 2].min() < b[:, 2].max())
+    d = {"left": resolver.left, "right": -resolver.left, "behind": resolver.forward, "front": -resolver.forward}[rel]
+    return relations.side_of(a, b, d, max_gap=0.3).ok

@@ -1,0 +1,122 @@
+"""The words people use for a tabletop scene: normalization, colours, sizes, kinds, directions.
+
+Shared by the rule planner (to read commands) and the Claude planner (to describe the scene in
+the same words). Everything here is data or a pure function of text and numbers.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from functools import lru_cache
+
+COLORS: dict[str, tuple[float, float, float]] = {
+    "red": (0.8, 0.1, 0.1), "green": (0.15, 0.6, 0.2), "blue": (0.15, 0.3, 0.8), "yellow": (0.9, 0.85, 0.15),
+    "orange": (0.95, 0.55, 0.1), "purple": (0.5, 0.2, 0.6), "pink": (0.95, 0.5, 0.7), "black": (0.05, 0.05, 0.05),
+    "white": (0.95, 0.95, 0.95), "gray": (0.5, 0.5, 0.5), "brown": (0.45, 0.3, 0.15),
+}
+COLOR_WORDS: dict[str, str] = {**{c: c for c in COLORS}, "grey": "gray", "silver": "gray", "gold": "yellow", "golden": "yellow",
+                               "beige": "brown", "tan": "brown", "violet": "purple", "crimson": "red", "navy": "blue", "maroon": "red"}
+
+BIG = ("big", "large", "bigger", "larger", "biggest", "largest", "huge", "giant", "tall", "taller", "tallest", "high", "long", "longer", "longest")
+SMALL = ("small", "smaller", "smallest", "little", "tiny", "mini", "short", "shorter", "shortest", "low")
+SIZE_AXIS = {"tall": 2, "taller": 2, "tallest": 2, "high": 2, "short": 2, "shorter": 2, "shortest": 2, "low": 2,
+             "long": -1, "longer": -1, "longest": -1}  # -1: the longest extent; absent: volume
+
+ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5}
+NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
+           "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "a couple of": 2, "a pair of": 2}
+
+SYNONYMS: dict[str, tuple[str, ...]] = {
+    "cup": ("mug", "glass"), "mug": ("cup",), "tin": ("can",), "can": ("tin",), "carton": ("box",),
+    "box": ("carton", "block", "cube"), "block": ("cube", "box", "brick"), "cube": ("block", "box"), "brick": ("block",),
+    "dish": ("plate", "bowl"), "plate": ("dish",), "bottle": ("jar",), "jar": ("bottle",), "ball": ("sphere",),
+    "bin": ("basket", "container"), "basket": ("bin",), "pen": ("marker",), "marker": ("pen",), "jug": ("pitcher",),
+    "pitcher": ("jug",), "drill": ("power drill",), "cleanser": ("bleach",), "bleach": ("cleanser",),
+}
+# words naming a kind of object rather than one: they select by the size table's record
+KINDS: dict[str, tuple[str, ...]] = {
+    "fruit": ("banana", "apple", "strawberry", "orange", "lemon", "pear", "peach", "plum", "lime", "grape", "fruit"),
+    "food": ("banana", "apple", "strawberry", "orange", "lemon", "pear", "peach", "plum", "can", "box", "cracker", "sugar",
+             "soup", "meat", "jello", "gelatin", "pudding", "cereal", "mustard", "ketchup", "bread", "chip"),
+    "tool": ("drill", "scissors", "hammer", "screwdriver", "wrench", "plier", "clamp", "knife", "spatula"),
+    "toy": ("cube", "block", "brick", "ball", "dinosaur", "toy", "car", "lego", "duck"),
+    "dish": ("plate", "bowl", "mug", "cup", "glass", "dish"),
+    "container": ("bowl", "mug", "cup", "basket", "bin", "box", "pot", "jar", "pitcher", "glass", "tray", "bucket"),
+    "drink": ("can", "bottle", "cup", "mug", "glass"),
+}
+GENERIC = ("thing", "object", "item", "stuff", "one", "piece")
+
+DIRECTION_WORDS: dict[str, str] = {
+    "left": "left", "leftward": "left", "leftwards": "left", "right": "right", "rightward": "right", "rightwards": "right",
+    "forward": "forward", "forwards": "forward", "ahead": "forward", "away": "forward", "away from me": "forward",
+    "away from you": "forward", "further away": "forward", "farther away": "forward", "further": "forward",
+    "farther": "forward", "back": "back", "backward": "back", "backwards": "back", "toward me": "back",
+    "towards me": "back", "toward you": "back", "towards you": "back", "toward the robot": "back",
+    "towards the robot": "back", "closer": "back", "closer to you": "back", "nearer": "back",
+}
+UNITS: dict[str, float] = {
+    "cm": 0.01, "centimeter": 0.01, "centimetre": 0.01, "mm": 0.001, "millimeter": 0.001, "millimetre": 0.001,
+    "m": 1.0, "meter": 1.0, "metre": 1.0, "in": 0.0254, "inch": 0.0254, "inche": 0.0254, "ft": 0.3048, "foot": 0.3048, "feet": 0.3048,
+}
+VAGUE_DISTANCES: dict[str, float] = {"a tiny bit": 0.03, "a little bit": 0.04, "a bit": 0.05, "a little": 0.05, "slightly": 0.03,
+                                     "a touch": 0.03, "a lot": 0.20, "a few centimeters": 0.05, "a few centimetres": 0.05,
+                                     "a few cm": 0.05, "a couple of centimeters": 0.02, "a couple of cm": 0.02}
+
+
+def singular(word: str) -> str:
+    """English singular of one word (good enough for object nouns)."""
+    irregular = {"knives": "knife", "boxes": "box", "glasses": "glass", "dishes": "dish", "matches": "match", "scissors": "scissors",
+                 "feet": "feet", "inches": "inch", "berries": "berry", "strawberries": "strawberry", "cherries": "cherry",
+                 "tomatoes": "tomato", "potatoes": "potato", "its": "its", "this": "this", "these": "these", "those": "those",
+                 "bus": "bus", "lens": "lens", "is": "is", "was": "was", "has": "has", "does": "does", "pliers": "plier"}
+    if word in irregular:
+        return irregular[word]
+    if len(word) > 3 and word.endswith("ies"):
+        return word[:-3] + "y"
+    if len(word) > 3 and word.endswith(("ches", "shes", "xes", "sses", "zes")):
+        return word[:-2]
+    if len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is", "os")):
+        return word[:-1]
+    return word
+
+
+def is_plural(word: str) -> bool:
+    return singular(word) != word and word not in ("its", "this", "is", "was", "has")
+
+
+def norm(text: str) -> str:
+    """Lower case, underscores and hyphens to spaces, punctuation dropped (decimal points kept)."""
+    s = text.lower().replace("_", " ").replace("-", " ").replace("'s ", " ").replace("’", "'")
+    s = re.sub(r"(?<!\d)\.|\.(?!\d)", " ", s)
+    s = re.sub(r"[^a-z0-9. ']+", " ", s).replace("'", "")
+    return " ".join(s.split())
+
+
+def name_words(text: str) -> list[str]:
+    """Singular words of a label, alias or body name ("obj3_red_boxes" -> red, box)."""
+    return [singular(w) for w in norm(text).split() if not re.fullmatch(r"obj\d+|\d+", w)]
+
+
+def color_name(rgb: Sequence[float] | None) -> str | None:
+    """The nearest colour word for an RGB triple (0-1), or None; greys by lightness."""
+    if rgb is None or len(rgb) < 3:
+        return None
+    r, g, b = (float(v) for v in rgb[:3])
+    hi, lo = max(r, g, b), min(r, g, b)
+    if hi - lo < 0.12:
+        return "white" if hi > 0.8 else "black" if hi < 0.2 else "gray"
+    return min(COLORS, key=lambda c: math.dist(COLORS[c], (r, g, b)) if c not in ("white", "black", "gray") else math.inf)
+
+
+@lru_cache(maxsize=512)
+def record(label: str) -> tuple[str, str, str] | None:
+    """(category, material, form) of a label from the size table, or None."""
+    from realsim.physics.size_table import lookup
+
+    match = lookup(label)
+    if match is None:
+        return None
+    c = match.category
+    return c.name, str(getattr(c, "material", "") or ""), str(getattr(c, "form", "") or "")

@@ -1,0 +1,81 @@
+"""Where to release a held object: spots within a target's free area, hand yaws and heights.
+
+A place that cannot reach its first release pose tries what a person would: another spot
+within the container's cavity or the support's top (nearer the robot first), the hand turned
+about the vertical, a slightly higher release. These functions only propose; the robot checks
+each pose with IK and a planned path before moving.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+
+@dataclass(frozen=True)
+class ReleaseParams:
+    """How many alternatives a place tries."""
+
+    ring: int = 6  # spots around the centre of the free area
+    yaws: tuple[float, ...] = (0.0, 0.5, -0.5, 1.0, -1.0, np.pi / 2)  # rad the hand turns about the vertical
+    drops: tuple[float, ...] = (0.01, 0.03, 0.05)  # m above the surface at release
+    max_poses: int = 24
+
+
+def footprint_radius(obj_pts: np.ndarray) -> float:
+    """Half the object's largest horizontal extent about its footprint centre (m)."""
+    xy = obj_pts[:, :2]
+    c = (xy.min(axis=0) + xy.max(axis=0)) / 2
+    return float(np.linalg.norm(xy - c, axis=1).max())
+
+
+def cavity_centre(container_pts: np.ndarray) -> tuple[np.ndarray, float]:
+    """Centre of a container's opening (its top band of points) and the inner radius there."""
+    top = float(container_pts[:, 2].max())
+    band = container_pts[container_pts[:, 2] > top - 0.02, :2]
+    centre = (band.min(axis=0) + band.max(axis=0)) / 2
+    lo, hi = container_pts[:, :2].min(axis=0), container_pts[:, :2].max(axis=0)
+    inner = band[np.linalg.norm(band - centre, axis=1) < 0.45 * float(np.min(hi - lo))]
+    if len(inner) < 3:
+        centre = np.median(band, axis=0)
+    r_in = float(np.linalg.norm(band - centre, axis=1).min())
+    return centre, r_in
+
+
+def top_area(support_pts: np.ndarray) -> tuple[np.ndarray, float]:
+    """Centre of a support's top face and the radius of the largest circle about it on that face."""
+    top = float(support_pts[:, 2].max())
+    face = support_pts[support_pts[:, 2] > top - 0.01, :2]
+    centre = face.mean(axis=0)
+    try:
+        eq = ConvexHull(face).equations
+        r_in = float(max(0.0, -(eq[:, :2] @ centre + eq[:, 2]).max()))
+    except (QhullError, ValueError):
+        r_in = 0.0
+    return centre, r_in
+
+
+def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) -> list[np.ndarray]:
+    """``centre`` first, then points on a ring of radius ``slack / 2`` about it, nearer the
+    robot base first (a ring only when there is at least 1 cm of slack)."""
+    out = [np.asarray(centre, float)]
+    if slack >= 0.01:
+        ang = 2 * np.pi * np.arange(ring) / ring
+        ringed = [centre + 0.5 * slack * np.array([np.cos(a), np.sin(a)]) for a in ang]
+        ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
+        out += ringed
+    return out
+
+
+def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams()) -> list[tuple[np.ndarray, float, float]]:
+    """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, then
+    the other spots, then higher releases; at most ``params.max_poses``."""
+    out: list[tuple[np.ndarray, float, float]] = []
+    first = params.drops[0]
+    for k, xy in enumerate(spot_list):
+        yaws = params.yaws if k == 0 else params.yaws[:3]
+        out += [(xy, yaw, first) for yaw in yaws]
+    out += [(spot_list[0], yaw, drop) for drop in params.drops[1:] for yaw in params.yaws[:3]]
+    return out[: params.max_poses]

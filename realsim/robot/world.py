@@ -1,0 +1,130 @@
+"""What the robot and the goal checks read from a MuJoCo scene: object surfaces and contacts.
+
+:class:`SceneGeometry` works on any compiled model (with or without the Panda): the movable
+objects are the free bodies, an object is its body and every body attached below it (a hinged
+lid, a drawer), its surface is sampled from its collision geoms once (body frame, cached) and
+moved with the live pose, and :meth:`SceneGeometry.touching` says what an object rests against
+("world" for static geometry such as the table, another object's name, "robot").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import mujoco
+import numpy as np
+
+from realsim.robot.grasps import body_surface
+
+COLLISION_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
+WORLD = "world"
+ROBOT = "robot"
+CONTACT_DISTANCE = 0.002  # m: geoms closer than this touch
+
+
+class SceneGeometry:
+    """Live object geometry of ``model``/``data``; ``robot_bodies`` are reported as "robot"."""
+
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, robot_bodies: Iterable[int] = ()):
+        self.model, self.data = model, data
+        self.robot_bodies = set(robot_bodies)
+        self._surfaces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        root = model.body_rootid
+        self._root_name = {b: (WORLD if root[b] == 0 else model.body(int(root[b])).name) for b in range(model.nbody)}
+
+    # --- objects ------------------------------------------------------------------------------
+    def object_names(self) -> list[str]:
+        """Names of the free bodies (the movable objects), in model order."""
+        m = self.model
+        return [m.body(m.jnt_bodyid[j]).name for j in range(m.njnt) if m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+
+    def body(self, name: str) -> int:
+        try:
+            return self.model.body(name).id
+        except KeyError:
+            raise KeyError(f"no body named '{name}'; objects: {', '.join(self.object_names())}") from None
+
+    def subtree(self, b: int) -> list[int]:
+        """Body ``b`` and the bodies attached below it: one object to the hand."""
+        out = [b]
+        for c in range(b + 1, self.model.nbody):  # depth-first order: children follow parents
+            if self.model.body_parentid[c] in out:
+                out.append(c)
+        return out
+
+    def surface(self, b: int) -> tuple[np.ndarray, np.ndarray]:
+        """Body-frame surface samples and outward normals of body ``b``'s collision geoms."""
+        if b not in self._surfaces:
+            self._surfaces[b] = body_surface(self.model, b)
+        return self._surfaces[b]
+
+    def body_points(self, b: int) -> np.ndarray:
+        return self.surface(b)[0] @ self.data.xmat[b].reshape(3, 3).T + self.data.xpos[b]
+
+    def points(self, name: str) -> np.ndarray:
+        """World-frame surface samples of an object (live pose, attached parts included)."""
+        return np.vstack([self.body_points(b) for b in self.subtree(self.body(name))])
+
+    def normals(self, name: str) -> np.ndarray:
+        """World-frame outward normals matching :meth:`points`."""
+        return np.vstack([self.surface(b)[1] @ self.data.xmat[b].reshape(3, 3).T for b in self.subtree(self.body(name))])
+
+    def owner(self, body: int) -> str:
+        """What a body belongs to: "robot", "world" (static geometry) or the object's root body name."""
+        if body in self.robot_bodies:
+            return ROBOT
+        return self._root_name[body]
+
+    def touching(self, name: str) -> set[str]:
+        """Owners of every geom in contact with object ``name`` (see :meth:`owner`)."""
+        parts = set(self.subtree(self.body(name)))
+        out: set[str] = set()
+        for i in range(self.data.ncon):
+            c = self.data.contact[i]
+            if c.dist > CONTACT_DISTANCE:
+                continue
+            b1, b2 = int(self.model.geom_bodyid[c.geom1]), int(self.model.geom_bodyid[c.geom2])
+            if b1 in parts and b2 not in parts:
+                out.add(self.owner(b2))
+            elif b2 in parts and b1 not in parts:
+                out.add(self.owner(b1))
+        return out
+
+    # --- free space ---------------------------------------------------------------------------
+    def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None, static_only: bool = False) -> float:
+        """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``
+        (and, with ``static_only``, every movable object: the table or floor under them)."""
+        best = -np.inf
+        geomid = np.zeros(1, np.int32)
+        exclude_body = self.body(exclude) if exclude else -1
+        for dx, dy in ((0, 0), (0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01)):
+            start = np.array([xy[0] + dx, xy[1] + dy, z_from])
+            for _ in range(4):
+                d = mujoco.mj_ray(self.model, self.data, start, np.array([0, 0, -1.0]), COLLISION_GROUPS, 1, exclude_body, geomid)
+                if d < 0:
+                    break
+                hit = int(self.model.geom_bodyid[geomid[0]])
+                if hit in self.robot_bodies or (static_only and self.owner(hit) != WORLD):
+                    start = start - np.array([0, 0, d + 1e-4])
+                    continue
+                best = max(best, start[2] - d)
+                break
+        return float(best) if np.isfinite(best) else 0.0
+
+    def clear(self, xy: np.ndarray, radius: float, skip: Iterable[str] = (), above: float = -np.inf) -> bool:
+        """Whether no object but ``skip`` has surface within ``radius`` of ``xy`` (horizontally),
+        counting only points higher than ``above``."""
+        skip = set(skip)
+        for n in self.object_names():
+            if n in skip:
+                continue
+            pts = self.points(n)
+            pts = pts[pts[:, 2] > above]
+            if len(pts) and float(np.min(np.linalg.norm(pts[:, :2] - np.asarray(xy)[:2], axis=1))) < radius:
+                return False
+        return True
+
+    def tallest(self, skip: str | None = None, default: float = 0.0) -> float:
+        """Highest point of every object but ``skip``."""
+        tops = [self.points(n)[:, 2].max() for n in self.object_names() if n != skip]
+        return float(max(tops)) if tops else default
