@@ -273,11 +273,14 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
         slabs = _add_captured_surfaces(spec, scene, image, params, assets)
     add_arena(spec, scene, params.arena, slabs)
     articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
+    object_sites = scene.capture.metadata.get("object_sites") or {}  # body name -> {site: [x, y, z]} (realsim.text)
     bodies: dict[str, mujoco.MjsBody] = {}
     for obj in scene.objects:
         joint = articulations.get(obj.name)
         parent = bodies.get(joint["parent"]) if joint else None
         bodies[obj.name] = add_object(spec, obj, params, assets, parent, joint)
+        for site, pos in (object_sites.get(obj.name) or {}).items():  # grasp features of procedural objects: <body>_handle, _rim, _lid, ...
+            bodies[obj.name].add_site(name=f"{obj.name}_{site}", pos=list(pos), size=[0.005, 0.005, 0.005], group=4)
     add_capture_camera(spec, scene)
     spec.assets = assets
     spec.compile()

@@ -133,3 +133,57 @@ def _place(footprints: list[np.ndarray], support: SupportPlane, obstacles: list[
                 "support without overlap: declare a larger support in capture.yaml"
             )
     return [result[i] for i in range(len(footprints))]
+
+
+# ---------------------------------------------------------------- resting on other objects
+def hull_equations(hulls: list[np.ndarray]) -> list[np.ndarray]:
+    """Facet planes (n, d with n.p + d <= 0 inside) of each convex point set."""
+    out = []
+    for pts in hulls:
+        try:
+            out.append(ConvexHull(np.asarray(pts, float)).equations)
+        except (QhullError, ValueError):
+            continue
+    return out
+
+
+def vertical_extent(equations: list[np.ndarray], xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(lowest, highest) z of the convex pieces along vertical lines through ``xy`` (N, 2); NaN
+    where no piece is crossed. Exact for convex pieces given by their facet planes."""
+    lo = np.full(len(xy), np.nan)
+    hi = np.full(len(xy), np.nan)
+    for eq in equations:
+        n, d = eq[:, :3], eq[:, 3]
+        c = -(d[None, :] + xy @ n[:, :2].T)  # n_z z <= c
+        nz = n[:, 2]
+        up, down, flat = nz > 1e-9, nz < -1e-9, np.abs(nz) <= 1e-9
+        zmax = np.min(np.where(up[None, :], c / np.where(up, nz, 1.0)[None, :], np.inf), axis=1)
+        zmin = np.max(np.where(down[None, :], c / np.where(down, nz, 1.0)[None, :], -np.inf), axis=1)
+        ok = (zmin <= zmax + 1e-9) & np.all(np.where(flat[None, :], c >= -1e-9, True), axis=1) & np.isfinite(zmin) & np.isfinite(zmax)
+        lo = np.where(ok, np.fmin(lo, zmin), lo)
+        hi = np.where(ok, np.fmax(hi, zmax), hi)
+    return lo, hi
+
+
+def rest_height(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray, yaw: float, step: float = 0.004) -> float | None:
+    """z of the child's frame origin when it is lowered at (``xy``, ``yaw``) onto the convex
+    pieces ``below`` (world frame) until it touches them; None when nothing is under it.
+
+    ``child`` are its convex pieces in its own frame. Vertical lines are sampled on a ``step`` grid
+    over the child's footprint plus the vertices of both, so thin rims are not missed.
+    """
+    c, s = np.cos(yaw), np.sin(yaw)
+    rot = np.array([[c, -s], [s, c]])
+    child_w = [np.column_stack([p[:, :2] @ rot.T + xy, p[:, 2]]) for p in child]
+    pts = np.vstack([p[:, :2] for p in child_w])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    n = np.maximum(np.ceil((hi - lo) / step).astype(int), 2)
+    gx, gy = np.meshgrid(np.linspace(lo[0], hi[0], min(n[0], 80)), np.linspace(lo[1], hi[1], min(n[1], 80)))
+    below_pts = np.vstack([p[:, :2] for p in below]) if below else np.zeros((0, 2))
+    inside = below_pts[(below_pts[:, 0] >= lo[0]) & (below_pts[:, 0] <= hi[0]) & (below_pts[:, 1] >= lo[1]) & (below_pts[:, 1] <= hi[1])]
+    samples = np.vstack([np.column_stack([gx.ravel(), gy.ravel()]), pts, inside])
+    bottom, _ = vertical_extent(hull_equations(child_w), samples)
+    _, top = vertical_extent(hull_equations(below), samples)
+    gap = top - bottom
+    gap = gap[np.isfinite(gap)]
+    return float(gap.max()) if len(gap) else None

@@ -1,47 +1,69 @@
-"""The offline scene-description parser: counts, colours, sizes, supports, unknown nouns."""
+"""The offline parser: supports, counts, attributes, containment, stacks, rows and relations."""
 
 from __future__ import annotations
 
 import pytest
 
-from realsim.physics.size_table import lookup
-from realsim.text.parser import parse_description
+from realsim.text.parser import parse_scene
+from realsim.text.schema import SceneSpec, clamp, json_schema
 
 
-def _objs(text: str) -> dict[str, tuple[int, str, str]]:
-    return {o.label: (o.count, o.color, o.size) for o in parse_description(text).objects}
+def _objs(text: str) -> dict[str, tuple]:
+    return {o.id: (o.label, o.count, o.on, o.inside, o.stacked) for o in parse_scene(text).objects}
 
 
 def test_issue_example() -> None:
-    req = parse_description("a kitchen table with a mug, a bowl, two soda cans and a cereal box")
-    assert req.support == "table" and req.support_height == pytest.approx(0.75)
-    assert _objs(req.text) == {"mug": (1, "", ""), "bowl": (1, "", ""), "soda can": (2, "", ""), "cereal box": (1, "", "")}
-    assert lookup("cereal box").category.name == "cracker_box"
+    spec = parse_scene("a kitchen table with a mug, a bowl, two soda cans and a cereal box")
+    assert [(s.kind, s.height_m) for s in spec.supports] == [("table", 0.75)]
+    assert {o.label: o.count for o in spec.objects} == {"mug": 1, "bowl": 1, "soda can": 2, "cereal box": 1}
+    assert all(o.on == "table" for o in spec.objects)
 
 
-@pytest.mark.parametrize("text,support,height", [
-    ("3 red mugs on the counter", "counter", 0.9),
-    ("a bowl on the floor", "floor", 0.0),
-    ("a mug and a plate", "table", 0.75),
-    ("a desk with a book", "table", 0.75),
+@pytest.mark.parametrize("text,expected", [
+    ("a stack of three books on the desk", {"book": ("book", 3, "desk", None, True)}),
+    ("two plates stacked on the counter", {"plate": ("plate", 2, "counter", None, True)}),
+    ("a tray holding two cups", {"tray": ("tray", 1, "table", None, False), "cup": ("cup", 2, None, "tray", False)}),
+    ("a basket of oranges on the floor", {"basket": ("basket", 1, "floor", None, False), "orange": ("orange", 3, None, "basket", False)}),
+    ("a bowl with two apples in it", {"bowl": ("bowl", 1, "table", None, False), "apple": ("apple", 2, None, "bowl", False)}),
+    ("three apples in a bowl on the table", {"apple": ("apple", 3, None, "bowl", False), "bowl": ("bowl", 1, "table", None, False)}),
 ])
-def test_supports(text: str, support: str, height: float) -> None:
-    req = parse_description(text)
-    assert (req.support, req.support_height) == (support, height)
+def test_quantities_containment_stacks(text: str, expected: dict) -> None:
+    assert _objs(text) == expected
 
 
-def test_counts_colours_sizes() -> None:
-    assert _objs("3 red mugs on the counter") == {"mug": (3, "red", "")}
-    assert _objs("a large bowl and a small blue cup") == {"bowl": (1, "", "large"), "cup": (1, "blue", "small")}
-    assert _objs("two plates, a pair of cans and four books") == {"plate": (2, "", ""), "can": (2, "", ""), "book": (4, "", "")}
-    assert _objs("a mug and another mug")["mug"][0] == 2
+def test_each_object_on_its_support() -> None:
+    spec = parse_scene("a lamp on the desk and a basket on the floor, plus a mug")
+    on = {o.label: o.on for o in spec.objects}
+    assert on == {"lamp": "desk", "basket": "floor", "mug": "desk"}
+    assert {s.id for s in spec.supports} == {"desk", "floor"}
 
 
-def test_unknown_noun_kept_with_note() -> None:
-    req = parse_description("a toy dinosaur on the table")
-    assert [o.label for o in req.objects] == ["toy dinosaur"]
-    assert req.notes
+def test_relations_and_pronouns() -> None:
+    spec = parse_scene("On the desk there's a laptop and a mug next to it. A lamp behind the laptop, a book to the left of the mug")
+    rel = {o.label: [(r.relation, r.target) for r in o.relations] for o in spec.objects}
+    assert rel["mug"] == [("next_to", "laptop")] and rel["lamp"] == [("behind", "laptop")] and rel["book"] == [("left_of", "mug")]
+    assert all(o.on == "desk" for o in spec.objects)
 
 
-def test_nothing_to_build() -> None:
-    assert parse_description("a table").objects == []
+def test_rows_attributes_and_contents_follow_their_container() -> None:
+    spec = parse_scene("a row of four cans on the shelf, a large red wooden bowl, and a crate full of potatoes next to the bowl")
+    cans, bowl, crate, potato = spec.objects
+    assert (cans.count, cans.row, cans.on) == (4, True, "shelf")
+    assert (bowl.size, bowl.color, bowl.material) == ("large", "red", "wooden")
+    assert potato.inside == "crate" and [(r.relation, r.target) for r in crate.relations] == [("next_to", "bowl")]
+
+
+def test_unknown_nouns_warned_and_liquids_dropped() -> None:
+    spec = parse_scene("a bottle of water, a glass and a toy dinosaur")
+    assert [o.label for o in spec.objects] == ["bottle", "glass", "toy dinosaur"]
+    assert any("toy dinosaur" in w for w in spec.warnings)
+    assert parse_scene("a table").objects == []
+
+
+def test_clamp_records_changes_and_schema_inlines() -> None:
+    spec = SceneSpec.model_validate({"supports": [{"id": "table", "kind": "table", "height_m": 7}],
+                                     "objects": [{"id": "mug", "label": "mug", "count": 99, "on": "shelf", "position": [1.4, 0.5]}]})
+    fixed, notes = clamp(spec)
+    assert fixed.supports[0].height_m == 2.0 and fixed.objects[0].count == 24 and fixed.objects[0].on is None
+    assert fixed.objects[0].position == (1.0, 0.5) and len(notes) == 4
+    assert "$ref" not in str(json_schema()) and "objects" in json_schema()["properties"]

@@ -1,66 +1,72 @@
-"""Optional: parse a description with Claude (structured tool output), validated with pydantic.
+"""A scene description from Claude: one structured call (tool use) answered in the
+:class:`~realsim.text.schema.SceneSpec` schema, validated, repaired once.
 
-Used only when an API key is configured; any failure or an invalid reply falls back to the
-offline parser, with a note in the scene's warnings.
+:func:`request_scene` is shared by the text path (the description in, :func:`parse_with_claude`)
+and the photo path (an image in, :mod:`realsim.understanding.photo_scene`). Calls are cached on
+disk (:func:`realsim.understanding.calls.tool_call`); rate limits, overload and timeouts are
+retried by the SDK and then raise :class:`realsim.llm.LLMError`. A reply that fails validation
+is sent back once with the errors; a second invalid reply raises LLMError.
 """
 
 from __future__ import annotations
 
-from typing import Literal
+import json
+from typing import Any
 
-from pydantic import BaseModel, Field, ValidationError
+from pydantic import ValidationError
 
-from realsim.text.parser import COLORS, SIZES, SUPPORTS, ObjectRequest, SceneRequest, parse_description
+from realsim import llm
+from realsim.cache import DiskCache
+from realsim.resources import load_prompt
+from realsim.text.parser import parse_scene
+from realsim.text.schema import SceneSpec, json_schema
 
-
-# The prompt lives here rather than in prompts/ only because this helper's scope excludes that folder.
-SYSTEM = """You turn a short English description of a tabletop or room scene into a list of objects for a
-physics simulation. Report every physical object the description asks for (not the support it
-stands on) with how many there are, its colour word if one is given, and its size word if one is
-given ("small", "large", ...). Use short common English names ("mug", "soda can", "cereal box",
-"drawer cabinet"). The support is "table", "counter", "floor" or "shelf" ("table" when none is said).
-Call the tool exactly once."""
-
-
-class _Obj(BaseModel):
-    label: str = Field(min_length=1, max_length=60)
-    count: int = Field(ge=1, le=20)
-    color: str = ""
-    size: str = ""
+SCENE_TOOL = "report_scene"
+TEXT_PROMPT = "scene_text.md"
 
 
-class _Reply(BaseModel):
-    support: Literal["table", "counter", "floor", "shelf"] = "table"
-    objects: list[_Obj] = Field(min_length=1, max_length=30)
+def _errors(exc: ValidationError, limit: int = 8) -> str:
+    return "; ".join(f"{'.'.join(str(p) for p in e['loc'])}: {e['msg']}" for e in exc.errors()[:limit])
 
 
-SCHEMA = {
-    "type": "object",
-    "properties": {
-        "support": {"type": "string", "enum": ["table", "counter", "floor", "shelf"]},
-        "objects": {"type": "array", "items": {"type": "object", "properties": {
-            "label": {"type": "string"}, "count": {"type": "integer", "minimum": 1},
-            "color": {"type": "string"}, "size": {"type": "string"}}, "required": ["label", "count"]}},
-    },
-    "required": ["support", "objects"],
-}
+def request_scene(content: list[dict[str, Any]], prompt_name: str, *, settings: llm.LLMSettings | None = None,
+                  cache: DiskCache | None = None, log: Any = None) -> SceneSpec:
+    """Claude's scene for one user turn (text and/or image blocks), validated; one repair turn."""
+    from realsim.understanding.calls import CallLog, tool_call
 
-
-def parse_with_claude(text: str) -> SceneRequest:
-    """Claude's reading of ``text``, or the offline parser's when Claude fails or answers badly."""
-    from realsim import llm
-
-    offline = parse_description(text)
-    if not llm.available():
-        return offline
+    settings = settings or llm.LLMSettings()
+    cache = cache if cache is not None else DiskCache()
+    log = log if log is not None else CallLog()
+    version, system = load_prompt(prompt_name)
+    schema = json_schema()
+    raw = tool_call(prompt_name=prompt_name, prompt_version=version, system=system, content=content, tool_name=SCENE_TOOL,
+                    schema=schema, settings=settings, log=log, cache=cache)
     try:
-        raw = llm.complete_tool(SYSTEM, text, "scene_objects", SCHEMA, description="the objects and support of the scene", max_tokens=1024)
-        reply = _Reply.model_validate(raw)
-    except (llm.LLMError, ValidationError) as exc:
-        offline.notes.append(f"Claude could not parse the description ({type(exc).__name__}); used the offline parser")
-        return offline
-    kind, height, size = SUPPORTS[reply.support]
-    objects = [ObjectRequest(label=o.label.lower().strip(), count=o.count,
-                             color=o.color.lower() if o.color.lower() in COLORS else "",
-                             size=o.size.lower() if o.size.lower() in SIZES else "") for o in reply.objects]
-    return SceneRequest(support=kind, support_height=height, support_size=size, objects=objects, text=text, parser="claude")
+        return SceneSpec.model_validate(raw)
+    except ValidationError as exc:
+        problems = _errors(exc)
+    repair = content + [{"type": "text", "text": (
+        "Your previous report_scene input was invalid: " + problems + ". It was: " + json.dumps(raw)[:4000]
+        + " Call report_scene again with a corrected, complete scene.")}]
+    raw = tool_call(prompt_name=prompt_name, prompt_version=version, system=system, content=repair, tool_name=SCENE_TOOL,
+                    schema=schema, settings=settings, log=log, cache=cache)
+    try:
+        return SceneSpec.model_validate(raw)
+    except ValidationError as exc:
+        raise llm.LLMError(f"Claude's scene description failed validation twice ({_errors(exc, 3)})") from None
+
+
+def parse_with_claude(text: str, settings: llm.LLMSettings | None = None, cache: DiskCache | None = None) -> SceneSpec:
+    """Claude's reading of ``text``, or the offline parser's (with a warning) when Claude fails."""
+    if not llm.available(settings):
+        return parse_scene(text)
+    try:
+        spec = request_scene([{"type": "text", "text": text}], TEXT_PROMPT, settings=settings, cache=cache)
+    except llm.LLMError as exc:
+        spec = parse_scene(text)
+        spec.warnings.append(f"Claude could not read the description ({exc}); used the offline parser")
+        return spec
+    if not spec.objects:
+        spec = parse_scene(text)
+        spec.warnings.append("Claude found no objects in the description; used the offline parser")
+    return spec

@@ -93,6 +93,7 @@ class _State:
     group: list[Phrase] = field(default_factory=list)
     closed: bool = False
     owner: Phrase | None = None  # the phrase before "with"
+    listing: bool = False  # phrases after "with" go on / in the owner
     topic: Phrase | None = None
     pending: tuple[str, Phrase] | None = None  # a relation said before its subjects ("on the desk there's ...")
 
@@ -177,7 +178,7 @@ def _phrase(words: list[str]) -> Phrase | None:
     plural = singular(head) != head and not head.endswith("ss")
     if plural and not counted:
         count = PLURAL_COUNT
-    spec = ObjectSpec(id=label, label=label, name=" ".join(w for w in [color if color in COLORS else "", label] if w),
+    spec = ObjectSpec(id=label, label=label, name=label,
                       count=count, color=color, size=size, material=material)
     return Phrase("object", spec=spec, plural=plural or count > 1, definite=words[0] in ("the", "that", "this", "those", "these") and not counted)
 
@@ -315,8 +316,8 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
             if it.kind == "support":
                 b.add_support(it)
                 st.topic = it if st.topic is None else st.topic
-                if st.owner is None:
-                    st.owner = it if isinstance(nxt, str) and nxt == "with" else st.owner
+                if st.owner is None and isinstance(nxt, str) and nxt == "with":
+                    st.owner = it
             elif it.kind == "object":
                 b.add_object(it)
                 assert it.spec is not None
@@ -326,7 +327,7 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 if st.closed:
                     st.group, st.closed = [], False
                 st.group.append(it)
-                if st.owner is not None and st.owner is not it:
+                if st.owner is not None and st.listing and st.owner is not it:
                     b.with_default(st.owner, it)
                 if st.pending is not None:
                     b.relate([it], *st.pending)
@@ -356,7 +357,7 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
         elif marker == "with":
             prev = items[i - 1] if i > 0 else None
             if isinstance(prev, Phrase) and prev.kind != "pronoun":
-                st.owner = prev
+                st.owner, st.listing = prev, True
                 st.group, st.closed = [], False
         elif marker == "of":
             prev = items[i - 1] if i > 0 else None
@@ -390,7 +391,7 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 b.relate(subjects, marker, target)
                 st.closed = True
                 if target is st.owner:  # "a bowl with two apples in it": the list of contents ends
-                    st.owner = None
+                    st.listing = False
                 if target.kind == "object" and target is nxt:
                     st.group = [target]  # "two cups on a tray and a bowl": the tray is read; a new group follows
             i += 2

@@ -1,20 +1,20 @@
-"""The ``text`` stage: a scene description -> procedural objects on a declared support.
+"""The ``text`` stage: a scene description -> procedural objects arranged as described.
 
-The description (``--text`` or ``text:`` in capture.yaml) is parsed (:mod:`realsim.text.parser`,
-or Claude when a key is set and ``use_llm``), each object is built with CSG
-(:mod:`realsim.procedural`) and written as a coloured PLY under ``$REALSIM_CACHE/procedural``
-(named by content hash), and those files go through the very path scanned object meshes take:
-the ``objects`` stage (normalize, CoACD, manifest, seeded rejection-sampling layout).
-Articulated objects (a drawer cabinet, a hinged box) are prepared the same way part by part and
-placed with room for the drawer's travel; the child part is recorded in
-``capture.metadata["articulations"]`` for :func:`realsim.compose.compose_scene`, which hangs it
-on its parent with a slide or hinge joint.
+The description (``--text`` or ``text:`` in capture.yaml) is read into a
+:class:`~realsim.text.schema.SceneSpec` (offline parser, or Claude with the same schema when a
+key is set and ``use_llm``), or a spec is already in ``capture.metadata["scene_spec"]`` (a
+photo). Each object instance is built by its procedural family (:mod:`realsim.procedural`,
+exact convex pieces, no decomposition), given an offline manifest, and arranged
+(:mod:`realsim.text.arrange`): supports side by side (the first table-like one at the origin, the
+floor around), objects on their support, stacks, contents and objects on objects lowered onto
+what they rest on. Articulated objects (drawer cabinet, hinged box, laptop) keep their child
+part in ``capture.metadata["articulations"]``; grasp sites (handle, rim, lid, ...) go to
+``capture.metadata["object_sites"]`` for :func:`realsim.compose.compose_scene`.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -24,23 +24,23 @@ from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
 from realsim.compose import safe_name
 from realsim.errors import InputError
-from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
-from realsim.objects_stage import (
-    ObjectsParams,
-    _support_for,
-    _world_footprint,
-    _yaw_quat,
-    prepare_scene_objects,
-    scene_object,
-)
+from realsim.layout import LayoutParams, declared_support
+from realsim.objects_stage import ObjectsParams, _yaw_quat, scene_object
 from realsim.physics import estimate_manifest
+from realsim.physics.size_table import lookup
 from realsim.procedural import Generated, generate, get_backend, write_ply
-from realsim.scene import Scene
-from realsim.text.parser import SceneRequest, parse_description
+from realsim.procedural.prepare import prepare_part
+from realsim.scene import Scene, SceneObject, SupportPlane
+from realsim.text.arrange import Item, _NoRoom, place_children, place_roots
+from realsim.text.parser import COLORS, MATERIALS, parse_scene
+from realsim.text.schema import SUPPORT_DEFAULTS, ObjectSpec, SceneSpec, clamp
 
 ARTICULATIONS = "articulations"  # capture.metadata key read by compose
-KEEP_CLEAR = "keep_clear"  # capture.metadata key: xy polygons the layout of other objects avoids
+OBJECT_SITES = "object_sites"  # capture.metadata key: {body name: {site: [x, y, z]}} read by compose
+SCENE_SPEC = "scene_spec"  # capture.metadata key: a SceneSpec given by another stage (a photo)
+KEEP_CLEAR = "keep_clear"
 MAX_OBJECTS = 24
+SUPPORT_GAP = 0.6  # m between supports standing side by side (room for the robot's pedestal)
 
 
 @dataclass(frozen=True)
@@ -52,133 +52,218 @@ class TextParams:
     use_llm: bool = True  # parse with Claude when ANTHROPIC_API_KEY is set (validated; offline fallback)
     variation: float = 0.08  # seeded relative size variation around the table's typical dims
     text_to_3d: str | None = None  # a registered text-to-3D backend (realsim.procedural.text_to_3d); off by default
-    asset_dir: str | None = None  # where generated meshes go (default $REALSIM_CACHE/procedural)
+    asset_dir: str | None = None  # where backend meshes go (default $REALSIM_CACHE/procedural)
 
 
-def parse(text: str, use_llm: bool = True) -> SceneRequest:
-    """The description parsed by Claude (when configured and allowed) or offline."""
+def parse(text: str, use_llm: bool = True) -> SceneSpec:
+    """The description read by Claude (when configured and allowed) or offline."""
     if use_llm:
         from realsim.text.claude import parse_with_claude
 
         return parse_with_claude(text)
-    return parse_description(text)
+    return parse_scene(text)
 
 
-def _support_metadata(scene: Scene, req: SceneRequest) -> None:
-    meta = scene.capture.metadata
-    if meta.get("support"):
-        return
-    meta["support"] = {"size": list(req.support_size), "height": req.support_height, "kind": req.support}
+def object_rgb(o: ObjectSpec) -> tuple[float, float, float] | None:
+    """Seen RGB, else the colour word, else the material's colour."""
+    if o.rgb is not None:
+        return tuple(v / 255.0 for v in o.rgb)  # type: ignore[return-value]
+    for word in reversed(o.color.split()):
+        if word in COLORS:
+            return COLORS[word]
+    return MATERIALS.get(o.material) or None
 
 
-def _write_part(part, index: int, folder: Path) -> Path:
-    """The part as a coloured PLY named by its content hash (a warm rerun hits every cache)."""
-    data = np.ascontiguousarray(part.mesh.vertices).tobytes() + np.ascontiguousarray(part.mesh.faces).tobytes() + repr(part.color).encode()
-    digest = hashlib.sha256(data).hexdigest()[:12]
-    return write_ply(part.mesh, part.color, folder / f"{index:02d}_{safe_name(part.label)}_{digest}.ply")
+def display_label(o: ObjectSpec) -> str:
+    """The object's label in the scene: what it was called when that names the same kind ("coffee mug")."""
+    if o.name and o.name != o.label:
+        a, b = lookup(o.name), lookup(o.label)
+        if a is not None and b is not None and a.category.name == b.category.name:
+            return o.name
+    return o.label
 
 
-def generate_objects(req: SceneRequest, seed: int, params: TextParams) -> list[Generated]:
-    """Every requested object instance, built in order with one seeded generator."""
-    if req.total() > MAX_OBJECTS:
-        raise InputError(f"the description asks for {req.total()} objects; at most {MAX_OBJECTS} fit a text scene")
-    rng = np.random.default_rng(seed)
-    out = []
-    for o in req.objects:
-        for _ in range(o.count):
-            out.append(generate(o.label, rng, o.size or None, o.rgb, variation=params.variation))
-    return out
+def _supports(spec: SceneSpec) -> dict[str, SupportPlane]:
+    """Planes for the described supports: the table-like ones side by side along +x, the floor under them."""
+    planes: dict[str, SupportPlane] = {}
+    x = None
+    pid = 1
+    elevated = sorted((s for s in spec.supports if s.kind != "floor"), key=lambda s: s.kind not in ("table", "desk", "counter"))
+    for s in elevated:
+        height = s.height_m if s.height_m is not None else SUPPORT_DEFAULTS[s.kind][0]
+        size = s.size_m or SUPPORT_DEFAULTS[s.kind][1]
+        cx = 0.0 if x is None else x + SUPPORT_GAP + size[0] / 2
+        plane = declared_support({"support": {"size": list(size), "height": height, "center": [cx, 0.0], "kind": s.kind}})
+        plane.id = pid
+        pid += 1
+        planes[s.id] = plane
+        x = cx + size[0] / 2
+    floor_ids = [s.id for s in spec.supports if s.kind == "floor"] or ["floor"]
+    if planes:
+        pts = np.vstack([p.polygon for p in planes.values()])
+        lo, hi = pts.min(axis=0) - 1.2, pts.max(axis=0) + 1.2
+        corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+        floor = SupportPlane(0, "floor", np.array([0.0, 0.0, 1.0]), 0.0, corners, (lo + hi) / 2, hi - lo, 0.0, 0, observed=False)
+    else:
+        floor = declared_support({"support": {"size": list(SUPPORT_DEFAULTS["floor"][1]), "height": 0.0, "kind": "floor"}})
+        floor.id = 0
+    for fid in floor_ids:
+        planes[fid] = floor
+    return planes
+
+
+def _floor_region(planes: dict[str, SupportPlane]) -> tuple[np.ndarray, np.ndarray] | None:
+    """Where floor objects go beside table-like supports: a band behind them (away from the robot)."""
+    elevated = [p for p in planes.values() if p.kind != "floor"]
+    if not elevated:
+        return None
+    pts = np.vstack([p.polygon for p in elevated])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    return np.array([lo[0] - 0.4, hi[1] + 0.25]), np.array([hi[0] + 0.4, hi[1] + 1.0])
+
+
+@dataclass
+class _Instance:
+    spec: ObjectSpec
+    index: int
+    gen: Generated
+    objects: list[SceneObject] = field(default_factory=list)
+    item: Item | None = None
 
 
 def text_scene(scene: Scene, params: TextParams = TextParams()) -> Scene:
-    """Parse the description, build the objects and place them on the support (see the module doc)."""
-    text = scene.capture.metadata.get("text")
-    if not text or not str(text).strip():
-        raise InputError("the text pipeline needs a description: pass --text \"a table with a mug\" or put text: in capture.yaml")
-    req = parse(str(text), params.use_llm)
-    if not req.objects:
-        raise InputError(f"no objects found in {text!r}: name some, e.g. \"a table with a mug and two soda cans\"")
-    for note in req.notes:
+    """Read the description, build the objects and arrange them (see the module doc)."""
+    spec = scene.capture.metadata.get(SCENE_SPEC)
+    if spec is None:
+        text = scene.capture.metadata.get("text")
+        if not text or not str(text).strip():
+            raise InputError("the text pipeline needs a description: pass --text \"a table with a mug\" or put text: in capture.yaml")
+        spec = parse(str(text), params.use_llm)
+    elif isinstance(spec, dict):
+        spec = SceneSpec.model_validate(spec)
+    spec, notes = clamp(spec)
+    if not spec.objects:
+        raise InputError(f"no objects found in {scene.capture.metadata.get('text')!r}: name some, e.g. \"a table with a mug and two soda cans\"")
+    if spec.total() > MAX_OBJECTS:
+        raise InputError(f"the description asks for {spec.total()} objects; at most {MAX_OBJECTS} fit a text scene")
+    for note in spec.warnings + notes:
         scene.warn(note)
-    scene.capture.metadata["text_request"] = {
-        "parser": req.parser, "support": req.support,
-        "objects": [{"label": o.label, "count": o.count, "color": o.color, "size": o.size} for o in req.objects],
-    }
-    _support_metadata(scene, req)
-    folder = Path(params.asset_dir) if params.asset_dir else cache_root() / "procedural"
-    backend = get_backend(params.text_to_3d)
-    generated = generate_objects(req, scene.seed, params)
-    labels = dict(scene.capture.metadata.get("labels") or {})
-    files: list[Path] = []
-    articulated: list[tuple[Generated, list[Path]]] = []
-    for i, gen in enumerate(generated):
-        if gen.joint is not None:
-            articulated.append((gen, [_write_part(p, i, folder) for p in gen.parts]))
-            continue
-        path = None
-        if backend is not None:
-            try:
-                path = backend.generate(gen.label, str(text), folder, scene.seed + i)
-            except Exception as exc:  # a remote service may fail in many ways; procedural stands in
-                scene.warn(f"text-to-3D backend {backend.name} failed for {gen.label!r} ({type(exc).__name__}); used the procedural model")
-        path = path or _write_part(gen.parts[0], i, folder)
-        labels[Path(path).stem] = gen.label
-        files.append(Path(path))
-        scene.warnings.extend(gen.notes)
-    scene.capture.metadata["labels"] = labels
-    if req.support == "floor" and not scene.planes:
-        _floor_only(scene)
-    if articulated:  # the largest first, with room kept clear for the drawer's or lid's travel
-        _add_articulated(scene, articulated, params.objects)
-    scene.object_files = list(scene.object_files) + files
-    prepare_scene_objects(scene, params.objects)
+    scene.capture.metadata["text_request"] = spec.model_dump(mode="json", exclude_defaults=True)
+    planes = _supports(spec)
+    primary = next((p for p in planes.values() if p.kind != "floor"), None)
+    if primary is not None and not scene.capture.metadata.get("support"):
+        scene.capture.metadata["support"] = {"size": [float(v) for v in primary.rect_size], "height": primary.height, "kind": primary.kind}
+    scene.planes = sorted({id(p): p for p in planes.values()}.values(), key=lambda p: p.id)
+    instances = _build(scene, spec, params)
+    _arrange(scene, spec, instances, planes, params)
     return scene
 
 
-def _floor_only(scene: Scene) -> None:
-    """On the floor: one support plane, the floor itself (no table box)."""
-    support = declared_support(scene.capture.metadata)
-    support.kind, support.id = "floor", 0
-    scene.planes = [support]
-
-
-def _add_articulated(scene: Scene, items: list[tuple[Generated, list[Path]]], params: ObjectsParams) -> None:
-    """Prepare each articulated object's parts, place the parent with room for the child's travel."""
-    support = _support_for(scene)
-    cache = DiskCache(enabled=params.use_cache)
-    rng = np.random.default_rng(scene.seed + 7919)
-    obstacles = [_world_footprint(o) for o in scene.objects]
-    arts = scene.capture.metadata.setdefault(ARTICULATIONS, {})
+def _build(scene: Scene, spec: SceneSpec, params: TextParams) -> list[_Instance]:
+    """Every instance generated (one seeded generator, in order) and made into SceneObjects."""
+    rng = np.random.default_rng(scene.seed)
+    backend = get_backend(params.text_to_3d)
+    cache = DiskCache(enabled=params.objects.use_cache)
+    folder = Path(params.asset_dir) if params.asset_dir else cache_root() / "procedural"
+    out: list[_Instance] = []
     next_id = max((o.id for o in scene.objects), default=0) + 1
-    for gen, paths in items:
-        prepared = prepare_objects(paths, [p.label for p in gen.parts], params.assets, cache)
-        objs = []
-        for prep, part in zip(prepared, gen.parts):
-            obj = scene_object(prep, estimate_manifest(prep), next_id, f"obj{next_id}_{safe_name(part.label)}")
-            obj.color = np.asarray(part.color, dtype=np.float64)
-            objs.append(obj)
-            next_id += 1
-        parent, child = objs
-        joint = gen.joint
-        assert joint is not None
-        travel = np.asarray(joint.axis) * (joint.range[1] if joint.type == "slide" else 0.0)
-        pts = [h.vertices[:, :2] for h in parent.collision]
-        pts += [h.vertices[:, :2] + np.asarray(joint.child_pos[:2]) + travel[:2] for h in child.collision]
-        # axis-aligned (the drawer opens along the support's long side, +x), apart from everything placed
-        layout = dataclasses.replace(params.layout, random_yaw=False, attempts_per_object=max(params.layout.attempts_per_object, 1000))
-        (xy, yaw), = place_on_support([footprint(np.vstack(pts))], support, obstacles, rng, layout)
-        parent.position = np.array([xy[0], xy[1], support.height + params.drop_clearance])
-        parent.quat = _yaw_quat(yaw)
-        parent.support_id = support.id
-        c, s = np.cos(yaw), np.sin(yaw)
-        rel = np.asarray(joint.child_pos)
-        child.position = parent.position + np.array([c * rel[0] - s * rel[1], s * rel[0] + c * rel[1], rel[2]])
-        child.quat = parent.quat.copy()
-        child.resting_on = parent.id
-        swept = footprint(np.vstack(pts)) @ np.array([[c, s], [-s, c]]) + xy  # the parent plus the child's travel
-        obstacles.append(swept)
-        scene.capture.metadata.setdefault(KEEP_CLEAR, []).append(swept.round(4).tolist())
-        arts[child.name] = {"parent": parent.name, "type": joint.type, "axis": list(joint.axis), "range": list(joint.range),
-                            "pos": list(joint.pos), "damping": joint.damping, "object": gen.label,
-                            "handle": list(joint.handle) if joint.handle else None}
-        scene.objects.extend([parent, child])
+    sites = scene.capture.metadata.setdefault(OBJECT_SITES, {})
+    arts = scene.capture.metadata.setdefault(ARTICULATIONS, {})
+    for o in spec.objects:
+        label = display_label(o)
+        for k in range(o.count):
+            gen = generate(label, rng, o.size or None, object_rgb(o), variation=params.variation, dims=o.size_m)
+            scene.warnings.extend(n for n in gen.notes if n not in scene.warnings)
+            inst = _Instance(o, k, gen)
+            for part in gen.parts:
+                prep = None
+                if backend is not None and gen.joint is None:
+                    try:
+                        path = backend.generate(label, str(scene.capture.metadata.get("text", "")), folder, scene.seed + next_id)
+                        prep = prepare_objects([Path(path)], [label], params.objects.assets, cache)[0]
+                    except Exception as exc:  # a remote service may fail in many ways; procedural stands in
+                        scene.warn(f"text-to-3D backend {backend.name} failed for {label!r} ({type(exc).__name__}); used the procedural model")
+                prep = prep or prepare_part(part, params.objects.assets)
+                name = f"obj{next_id}_{safe_name(part.label)}"
+                obj = scene_object(prep, estimate_manifest(prep), next_id, name)
+                obj.color = np.asarray(part.color, dtype=np.float64)
+                next_id += 1
+                if part.sites:
+                    sites[name] = {k2: [round(float(v), 5) for v in p] for k2, p in part.sites.items()}
+                inst.objects.append(obj)
+            if gen.joint is not None:
+                parent, child = inst.objects
+                j = gen.joint
+                arts[child.name] = {"parent": parent.name, "type": j.type, "axis": list(j.axis), "range": list(j.range), "pos": list(j.pos),
+                                    "damping": j.damping, "object": gen.label, "handle": list(j.handle) if j.handle else None}
+            out.append(inst)
+    return out
+
+
+def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: dict[str, SupportPlane], params: TextParams) -> None:
+    """Instances -> arrangement items -> placed SceneObjects."""
+    rng = np.random.default_rng(scene.seed)
+    by_spec: dict[str, list[_Instance]] = {}
+    for inst in instances:
+        by_spec.setdefault(inst.spec.id, []).append(inst)
+    for inst in instances:
+        main = inst.objects[0]
+        extra = []
+        if inst.gen.joint is not None:
+            travel = np.asarray(inst.gen.joint.axis) * (inst.gen.joint.range[1] if inst.gen.joint.type == "slide" else 0.0)
+            off = np.asarray(inst.gen.joint.child_pos)
+            extra = [h.vertices + off + travel for h in inst.objects[1].collision]  # the drawer's travel kept clear
+        item = Item(key=main.name, hulls=[h.vertices for h in main.collision], extra=extra, fixed_yaw=inst.gen.joint is not None,
+                    position=inst.spec.position)
+        o = inst.spec
+        siblings = by_spec[o.id]
+        if o.stacked and inst.index > 0:
+            item.parent, item.stacked = siblings[inst.index - 1].objects[0].name, True
+        elif o.inside or (o.on and o.on in by_spec):
+            target = by_spec[o.inside or o.on]  # type: ignore[index]
+            item.parent = target[inst.index % len(target)].objects[0].name
+            item.inside = o.inside is not None
+        else:
+            item.support = planes[o.on or next(iter(planes))].id if (o.on or planes) else None
+            if o.row and o.count > 1:
+                item.group = f"row:{o.id}"
+        for rel in o.relations:
+            if rel.target in by_spec:
+                item.relations.append((rel.relation, by_spec[rel.target][0].objects[0].name))
+        inst.item = item
+    items = [i.item for i in instances if i.item is not None]
+    roots = [it for it in items if it.parent is None]
+    obstacles = [np.asarray(p, dtype=np.float64) for p in scene.capture.metadata.get(KEEP_CLEAR, [])]
+    placed: dict[str, Item] = {}
+    by_id = {p.id: p for p in planes.values()}
+    for pid in sorted({it.support for it in roots}, key=lambda v: (v == 0, v)):  # type: ignore[arg-type]
+        support = by_id[pid]  # type: ignore[index]
+        group = [it for it in roots if it.support == pid]
+        region = _floor_region(planes) if support.kind == "floor" else None
+        layout = params.objects.layout if support.kind != "floor" else dataclasses.replace(params.objects.layout, reach_radius=None)
+        floor_obstacles = obstacles + ([p.polygon for p in planes.values() if p.kind != "floor"] if support.kind == "floor" else [])
+        try:
+            scene.warnings.extend(place_roots(group, support, floor_obstacles, rng, layout, region))
+        except _NoRoom as exc:
+            raise InputError(f"cannot place {len(group)} objects on the {support.rect_size[0]:.2f} x {support.rect_size[1]:.2f} m {support.kind} "
+                             f"without overlap ({exc} does not fit): describe fewer or smaller objects") from None
+        placed.update({it.key: it for it in group})
+    scene.warnings.extend(place_children([it for it in items if it.parent is not None], placed, rng))
+    for inst in instances:
+        it = inst.item
+        if it is None or it.key not in placed:
+            continue
+        main = inst.objects[0]
+        main.position = np.array([it.xy[0], it.xy[1], it.z + (params.objects.drop_clearance if it.parent is None else 0.0)])  # type: ignore[index]
+        main.quat = _yaw_quat(it.yaw)
+        main.support_id = it.support if it.parent is None else None
+        main.resting_on = next((i.objects[0].id for i in instances if i.objects[0].name == it.parent), None)
+        scene.objects.append(main)
+        if inst.gen.joint is not None:
+            child = inst.objects[1]
+            c, s = np.cos(it.yaw), np.sin(it.yaw)
+            rel = np.asarray(inst.gen.joint.child_pos)
+            child.position = main.position + np.array([c * rel[0] - s * rel[1], s * rel[0] + c * rel[1], rel[2]])
+            child.quat = main.quat.copy()
+            child.resting_on = main.id
+            scene.objects.append(child)

@@ -1,0 +1,273 @@
+"""Place the objects of a described scene so its relations hold and everything can rest.
+
+Objects that stand on a support are placed first (by seeded rejection sampling, largest first,
+apart by a gripper's clearance, those in a row as one unit, and each relation to an already
+placed object as a region to sample in: left of, right of, behind, in front of, next to; an
+object whose relation cannot be met is placed anywhere, with a warning). Then, parents before
+children, objects on or in another object are lowered onto it (:func:`realsim.layout.rest_height`,
+exact on the convex pieces): stacked instances centred on the one below, contents at the lowest
+free spot inside the container's cavity (its floor, then on each other), objects "on" a thing
+at the lowest free spot on its top.
+
+Directions are seen from the support's front edge (local -y): left -x, right +x, behind +y.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from realsim.layout import LayoutParams, footprint, polygons_apart, reach_anchor, rest_height, vertical_extent, hull_equations
+from realsim.planes import inside_convex_polygon
+from realsim.scene import SupportPlane
+
+NEAR = 0.12  # m: "next to" means footprints at most this far apart
+
+
+@dataclass
+class Item:
+    """One object instance to place (object frame: base centre at the origin)."""
+
+    key: str  # unique instance key
+    hulls: list[np.ndarray]  # convex pieces, object frame
+    support: int | None = None  # support plane id when it stands on a support
+    parent: str | None = None  # item key it rests on or in
+    inside: bool = False  # in the parent's cavity (else on it)
+    stacked: bool = False  # centred on the parent (a stack)
+    relations: list[tuple[str, str]] = field(default_factory=list)  # (relation, item key)
+    group: str | None = None  # items of one row share a group
+    fixed_yaw: bool = False
+    position: tuple[float, float] | None = None  # preferred (x, y) in [0, 1] on the support (a photo)
+    extra: list[np.ndarray] = field(default_factory=list)  # more pieces moving with it (an articulated child), object frame
+    xy: np.ndarray | None = None
+    yaw: float = 0.0
+    z: float = 0.0
+
+
+def _rot(yaw: float) -> np.ndarray:
+    c, s = np.cos(yaw), np.sin(yaw)
+    return np.array([[c, -s], [s, c]])
+
+
+def _print(item: Item, xy: np.ndarray, yaw: float) -> np.ndarray:
+    pts = np.vstack([h[:, :2] for h in item.hulls + item.extra])
+    return footprint(pts @ _rot(yaw).T + xy)
+
+
+def world_hulls(item: Item) -> list[np.ndarray]:
+    assert item.xy is not None
+    r = _rot(item.yaw)
+    return [np.column_stack([h[:, :2] @ r.T + item.xy, h[:, 2] + item.z]) for h in item.hulls + item.extra]
+
+
+def _local(support: SupportPlane, xy: np.ndarray) -> np.ndarray:
+    """World xy -> the support rectangle's frame (centre at 0, x along its width)."""
+    return (np.asarray(xy) - support.rect_center) @ _rot(support.rect_yaw)
+
+
+def _relation_ok(rel: str, poly: np.ndarray, other: np.ndarray, support: SupportPlane) -> bool:
+    a, b = _local(support, poly), _local(support, other)
+    ca, cb = a.mean(axis=0), b.mean(axis=0)
+    overlap_y = a[:, 1].min() < b[:, 1].max() + 0.05 and b[:, 1].min() < a[:, 1].max() + 0.05
+    overlap_x = a[:, 0].min() < b[:, 0].max() + 0.05 and b[:, 0].min() < a[:, 0].max() + 0.05
+    if rel == "left_of":
+        return a[:, 0].max() <= b[:, 0].min() + 0.01 and overlap_y
+    if rel == "right_of":
+        return a[:, 0].min() >= b[:, 0].max() - 0.01 and overlap_y
+    if rel == "behind":
+        return a[:, 1].min() >= b[:, 1].max() - 0.01 and overlap_x
+    if rel == "in_front_of":
+        return a[:, 1].max() <= b[:, 1].min() + 0.01 and overlap_x
+    if rel == "next_to":
+        return not polygons_apart(a, b, NEAR) and float(np.linalg.norm(ca - cb)) < 0.5
+    return True
+
+
+def _sample_xy(rng: np.random.Generator, lo: np.ndarray, hi: np.ndarray, item: Item, support: SupportPlane, k: int) -> np.ndarray:
+    """Uniform in [lo, hi], or near the item's preferred photo position (tightening with k)."""
+    if item.position is None:
+        return rng.uniform(lo, hi)
+    half = np.asarray(support.rect_size) / 2
+    local = (np.asarray(item.position) * 2 - 1) * half * 0.8
+    spread = 0.02 + 0.25 * min(k / 300, 1.0)
+    return support.rect_center + _rot(support.rect_yaw) @ local + rng.normal(0.0, spread, 2)
+
+
+def place_roots(items: list[Item], support: SupportPlane, obstacles: list[np.ndarray], rng: np.random.Generator,
+                params: LayoutParams, region: tuple[np.ndarray, np.ndarray] | None = None) -> list[str]:
+    """Place the items standing on ``support``; returns warnings. Items of a row move as one."""
+    warnings: list[str] = []
+    units: dict[str, list[Item]] = {}
+    for it in items:
+        units.setdefault(it.group or it.key, []).append(it)
+    placed: dict[str, np.ndarray] = {}
+    polys: list[np.ndarray] = list(obstacles)
+    keys = {it.key for it in items}
+
+    def depth(u: list[Item]) -> int:
+        return sum(1 for it in u for _, t in it.relations if t in keys)
+
+    order = sorted(units, key=lambda k: (depth(units[k]), -ConvexHull_area(units[k])))
+    for key in order:
+        unit = units[key]
+        offsets = _row_offsets(unit)
+        wanted = [(rel, t) for it in unit for rel, t in it.relations if t in placed]
+        for relax in (False, True):
+            ok = _try_place(unit, offsets, support, polys, placed, wanted if not relax else [], rng, params, region)
+            if ok:
+                break
+            if not relax and wanted:
+                warnings.append(f"{unit[0].key}: could not keep {', '.join(r.replace('_', ' ') + ' ' + t for r, t in wanted)}; placed elsewhere")
+        else:
+            raise _NoRoom(unit[0].key)
+        for it in unit:
+            placed[it.key] = _print(it, it.xy, it.yaw)  # type: ignore[arg-type]
+            polys.append(placed[it.key])
+    return warnings
+
+
+class _NoRoom(Exception):
+    pass
+
+
+def ConvexHull_area(unit: list[Item]) -> float:  # noqa: N802 - sort key
+    pts = np.vstack([h[:, :2] for it in unit for h in it.hulls])
+    span = pts.max(axis=0) - pts.min(axis=0)
+    return float(span[0] * span[1]) * len(unit)
+
+
+def _row_offsets(unit: list[Item]) -> list[np.ndarray]:
+    """x offsets of a row's members (side by side, 2 cm apart), centred."""
+    if len(unit) == 1:
+        return [np.zeros(2)]
+    widths = [float(np.ptp(np.vstack([h[:, 0] for h in it.hulls]))) for it in unit]
+    xs, x = [], 0.0
+    for w in widths:
+        xs.append(x + w / 2)
+        x += w + 0.02
+    mid = x / 2
+    return [np.array([v - mid, 0.0]) for v in xs]
+
+
+def _try_place(unit: list[Item], offsets: list[np.ndarray], support: SupportPlane, polys: list[np.ndarray], placed: dict[str, np.ndarray],
+               wanted: list[tuple[str, str]], rng: np.random.Generator, params: LayoutParams, region: tuple[np.ndarray, np.ndarray] | None) -> bool:
+    lo, hi = (support.polygon.min(axis=0), support.polygon.max(axis=0)) if region is None else region
+    anchor = reach_anchor(support) if params.reach_radius is not None and support.kind != "floor" else None
+    attempts = params.attempts_per_object * (3 if wanted else 1)
+    for use_anchor in ((True, False) if anchor is not None else (False,)):
+        a_lo, a_hi = (np.maximum(lo, anchor - params.reach_radius), np.minimum(hi, anchor + params.reach_radius)) if use_anchor else (lo, hi)
+        for k in range(attempts):
+            yaw = 0.0 if (unit[0].fixed_yaw or len(unit) > 1 or not params.random_yaw) else float(rng.uniform(-np.pi, np.pi))
+            if len(unit) > 1:
+                yaw = support.rect_yaw
+            xy = _sample_xy(rng, a_lo, a_hi, unit[0], support, k)
+            ok = True
+            prints = []
+            for it, off in zip(unit, offsets):
+                p = _print(it, xy + _rot(yaw) @ off, yaw)
+                if not np.all(inside_convex_polygon(p, support.polygon, -params.edge_margin)):
+                    ok = False
+                    break
+                if use_anchor and np.linalg.norm(p - anchor, axis=1).max() > params.reach_radius:
+                    ok = False
+                    break
+                if region is not None and (np.any(p < region[0]) or np.any(p > region[1])):
+                    ok = False
+                    break
+                if not all(polygons_apart(p, other, params.clearance) for other in polys + prints):
+                    ok = False
+                    break
+                prints.append(p)
+            if not ok:
+                continue
+            whole = np.vstack(prints)
+            if not all(_relation_ok(rel, whole, placed[t], support) for rel, t in wanted):
+                continue
+            for it, off in zip(unit, offsets):
+                it.xy, it.yaw, it.z = xy + _rot(yaw) @ off, yaw, support.height
+            return True
+    return False
+
+
+def cavity_polygon(item: Item, step: float = 0.004) -> np.ndarray | None:
+    """The xy polygon (world) over the item's open cavity: where its top surface lies well below
+    its rim; None when it has none."""
+    hulls = world_hulls(item)
+    eqs = hull_equations(hulls)
+    pts = np.vstack([h[:, :2] for h in hulls])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    n = np.minimum(np.maximum(np.ceil((hi - lo) / step).astype(int), 3), 100)
+    gx, gy = np.meshgrid(np.linspace(lo[0], hi[0], n[0]), np.linspace(lo[1], hi[1], n[1]))
+    xy = np.column_stack([gx.ravel(), gy.ravel()])
+    _, top = vertical_extent(eqs, xy)
+    zmax = float(np.nanmax(top))
+    base = float(np.nanmin(vertical_extent(eqs, xy)[0]))
+    deep = xy[np.isfinite(top) & (top < zmax - 0.4 * (zmax - base))]
+    if len(deep) < 4:
+        return None
+    return footprint(deep)
+
+
+def place_children(items: list[Item], placed: dict[str, Item], rng: np.random.Generator, clearance: float = 0.002,
+                   tries: int = 60) -> list[str]:
+    """Lower each child onto (or into) its parent, parents first; returns warnings."""
+    warnings: list[str] = []
+    todo = list(items)
+    while todo:
+        ready = [it for it in todo if it.parent in placed]
+        if not ready:
+            for it in todo:
+                warnings.append(f"{it.key}: what it rests on could not be placed; left out")
+            break
+        for it in ready:
+            todo.remove(it)
+            parent = placed[it.parent]  # type: ignore[index]
+            below = world_hulls(parent) + [h for other in placed.values() if other.parent == parent.key or other is parent
+                                            for h in (world_hulls(other) if other is not parent else [])]
+            result = _lower(it, parent, below, rng, tries)
+            if result is None:
+                warnings.append(f"{it.key}: does not fit {'in' if it.inside else 'on'} {parent.key}; put on top of it")
+                it.inside = False
+                result = _lower(it, parent, below, rng, tries)
+            if result is None:
+                warnings.append(f"{it.key}: could not be put on {parent.key}; left out")
+                continue
+            it.xy, it.yaw, it.z = result
+            it.z += clearance
+            placed[it.key] = it
+    return warnings
+
+
+def _lower(it: Item, parent: Item, below: list[np.ndarray], rng: np.random.Generator, tries: int) -> tuple[np.ndarray, float, float] | None:
+    """(xy, yaw, z) of the lowest resting place found for ``it`` on/in ``parent``."""
+    assert parent.xy is not None
+    cavity = cavity_polygon(parent) if it.inside else None
+    if it.inside and cavity is None:
+        return None
+    top = np.vstack(world_hulls(parent))
+    p_top = float(top[:, 2].max())
+    region = cavity if cavity is not None else footprint(top[:, :2])
+    lo, hi = region.min(axis=0), region.max(axis=0)
+    best = None
+    for k in range(tries if not it.stacked else 8):
+        if it.stacked:
+            xy = parent.xy + rng.normal(0.0, 0.002, 2)
+            yaw = parent.yaw + float(rng.normal(0.0, 0.03))
+        else:
+            xy = rng.uniform(lo, hi)
+            yaw = float(rng.uniform(-np.pi, np.pi))
+        poly = _print(it, xy, yaw)
+        margin = -0.002 if cavity is not None else 0.0
+        if cavity is not None and not np.all(inside_convex_polygon(poly, region, margin)):
+            continue
+        if cavity is None and not it.stacked and not np.all(inside_convex_polygon(poly.mean(axis=0, keepdims=True), region, -0.01)):
+            continue
+        z = rest_height(it.hulls, below, xy, yaw)
+        if z is None:
+            continue
+        if cavity is not None and z > p_top - 0.004:  # must sit in the cavity, below the rim
+            continue
+        if best is None or z < best[2] - 1e-4:
+            best = (xy, yaw, z)
+    return best
