@@ -85,6 +85,9 @@ def bounded(kind: type, low: float, high: float):
 
 
 def cmd_convert(args: argparse.Namespace) -> int:
+    from realsim.text.photo_input import check_photo_offline
+
+    check_photo_offline(args.source, args.text)  # a photo alone without a key fails before the heavy imports
     from rich.console import Console
 
     from realsim.errors import InputError

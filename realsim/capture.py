@@ -35,6 +35,7 @@ from realsim.scene import CaptureInfo, Scene
 POINT_CLOUD_SUFFIXES = {".pcd", ".ply", ".xyz", ".pts"}
 MESH_SUFFIXES = {".obj", ".stl", ".ply", ".glb", ".gltf", ".off"}
 UP_AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
+MIN_CAPTURE_POINTS = 100  # fewer finite points than this cannot show a support and an object
 UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 
 
@@ -126,7 +127,11 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
         if len(verts) == 0:
             raise InputError(f"{path}: the file holds no geometry")
         return RawCloud(np.asarray(verts, dtype=np.float64), None, None, False, path.suffix[1:].lower())
-    pts, face_idx = trimesh.sample.sample_surface(loaded, count, seed=seed)
+    check_mesh_arrays(path, np.asarray(loaded.vertices), np.asarray(loaded.faces))
+    try:
+        pts, face_idx = trimesh.sample.sample_surface(loaded, count, seed=seed)
+    except (ValueError, IndexError, TypeError) as exc:  # degenerate data trimesh cannot sample
+        raise InputError(f"{path}: corrupt mesh ({type(exc).__name__}: {exc})") from None
     cols = None
     try:
         fc = loaded.visual.face_colors
@@ -135,6 +140,16 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
     except Exception:  # textured visuals have no face colours; colour is optional
         cols = None
     return RawCloud(np.asarray(pts, dtype=np.float64), cols, None, False, path.suffix[1:].lower())
+
+
+def check_mesh_arrays(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
+    """InputError unless vertices are (N, 3) finite, faces (M, 3) index existing vertices."""
+    if vertices.ndim != 2 or vertices.shape[1] != 3 or faces.ndim != 2 or faces.shape[1] != 3:
+        raise InputError(f"{path}: corrupt mesh (vertices {vertices.shape}, faces {faces.shape}; expected (N, 3) and (M, 3))")
+    if faces.size and (faces.min() < 0 or faces.max() >= len(vertices)):
+        raise InputError(f"{path}: corrupt mesh (faces refer to vertices the file does not hold)")
+    if not np.isfinite(vertices).all():
+        raise InputError(f"{path}: corrupt mesh (non-finite vertex coordinates)")
 
 
 def _is_point_cloud_ply(path: Path) -> bool:
@@ -166,9 +181,13 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
             f"{path}: unsupported capture format {suffix or '(no extension)'!r}; "
             "use PCD, PLY, OBJ, STL, GLB or glTF"
         )
+    if cloud.points.ndim != 2 or cloud.points.shape[1] != 3:
+        raise InputError(f"{path}: corrupt point data (shape {cloud.points.shape}, expected (N, 3))")
     finite = np.isfinite(cloud.points).all(axis=1)
     if not finite.any():
         raise InputError(f"{path}: the point cloud has no finite points (all NaN)")
+    if finite.sum() < MIN_CAPTURE_POINTS:
+        raise InputError(f"{path}: only {int(finite.sum())} finite point(s); a scene capture needs at least {MIN_CAPTURE_POINTS}")
     return cloud
 
 
@@ -228,6 +247,16 @@ def _text_capture(text: str, source: Path) -> Scene:
     return Scene(capture=capture)
 
 
+PHOTO_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp")
+
+
+def _photo_capture(photo: Path, metadata: dict[str, Any], seed: int) -> Scene:
+    """A capture made of a photo only (realsim.understanding.photo_scene describes it)."""
+    capture = CaptureInfo(source=photo, kind="photo", environment_file=None, units="m", up="+z", units_detected=False,
+                          up_detected=False, input_to_world=np.eye(4), metadata={**metadata, "photo": str(photo)})
+    return Scene(capture=capture, seed=seed)
+
+
 def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
     """Read a capture file or folder into a Scene in a gravity-agnostic Z-up frame.
 
@@ -250,6 +279,8 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         scene = _text_capture(text, path)
         scene.seed = seed
         return scene
+    if path.is_file() and path.suffix.lower() in PHOTO_SUFFIXES:
+        return _photo_capture(path, {}, seed)
     metadata: dict[str, Any] = {}
     object_files: list[Path] = []
     if path.is_dir():
@@ -261,6 +292,8 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
             metadata["text"] = params.text
         if env is None and not object_files and not photos and not metadata.get("text"):
             raise InputError(f"{path}: the capture folder holds neither scene.*, objects/* nor photo.*")
+        if env is None and not object_files and photos and not metadata.get("text"):
+            return _photo_capture(sorted(photos)[0], metadata, seed)
     else:
         env = path
     units = params.units or metadata.get("units")

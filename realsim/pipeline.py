@@ -20,6 +20,7 @@ from typing import Any, Callable
 import yaml
 from rich.console import Console
 
+from realsim import rerun
 from realsim.capture import LoadParams, load_capture
 from realsim.capture_config import read_capture_config
 from realsim.completion import CompletionParams, complete_objects
@@ -36,6 +37,8 @@ from realsim.scene import Scene
 from realsim.segment_stage import SegmentParams, segment_scene
 from realsim.settle import SettleParams, settle_scene
 from realsim.text.stage import TextParams, text_scene
+from realsim.understanding.photo import PHOTO_SUFFIXES, find_photo
+from realsim.understanding.photo_scene import BackdropParams, PhotoParams, photo_backdrop, photo_scene
 
 
 @dataclass(frozen=True)
@@ -51,6 +54,8 @@ STAGES: dict[str, Stage] = {
     "segment": Stage(segment_scene, SegmentParams),
     "complete": Stage(complete_objects, CompletionParams),
     "text": Stage(text_scene, TextParams),
+    "photo": Stage(photo_scene, PhotoParams),
+    "photo_backdrop": Stage(photo_backdrop, BackdropParams),
     "objects": Stage(prepare_scene_objects, ObjectsParams),
     "compose": Stage(compose_scene, ComposeParams),
     "robot": Stage(robot_scene, RobotStageParams),
@@ -70,7 +75,7 @@ def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
     """Read a pipeline by name (``pipelines/<name>.yaml``) or from a YAML file path."""
     path = Path(name_or_path)
     if path.suffix in (".yaml", ".yml") and path.exists():
-        text = path.read_text()
+        text = path.read_text(errors="replace")
     else:
         file = data_dir("pipelines") / f"{name_or_path}.yaml"
         if not file.is_file():
@@ -99,7 +104,8 @@ def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
 
 def pipeline_for(source: Path | None, text: str | None = None) -> str:
     """The default pipeline for a capture: ``scan`` for an environment, ``objects`` otherwise,
-    ``text`` for a description (``--text``, a ``.txt`` file, or ``text:`` in capture.yaml)."""
+    ``text`` for a description (``--text``, a ``.txt`` file, or ``text:`` in capture.yaml), ``photo``
+    for a photo alone (a JPEG/PNG/WebP file, or a folder holding only ``photo.*``)."""
     if source is None or text or Path(source).suffix.lower() == ".txt":
         return "text"
     source = Path(source)
@@ -110,6 +116,10 @@ def pipeline_for(source: Path | None, text: str | None = None) -> str:
             meta = None
         if isinstance(meta, dict) and meta.get("text"):
             return "text"
+        if find_photo(source) is not None:
+            return "photo"  # a folder holding only photo.*
+    if source.is_file() and source.suffix.lower() in PHOTO_SUFFIXES:
+        return "photo"
     if source.is_dir() and not any(source.glob("scene.*")):
         return "objects"
     return "scan"
@@ -190,9 +200,13 @@ def convert(source: Path | None, dest: Path | str, *, force: bool = False, check
     if check_only:
         plan_pipeline(source, **{k: v for k, v in kwargs.items() if k != "console"})
         return None
+    key = rerun.conversion_key(source, kwargs)  # a warm rerun restores the stored output, byte for byte
+    if (reused := rerun.restore(key, dest, force=force)) is not None:
+        return reused
     scene = run_pipeline(source, **kwargs)
     write_started = time.perf_counter()
     write_scene(scene, dest, force=force)
     scene.timings["write"] = round(time.perf_counter() - write_started, 4)
     scene.timings["total"] = round(time.perf_counter() - started, 4)
+    rerun.remember(key, dest, scene)
     return scene

@@ -29,13 +29,31 @@ def _errors(exc: ValidationError, limit: int = 8) -> str:
     return "; ".join(f"{'.'.join(str(p) for p in e['loc'])}: {e['msg']}" for e in exc.errors()[:limit])
 
 
+class _ValidOnly:
+    """A cache view that hands back only replies that validate (an invalid one is asked again)."""
+
+    def __init__(self, cache: DiskCache) -> None:
+        self.cache = cache
+
+    def get(self, key: str) -> Any | None:
+        value = self.cache.get(key)
+        try:
+            SceneSpec.model_validate(value)
+        except ValidationError:
+            return None
+        return value
+
+    def put(self, key: str, value: Any) -> None:
+        self.cache.put(key, value)
+
+
 def request_scene(content: list[dict[str, Any]], prompt_name: str, *, settings: llm.LLMSettings | None = None,
                   cache: DiskCache | None = None, log: Any = None) -> SceneSpec:
     """Claude's scene for one user turn (text and/or image blocks), validated; one repair turn."""
     from realsim.understanding.calls import CallLog, tool_call
 
     settings = settings or llm.LLMSettings()
-    cache = cache if cache is not None else DiskCache()
+    cache = _ValidOnly(cache if cache is not None else DiskCache())  # type: ignore[assignment]
     log = log if log is not None else CallLog()
     version, system = load_prompt(prompt_name)
     schema = json_schema()
