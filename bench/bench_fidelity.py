@@ -48,7 +48,7 @@ def measure(name: str, out: Path) -> dict:
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
     render, robot = render_rgbd(model, intr)
     fid = compare(render, capture, exclude=robot)
-    Image.fromarray((np.hstack([render.rgb, capture.rgb]) * 255).astype(np.uint8)).save(out / "fidelity.png")
+    Image.fromarray((np.hstack([render.rgb, capture.rgb]) * 255).astype(np.uint8)).save(out.parent / f"{name}_fidelity.png")
     return {"scan": name, "fid": fid, "seconds": seconds, "mb": folder_mb(out), "drift_mm": record["settle"]["max_displacement"] * 1000,
             "robot_px": int(robot.sum()), "fx": intr.fx}
 
@@ -56,7 +56,7 @@ def measure(name: str, out: Path) -> dict:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scans", nargs="*", default=SCANS)
-    parser.add_argument("--keep", type=Path, default=None, help="write the outputs (and fidelity.png side by side) here")
+    parser.add_argument("--keep", type=Path, default=None, help="write the outputs (and <scan>_fidelity.png: render and capture side by side) here")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)

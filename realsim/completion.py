@@ -5,6 +5,11 @@ base lies on what the object stands on: the support plane, or the top of the obj
 Round footprints become upright cylinders fitted to the visible arc; anything else becomes the
 convex hull of the observed points and their projection onto the base (the visible hull
 extruded down). The observed points are kept for the visual mesh colour.
+
+For a camera view the line of sight to every observed pixel is empty space: a completed shape
+is voxelized and every voxel the camera saw through (it projects to a pixel whose captured depth
+lies farther away) is carved off, so no completed object covers a pixel where the camera saw
+something behind it.
 """
 
 from __future__ import annotations
@@ -15,7 +20,116 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
+from realsim.appearance import capture_intrinsics
+from realsim.intrinsics import Intrinsics
 from realsim.scene import Scene, SceneObject
+
+
+@dataclass(frozen=True)
+class DepthView:
+    """What the capture camera saw: per-pixel depth (m along the optical axis, NaN = nothing)."""
+
+    intrinsics: Intrinsics
+    world_to_optical: np.ndarray  # (4, 4), optical units
+    scale: float  # optical units per metre
+    depth: np.ndarray  # (H, W)
+
+    @classmethod
+    def of(cls, scene: Scene) -> "DepthView | None":
+        intr = capture_intrinsics(scene)
+        if intr is None:
+            return None
+        w2o = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+        scale = float(np.cbrt(abs(np.linalg.det(w2o[:3, :3]))))
+        z = (scene.points @ w2o[2, :3] + w2o[2, 3]) / scale
+        return cls(intr, w2o, scale, z.reshape(intr.height, intr.width))
+
+    def veil(self, tolerance_deg: float = 80.0) -> np.ndarray:
+        """(H, W) mask of veil pixels: mixed depths at silhouettes, seen almost edge-on (a surface whose
+        normal, from the grid neighbours, is within ``90 - tolerance_deg`` degrees of perpendicular to the ray)."""
+        h, w = self.depth.shape
+        v, u = np.mgrid[0:h, 0:w]
+        z = self.depth
+        x = (u - self.intrinsics.cx) / self.intrinsics.fx * z
+        y = (v - self.intrinsics.cy) / self.intrinsics.fy * z
+        p = np.stack([x, y, z], axis=-1)
+        du = np.zeros_like(p)
+        dv = np.zeros_like(p)
+        du[:, 1:-1] = p[:, 2:] - p[:, :-2]
+        dv[1:-1] = p[2:] - p[:-2]
+        n = np.cross(du, dv)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = np.abs((n * p).sum(-1)) / (np.linalg.norm(n, axis=-1) * np.linalg.norm(p, axis=-1))
+        return np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
+
+    def seen_through(self, points: np.ndarray, tolerance: float) -> np.ndarray:
+        """Mask of world points the camera saw through: nearer than the captured depth at their pixel."""
+        opt = points @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
+        pix = np.rint(self.intrinsics.project(opt)).astype(np.int64, copy=False) if len(points) else np.zeros((0, 2), np.int64)
+        h, w = self.depth.shape
+        inside = (opt[:, 2] > 0) & (pix[:, 0] >= 0) & (pix[:, 0] < w) & (pix[:, 1] >= 0) & (pix[:, 1] < h)
+        seen = np.full(len(points), np.nan)
+        seen[inside] = self.depth[pix[inside, 1], pix[inside, 0]]
+        with np.errstate(invalid="ignore"):
+            return opt[:, 2] / self.scale < seen - tolerance
+
+
+def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Vertical voxel columns inside the convex ``mesh``: xy centres (M, 2) and their z range.
+
+    A convex solid is the intersection of its face half-spaces ``n.x <= d``: per column, faces
+    facing up bound it from above, faces facing down from below, vertical faces cut the footprint.
+    """
+    lo, hi = mesh.bounds
+    gx, gy = (np.arange(a + step / 2, b, step) for a, b in zip(lo[:2], hi[:2]))
+    xy = np.stack(np.meshgrid(gx, gy, indexing="ij"), axis=-1).reshape(-1, 2)
+    n = mesh.face_normals
+    d = np.einsum("fk,fk->f", n, mesh.triangles[:, 0, :])
+    rhs = d[None, :] - xy @ n[:, :2].T  # (M, F): n_z z <= rhs
+    up, down, side = n[:, 2] > 1e-6, n[:, 2] < -1e-6, np.abs(n[:, 2]) <= 1e-6
+    z_top = np.min(rhs[:, up] / n[up, 2], axis=1) if up.any() else np.full(len(xy), hi[2])
+    z_bot = np.max(rhs[:, down] / n[down, 2], axis=1) if down.any() else np.full(len(xy), lo[2])
+    ok = (z_top > z_bot) & (np.all(rhs[:, side] >= -1e-9, axis=1) if side.any() else True)
+    return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
+
+
+def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
+                     params: CompletionParams) -> tuple[trimesh.Trimesh, float]:
+    """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
+    the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
+    ``carve_min_fraction`` is free."""
+    lo, hi = mesh.bounds
+    step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
+    xy, z_bot, z_top = _columns(mesh, step)
+    if len(xy) == 0:
+        return mesh, 0.0
+    counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
+    col = np.repeat(np.arange(len(xy)), counts)
+    k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
+    cells = np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
+    free = view.seen_through(cells, params.carve_tolerance)
+    fraction = float(free.mean())
+    if fraction < params.carve_min_fraction or fraction > 0.9:
+        return mesh, fraction
+    kept_col, kept_z = col[~free], cells[~free, 2]
+    extremes = []  # the lowest and highest kept voxel of each column bound the hull
+    for pick in (np.minimum, np.maximum):
+        z = np.full(len(xy), np.nan)
+        if pick is np.minimum:
+            z[:] = np.inf
+            np.minimum.at(z, kept_col, kept_z)
+        else:
+            z[:] = -np.inf
+            np.maximum.at(z, kept_col, kept_z)
+        good = np.isfinite(z)
+        extremes.append(np.column_stack([xy[good], z[good]]))
+    kept = np.vstack([*extremes, observed])
+    kept[kept[:, 2] < base_z + step, 2] = base_z
+    try:
+        carved = trimesh.convex.convex_hull(kept)
+    except QhullError:
+        return mesh, fraction
+    return carved, fraction
 
 
 @dataclass(frozen=True)
@@ -29,6 +143,11 @@ class CompletionParams:
     cylinder_max_radius: float = 0.2
     cylinder_sections: int = 32
     max_foreign_fraction: float = 0.03  # completed shape may contain this share of a neighbour's points
+    carve: bool = True  # carve completed shapes by the camera's free space (camera views only)
+    carve_tolerance: float = 0.005  # a voxel this much nearer than the captured depth at its pixel is free space (m)
+    carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
+    carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
+    veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30
 
@@ -103,10 +222,13 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     labels = scene.labels
     by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
+    observed: dict[int, np.ndarray] = {}
+    view = DepthView.of(scene) if params.carve else None
+    veil = view.veil(params.veil_deg).ravel() if view is not None else np.zeros(len(labels), bool)
     order = _bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id
-        pts = scene.points[mask]
+        pts = scene.points[mask & ~veil] if (mask & ~veil).sum() >= params.min_points else scene.points[mask]
         if obj.resting_on is not None and obj.resting_on in done:
             base_z = _top_under(done[obj.resting_on], pts)
             done[obj.resting_on] = _flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
@@ -119,13 +241,73 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             shape = None
         kind = "cylinder" if shape is not None else "hull"
         mesh, base_centre = shape if shape is not None else complete_hull(pts, base_z, top_z)
+        if view is not None:
+            mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params)
+            if carved >= params.carve_min_fraction:
+                kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         done[obj.id] = mesh
+        observed[obj.id] = pts
         _set_shape(obj, mesh, base_centre, params)
         obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
         if scene.colors is not None:
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
+    _separate_neighbours(order, done, observed, params)
     return scene
+
+
+def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> trimesh.Trimesh | None:
+    """The part of a convex mesh where ``normal . x >= offset`` (a convex hull), or None if too little is left."""
+    v = np.asarray(mesh.vertices)
+    side = v @ normal - offset
+    edges = mesh.edges_unique
+    sa, sb = side[edges[:, 0]], side[edges[:, 1]]
+    cross = (sa * sb) < 0
+    t = sa[cross] / (sa[cross] - sb[cross])
+    points = np.vstack([v[side >= 0], v[edges[cross, 0]] + t[:, None] * (v[edges[cross, 1]] - v[edges[cross, 0]])])
+    if len(points) < 4:
+        return None
+    try:
+        out = trimesh.convex.convex_hull(points)
+    except QhullError:
+        return None
+    return out if out.volume > 1e-7 else None
+
+
+def _separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],
+                         params: CompletionParams) -> None:
+    """Cut apart completed neighbours that overlap (their hidden backs grown into each other).
+
+    The cut is the vertical plane across the line between the two objects' observed centroids,
+    midway between their observed points along it; a pair whose observed points interleave along
+    that line, or that are stacked, is left as it is.
+    """
+    for i, a in enumerate(objects):
+        for b in objects[i + 1:]:
+            if a.resting_on == b.id or b.resting_on == a.id:
+                continue
+            ma, mb = done[a.id], done[b.id]
+            if np.any(ma.bounds[0] > mb.bounds[1]) or np.any(mb.bounds[0] > ma.bounds[1]):
+                continue
+            d = np.zeros(3)
+            d[:2] = observed[b.id][:, :2].mean(axis=0) - observed[a.id][:, :2].mean(axis=0)
+            if np.linalg.norm(d) < 1e-6:
+                continue
+            d /= np.linalg.norm(d)
+            if np.max(ma.vertices @ d) <= np.min(mb.vertices @ d):
+                continue
+            pa, pb = np.percentile(observed[a.id] @ d, 99), np.percentile(observed[b.id] @ d, 1)
+            if pa > pb:
+                continue
+            mid = (pa + pb) / 2
+            for obj, normal in ((a, -d), (b, d)):
+                cut = clip_convex(done[obj.id], normal, float(normal @ (d * mid)))
+                if cut is None:
+                    continue
+                lo, hi = cut.bounds
+                done[obj.id] = cut
+                _set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params)
+                obj.notes.append(f"cut apart from {(b if obj is a else a).name}, whose shape it overlapped")
 
 
 def _set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams) -> None:
