@@ -2,22 +2,33 @@
 
     python bench/bench_commands.py            # rule planner only (offline), recording primitives
     python bench/bench_commands.py --claude   # also Claude (needs ANTHROPIC_API_KEY; costs tokens)
-    MENAGERIE_ROOT=../shared/data python bench/bench_commands.py --sim [--scenes DIR] [--planner rules]
+    MENAGERIE_ROOT=../shared/data python bench/bench_commands.py --sim [--scenes DIR] [--only TEXT] [--scene NAME]
 
-Without ``--sim``, programs run in the sandbox against recording primitives (no robot): this
-measures parsing only. With ``--sim``, three YCB scenes are made with the real pipeline (copied
-meshes + ``capture.yaml``, ``realsim convert``; cached under ``--scenes``) and every sentence of
-:data:`SIM_SUITE` runs from keyframe "initial": the program, each primitive's outcome and the
-goal check are printed, then the success rate (goal met in the simulation).
+With ``--sim``, seven scenes are made with the real pipeline (YCB meshes + ``capture.yaml``,
+scenes from text, a converted mOSD scan; cached under ``--scenes``) and every sentence of
+:data:`SUITE` runs from keyframe "initial". Each sentence carries its own expected goal,
+written for the sentence and independent of the planner (``"in mug bowl"``: the mug ends inside
+the bowl; ``"refuse"``: the planner must decline, naming candidates, and nothing moves). The
+bench reports per sentence: whether the expected goal holds in the end state, wrong-object
+actions (a primitive acting on an object the goal does not move) and collateral (any object the
+goal does not move that moved more than 2 cm), then the totals.
+
+Goal words: ``lift X``, ``in X Y``, ``on X Y``, ``next X Y``, ``left|right|front|behind X Y``,
+``between X Y Z``, ``moved X left|right|forward|back D``, ``table X``, ``at X`` (back where it
+started), ``home``, ``refuse``; several joined by ``;``. An object key is the end of a body name
+(``soup_can``) with an optional ``@left``/``@right``/``@front``/``@back`` choosing among several
+by their start positions in the robot's frame.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import shutil
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -26,10 +37,13 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from realsim.errors import RealsimError  # noqa: E402
+from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
 
-YCB = REPO.parent / "shared" / "data" / "ycb_google16k"
+DATA = REPO.parent / "shared" / "data"
+YCB = DATA / "ycb_google16k"
+COLLATERAL = 0.02  # m: a non-target object moving more than this is collateral
+COLOR_NAMES = ("red", "green", "blue", "yellow", "orange", "purple", "pink", "black", "white", "gray", "brown")
 
 EXTRA = [
     "put the mug next to the bowl",
@@ -38,107 +52,384 @@ EXTRA = [
     "stack the can on the box then push the block 4 cm forward",
 ]
 
-# A table 0.55 m deep (x) and 0.8 m wide (y); the Panda at its -x edge facing +x, so "left" is +y.
+# A table 0.55 m deep (x) and 0.8 m wide (y) for the YCB captures.
 SUPPORT = "support: {size: [0.55, 0.8], height: 0.75}\n"
-SCENES: dict[str, tuple[str, ...]] = {
+YCB_SCENES: dict[str, tuple[str, ...]] = {
     "kitchen": ("003_cracker_box", "005_tomato_soup_can", "025_mug", "024_bowl", "011_banana"),
     "pantry": ("006_mustard_bottle", "010_potted_meat_can", "061_foam_brick", "077_rubiks_cube", "040_large_marker"),
     "mugbowl": ("025_mug", "024_bowl"),
+    "fruitcans": ("011_banana", "012_strawberry", "005_tomato_soup_can", "010_potted_meat_can", "024_bowl", "077_rubiks_cube"),
 }
-SIM_SUITE: list[tuple[str, str]] = [
-    ("kitchen", "pick up the mug and put it in the bowl"),
-    ("kitchen", "put the banana in the bowl"),
-    ("kitchen", "grab the soup can"),
-    ("kitchen", "lift the banana"),
-    ("kitchen", "push the cracker box 10 cm to the left, then go home"),
-    ("kitchen", "push the bowl back by 10 cm"),
-    ("kitchen", "put the cup into the bowl"),
-    ("kitchen", "put the soup can next to the bowl"),
-    ("kitchen", "slide the mug forward 5 cm"),
-    ("kitchen", "go home"),
-    ("kitchen", "pick up the banana, then put it next to the mug"),
-    ("kitchen", "push the soup can 5 cm forward and then go home"),
-    ("kitchen", "take the tomato soup can and place it in the bowl"),
-    ("pantry", "put the rubiks cube on the potted meat can"),
-    ("pantry", "stack the foam brick on the rubiks cube"),
-    ("pantry", "pick up the marker"),
-    ("pantry", "grab the mustard bottle"),
-    ("pantry", "push the foam brick 10 cm to the right"),
-    ("pantry", "push the rubiks cube left by 8 cm"),
-    ("pantry", "put the foam brick next to the potted meat can"),
-    ("pantry", "lift the can"),
-    ("pantry", "push the potted meat can back 10 cm, then go home"),
-    ("pantry", "move the rubik's cube forward 5 cm"),
-    ("pantry", "take the foam block and put it beside the mustard"),
-    ("pantry", "grab the brick, then put it on the can"),
-    ("mugbowl", "put the mug in the bowl"),
-    ("mugbowl", "pick up the cup"),
-    ("mugbowl", "push the bowl 10 cm to the left"),
-    ("mugbowl", "push the mug forward 8 cm, then go home"),
-    ("mugbowl", "put the mug next to the bowl"),
-    ("mugbowl", "nudge the bowl right 5 cm"),
-    ("mugbowl", "lift up the coffee mug"),
+TEXT_SCENES: dict[str, str] = {
+    "textkitchen": "a kitchen table with a mug, a bowl, two soda cans and a cereal box",
+    "textblocks": "a table with a red cube, a blue cube, a green cube and a plate",
+}
+SCAN_SCENES: dict[str, Path] = {"scan45": DATA / "pcl_scenes" / "mOSD" / "test45.pcd"}
+
+# (scene, sentence as a person would say it, expected goal)
+SUITE: list[tuple[str, str, str]] = [
+    # --- kitchen: cracker box, soup can, mug, bowl, banana
+    ("kitchen", "pick up the mug and put it in the bowl", "in mug bowl"),
+    ("kitchen", "could you drop the banana into the bowl please", "in banana bowl"),
+    ("kitchen", "grab the soup can", "lift soup_can"),
+    ("kitchen", "lift the banana up", "lift banana"),
+    ("kitchen", "push the cracker box 10 cm to the left, then go home", "moved cracker_box left 0.10; home"),
+    ("kitchen", "shove the bowl back a bit", "moved bowl back 0.05"),
+    ("kitchen", "put the cup in the bowl", "in mug bowl"),
+    ("kitchen", "set the soup can down next to the bowl", "next soup_can bowl"),
+    ("kitchen", "slide the mug forward 5 cm", "moved mug forward 0.05"),
+    ("kitchen", "go back to your home position", "home"),
+    ("kitchen", "pick the banana up and then put it beside the mug", "next banana mug"),
+    ("kitchen", "nudge the tomato can forward about 5 centimeters and then return home", "moved soup_can forward 0.05; home"),
+    ("kitchen", "take the tomato soup can and place it in the bowl", "in soup_can bowl"),
+    ("kitchen", "move the banana so it's to the left of the cracker box", "left banana cracker_box"),
+    ("kitchen", "can you put the soup can to the right of the mug", "right soup_can mug"),
+    ("kitchen", "hold up the banana for me", "lift banana"),
+    ("kitchen", "put the mug next to the cracker box", "next mug cracker_box"),
+    ("kitchen", "pick up the bowl", "lift bowl"),
+    ("kitchen", "place the mug behind the soup can", "behind mug soup_can"),
+    ("kitchen", "would you mind lifting the cracker box", "lift cracker_box"),
+    ("kitchen", "put the soup can and the banana in the bowl", "in soup_can bowl; in banana bowl"),
+    ("kitchen", "push the mug a little to the right", "moved mug right 0.05"),
+    ("kitchen", "put the can in front of the bowl", "front soup_can bowl"),
+    ("kitchen", "put the banana in the bowl, then put the mug next to the bowl", "in banana bowl; next mug bowl"),
+    ("kitchen", "grab it", "refuse"),
+    ("kitchen", "put the can in the thing", "refuse"),
+    # --- pantry: mustard bottle, potted meat can, foam brick, rubik's cube, marker
+    ("pantry", "put the rubiks cube on the potted meat can", "on rubiks_cube potted_meat_can"),
+    ("pantry", "stack the foam brick on top of the rubik's cube", "on foam_brick rubiks_cube"),
+    ("pantry", "pick up the marker", "lift marker"),
+    ("pantry", "grab the mustard", "lift mustard_bottle"),
+    ("pantry", "push the foam brick 10 cm to the right", "moved foam_brick right 0.10"),
+    ("pantry", "push the cube left by 8 cm", "moved rubiks_cube left 0.08"),
+    ("pantry", "set the foam brick down next to the meat can", "next foam_brick potted_meat_can"),
+    ("pantry", "lift the can", "lift potted_meat_can"),
+    ("pantry", "push the potted meat back 10 cm, then go home", "moved potted_meat_can back 0.10; home"),
+    ("pantry", "move the rubik's cube forward 5 cm", "moved rubiks_cube forward 0.05"),
+    ("pantry", "take the foam block and put it beside the mustard", "next foam_brick mustard_bottle"),
+    ("pantry", "grab the brick, then put it on the can", "on foam_brick potted_meat_can"),
+    ("pantry", "please pick up the pen", "lift marker"),
+    ("pantry", "put the marker next to the rubiks cube", "next marker rubiks_cube"),
+    ("pantry", "put the cube between the mustard bottle and the can", "between rubiks_cube mustard_bottle potted_meat_can"),
+    ("pantry", "would you put the foam brick to the left of the mustard", "left foam_brick mustard_bottle"),
+    ("pantry", "pick up the tallest object", "lift mustard_bottle"),
+    ("pantry", "nudge the rubik's cube toward me a little", "moved rubiks_cube back 0.05"),
+    ("pantry", "put the rubiks cube behind the can", "behind rubiks_cube potted_meat_can"),
+    ("pantry", "put it down", "refuse"),
+    ("pantry", "put the can in the bowl", "refuse"),
+    # --- mug and bowl
+    ("mugbowl", "put the mug in the bowl", "in mug bowl"),
+    ("mugbowl", "pick up the cup", "lift mug"),
+    ("mugbowl", "push the bowl 10 cm to the left", "moved bowl left 0.10"),
+    ("mugbowl", "push the mug forward 8 cm, then go home", "moved mug forward 0.08; home"),
+    ("mugbowl", "put the mug next to the bowl", "next mug bowl"),
+    ("mugbowl", "nudge the bowl right 5 cm", "moved bowl right 0.05"),
+    ("mugbowl", "lift up the coffee mug", "lift mug"),
+    ("mugbowl", "could you set the mug down to the right of the bowl", "right mug bowl"),
+    ("mugbowl", "put the mug in front of the bowl", "front mug bowl"),
+    ("mugbowl", "pick up the mug, put it in the bowl and go home", "in mug bowl; home"),
+    ("mugbowl", "grab the mug and put it back down", "at mug"),
+    ("mugbowl", "take the mug and put it on the table", "table mug"),
+    ("mugbowl", "move the bowl a bit closer to you", "moved bowl back 0.05"),
+    ("mugbowl", "push the cup away from you by 6 cm", "moved mug forward 0.06"),
+    ("mugbowl", "put the mug behind the bowl", "behind mug bowl"),
+    ("mugbowl", "set the mug on the left of the bowl", "left mug bowl"),
+    ("mugbowl", "pick the bowl up", "lift bowl"),
+    ("mugbowl", "put the mug into the bowl and then push the bowl 5 cm to the right", "in mug bowl; moved bowl right 0.05"),
+    # --- fruit and cans: banana, strawberry, soup can, potted meat can, bowl, rubik's cube
+    ("fruitcans", "put all the fruit in the bowl", "in banana bowl; in strawberry bowl"),
+    ("fruitcans", "pick up the strawberry", "lift strawberry"),
+    ("fruitcans", "grab the taller can", "lift soup_can"),
+    ("fruitcans", "drop the strawberry in the bowl", "in strawberry bowl"),
+    ("fruitcans", "put the cube on the soup can", "on rubiks_cube soup_can"),
+    ("fruitcans", "take the banana and the strawberry and put them in the bowl", "in banana bowl; in strawberry bowl"),
+    ("fruitcans", "put the potted meat next to the soup", "next potted_meat_can soup_can"),
+    ("fruitcans", "push the rubik's cube 5 cm forward", "moved rubiks_cube forward 0.05"),
+    ("fruitcans", "pick up the leftmost can", "lift can@left"),
+    ("fruitcans", "put the can on the right in the bowl", "in can@right bowl"),
+    ("fruitcans", "move the banana next to the cube", "next banana rubiks_cube"),
+    ("fruitcans", "put the strawberry on the rubik's cube", "on strawberry rubiks_cube"),
+    ("fruitcans", "push the bowl 5 cm toward the robot", "moved bowl back 0.05"),
+    ("fruitcans", "lift the banana", "lift banana"),
+    ("fruitcans", "put the can in the bowl", "refuse"),
+    ("fruitcans", "grab the apple", "refuse"),
+    ("fruitcans", "put the meat can behind the soup can", "behind potted_meat_can soup_can"),
+    ("fruitcans", "after picking up the strawberry, put it in the bowl", "in strawberry bowl"),
+    ("fruitcans", "put both cans next to the bowl", "next soup_can bowl; next potted_meat_can bowl"),
+    ("fruitcans", "place the smaller fruit in the bowl", "in strawberry bowl"),
+    ("fruitcans", "set the banana down to the right of the bowl", "right banana bowl"),
+    # --- a scene from text: mug, bowl, two soda cans, cereal box (the robot faces +y)
+    ("textkitchen", "put the mug in the bowl", "in mug bowl"),
+    ("textkitchen", "grab the cereal box", "lift cereal_box"),
+    ("textkitchen", "pick up the left soda can", "lift soda_can@left"),
+    ("textkitchen", "put the right can in the bowl", "in soda_can@right bowl"),
+    ("textkitchen", "put the soda can on the right next to the cereal box", "next soda_can@right cereal_box"),
+    ("textkitchen", "push the cereal box forward 5 cm", "moved cereal_box forward 0.05"),
+    ("textkitchen", "could you lift the coffee mug", "lift mug"),
+    ("textkitchen", "push the bowl a bit to the left", "moved bowl left 0.05"),
+    ("textkitchen", "put the mug next to the bowl", "next mug bowl"),
+    ("textkitchen", "put the cans in the bowl", "in soda_can@left bowl; in soda_can@right bowl"),
+    ("textkitchen", "grab the can", "refuse"),
+    ("textkitchen", "put the can closest to the mug in the bowl", "in soda_can@right bowl"),
+    ("textkitchen", "slide the mug toward you 5 cm", "moved mug back 0.05"),
+    ("textkitchen", "set the mug down behind the bowl", "behind mug bowl"),
+    ("textkitchen", "ok now go home", "home"),
+    ("textkitchen", "pick up the bowl and put it back down", "at bowl"),
+    ("textkitchen", "put the mug between the bowl and the cereal box", "between mug bowl cereal_box"),
+    ("textkitchen", "push the left can forward a little", "moved soda_can@left forward 0.05"),
+    ("textkitchen", "drop the right soda can into the bowl and then go home", "in soda_can@right bowl; home"),
+    ("textkitchen", "take the red can on the left and put it next to the mug", "next soda_can@left mug"),
+    ("textkitchen", "move the cereal box to the right by 4 cm", "moved cereal_box right 0.04"),
+    ("textkitchen", "put the white mug to the right of the cereal box", "right mug cereal_box"),
+    # --- a scene from text: red, blue and green cubes and a plate
+    ("textblocks", "put the red cube on the plate", "on cube@red plate"),
+    ("textblocks", "stack the blue cube on the green cube", "on cube@blue cube@green"),
+    ("textblocks", "put the green block on the plate", "on cube@green plate"),
+    ("textblocks", "pick up the blue one", "lift cube@blue"),
+    ("textblocks", "put all the cubes on the plate", "on cube@red plate; on cube@blue plate; on cube@green plate"),
+    ("textblocks", "push the red cube 5 cm left", "moved cube@red left 0.05"),
+    ("textblocks", "put the red cube between the blue and the green cube", "between cube@red cube@blue cube@green"),
+    ("textblocks", "grab the leftmost cube", "lift cube@left"),
+    ("textblocks", "put the middle cube on the plate", "on cube@blue plate"),
+    ("textblocks", "push the plate 5 cm to the right", "moved plate right 0.05"),
+    ("textblocks", "put the blue cube next to the red cube", "next cube@blue cube@red"),
+    ("textblocks", "put the green cube to the right of the red one", "right cube@green cube@red"),
+    ("textblocks", "lift the biggest cube", "lift cube@blue"),
+    ("textblocks", "pick up the cube", "refuse"),
+    ("textblocks", "grab the yellow cube", "refuse"),
+    ("textblocks", "put the second cube from the left on the plate", "on cube@blue plate"),
+    ("textblocks", "take the green cube and then put it on top of the red cube", "on cube@green cube@red"),
+    ("textblocks", "put the red cube in front of the plate", "front cube@red plate"),
+    ("textblocks", "put the blue cube on the plate, then go home", "on cube@blue plate; home"),
+    ("textblocks", "could you move the green cube a little closer to you", "moved cube@green back 0.05"),
+    ("textblocks", "set the red block down behind the blue block", "behind cube@red cube@blue"),
+    ("textblocks", "put the red and the blue cube on the plate", "on cube@red plate; on cube@blue plate"),
+    # --- a converted real scan (mOSD test45): mug, cup, glass, two cracker boxes, sugar box, plush toy
+    ("scan45", "pick up the mug", "lift mug"),
+    ("scan45", "put the glass next to the mug", "next glass mug"),
+    ("scan45", "grab the cup", "lift cup"),
+    ("scan45", "push the glass 5 cm to the left", "moved glass left 0.05"),
+    ("scan45", "move the mug 5 cm toward you", "moved mug back 0.05"),
+    ("scan45", "put the mug to the right of the glass", "right mug glass"),
+    ("scan45", "take the glass and put it behind the mug", "behind glass mug"),
+    ("scan45", "put the cracker box in the mug", "refuse"),
+    ("scan45", "lift the cup that's on the box", "lift cup"),
+    ("scan45", "put the glass in front of the mug", "front glass mug"),
+    ("scan45", "pick up the glass, then go home", "lift glass"),
+    ("scan45", "slide the mug to the left 4 cm", "moved mug left 0.04"),
+    ("scan45", "grab the bottle", "refuse"),
 ]
 
 
+@dataclass
+class Row:
+    scene: str
+    sentence: str
+    goal: str
+    ok: bool
+    wrong: int
+    collateral: list[str]
+    why: str
+    sim_s: float
+    wall_s: float
+
+
+# ----------------------------------------------------------------------------------------------
+# scenes
+
+
 def make_scene(name: str, root: Path) -> Path:
-    """The YCB scene ``name`` under ``root`` (made with the real pipeline once, then reused)."""
+    """Scene ``name`` under ``root`` (made with the real pipeline once, then reused)."""
     out = root / name
     if (out / "scene.xml").is_file():
         return out
     from realsim.pipeline import convert
 
-    cap = root / f"capture_{name}"
-    if cap.exists():
-        shutil.rmtree(cap)
-    for folder in SCENES[name]:
-        dest = cap / "objects" / folder.split("_", 1)[1]
-        dest.mkdir(parents=True)
-        for f in (YCB / folder).glob("textured.*"):
-            shutil.copy(f, dest / f.name)
-        for f in (YCB / folder).glob("*.png"):
-            shutil.copy(f, dest / f.name)
-    (cap / "capture.yaml").write_text(SUPPORT)
-    convert(cap, out, seed=0)  # the robot placed by realsim's own reach search
+    if name in YCB_SCENES:
+        cap = root / f"capture_{name}"
+        if cap.exists():
+            shutil.rmtree(cap)
+        for folder in YCB_SCENES[name]:
+            dest = cap / "objects" / folder.split("_", 1)[1]
+            dest.mkdir(parents=True)
+            for f in [*(YCB / folder).glob("textured.*"), *(YCB / folder).glob("*.png")]:
+                shutil.copy(f, dest / f.name)
+        (cap / "capture.yaml").write_text(SUPPORT)
+        convert(cap, out, seed=0)  # the robot placed by realsim's own reach search
+    elif name in TEXT_SCENES:
+        convert(None, out, seed=0, overrides={"load": {"text": TEXT_SCENES[name]}})
+    else:
+        convert(SCAN_SCENES[name], out, seed=0)
     return out
 
 
+# ----------------------------------------------------------------------------------------------
+# expected goals
+
+
+def resolve_key(key: str, sim) -> str:
+    """The body a goal key names: the end of its name, ``@side`` choosing among several."""
+    base, _, side = key.partition("@")
+    names = [n for n in sim.object_names() if n.endswith(base) or n.split("_", 1)[-1] == base or base in n.split("_", 1)[-1]]
+    if not names:
+        raise KeyError(f"no object for goal key {key!r} in {sim.object_names()}")
+    if len(names) > 1:
+        if not side:
+            exact = [n for n in names if n.split("_", 1)[-1] == base]
+            if len(exact) == 1:
+                return exact[0]
+            raise KeyError(f"goal key {key!r} is ambiguous: {names}")
+        if side in COLOR_NAMES:
+            from realsim.planner.vocab import color_name
+
+            rgb = {o.get("body"): o.get("color") for o in sim.meta.get("objects", [])}
+            named = [n for n in names if color_name(rgb.get(n)) == side]
+            if len(named) != 1:
+                raise KeyError(f"goal key {key!r} names {named}")
+            return named[0]
+        yaw = sim.robot_yaw()
+        fwd, left = (math.cos(yaw), math.sin(yaw)), (-math.sin(yaw), math.cos(yaw))
+
+        def coord(n: str, axis: tuple[float, float]) -> float:
+            p = sim.object_pose(n)[0]
+            return p[0] * axis[0] + p[1] * axis[1]
+        pick = {"left": (max, left), "right": (min, left), "back": (max, fwd), "front": (min, fwd)}[side]
+        return pick[0](names, key=lambda n: coord(n, pick[1]))
+    return names[0]
+
+
+def expected_goals(spec: str, sim):
+    """(goals, objects the goal moves) for a goal spec; [] for "refuse"."""
+    from realsim.planner.goals import (
+        DIRECTIONS, AtHome, Between, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf,
+    )
+
+    goals, movers = [], set()
+    for part in [p.strip() for p in spec.split(";") if p.strip()]:
+        w = part.split()
+        kind, keys = w[0], w[1:]
+        if kind in ("home", "refuse"):
+            if kind == "home":
+                goals.append(AtHome())
+            continue
+        names = [resolve_key(k, sim) for k in keys if not _number(k) and k not in DIRECTIONS]
+        movers.add(names[0])
+        if kind == "lift":
+            goals.append(Lifted(names[0]))
+        elif kind == "in":
+            goals.append(Inside(names[0], names[1]))
+        elif kind == "on":
+            goals.append(On(names[0], names[1]))
+        elif kind == "next":
+            goals.append(NextTo(names[0], names[1]))
+        elif kind in ("left", "right", "front", "behind"):
+            goals.append(SideOf(names[0], names[1], kind))
+        elif kind == "between":
+            goals.append(Between(names[0], names[1], names[2]))
+        elif kind == "moved":
+            goals.append(Moved(names[0], DIRECTIONS[keys[1]], float(keys[2])))
+        elif kind == "table":
+            goals.append(OnTable(names[0]))
+        elif kind == "at":
+            p = sim.object_pose(names[0])[0]
+            goals.append(Placed(names[0], (float(p[0]), float(p[1]))))
+        else:
+            raise ValueError(f"unknown goal word {kind!r} in {spec!r}")
+    return goals, movers
+
+
+def _number(s: str) -> bool:
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
+def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) -> Row:
+    from realsim.planner.goals import evaluate_all, prepare_all
+
+    t0 = time.perf_counter()
+    sim.reset()
+    goals, movers = expected_goals(spec, sim)
+    refuse = spec.strip() == "refuse"
+    prepare_all(goals, sim)  # run_command starts from the same keyframe
+    start_poses = sim.state()
+    try:
+        rec = _run_sentence(sim, sentence, planner, seed)
+    except InputError as exc:
+        ok = refuse and any(w in str(exc) for w in ("ambiguous", "no object", "does not refer", "candidates", "objects in the scene"))
+        return Row(scene, sentence, spec, ok, 0, [], "" if ok else f"refused: {exc}", 0.0, time.perf_counter() - t0)
+    if refuse:
+        return Row(scene, sentence, spec, False, len(rec.calls), [], "acted instead of asking which object", rec.sim_time,
+                   time.perf_counter() - t0)
+    results = evaluate_all(goals, sim)
+    acted = [c for c in rec.actions if c["primitive"] not in ("go_home", "open_gripper", "close_gripper", "move_ee_to")]
+    wrong = sum(1 for a in acted if _acted_object(a["call"]) not in movers)
+    moved = []
+    for n, p0 in start_poses.items():
+        p1 = rec.objects_after.get(n, p0)
+        if n not in movers and math.dist(p0, p1) > COLLATERAL:
+            moved.append(f"{n} {math.dist(p0, p1) * 100:.1f} cm")
+    ok = all(r.ok for r in results) and wrong == 0 and not moved
+    why = "; ".join(str(r) for r in results if not r.ok)
+    if rec.error:
+        why = (why + "; " if why else "") + f"stopped: {rec.error}"
+    return Row(scene, sentence, spec, ok, wrong, moved, why, rec.sim_time, time.perf_counter() - t0)
+
+
+def _run_sentence(sim, sentence: str, planner: str, seed: int):
+    """Plan with the robot's heading and the capture's colours (what ``Sim.object_infos`` leaves
+    out today), then run the program through the same sandbox and primitives as ``realsim run``."""
+    from realsim.planner import make_planner
+    from realsim.planner.vocab import with_colors
+    from realsim.runtime import run_program
+
+    sim.reset()
+    plan = make_planner(planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
+    return run_program(sim, plan.program, seed=seed, name=plan.planner)
+
+
+def _acted_object(call: str) -> str:
+    inside = call.split("(", 1)[1]
+    return inside.split(",")[0].strip(" )'\"")
+
+
 def bench_sim(args: argparse.Namespace) -> int:
-    from realsim.runtime import Sim, run_command
+    from realsim.runtime import Sim
 
     root = Path(args.scenes)
     root.mkdir(parents=True, exist_ok=True)
-    suite = [(s, c) for s, c in SIM_SUITE if not args.only or args.only in c]
+    suite = [s for s in SUITE if (not args.only or args.only in s[1]) and (not args.scene or s[0] == args.scene)]
+    if args.limit:
+        suite = suite[: args.limit]
     sims: dict[str, Sim] = {}
-    rows = []
+    rows: list[Row] = []
     t_start = time.perf_counter()
-    for i, (scene, command) in enumerate(suite, 1):
+    for i, (scene, sentence, spec) in enumerate(suite, 1):
         if scene not in sims:
             sims[scene] = Sim.load(make_scene(scene, root), seed=args.seed)
-        sim = sims[scene]
-        print(f"[{i}/{len(suite)}] {scene}: {command!r}")
         try:
-            rec = run_command(sim, command, planner=args.planner, seed=args.seed)
-        except RealsimError as exc:
-            print(f"    rejected: {exc}")
-            rows.append((scene, command, False, f"rejected: {exc}", 0.0, 0.0))
-            continue
-        for line in rec.program.rstrip().splitlines():
-            print(f"    | {line}")
-        for c in rec.calls:
-            if "reason" in c:
-                print(f"    {c['call']} -> {'ok' if c['success'] else 'FAILED: ' + c['reason']}")
-        for g in rec.goals:
-            print(f"    goal [{'met' if g['ok'] else 'NOT met'}] {g['goal']}: {g['measured']}")
-        why = "" if rec.success else (rec.error or "; ".join(g["goal"] for g in rec.goals if not g["ok"]))
-        print(f"    => {'SUCCESS' if rec.success else 'FAIL'} ({rec.verdict}; {rec.sim_time:.1f} s sim, {rec.wall_time['total']:.1f} s wall)")
-        rows.append((scene, command, rec.success, why, rec.sim_time, rec.wall_time["total"]))
-    n_ok = sum(r[2] for r in rows)
-    print("\nscene     ok    sim s  wall s  command")
-    for scene, command, ok, why, sim_s, wall_s in rows:
-        print(f"{scene:9} {'yes' if ok else 'NO ':3} {sim_s:7.1f} {wall_s:7.1f}  {command}" + ("" if ok else f"   <- {why}"))
-    print(f"\n{args.planner} planner in the simulation: {n_ok}/{len(rows)} commands reached their goal "
-          f"({100.0 * n_ok / max(len(rows), 1):.0f}%), {time.perf_counter() - t_start:.0f} s wall in total")
+            row = run_one(sims[scene], scene, sentence, spec, args.planner, args.seed)
+        except (RealsimError, KeyError) as exc:
+            row = Row(scene, sentence, spec, False, 0, [], f"error: {exc}", 0.0, 0.0)
+        rows.append(row)
+        flag = "ok  " if row.ok else "FAIL"
+        print(f"[{i}/{len(suite)}] {flag} {scene}: {sentence!r} -> {spec}"
+              + ("" if row.ok else f"\n      {row.why[:300]}" + (f" wrong-object actions {row.wrong}" if row.wrong else "")
+                 + (f" collateral {row.collateral}" if row.collateral else "")), flush=True)
+    n = len(rows)
+    n_ok = sum(r.ok for r in rows)
+    wrong = sum(r.wrong for r in rows)
+    collateral = sum(len(r.collateral) for r in rows)
+    scenes = sorted({r.scene for r in rows})
+    print(f"\n{'scene':12} {'sentences':>9} {'goal met':>9} {'wrong obj':>9} {'collateral':>10}")
+    for s in scenes:
+        rs = [r for r in rows if r.scene == s]
+        print(f"{s:12} {len(rs):>9} {sum(r.ok for r in rs):>9} {sum(r.wrong for r in rs):>9} {sum(len(r.collateral) for r in rs):>10}")
+    print(f"\n{args.planner} planner in the simulation: {n_ok}/{n} sentences reached their goal ({100.0 * n_ok / max(n, 1):.1f}%) "
+          f"over {len(scenes)} scenes; wrong-object actions {wrong}; collateral moves > {COLLATERAL * 100:.0f} cm {collateral}; "
+          f"{time.perf_counter() - t_start:.0f} s wall in total")
     return 0
 
 
@@ -175,11 +466,13 @@ def bench_language(args: argparse.Namespace) -> int:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--claude", action="store_true", help="also plan with Claude (language benchmark)")
-    ap.add_argument("--sim", action="store_true", help="run the sentence suite in the simulation on YCB scenes")
+    ap.add_argument("--sim", action="store_true", help="run the sentence suite in the simulation")
     ap.add_argument("--scenes", default=str(Path(os.environ.get("TMPDIR", "/tmp")) / "realsim_bench_commands"),
-                    help="where the YCB scenes are made and cached")
+                    help="where the scenes are made and cached")
     ap.add_argument("--planner", default="rules", choices=["rules", "claude", "auto"], help="planner for --sim")
     ap.add_argument("--only", help="--sim: only sentences containing this text")
+    ap.add_argument("--scene", help="--sim: only this scene")
+    ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
     return bench_sim(args) if args.sim else bench_language(args)

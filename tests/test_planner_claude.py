@@ -45,7 +45,7 @@ def test_good_reply(server: MessagesServer) -> None:
     user = req["messages"][0]["content"]
     assert "obj1_mug: red mug (also: cup, coffee mug)" in user and "at (0.500, 0.100, 0.050) m" in user
     assert "[leftmost" not in user.split("obj1_mug")[1].split("\n")[0]  # only one mug: no order words
-    assert "obj3_soup_can: red tomato soup can" in user and "0.40 m forward" in user
+    assert "obj3_soup_can: red tomato soup can" in user and "forward +0.40 m" in user
     assert user.endswith("Command: put the mug in the bowl")
     assert any("prompt planner-system-" in n for n in plan.notes)
 

@@ -137,3 +137,74 @@ def test_unknown_object_lists_the_scene() -> None:
     with pytest.raises(InputError) as info:
         RulePlanner().plan("pick up the spoon", OBJECTS)
     assert "obj1_mug (red mug)" in str(info.value) and "obj2_bowl (white bowl)" in str(info.value)
+
+
+# A cluttered scene with look-alikes: two cans, three cubes of different colours and sizes.
+CLUTTER = [
+    ObjectInfo("obj1_soda_can", "soda can", ("can",), (0.40, 0.20, 0.06), (0.066, 0.066, 0.12), "red"),
+    ObjectInfo("obj2_soda_can", "soda can", ("can",), (0.40, -0.10, 0.06), (0.066, 0.066, 0.12), "red"),
+    ObjectInfo("obj3_cube", "cube", ("block",), (0.55, 0.25, 0.03), (0.06, 0.06, 0.06), "red", ("graspable", "support")),
+    ObjectInfo("obj4_cube", "cube", ("block",), (0.55, 0.05, 0.03), (0.07, 0.07, 0.07), "blue", ("graspable", "support")),
+    ObjectInfo("obj5_cube", "cube", ("block",), (0.55, -0.15, 0.025), (0.05, 0.05, 0.05), "green", ("graspable", "support")),
+    ObjectInfo("obj6_bowl", "bowl", (), (0.30, 0.0, 0.03), (0.16, 0.16, 0.06), "white", ("graspable", "container")),
+    ObjectInfo("obj7_banana", "banana", (), (0.65, 0.0, 0.02), (0.2, 0.05, 0.04), "yellow"),
+    ObjectInfo("obj8_strawberry", "strawberry", (), (0.25, 0.3, 0.02), (0.04, 0.04, 0.04), "red"),
+]
+
+PEOPLE: list[tuple[str, list[str]]] = [
+    ("pick up the left can and set it down inside the bowl", ["grasp('obj1_soda_can')", "place_in('obj1_soda_can', 'obj6_bowl')"]),
+    ("could you please drop the green cube into the bowl for me", ["place_in('obj5_cube', 'obj6_bowl')"]),
+    ("would you mind picking up the biggest cube", ["grasp('obj4_cube')"]),
+    ("put the second cube from the left on the green one", ["place_on('obj4_cube', 'obj5_cube')"]),
+    ("put all the fruit in the bowl", ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("take both cans and put them next to the banana",
+     ["place_beside('obj1_soda_can', 'obj7_banana', 'next')", "place_beside('obj2_soda_can', 'obj7_banana', 'next')"]),
+    ("grab the red cube, then put it back", ["grasp('obj3_cube')", "place('obj3_cube', [0.55, 0.25, 0.03])"]),
+    ("put the smallest cube between the red cube and the blue cube", ["place_between('obj5_cube', 'obj3_cube', 'obj4_cube')"]),
+    ("put the can on the right behind the bowl", ["place_beside('obj2_soda_can', 'obj6_bowl', 'behind')"]),
+    ("push the rightmost cube a bit toward the robot", ["push('obj5_cube', 'back', 0.05)"]),
+    ("put the left can in the bowl and the banana on the table", ["place_in('obj1_soda_can', 'obj6_bowl')", "place_down('obj7_banana')"]),
+    ("push the left can 5 cm forward and then push the other one back 5 cm",
+     ["push('obj1_soda_can', 'forward', 0.05)", "push('obj2_soda_can', 'back', 0.05)"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), PEOPLE, ids=[p[0][:40] for p in PEOPLE])
+def test_language_people_use(sentence: str, lines: list[str]) -> None:
+    plan = RulePlanner().plan(sentence, CLUTTER)
+    assert [c.text() for c in plan.calls] == lines
+    check(plan.program)
+
+
+@pytest.mark.parametrize(("sentence", "candidates"), [
+    ("put the can in the bowl", ["obj1_soda_can", "obj2_soda_can"]),
+    ("grab the red thing", ["obj1_soda_can", "obj2_soda_can", "obj3_cube", "obj8_strawberry"]),
+    ("stack the cube on the bowl", ["obj3_cube", "obj4_cube", "obj5_cube"]),
+    ("pick up the cube in the middle and the can", ["obj1_soda_can", "obj2_soda_can"]),
+])
+def test_ambiguous_references_name_the_candidates(sentence: str, candidates: list[str]) -> None:
+    with pytest.raises(InputError) as info:
+        RulePlanner().plan(sentence, CLUTTER)
+    assert "ambiguous" in str(info.value)
+    for name in candidates:
+        assert name in str(info.value)
+
+
+def test_ordinals_count_the_target_too() -> None:
+    """'the second cube from the left' is the blue one even when it is also the target."""
+    with pytest.raises(InputError, match="itself"):
+        RulePlanner().plan("put the second cube from the left on the blue one", CLUTTER)
+
+
+def test_unknown_object_is_refused_with_the_scene() -> None:
+    with pytest.raises(InputError, match="no object matches 'the hammer'.*obj6_bowl"):
+        RulePlanner().plan("put the hammer in the bowl", CLUTTER)
+
+
+def test_left_and_right_follow_the_robot_heading() -> None:
+    """Facing +y (yaw pi/2) the robot's left is world -x: the 'left' can is the one at smaller x."""
+    cans = [ObjectInfo("obj1_can", "can", (), (0.2, 0.4, 0.06), (0.066, 0.066, 0.12)),
+            ObjectInfo("obj2_can", "can", (), (-0.2, 0.4, 0.06), (0.066, 0.066, 0.12))]
+    plan = RulePlanner().plan("grab the left can", cans, robot_yaw=1.5708)
+    assert [c.text() for c in plan.calls] == ["grasp('obj2_can')"]
+    assert [c.text() for c in RulePlanner().plan("grab the left can", cans).calls] == ["grasp('obj1_can')"]

@@ -32,9 +32,9 @@ SINGULAR_PRONOUNS = {"it", "this", "that", "this one", "that one", "the same one
 PLURAL_PRONOUNS = {"them", "they", "those", "these", "both", "both of them", "all of them", "them all", "all of those",
                    "all of these", "those ones", "these ones", "the two", "both objects"}
 LOCATOR_RELATIONS = (
-    (r"(?:that is |thats |which is |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
-    (r"(?:that is |thats |which is |sitting |lying )?(?:on top of|on)", "on"),
-    (r"(?:that is |thats |which is |sitting |lying )?(?:inside of|inside|in)", "in"),
+    (r"(?:that is |thats |which is |that |which |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
+    (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:on top of|on)", "on"),
+    (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in)", "in"),
     (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
     (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
     (r"(?:that is |thats |which is )?behind", "behind"),
@@ -74,6 +74,7 @@ class Resolver:
 
     # --- vocabulary of one object -----------------------------------------------------------
     def _name_sets(self, o: ObjectInfo) -> list[list[str]]:
+        """Word lists naming ``o``: its label and body name first (primary), then other names."""
         names = [name_words(o.label), name_words(o.name), *(name_words(a) for a in o.aliases)]
         rec = record(o.label)
         if rec is not None:
@@ -85,6 +86,9 @@ class Resolver:
                 out.append(n)
         return out
 
+    def _primary(self, o: ObjectInfo) -> list[list[str]]:
+        return [[w for w in name_words(t) if w not in COLOR_WORDS] for t in (o.label, o.name)]
+
     def color_of(self, o: ObjectInfo) -> str | None:
         if o.color:
             return COLOR_WORDS.get(o.color.lower(), o.color.lower())
@@ -94,7 +98,7 @@ class Resolver:
         return None
 
     def kinds_of(self, o: ObjectInfo) -> set[str]:
-        words = {w for n in self._words[o.name] for w in n}
+        words = {w for n in self._primary(o) for w in n}
         rec = record(o.label)
         out = {k for k, members in KINDS.items() if words & set(members)}
         if rec is not None and rec[1] == "fruit":
@@ -121,11 +125,20 @@ class Resolver:
         nouns = [w for w in nouns if w not in GENERIC] or nouns
         phrase = " ".join(nouns)
         best = 0.0
+        primary = self._primary(o)
         for name in self._words[o.name]:
+            if name not in primary:  # another word for it (shared by every can): below its own label
+                if nouns == name:
+                    best = max(best, 2.05)
+                elif all(w in name for w in nouns):
+                    best = max(best, 1.95 + 0.01 * len(nouns))
+                elif name[-1] == nouns[-1]:
+                    best = max(best, 1.75)
+                continue
             if nouns == name:
                 best = max(best, 3.0)
             elif all(w in name for w in nouns):
-                best = max(best, 2.0 + 0.1 * len(nouns))
+                best = max(best, 2.2 + 0.1 * len(nouns))
             elif name[-1] == nouns[-1] or (len(nouns) == 1 and nouns[0] in name):
                 best = max(best, 1.8 if name[-1] == nouns[-1] else 1.7)
             elif any(w in name for w in nouns) and nouns[-1] in {w for n in self._words[o.name] for w in n}:
@@ -145,13 +158,16 @@ class Resolver:
 
     # --- the phrase -------------------------------------------------------------------------
     def resolve(self, phrase: str, ctx: Context, *, want: str | None = None, exclude: Sequence[str] = (),
-                allow_plural: bool = True) -> list[ObjectInfo]:
-        """The objects ``phrase`` names (one, unless the phrase is plural or a quantity)."""
+                allow_plural: bool = True, loose: bool = False) -> list[ObjectInfo]:
+        """The objects ``phrase`` names (one, unless the phrase is plural or a quantity); with
+        ``loose`` an ambiguous phrase gives all its candidates instead of an error."""
         text = norm(phrase)
         text = re.sub(r"^(?:(?:the|a|an|my|your|our)\s+)+", "", text).strip()
         text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
         if not text:
             raise InputError(f"which object? nothing named in {phrase.strip()!r}; {self.listing()}")
+        if re.fullmatch(r"(?:far |very )?(?:left|right|front|back|middle|center|centre|end|side|top|bottom)(?: side| end| hand side)?", text):
+            raise InputError(f"{phrase.strip()!r} is a place, not an object; {self.listing()}")
         if text in SINGULAR_PRONOUNS or text in PLURAL_PRONOUNS:
             if not ctx.last:
                 raise InputError(f"{phrase.strip()!r} does not refer to anything yet; name the object; {self.listing()}")
@@ -177,10 +193,10 @@ class Resolver:
         if m:
             excluded = self.resolve(m.group(2), Context(), allow_plural=True)
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)])
-        return self._single_phrase(text, phrase, ctx, want, exclude, allow_plural)
+        return self._single_phrase(text, phrase, ctx, want, exclude, allow_plural, loose)
 
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
-                       allow_plural: bool) -> list[ObjectInfo]:
+                       allow_plural: bool, loose: bool = False) -> list[ObjectInfo]:
         cands = [o for o in self.objects if o.name not in exclude]
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
@@ -193,12 +209,12 @@ class Resolver:
             for pattern, rel in LOCATOR_RELATIONS:
                 m = re.fullmatch(rf"(.+?)\s+{pattern}\s+(?!the (?:left|right|far left|far right|front|back|middle|center|centre|end)(?: side| end)?$)(.+)", text)
                 if m and not re.fullmatch(r"(?:the )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?|me|you|the robot", m.group(2)):
-                    try:
-                        ref = self.resolve(m.group(2), Context(), allow_plural=False)[0]
+                    try:  # every object the reference may mean: the relation itself may tell them apart
+                        refs = self.resolve(m.group(2), Context(), allow_plural=True, loose=True)
                     except InputError:
                         continue
                     text = m.group(1)
-                    cands = [o for o in cands if o.name != ref.name and _relation_holds(rel, o, ref, self)]
+                    cands = [o for o in cands if any(o.name != r.name and _relation_holds(rel, o, r, self) for r in refs)]
                     break
         # positional locators: "on the left", "in the back", "closest to you", "in the middle"
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
@@ -283,7 +299,7 @@ class Resolver:
                 raise InputError(f"{phrase.strip()!r}: the scene has {len(found)}, not {quantity}: "
                                  f"{', '.join(describe(o) for o in found)}")
             return found
-        if len(found) > 1:
+        if len(found) > 1 and not loose:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
                              "say which one (colour, size, left/right, or the body name)")
         return found
@@ -345,7 +361,7 @@ def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> l
         if words:
             line += f" [{'; '.join(words)}]"
         line += (f" at ({x:.3f}, {y:.3f}, {z:.3f}) m, size {sx:.3f} x {sy:.3f} x {sz:.3f} m; "
-                 f"{f:.2f} m forward, {l:+.2f} m left in the robot's frame")
+                 f"robot frame (turned with the robot, world origin): forward {f:+.2f} m, left {l:+.2f} m")
         if o.affordances:
             line += f" [{', '.join(o.affordances)}]"
         lines.append(line)

@@ -40,7 +40,7 @@ FILLERS = (
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
-    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"robot",
+    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets",
 )
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
@@ -76,6 +76,7 @@ class _Step:
     goals: list[Goal]
     objects: tuple[str, ...] = ()  # objects whose state the step changes
     moves_robot: bool = True
+    pending: str = ""  # a plural "take" that a later "put them ..." carries out, else this error
 
 
 @dataclass
@@ -142,6 +143,9 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
         raise InputError(f"the command is empty; {HELP}")
     p = _Parser(objects, robot_yaw)
     steps = [_clause(c, p) for c in clauses]
+    for i, step in enumerate(steps):
+        if step.pending and not any(s.objects for s in steps[i + 1 :]):
+            raise InputError(step.pending)
     return [c for s in steps for c in s.calls], _final_goals(steps)
 
 
@@ -205,8 +209,11 @@ def _clause(clause: str, p: _Parser) -> _Step:
             return _take(rest, p)
         raise InputError(f"where to? {clause!r} names no place I can read (in, on, next to, left of, behind, between, "
                          f"on the table, back, down); {HELP}")
-    if verb in TAKE:
-        step = _put(verb, rest, p, clause) if _find_relation(rest) else None
+    if verb in TAKE:  # "take the can to the bowl" moves it; "take the can on the left" only names it
+        try:
+            step = _put(verb, rest, p, clause) if _find_relation(rest) else None
+        except InputError:
+            step = None
         return step if step is not None else _take(rest, p)
     raise InputError(f"cannot understand {clause!r}; {HELP}")
 
@@ -228,8 +235,10 @@ def _objs(phrase: str, p: _Parser, want: str | None = None, exclude: Sequence[st
 def _take(rest: str, p: _Parser) -> _Step:
     rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it)$", "", rest)
     objs = _objs(rest, p)
-    if len(objs) > 1:
-        raise InputError(f"the hand holds one object at a time: {', '.join(o.name for o in objs)}; say what to do with each")
+    if len(objs) > 1:  # "take the banana and the strawberry and put them in the bowl": the put carries them
+        p.ctx.set(objs)
+        return _Step([], [], (), moves_robot=False,
+                     pending=f"the hand holds one object at a time: {', '.join(o.name for o in objs)}; say what to do with each")
     o = objs[0]
     p.ctx.set(objs)
     return _Step([Call("grasp", (o.name,))], [Lifted(o.name)], (o.name,))
@@ -288,7 +297,9 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
         refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
         if len(refs) != 2:
             raise InputError(f"between needs two objects; {target_phrase!r} names {len(refs)}")
-        objs = _objs(obj_phrase, p, exclude=[r.name for r in refs])
+        objs = [o for o in _objs(obj_phrase, p) if o.name not in {r.name for r in refs}]
+        if not objs:
+            raise InputError(f"cannot put an object between itself and another; {p.resolver.listing()}")
         p.ctx.set(objs)
         a, b = refs
         return _Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
@@ -296,9 +307,11 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
     want = {"in": "container", "on": "support"}.get(kind)
     targets = p.resolver.resolve(target_phrase, Context(p.ctx.last), want=want, allow_plural=False)
     target = targets[0]
-    objs = _objs(obj_phrase, p, exclude=[target.name])
-    if not objs:
-        raise InputError(f"nothing to put {kind} {target.name}")
+    objs = _objs(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
+    if len(objs) > 1:
+        objs = [o for o in objs if o.name != target.name]
+    elif objs[0].name == target.name:
+        raise InputError(f"cannot put {target.name} {kind} itself; {p.resolver.listing()}")
     p.ctx.set(objs)
     if kind == "to":
         kind = "in" if "container" in target.affordances else "on" if "support" in target.affordances else "next"
@@ -376,12 +389,20 @@ def _distance(text: str) -> float | None:
 
 
 def _push(rest: str, p: _Parser, clause: str) -> _Step:
-    cut = _TAIL.search(rest)
-    obj_phrase = rest[: cut.start()].strip() if cut else rest
-    tail = rest[len(obj_phrase):] if cut else ""
-    if not obj_phrase:
-        raise InputError(f"push what? {clause!r}; {HELP}")
-    objs = _objs(obj_phrase, p)
+    objs, tail, first_error = None, "", None
+    for cut in [*_TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
+        obj_phrase = rest[: cut.start()].strip() if cut else rest
+        if not obj_phrase:
+            continue
+        try:
+            objs = _objs(obj_phrase, p)
+        except InputError as exc:
+            first_error = first_error or exc
+            continue
+        tail = rest[cut.start():] if cut else ""
+        break
+    if objs is None:
+        raise first_error or InputError(f"push what? {clause!r}; {HELP}")
     direction = None
     for phrase in sorted(DIRECTION_WORDS, key=len, reverse=True):
         if re.search(rf"(?<![a-z]){re.escape(phrase)}(?![a-z])", tail):

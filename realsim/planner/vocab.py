@@ -120,3 +120,12 @@ def record(label: str) -> tuple[str, str, str] | None:
         return None
     c = match.category
     return c.name, str(getattr(c, "material", "") or ""), str(getattr(c, "form", "") or "")
+
+
+def with_colors(objects: Sequence, meta: dict) -> list:
+    """``objects`` (:class:`ObjectInfo`) with colour words from scene.json's ``color`` (RGB) where
+    they have none."""
+    from dataclasses import replace
+
+    rgb = {o.get("body") or o.get("name"): o.get("color") for o in meta.get("objects", [])}
+    return [o if o.color else replace(o, color=color_name(rgb.get(o.name))) for o in objects]

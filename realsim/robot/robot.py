@@ -15,6 +15,7 @@ from typing import Any
 
 import mujoco
 import numpy as np
+from scipy.spatial import cKDTree
 
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
@@ -60,6 +61,23 @@ class ActionResult:
 
 _WORDS = {"place": "at the target", "place_on": "on the target", "place_in": "inside the target", "place_beside": "beside the target",
           "place_between": "between the targets", "place_down": "on the table"}
+
+
+_SIDE_WORDS = {"left": "left of", "right": "right of", "front": "in front of", "behind": "behind"}
+
+
+@dataclass(frozen=True)
+class Keepout:
+    """What a release must not touch: xy points of other objects, kept ``margin`` away; ``soft``:
+    when no pose clears them, try the poses anyway (a crowded bowl)."""
+
+    xy: np.ndarray
+    margin: float = 0.01
+    soft: bool = False
+
+
+def _box_centre(pts: np.ndarray) -> np.ndarray:
+    return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
 
 
 def _on_table(touching: set[str]) -> relations.Relation:
@@ -485,89 +503,89 @@ class Robot:
             target = np.asarray(pos, float)
             r = footprint_radius(self.object_points(obj))
             near = spots(target[:2], min(tolerance, r), self.base_pos[:2], self.release.ring)
-            return self._place(obj, near, target[2], "place", lambda: self._near(obj, target[:2], tolerance))
+            return self._place(obj, near, target[2], "place", lambda: self._near(obj, target[:2], tolerance),
+                               Keepout(self._others(obj), soft=True))
         return self._run("place", body, max_sim_time)
 
     def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
-        """Put the held ``obj`` on top of body ``target`` (spots within its top face)."""
+        """Put the held ``obj`` on top of body ``target`` (spots within its top face, clear of what
+        already lies there)."""
         def body() -> ActionResult:
             tp = self.object_points(target)
             centre, r_in = top_area(tp)
-            near = self._free(spots(centre, r_in, self.base_pos[:2], self.release.ring), obj, {target}, float(tp[:, 2].max()) - 0.01)
+            near = spots(centre, r_in, self.base_pos[:2], self.release.ring)
             return self._place(obj, near, np.nan, "place_on", lambda: relations.on(
-                self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target))
+                self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target),
+                Keepout(self._others(obj, {target}, above=float(tp[:, 2].max()) - 0.01), soft=True))
         return self._run("place_on", body, max_sim_time)
 
     def place_in(self, obj: str, container: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` into ``container``: a body (bin, bowl, mug: spots within its
-        opening) or a marked zone (a geom or site)."""
+        opening, clear of what already lies in it) or a marked zone (a geom or site)."""
         def body() -> ActionResult:
             r = footprint_radius(self.object_points(obj))
             zone = self._zone(container)
             if zone is not None:
-                c, half, rot2 = zone
+                c, half, _ = zone
                 near = spots(c, float(max(0.0, half.min() - r)), self.base_pos[:2], self.release.ring)
-                return self._place(obj, near, np.nan, "place_in", lambda: self._in_zone(obj, zone))
+                return self._place(obj, near, np.nan, "place_in", lambda: self._in_zone(obj, zone), Keepout(self._others(obj), soft=True))
             cp = self.object_points(container)
             centre, r_in = cavity_centre(cp)
-            near = self._free(spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring), obj, {container},
-                              float(cp[:, 2].min()) + 0.005, radius=min(r, r_in) * 0.8)
+            near = spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring)
             return self._place(obj, near, np.nan, "place_in", lambda: relations.inside(
-                self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container))
+                self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container),
+                Keepout(self._others(obj, {container}, above=float(cp[:, 2].min()) + 0.005), soft=True))
         return self._run("place_in", body, max_sim_time)
 
     def place_beside(self, obj: str, ref: str, side: str = "next", gap: float = 0.03, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on the table beside ``ref``: ``side`` is "next" (any free side) or
-        "left", "right", "front", "behind" as seen from the robot; spots clear of other objects."""
+        "left", "right", "front", "behind" as seen from the robot; the object's footprint at
+        release must clear every other object."""
         if side != "next" and side not in SIDES:
             return ActionResult("place_beside", False, f"unknown side {side!r}: use next, left, right, front or behind")
 
         def body() -> ActionResult:
             o, r = self.object_points(obj), self.object_points(ref)
-            rc = (r[:, :2].min(axis=0) + r[:, :2].max(axis=0)) / 2
-            rad = footprint_radius(o)
+            rc, oc = _box_centre(r), _box_centre(o)
             if side == "next":
                 dirs = [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]
                 lats: tuple[float, ...] = (0.0,)
             else:
                 dirs = [np.array(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw))]
                 lats = (0.0, 0.03, -0.03, 0.06, -0.06)
-            cands = []
+            cands: list[tuple[float, float, np.ndarray]] = []
             for d in dirs:
-                ext, perp = float(((r[:, :2] - rc) @ d).max()), np.array([-d[1], d[0]])
-                for extra in (0.0, 0.03, 0.06):
-                    cands += [rc + d * (ext + rad + gap + extra) + perp * lat for lat in lats]
-            if side == "next":
-                cands.sort(key=lambda xy: float(np.linalg.norm(xy - self.base_pos[:2])))
+                perp = np.array([-d[1], d[0]])
+                reach = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max()) + gap
+                for extra in (0.0, 0.02, 0.05):
+                    for lat in lats:
+                        xy = rc + d * (reach + extra) + perp * lat
+                        cands.append((extra + abs(lat), float(np.linalg.norm(xy - self.base_pos[:2])) if side == "next" else 0.0, xy))
+            cands.sort(key=lambda t: (t[0], t[1]))
             level = float(r[:, 2].min())
-            near = [xy for xy in self._free(cands, obj, set(), -np.inf, radius=rad + 0.01)
-                    if abs(self.geometry.surface_below(xy, level + 0.3, exclude=obj) - level) < 0.02]
+            near = [xy for _, _, xy in cands if abs(self.geometry.surface_below(xy, level + 0.3, exclude=obj) - level) < 0.02]
             if not near:
-                return ActionResult("place_beside", False, f"no free spot {'next to' if side == 'next' else side + ' of'} {ref} "
-                                    f"for {obj} ({rad * 2 * 1000:.0f} mm across)")
+                return ActionResult("place_beside", False, f"no spot {'next to' if side == 'next' else _SIDE_WORDS[side]} {ref} "
+                                    "on its surface (table edge)")
             if side == "next":
                 judge = lambda: relations.next_to(self.object_points(obj), self.object_points(ref), self.geometry.touching(obj))  # noqa: E731
             else:
                 d = direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw)
                 judge = lambda: relations.side_of(self.object_points(obj), self.object_points(ref), d, self.geometry.touching(obj))  # noqa: E731
-            return self._place(obj, near, np.nan, "place_beside", judge)
+            return self._place(obj, near, np.nan, "place_beside", judge, Keepout(self._others(obj)))
         return self._run("place_beside", body, max_sim_time)
 
     def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on the table between objects ``a`` and ``b``."""
         def body() -> ActionResult:
-            pa, pb, o = self.object_points(a), self.object_points(b), self.object_points(obj)
-            ca, cb = (pa[:, :2].min(axis=0) + pa[:, :2].max(axis=0)) / 2, (pb[:, :2].min(axis=0) + pb[:, :2].max(axis=0)) / 2
+            pa, pb = self.object_points(a), self.object_points(b)
+            ca, cb = _box_centre(pa), _box_centre(pb)
             u = (cb - ca) / max(float(np.linalg.norm(cb - ca)), 1e-9)
             perp = np.array([-u[1], u[0]])
             t = (float(((pa[:, :2] - ca) @ u).max()) + float(((pb[:, :2] - ca) @ u).min())) / 2
-            rad = footprint_radius(o)
             cands = [ca + u * t + perp * lat for lat in (0.0, 0.02, -0.02, 0.04, -0.04)]
-            near = self._free(cands, obj, set(), -np.inf, radius=rad * 0.8)
-            if not near:
-                return ActionResult("place_between", False, f"no room between {a} and {b} for {obj} ({rad * 2 * 1000:.0f} mm across)")
-            return self._place(obj, near, np.nan, "place_between", lambda: relations.between(
-                self.object_points(obj), pa, pb, self.geometry.touching(obj)))
+            return self._place(obj, cands, np.nan, "place_between", lambda: relations.between(
+                self.object_points(obj), pa, pb, self.geometry.touching(obj)), Keepout(self._others(obj), margin=0.005))
         return self._run("place_between", body, max_sim_time)
 
     def place_down(self, obj: str, max_sim_time: float | None = None) -> ActionResult:
@@ -575,23 +593,22 @@ class Robot:
         the hand."""
         def body() -> ActionResult:
             o = self.object_points(obj)
-            rad = footprint_radius(o)
-            start = self._centre_xy(obj)
+            start = _box_centre(o)
             cands = [start + rr * np.array([np.cos(a), np.sin(a)]) for rr in np.arange(0.0, 0.31, 0.03)
-                     for a in np.linspace(0, 2 * np.pi, max(1, int(rr / 0.03) * 6), endpoint=False)]
-            cands.sort(key=lambda xy: float(np.linalg.norm(xy - start)))
-            near = [xy for xy in self._free(cands, obj, set(), -np.inf, radius=rad + 0.015)
-                    if self.geometry.surface_below(xy, float(o[:, 2].max()), exclude=obj) <= self.geometry.surface_below(
-                        xy, float(o[:, 2].max()), exclude=obj, static_only=True) + 0.002][:8]
+                     for a in np.linspace(0, 2 * np.pi, max(1, int(round(rr / 0.03)) * 6), endpoint=False)]
+            top = float(o[:, 2].max())
+            near = [xy for xy in cands if self.geometry.surface_below(xy, top, exclude=obj)
+                    <= self.geometry.surface_below(xy, top, exclude=obj, static_only=True) + 0.002]
             if not near:
-                return ActionResult("place_down", False, f"no free spot on the table within 30 cm for {obj}")
-            return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)))
+                return ActionResult("place_down", False, f"no free table surface within 30 cm of {obj}")
+            return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)), Keepout(self._others(obj)))
         return self._run("place_down", body, max_sim_time)
 
-    def _free(self, cands: list[np.ndarray], obj: str, skip: set[str], above: float, radius: float | None = None) -> list[np.ndarray]:
-        """The candidate spots where ``obj`` (footprint ``radius``) would touch no other object."""
-        rad = footprint_radius(self.object_points(obj)) if radius is None else radius
-        return [xy for xy in cands if self.geometry.clear(xy, rad, skip | {obj}, above)]
+    def _others(self, obj: str, skip: frozenset[str] | set[str] = frozenset(), above: float = -np.inf) -> np.ndarray:
+        """xy of every other object's surface points higher than ``above`` (what a release must clear)."""
+        pts = [self.object_points(n) for n in self.object_names() if n != obj and n not in skip]
+        pts = [p[p[:, 2] > above, :2] for p in pts]
+        return np.vstack(pts) if pts else np.zeros((0, 2))
 
     def _zone(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """(centre xy, half extents, xy rotation) of a zone geom or site named ``name``, else None."""
@@ -622,7 +639,7 @@ class Robot:
         return relations.Relation(err <= tolerance, f"centre {err * 1000:.0f} mm from the target (<= {tolerance * 1000:.0f})")
 
     def _place(self, obj: str, candidates: list[np.ndarray], surface_hint: float, name: str,
-               judge: Callable[[], relations.Relation]) -> ActionResult:
+               judge: Callable[[], relations.Relation], keepout: Keepout | None = None) -> ActionResult:
         """Carry the held ``obj`` over the first reachable release pose (spot, hand yaw, height),
         lower it there, release, retreat; ``judge`` says whether the end state is what was asked."""
         if self.held != obj or not self.holding(obj):
@@ -632,6 +649,20 @@ class Robot:
         offset = self._centre_xy(obj) - tcp[:2]  # object centre relative to the tcp, turns with the hand
         below = tcp[2] - float(pts[:, 2].min())
         poses = release_poses(candidates, self.release)
+        if keepout is not None and len(keepout.xy):
+            foot = pts[:, :2] - tcp[:2]
+            tree = cKDTree(keepout.xy)
+
+            def fits(pose: tuple[np.ndarray, float, float]) -> bool:
+                xy, yaw, _ = pose
+                c, s_ = np.cos(yaw), np.sin(yaw)
+                turned = foot @ np.array([[c, s_], [-s_, c]])
+                at = turned - (turned.min(axis=0) + turned.max(axis=0)) / 2 + xy
+                return bool(tree.query(at[:: max(1, len(at) // 400)])[0].min() >= keepout.margin)
+            clear = [pose for pose in poses if fits(pose)]
+            if not clear and not keepout.soft:
+                raise _Fail(f"no release pose leaves {keepout.margin * 1000:.0f} mm to the other objects ({len(poses)} tried)")
+            poses = clear or poses
         last: _Fail | None = None
         for k, (xy, yaw, drop) in enumerate(poses):
             turn = rotate_about(np.array([0.0, 0.0, 1.0]), yaw)

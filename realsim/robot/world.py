@@ -111,19 +111,6 @@ class SceneGeometry:
                 break
         return float(best) if np.isfinite(best) else 0.0
 
-    def clear(self, xy: np.ndarray, radius: float, skip: Iterable[str] = (), above: float = -np.inf) -> bool:
-        """Whether no object but ``skip`` has surface within ``radius`` of ``xy`` (horizontally),
-        counting only points higher than ``above``."""
-        skip = set(skip)
-        for n in self.object_names():
-            if n in skip:
-                continue
-            pts = self.points(n)
-            pts = pts[pts[:, 2] > above]
-            if len(pts) and float(np.min(np.linalg.norm(pts[:, :2] - np.asarray(xy)[:2], axis=1))) < radius:
-                return False
-        return True
-
     def tallest(self, skip: str | None = None, default: float = 0.0) -> float:
         """Highest point of every object but ``skip``."""
         tops = [self.points(n)[:, 2].max() for n in self.object_names() if n != skip]
