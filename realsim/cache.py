@@ -3,6 +3,13 @@
 A key is the hash of the input bytes, the stage parameters and the code version, so a changed
 input, parameter or release never reads a stale entry. Entries live under ``$REALSIM_CACHE``
 (default ``~/.cache/realsim``), one pickle per key, written atomically.
+
+Two notions of code version: :data:`__version__` (the release) keys the expensive asset work,
+so editing unrelated code does not throw hours of CoACD away; :func:`code_digest` (the bytes of
+every source and data file plus the versions of the libraries that shape the output) keys the
+cheap-to-redo but output-defining stages (robot placement, settling, preview, whole
+conversions), so a rerun after any code change recomputes them. :class:`BlobStore` keeps file
+contents by their SHA-256, so identical files (the Panda's meshes) are stored once.
 """
 
 from __future__ import annotations
@@ -13,6 +20,7 @@ import os
 import pickle
 import tempfile
 from dataclasses import asdict, is_dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Callable, TypeVar
 
@@ -50,6 +58,78 @@ def cache_key(stage: str, *, data: bytes | None = None, files: list[Path] = (), 
         h.update(hashlib.sha256(Path(f).read_bytes()).digest())
     h.update(json.dumps(_canonical(params), sort_keys=True).encode())
     return h.hexdigest()
+
+
+# Libraries whose versions change what a conversion writes.
+OUTPUT_LIBRARIES = ("mujoco", "numpy", "scipy", "trimesh", "open3d", "coacd", "manifold3d", "mujoco-menagerie", "mink", "Pillow")
+
+
+@lru_cache(maxsize=1)
+def code_digest() -> str:
+    """SHA-256 of realsim's source and data files and of the output-shaping library versions."""
+    from importlib import metadata
+
+    from realsim.resources import DATA_FOLDERS, data_dir
+
+    h = hashlib.sha256(f"realsim {__version__}\0".encode())
+    package = Path(__file__).resolve().parent
+    roots = [(package, "*.py")] + [(data_dir(name), "*") for name in DATA_FOLDERS]
+    for root, pattern in roots:
+        for path in sorted(p for p in root.rglob(pattern) if p.is_file() and "__pycache__" not in p.parts):
+            h.update(f"{path.relative_to(root).as_posix()}\0".encode())
+            h.update(hashlib.sha256(path.read_bytes()).digest())
+    for lib in OUTPUT_LIBRARIES:
+        try:
+            version = metadata.version(lib)
+        except metadata.PackageNotFoundError:
+            version = "-"
+        h.update(f"{lib}={version}\0".encode())
+    return h.hexdigest()
+
+
+def output_key(stage: str, *, data: bytes | None = None, params: Any = None) -> str:
+    """A key for an output-defining stage: :func:`cache_key` plus :func:`code_digest`."""
+    return cache_key(stage, data=data, params={"code": code_digest(), "params": params})
+
+
+def spec_digest(spec: Any, assets: dict[str, bytes]) -> bytes:
+    """SHA-256 of an MjSpec's XML and its in-memory asset files (call it on a freshly compiled
+    spec: ``to_xml`` of a modified spec compiles it again)."""
+    h = hashlib.sha256(spec.to_xml().encode())
+    for name in sorted(assets):
+        h.update(f"{name}\0".encode())
+        h.update(hashlib.sha256(assets[name]).digest())
+    return h.digest()
+
+
+class BlobStore:
+    """File contents by SHA-256 under ``<cache>/blobs``: each distinct content stored once."""
+
+    def __init__(self, root: Path | None = None) -> None:
+        self.root = (Path(root) if root is not None else cache_root()) / "blobs"
+
+    def _path(self, digest: str) -> Path:
+        return self.root / digest[:2] / digest
+
+    def put(self, data: bytes) -> str:
+        """Store ``data`` (atomically, once) and return its SHA-256."""
+        digest = hashlib.sha256(data).hexdigest()
+        path = self._path(digest)
+        if not path.is_file():
+            path.parent.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+            with os.fdopen(fd, "wb") as fh:
+                fh.write(data)
+            os.replace(tmp, path)
+        return digest
+
+    def get(self, digest: str) -> bytes | None:
+        """The content with this SHA-256, or None when missing or corrupt."""
+        try:
+            data = self._path(digest).read_bytes()
+        except OSError:
+            return None
+        return data if hashlib.sha256(data).hexdigest() == digest else None
 
 
 class DiskCache:

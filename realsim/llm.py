@@ -13,11 +13,12 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
-
-import anthropic
+from typing import TYPE_CHECKING, Any
 
 from realsim.errors import RealsimError
+
+if TYPE_CHECKING:  # the SDK is imported when Claude is called: it takes ~1.5 s, and most runs are offline
+    import anthropic
 
 DEFAULT_MODEL = "claude-sonnet-4-6"  # current Sonnet; the SDK flags claude-sonnet-4-5 as deprecated
 DEFAULT_TIMEOUT_S = 60.0
@@ -129,6 +130,8 @@ def _normalize(messages: Messages) -> list[dict[str, Any]]:
 
 
 def _client(settings: LLMSettings) -> anthropic.Anthropic:
+    import anthropic
+
     key = settings.key()
     if key is None:
         raise LLMConfigError("no ANTHROPIC_API_KEY set; set it to use Claude, or use the offline planner/tables")
@@ -146,6 +149,8 @@ def _one_line(text: object, limit: int = 200) -> str:
 
 
 def _map_error(exc: Exception, settings: LLMSettings) -> LLMError:
+    import anthropic
+
     retries = f"after {settings.max_retries} retr{'y' if settings.max_retries == 1 else 'ies'}"
     if isinstance(exc, anthropic.APITimeoutError):
         return LLMError(f"Claude API timed out ({settings.timeout_s:g} s per request, {retries}); retry later or raise REALSIM_LLM_TIMEOUT")
@@ -178,6 +183,8 @@ def _api_message(exc: anthropic.APIStatusError) -> str:
 
 
 def _create(settings: LLMSettings, usage: Usage | None, **kwargs: Any) -> Any:
+    import anthropic
+
     params: dict[str, Any] = {"model": settings.model, "max_tokens": settings.max_tokens, **kwargs}
     if settings.temperature is not None:
         params.setdefault("temperature", settings.temperature)

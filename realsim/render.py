@@ -91,9 +91,35 @@ def write_preview(folder: Path, width: int = 640, height: int = 480) -> Path | N
     """Write ``folder/preview.png`` (overview at keyframe ``initial``); None if rendering is unavailable.
 
     Meant for the end of a conversion: a machine without an offscreen GL context (no EGL/OSMesa)
-    still gets its scene, only without the preview.
+    still gets its scene, only without the preview. The picture is cached under the folder's
+    content, so a rerun that writes the same files copies it instead of rendering.
     """
+    from realsim.cache import BlobStore, DiskCache, output_key
+
+    folder = Path(folder)
+    out = folder / PREVIEW_FILE
+    key = output_key("preview", data=_folder_digest(folder), params={"width": width, "height": height})
+    cache = DiskCache()
+    digest = cache.get(key)  # the same files rendered before: the same picture
+    png = BlobStore(cache.root).get(digest) if digest else None
+    if png is not None:
+        out.write_bytes(png)
+        return out
     try:
-        return render_scene(Path(folder), Path(folder) / PREVIEW_FILE, width=width, height=height)
+        render_scene(folder, out, width=width, height=height)
     except Exception:  # no GL context here: the scene is still valid
         return None
+    cache.put(key, BlobStore(cache.root).put(out.read_bytes()))
+    return out
+
+
+def _folder_digest(folder: Path) -> bytes:
+    """SHA-256 of what a render of a scene folder reads: scene.xml and assets/ (names and contents)."""
+    import hashlib
+
+    h = hashlib.sha256()
+    files = [folder / "scene.xml", *(p for p in (folder / "assets").rglob("*") if p.is_file())]
+    for path in sorted(files):
+        h.update(f"{path.relative_to(folder).as_posix()}\0".encode())
+        h.update(hashlib.sha256(path.read_bytes()).digest())
+    return h.digest()

@@ -1,4 +1,8 @@
-"""The ``robot`` stage: put the Franka Panda beside the primary support, reaching the objects."""
+"""The ``robot`` stage: put the Franka Panda beside the primary support, reaching the objects.
+
+The searched pose is cached under the composed scene's content (spec XML, assets, supports,
+objects, parameters, code digest): a rerun attaches the robot where it stood without searching.
+"""
 
 from __future__ import annotations
 
@@ -6,9 +10,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from realsim.cache import DiskCache, output_key, spec_digest
 from realsim.errors import InputError
 from realsim.planes import inside_convex_polygon
-from realsim.robot.placement import MAX_REACH, PlacementParams, add_robot
+from realsim.robot.model import attach_robot
+from realsim.robot.placement import MAX_REACH, PlacementParams, add_robot, pedestal_height
 from realsim.scene import Scene
 
 BASE_RADIUS = 0.12  # m, the Panda's base footprint around link0
@@ -30,7 +36,18 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
     pose = tuple(float(v) for v in params.pose) if params.pose is not None else None
     if pose is not None:
         check_robot_pose(scene, pose)
-    handles = add_robot(scene, pose=pose, params=params.placement)
+        handles = add_robot(scene, pose=pose, params=params.placement)
+    else:
+        cache = DiskCache()
+        key = _placement_key(scene, params.placement)
+        found = cache.get(key)
+        if found is None:
+            handles = add_robot(scene, params=params.placement)
+            cache.put(key, handles.base_pose)
+        else:  # the pose this very scene got before: attach without searching
+            handles = attach_robot(scene.spec, tuple(found), base_z=scene.floor_height,
+                                   pedestal_height=pedestal_height(scene, params.placement))
+            scene.assets.update(handles.assets)
     scene.robot = {
         "model": "franka_emika_panda (mujoco-menagerie panda.xml)",
         **handles.record(),
@@ -40,6 +57,16 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
         "pose_source": "override" if pose is not None else "reach and manipulability search",
     }
     return scene
+
+
+def _placement_key(scene: Scene, params: PlacementParams) -> str:
+    """Everything the pose search reads: the composed spec and assets, supports, objects, parameters."""
+    planes = [(p.id, p.kind, p.height, p.observed, np.round(p.polygon, 9).tolist(), np.round(p.rect_center, 9).tolist(),
+               np.round(p.rect_size, 9).tolist(), round(float(p.rect_yaw), 9)) for p in scene.planes]
+    objects = [(o.name, o.label, np.round(o.position, 9).tolist(), None if o.size is None else np.round(o.size, 9).tolist())
+               for o in scene.objects]
+    return output_key("robot-placement", data=spec_digest(scene.spec, scene.assets),
+                      params={"placement": params, "planes": planes, "objects": objects, "floor": scene.floor_height})
 
 
 def check_robot_pose(scene: Scene, pose: tuple[float, float, float], reach: float = MAX_REACH) -> None:
