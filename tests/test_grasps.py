@@ -62,3 +62,21 @@ def test_flat_faces_allow_a_wider_pinch_than_round_ones() -> None:
     cyl_pts, cyl_nrm = _surface(trimesh.creation.cylinder(radius=0.0375, height=0.2, sections=64))
     assert all(c.width <= MAX_WIDTH for c in top_down_candidates(cyl_pts, 0.0, normals=cyl_nrm))  # only narrower chords
     assert all(c.width <= MAX_WIDTH for c in top_down_candidates(box_pts, 0.0))  # without normals the flat faces cannot be checked
+
+
+def test_statics_rejects_a_heavy_tray_pinched_by_its_rim() -> None:
+    """A 1.1 kg tray held at its rim 0.2 m from its centre twists out of a 70 N pinch; a mug by
+    its rim (0.33 kg, 4 cm) does not; a pinch straight above the centre of mass never twists."""
+    from realsim.robot.grasps import GraspCandidate, frame_from, twist_check
+
+    down = np.array([0.0, 0.0, -1.0])
+    rim = GraspCandidate("rim", np.array([0.2, 0.0, 0.02]), frame_from(down, np.array([1.0, 0.0, 0.0])), 0.01, 1.0)
+    ok, need, can = twist_check(rim, np.array([0.0, 0.0, 0.01]), 1.1, 0.8, 70.0)
+    assert not ok and need == pytest.approx(1.1 * 9.81 * 0.2, rel=0.02) and can < 1.0
+    mug_rim = GraspCandidate("rim", np.array([0.04, 0.0, 0.08]), rim.rot, 0.005, 1.0)
+    assert twist_check(mug_rim, np.array([0.0, 0.0, 0.04]), 0.33, 0.8, 70.0)[0]
+    # the closing axis along the lever arm: no twist about the fingers
+    along = GraspCandidate("rim", np.array([0.2, 0.0, 0.02]), frame_from(down, np.array([0.0, 1.0, 0.0])), 0.01, 1.0)
+    assert not twist_check(along, np.array([0.0, 0.0, 0.01]), 1.1, 0.8, 70.0)[0]
+    above = GraspCandidate("top", np.array([0.0, 0.0, 0.05]), rim.rot, 0.05, 1.0)
+    assert twist_check(above, np.array([0.0, 0.0, 0.01]), 1.1, 0.8, 70.0)[1] < 1e-9

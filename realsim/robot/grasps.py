@@ -291,3 +291,23 @@ def narrowest_width(pts: np.ndarray, n: int = 36) -> float:
         p = xy @ d
         widths.append(p.max() - p.min())
     return float(min(widths))
+
+
+PAD_RADIUS = 0.008  # m: effective radius of a finger pad's contact patch for twisting friction
+PAD_DEPTH = 0.02  # m: length of the pads' contact along the fingers
+
+
+def twist_check(cand: GraspCandidate, com: np.ndarray, mass: float, friction: float, force: float) -> tuple[bool, float, float]:
+    """Statics of a pinch: (holds, gravity torque, what the pads resist about that axis), N m.
+
+    Gravity's torque about the pinch point has two parts the pads must resist: about the closing
+    axis (the object spins between the pads) they resist by twisting friction, about 2 * (2/3) *
+    friction * force * :data:`PAD_RADIUS`; about the hand's other horizontal axis (the object
+    tilts in the pinch) by the pressure spread along the fingers, about force * :data:`PAD_DEPTH`
+    / 2. The worse of the two, relative to its capacity, is returned."""
+    arm = np.asarray(com, float) - cand.pos
+    tau = np.cross(arm, np.array([0.0, 0.0, -9.81 * mass]))
+    parts = [(abs(float(tau @ cand.rot[:, 1])), 2.0 * (2.0 / 3.0) * friction * force * PAD_RADIUS),
+             (abs(float(tau @ cand.rot[:, 0])), force * PAD_DEPTH / 2.0)]
+    need, can = max(parts, key=lambda p: p[0] / p[1])
+    return need <= can, need, can

@@ -19,7 +19,9 @@ from scipy.spatial import cKDTree
 
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
-from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, frame_from, grasp_candidates, narrowest_width, rotate_about
+from realsim.robot.grasps import (
+    MAX_WIDTH, GraspCandidate, frame_from, grasp_candidates, narrowest_width, rotate_about, twist_check,
+)
 from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
 from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
@@ -164,10 +166,24 @@ class Robot:
         return self.geometry.normals(name)
 
     def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
+        """Pinches that fit the hand and whose lever arm the grip can hold against gravity."""
+        return [c for c in self._fitting_candidates(obj, height_offset) if self._holds(obj, c)[0]]
+
+    def _fitting_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
         pts = self.object_points(obj)
         surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) + 0.01, exclude=obj)
         return grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=height_offset,
                                 normals=self.object_normals(obj))
+
+    def _holds(self, obj: str, cand: GraspCandidate) -> tuple[bool, float, float]:
+        """Statics of ``cand`` on ``obj``: its mass and centre of mass from the model (attached parts
+        included), friction of its geoms, the gripper's force limit."""
+        b = self._body(obj)
+        mujoco.mj_comPos(self.model, self.data)
+        geoms = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in self._subtree(b)]
+        friction = float(min(self.model.geom_friction[g][0] for g in geoms)) if geoms else 0.5
+        force = float(abs(self.model.actuator_forcerange[self.grip_act]).max()) or 70.0
+        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), friction, force)
 
     def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None) -> float:
         """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``."""
@@ -403,6 +419,12 @@ class Robot:
         """Whether the hand can hold ``obj`` at all (some cross-section within the opening)."""
         if self._grasp_candidates(obj):
             return True, ""
+        fitting = self._fitting_candidates(obj)
+        if fitting:
+            torques = [self._holds(obj, c) for c in fitting]
+            _, need, can = min(torques, key=lambda t: t[1])
+            return False, (f"{obj} fits the hand only where its weight twists out of the pinch: {need:.2f} N m about the "
+                           f"fingers at the best of {len(fitting)} pinches, the grip holds {can:.2f} N m")
         w = narrowest_width(self.object_points(obj))
         return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim the hand can pinch (handles are not used): the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
 
