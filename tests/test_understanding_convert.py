@@ -114,10 +114,12 @@ def test_scan_with_photo_labels_clusters_and_claude_manifests(synthetic: Path, t
 def test_scan_without_key_labels_clusters_from_shape(synthetic: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     scene = convert(synthetic, tmp_path / "out", overrides=NO_ROBOT)
-    by_shape = [o for o in scene.objects if any("from shape" in n for n in o.notes)]
+    by_shape = [o for o in scene.objects if any("name from colour" in n for n in o.notes)]
     assert len(by_shape) >= 4
-    labels = {o.label for o in by_shape}
-    assert "box" in labels and labels & {"cup", "mug", "glass", "can"}  # shoe/cereal boxes; mug, can (shape alone is ambiguous)
+    words = {w for o in by_shape for w in o.label.split("_")}
+    assert "box" in words and words & {"cup", "can", "cylinder", "bowl"}  # shoe/cereal boxes; mug, can: colour + shape
+    said = ["_".join(w for w in o.label.split("_") if w not in ("tall", "flat")) for o in scene.objects]
+    assert len(set(said)) == len(said)  # no two objects share a name a person would use
     assert all(o.manifest is None for o in scene.objects)  # scan objects keep compose's defaults offline
     assert any("photo photo.png: ignored" in w for w in scene.warnings)
     assert getattr(scene, "llm", None) is None

@@ -70,11 +70,11 @@ def is_prism(mesh: trimesh.Trimesh | None) -> bool:
     return obb > 0 and float(mesh.volume) / obb >= BOX_FILL
 
 
-def label_from_shape(size: np.ndarray, cylinder: bool, *, prism: bool = False, exclude: tuple[str, ...] = ()) -> ShapeLabel | None:
-    """The nearest category by extents among round (``cylinder``), prism (``prism``) or other
-    non-round categories, or None."""
+def ranked_labels(size: np.ndarray, cylinder: bool, *, prism: bool = False, exclude: tuple[str, ...] = ()) -> list[ShapeLabel]:
+    """Categories of the right kind of shape (round for ``cylinder``, prisms for ``prism``, else the
+    other non-round ones) whose size range admits the largest extent, nearest first."""
     dims = np.sort(np.maximum(np.asarray(size, float), 1e-3))[::-1]
-    best: ShapeLabel | None = None
+    out: list[ShapeLabel] = []
     for name, cat in load_objects().items():
         if name in exclude or len(cat.dims) < 3 or is_round(cat) != cylinder:
             continue
@@ -85,8 +85,14 @@ def label_from_shape(size: np.ndarray, cylinder: bool, *, prism: bool = False, e
             continue
         ref = np.sort(np.asarray(cat.dims[:3], float))[::-1]
         dist = float(np.sqrt(np.mean(np.log(dims / ref) ** 2)))
-        if best is None or dist < best.distance:
-            best = ShapeLabel(name, dist, "cylinder" if cylinder else "box" if prism else "irregular")
-    if best is None or best.distance > MAX_DISTANCE:
+        out.append(ShapeLabel(name, dist, "cylinder" if cylinder else "box" if prism else "irregular"))
+    return sorted(out, key=lambda s: (s.distance, s.label))
+
+
+def label_from_shape(size: np.ndarray, cylinder: bool, *, prism: bool = False, exclude: tuple[str, ...] = ()) -> ShapeLabel | None:
+    """The nearest category by extents among round (``cylinder``), prism (``prism``) or other
+    non-round categories, or None."""
+    ranked = ranked_labels(size, cylinder, prism=prism, exclude=exclude)
+    if not ranked or ranked[0].distance > MAX_DISTANCE:
         return None
-    return best
+    return ranked[0]

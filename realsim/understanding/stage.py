@@ -11,6 +11,8 @@ the offline result and is noted; the conversion never fails because of Claude.
 
 from __future__ import annotations
 
+import os
+import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
@@ -20,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from realsim import llm
+from realsim.appearance import png_bytes
 from realsim.assets import PreparedObject
 from realsim.cache import DiskCache
 from realsim.physics import ObjectManifest, estimate_manifest
@@ -31,7 +34,8 @@ from realsim.understanding.manifest_claude import claude_manifest, fallback_mani
 from realsim.understanding.photo import PhotoObject, find_photo, label_photo, match_clusters
 from realsim.understanding.primitives import prepared_from_mesh, primitive_extents, primitive_mesh
 from realsim.understanding.sanitize import clean_text, safe_label
-from realsim.understanding.shape_label import is_cylinder, is_prism, label_from_shape
+from realsim.understanding.naming import distinct, offline_name, white_balance
+from realsim.understanding.shape_label import is_cylinder, is_prism
 from realsim.understanding.thumbnail import thumbnail
 
 UNLABELLED = "object"
@@ -84,18 +88,38 @@ class Understanding:
             return self._photo or []
         self._photo_done = True
         path = self.photo_path()
+        if path is None and self.use_claude:  # an organized cloud is a photo taken from the scan's own viewpoint
+            return self._label_capture_photo()
         if path is None:
             return []
         if not self.use_claude:
             self.scene.warn(f"photo {path.name}: ignored (no ANTHROPIC_API_KEY); objects are named from their shape")
             return []
+        return self._label(path, path.name)
+
+    def _label_capture_photo(self) -> list[PhotoObject]:
+        """Claude's objects in the capture's own RGB (organized clouds with colours), else []."""
+        scene = self.scene
+        if scene.colors is None or scene.grid_shape is None or not scene.capture.metadata.get("camera_view"):
+            return []
+        h, w = scene.grid_shape
+        rgb = (np.clip(np.nan_to_num(scene.colors), 0, 1) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
+        fd, name = tempfile.mkstemp(prefix="realsim-capture-", suffix=".png")
+        os.close(fd)
+        try:
+            Path(name).write_bytes(png_bytes(rgb))
+            return self._label(Path(name), "of the capture's own colours")
+        finally:
+            Path(name).unlink(missing_ok=True)
+
+    def _label(self, path: Path, what: str) -> list[PhotoObject]:
         try:
             result = label_photo(path, settings=self.settings, log=self.log, cache=self.cache)
         except llm.LLMError as exc:
-            self._fail(f"photo {path.name}", str(exc))
+            self._fail(f"photo {what}", str(exc))
             return []
         for note in result.notes:
-            self.scene.warn(f"photo {path.name}: {note}")
+            self.scene.warn(f"photo {what}: {note}")
         self._photo = result.objects
         return self._photo
 
@@ -128,16 +152,36 @@ class Understanding:
             for j, p in enumerate(photo):
                 if j not in pairs.values():
                     scene.warn(f"photo object {p.name!r} matched no scan cluster (occluded, merged or too small)")
+        offline = []
         for o in todo:
             p = matched.get(o.id)
             if p is not None:
                 self._rename(o, p.label, f"label {p.label!r} from the photo ({p.name!r} at x={p.x:.2f}, y={p.y:.2f})")
             elif self.params.label_from_shape:
-                size, cyl, prism = _extents(o)
-                guess = label_from_shape(size, cyl, prism=prism)
-                if guess is not None:
-                    dims = " x ".join(f"{v * 1000:.0f}" for v in size)
-                    self._rename(o, guess.label, f"label {guess.label!r} from shape ({guess.shape} {dims} mm, distance {guess.distance:.2f})")
+                offline.append(o)
+        if offline:
+            self._name_offline(offline)
+
+    def _name_offline(self, objects: list[SceneObject]) -> None:
+        """Colour+shape names (:mod:`realsim.understanding.naming`), distinct within the scene."""
+        scene = self.scene
+        colors = white_balance(scene.colors) if scene.colors is not None else None
+        camera = capture_camera(scene)
+        names, volumes, colours, image_x = [], [], [], []
+        for o in objects:
+            mask = scene.labels == o.id
+            pts = scene.points[mask]
+            rgb = colors[mask] if colors is not None else np.zeros((0, 3))
+            size, _, _ = _extents(o)
+            name, cols = offline_name(o.visual, size, pts[np.all(np.isfinite(pts), axis=1)], rgb[np.all(np.isfinite(rgb), axis=1)], o.position[:2])
+            names.append(name)
+            colours.append(cols)
+            volumes.append(float(abs(o.visual.volume)) if o.visual is not None and o.visual.is_volume else float(np.prod(o.size)))
+            image_x.append(float(camera.project(o.position + [0.0, 0.0, float(o.size[2]) / 2])[0, 0]) if camera is not None else None)
+        taken = {o.label for o in scene.objects if o not in objects}
+        for o, name in zip(objects, distinct(names, volumes, colours, image_x)):
+            label = name.label if name.label not in taken else f"{name.label}_{o.id}"
+            self._rename(o, label, name.note)
 
     @staticmethod
     def _rename(obj: SceneObject, label: str, note: str) -> None:

@@ -1,0 +1,74 @@
+"""Offline names a person can say: colour and shape, distinct within a scene (real Kinect scans)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from conftest import MOSD
+from realsim.pipeline import convert
+from realsim.understanding.naming import Name, colour_words, distinct, offline_name, shape_word, white_balance
+
+NO_ROBOT = {"robot": {"enabled": False}}
+COLOURS = {"red", "orange", "yellow", "green", "blue", "purple", "pink", "brown", "white", "grey", "black"}
+SHAPES = {"box", "can", "cup", "bowl", "disc", "cylinder", "object"}
+
+
+def test_colour_words_of_plain_colours() -> None:
+    rgb = np.array([[0.8, 0.1, 0.1], [0.1, 0.6, 0.15], [0.15, 0.2, 0.8], [0.9, 0.85, 0.2], [0.92, 0.92, 0.9],
+                    [0.45, 0.45, 0.47], [0.05, 0.05, 0.05], [0.45, 0.28, 0.12]])
+    assert colour_words(rgb).tolist() == ["red", "green", "blue", "yellow", "white", "grey", "black", "brown"]
+
+
+def test_white_balance_removes_a_colour_cast() -> None:
+    rng = np.random.default_rng(0)
+    scene = rng.uniform(0.1, 0.9, size=(5000, 3))
+    scene[:200] = 0.95  # a white patch
+    bluish = scene * np.array([0.7, 0.8, 1.0])
+    assert colour_words(white_balance(bluish)[:200]).tolist().count("white") == 200
+
+
+def test_shape_words_from_completed_solids() -> None:
+    can = trimesh.creation.cylinder(radius=0.033, height=0.10, sections=32)
+    can.apply_translation([0, 0, 0.05])
+    word, adjective, cylinder, _ = shape_word(can, can.extents, np.zeros((0, 3)), np.zeros(2))
+    assert (word, cylinder) == ("can", True) and adjective == ""
+    box = trimesh.creation.box(extents=[0.16, 0.06, 0.21])
+    box.apply_translation([0, 0, 0.105])
+    assert shape_word(box, box.extents, np.zeros((0, 3)), np.zeros(2))[0] == "box"
+    # a bowl: round, squat, its observed inside lower than its rim
+    bowl = trimesh.creation.cylinder(radius=0.08, height=0.06, sections=32)
+    bowl.apply_translation([0, 0, 0.03])
+    r = np.sqrt(np.random.default_rng(1).uniform(0, 1, 3000)) * 0.08
+    a = np.random.default_rng(2).uniform(0, 2 * np.pi, 3000)
+    z = 0.01 + 0.05 * (r / 0.08) ** 2
+    pts = np.column_stack([r * np.cos(a), r * np.sin(a), z])
+    assert shape_word(bowl, bowl.extents, pts, np.zeros(2))[0] == "bowl"
+    name, _ = offline_name(bowl, bowl.extents, pts, np.tile([[0.9, 0.9, 0.88]], (100, 1)), np.zeros(2))
+    assert name.label == "white_bowl"
+
+
+def test_look_alikes_are_told_apart() -> None:
+    names = [Name("red_box", "red", "box", ""), Name("red_box", "red", "box", ""), Name("white_can", "white", "can", ""),
+             Name("tall_white_can", "white", "can", "")]
+    out = distinct(names, [1.0, 2.0, 1.0, 1.0], [[("red", 0.6), ("white", 0.3)], [("red", 0.7), ("blue", 0.2)], [("white", 1.0)], [("white", 1.0)]],
+                   [0.1, 0.9, 0.3, 0.6])
+    labels = [n.label for n in out]
+    assert labels[:2] == ["small_red_box", "big_red_box"]
+    assert labels[2:] == ["left_white_can", "right_tall_white_can"]  # same size, one colour: told apart by position
+
+
+@pytest.mark.parametrize("scan", ["test0", "test45", "test55"])
+def test_scanned_objects_get_distinct_colour_and_shape_names(scan: str, tmp_path) -> None:
+    scene = convert(MOSD / f"{scan}.pcd", tmp_path / scan, overrides=NO_ROBOT)
+    said = []
+    for o in scene.objects:
+        words = o.label.split("_")
+        assert words[-1] in SHAPES or any("size-table category" in n for n in o.notes), o.name
+        assert COLOURS & set(words), o.name
+        assert o.name == f"obj{o.id}_{o.label}"
+        said.append("_".join(w for w in words if w not in ("tall", "flat")))
+    assert len(set(said)) == len(said), said
+    for bad in ("hat", "speaker", "headphones", "stuffed_animal", "clock", "power_drill"):
+        assert not any(bad in o.label for o in scene.objects)
