@@ -72,3 +72,42 @@ def test_scanned_objects_get_distinct_colour_and_shape_names(scan: str, tmp_path
     assert len(set(said)) == len(said), said
     for bad in ("hat", "speaker", "headphones", "stuffed_animal", "clock", "power_drill"):
         assert not any(bad in o.label for o in scene.objects)
+
+
+def test_with_a_key_claude_labels_the_capture_own_rgb(tmp_path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """No photo file: the organized cloud's colours are the photo Claude labels (local Messages server)."""
+    import sys
+    from pathlib import Path
+
+    import yaml
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from anthropic_server import tool_use
+    from test_understanding import RoutingServer, tool_name
+    from test_understanding_convert import _photo_objects, manifest_reply
+
+    from realsim.synthetic import make_tabletop_capture
+    from realsim.understanding.photo import PHOTO_TOOL
+
+    capture = make_tabletop_capture(tmp_path / "capture", seed=0)
+    meta = yaml.safe_load((capture / "capture.yaml").read_text())
+    meta.pop("labels")
+    (capture / "capture.yaml").write_text(yaml.safe_dump(meta))
+    assert not list(capture.glob("photo.*"))
+    photo = _photo_objects(capture)
+    seen_images = []
+
+    def route(body):
+        if tool_name(body) == PHOTO_TOOL:
+            seen_images.extend(b for m in body["messages"] for b in m["content"] if isinstance(b, dict) and b.get("type") == "image")
+            return tool_use(PHOTO_TOOL, {"objects": photo}, input_tokens=1500, output_tokens=300)
+        return manifest_reply(body)
+
+    with RoutingServer(route) as server:
+        monkeypatch.setenv("ANTHROPIC_API_KEY", "sk-test-local")
+        monkeypatch.setenv("ANTHROPIC_BASE_URL", server.base_url)
+        scene = convert(capture, tmp_path / "out", overrides=NO_ROBOT)
+    assert len(seen_images) == 1
+    from_photo = [o for o in scene.objects if any("from the photo" in n for n in o.notes)]
+    assert len(from_photo) >= len(photo) - 1
+    assert {o.label for o in from_photo} <= {p["label"] for p in photo}
