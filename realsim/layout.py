@@ -166,8 +166,15 @@ def vertical_extent(equations: list[np.ndarray], xy: np.ndarray) -> tuple[np.nda
 
 
 def rest_height(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray, yaw: float, step: float = 0.004) -> float | None:
-    """z of the child's frame origin when it is lowered at (``xy``, ``yaw``) onto the convex
-    pieces ``below`` (world frame) until it touches them; None when nothing is under it.
+    """z of the child's frame origin lowered onto ``below`` (see :func:`rest_contact`), or None."""
+    found = rest_contact(child, below, xy, yaw, step)
+    return None if found is None else found[0]
+
+
+def rest_contact(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray, yaw: float, step: float = 0.004,
+                 touch: float = 0.0015) -> tuple[float, np.ndarray] | None:
+    """(z of the child's frame origin, xy of the contacts) when it is lowered at (``xy``, ``yaw``)
+    onto the convex pieces ``below`` (world frame) until it touches them; None when nothing is under it.
 
     ``child`` are its convex pieces in its own frame. Vertical lines are sampled on a ``step`` grid
     over the child's footprint plus the vertices of both, so thin rims are not missed.
@@ -185,5 +192,8 @@ def rest_height(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray
     bottom, _ = vertical_extent(hull_equations(child_w), samples)
     _, top = vertical_extent(hull_equations(below), samples)
     gap = top - bottom
-    gap = gap[np.isfinite(gap)]
-    return float(gap.max()) if len(gap) else None
+    ok = np.isfinite(gap)
+    if not ok.any():
+        return None
+    z = float(gap[ok].max())
+    return z, samples[ok][gap[ok] > z - touch]  # and the xy where it touches

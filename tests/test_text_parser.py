@@ -54,8 +54,8 @@ def test_rows_attributes_and_contents_follow_their_container() -> None:
 
 
 def test_unknown_nouns_warned_and_liquids_dropped() -> None:
-    spec = parse_scene("a bottle of water, a glass and a toy dinosaur")
-    assert [o.label for o in spec.objects] == ["bottle", "glass", "toy dinosaur"]
+    spec = parse_scene("a bottle of water, a jar of jam, two glasses and a toy dinosaur")
+    assert [(o.label, o.count) for o in spec.objects] == [("water bottle", 1), ("jam jar", 1), ("glass", 2), ("toy dinosaur", 1)]
     assert any("toy dinosaur" in w for w in spec.warnings)
     assert parse_scene("a table").objects == []
 

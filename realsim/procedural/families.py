@@ -246,15 +246,17 @@ def banana(d: D) -> Shape:
     length, width, thick = d[0], d[1], d[2]
     t = np.linspace(-1.0, 1.0, 7)
     bend = width - thick
-    path = np.column_stack([t * length / 2 * 0.95, bend * (1 - t ** 2) - bend / 2, np.zeros_like(t)])
     radii = thick / 2 * (1 - 0.55 * t ** 2)
-    return tube(path, radii, 8)
+    # section centres at their radius: the flat underside lies on the table (no rocking)
+    path = np.column_stack([t * length / 2 * 0.95, bend * (1 - t ** 2) - bend / 2, radii * np.cos(np.pi / 8)])
+    return tube(path, radii, 8, phase=True)
 
 
 def carrot(d: D) -> Shape:
     length, r = d[0], d[1] / 2
-    path = np.array([[-length / 2, 0.0, 0.0], [0.0, 0.0, 0.0], [length / 2, 0.0, 0.0]])
-    return tube(path, [r, r * 0.7, r * 0.12], 8, phase=True)
+    radii = np.array([r, r * 0.7, r * 0.12])
+    path = np.column_stack([[-length / 2, 0.0, length / 2], np.zeros(3), radii * np.cos(np.pi / 8)])  # flat underside
+    return tube(path, radii, 8, phase=True)
 
 
 def pen(d: D) -> Shape:

@@ -117,9 +117,7 @@ def kind_for(label: str) -> str:
         if w in KIND_BY_WORD:
             return KIND_BY_WORD[w]
     m = lookup(label)
-    if m is not None and m.how != "fuzzy" and m.category.name in KIND_BY_CATEGORY:
-        return KIND_BY_CATEGORY[m.category.name]
-    if m is not None and m.category.name in KIND_BY_CATEGORY and m.score >= 0.85:
+    if m is not None and m.category.name in KIND_BY_CATEGORY and (m.how != "fuzzy" or m.score >= 0.85):
         return KIND_BY_CATEGORY[m.category.name]
     return "primitive_box"
 
@@ -150,13 +148,17 @@ def _part(label: str, shape: Shape, color: tuple[float, float, float], shift: np
 
 
 def generate(label: str, rng: np.random.Generator, size_word: str | None = None, color: tuple[float, float, float] | None = None,
-             kind: str | None = None, variation: float = 0.08, dims: tuple[float, float, float] | None = None) -> Generated:
-    """Build the object ``label`` (seeded), sized from the size table (or ``dims``, largest first), coloured as asked."""
+             kind: str | None = None, variation: float = 0.08, dims: tuple[float, float, float] | None = None,
+             at_least: float = 0.0) -> Generated:
+    """Build the object ``label`` (seeded), sized from the size table (or ``dims``, largest first), coloured as asked.
+
+    ``at_least``: a lower bound (m) on the largest extent, within the table's range (a container
+    made big enough for what is said to be in it)."""
     kind = kind or kind_for(label)
     d0, d1, d2 = table_dims(label)
     lo, _, hi = size_range(label)
     rel = SIZE_WORDS.get(size_word or "", 1.0) * float(rng.uniform(1 - variation, 1 + variation))
-    factor = float(np.clip(rel, lo * 1.03 / d0, hi * 0.97 / d0))  # the largest extent stays inside the table's range
+    factor = float(np.clip(max(rel, at_least / d0), lo * 1.03 / d0, hi * 0.97 / d0))  # the largest extent stays inside the table's range
     d = (d0 * factor, d1 * factor, d2 * factor)
     if kind in BENCH_DIMS:  # furniture-sized table entries scaled down to tabletop pieces
         d = tuple(v * float(np.clip(rel, 0.8, 1.25)) for v in BENCH_DIMS[kind])  # type: ignore[assignment]

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from realsim.layout import LayoutParams, footprint, polygons_apart, reach_anchor, rest_height, vertical_extent, hull_equations
+from realsim.layout import LayoutParams, footprint, hull_equations, polygons_apart, reach_anchor, rest_contact, vertical_extent
 from realsim.planes import inside_convex_polygon
 from realsim.scene import SupportPlane
 
@@ -56,9 +56,10 @@ def _print(item: Item, xy: np.ndarray, yaw: float) -> np.ndarray:
 
 
 def world_hulls(item: Item) -> list[np.ndarray]:
+    """The item's own convex pieces where it stands (not the room kept for a drawer's travel)."""
     assert item.xy is not None
     r = _rot(item.yaw)
-    return [np.column_stack([h[:, :2] @ r.T + item.xy, h[:, 2] + item.z]) for h in item.hulls + item.extra]
+    return [np.column_stack([h[:, :2] @ r.T + item.xy, h[:, 2] + item.z]) for h in item.hulls]
 
 
 def _local(support: SupportPlane, xy: np.ndarray) -> np.ndarray:
@@ -71,14 +72,15 @@ def _relation_ok(rel: str, poly: np.ndarray, other: np.ndarray, support: Support
     ca, cb = a.mean(axis=0), b.mean(axis=0)
     overlap_y = a[:, 1].min() < b[:, 1].max() + 0.05 and b[:, 1].min() < a[:, 1].max() + 0.05
     overlap_x = a[:, 0].min() < b[:, 0].max() + 0.05 and b[:, 0].min() < a[:, 0].max() + 0.05
+    # clearly on that side: the centre beyond the other's edge, the two side by side (not diagonal)
     if rel == "left_of":
-        return a[:, 0].max() <= b[:, 0].min() + 0.01 and overlap_y
+        return ca[0] <= b[:, 0].min() and overlap_y
     if rel == "right_of":
-        return a[:, 0].min() >= b[:, 0].max() - 0.01 and overlap_y
+        return ca[0] >= b[:, 0].max() and overlap_y
     if rel == "behind":
-        return a[:, 1].min() >= b[:, 1].max() - 0.01 and overlap_x
+        return ca[1] >= b[:, 1].max() and overlap_x
     if rel == "in_front_of":
-        return a[:, 1].max() <= b[:, 1].min() + 0.01 and overlap_x
+        return ca[1] <= b[:, 1].min() and overlap_x
     if rel == "next_to":
         return not polygons_apart(a, b, NEAR) and float(np.linalg.norm(ca - cb)) < 0.5
     return True
@@ -96,19 +98,44 @@ def _sample_xy(rng: np.random.Generator, lo: np.ndarray, hi: np.ndarray, item: I
 
 def place_roots(items: list[Item], support: SupportPlane, obstacles: list[np.ndarray], rng: np.random.Generator,
                 params: LayoutParams, region: tuple[np.ndarray, np.ndarray] | None = None) -> list[str]:
-    """Place the items standing on ``support``; returns warnings. Items of a row move as one."""
-    warnings: list[str] = []
+    """Place the items standing on ``support``; returns warnings. Items of a row move as one; the
+    whole support is laid out again (up to :data:`RELATION_RETRIES` times) until every relation holds."""
     units: dict[str, list[Item]] = {}
     for it in items:
         units.setdefault(it.group or it.key, []).append(it)
-    placed: dict[str, np.ndarray] = {}
-    polys: list[np.ndarray] = list(obstacles)
     keys = {it.key for it in items}
 
     def depth(u: list[Item]) -> int:
         return sum(1 for it in u for _, t in it.relations if t in keys)
 
     order = sorted(units, key=lambda k: (depth(units[k]), -ConvexHull_area(units[k])))
+    best: tuple[int, dict[str, tuple], list[str]] | None = None
+    for _ in range(RELATION_RETRIES if any(depth(u) for u in units.values()) else 1):  # a layout keeping every relation, if one is found
+        try:
+            misses = _place_units(units, order, support, obstacles, rng, params, region, keys)
+        except _NoRoom:
+            if best is None:
+                raise
+            break
+        if best is None or len(misses) < best[0]:
+            best = (len(misses), {it.key: (it.xy, it.yaw, it.z) for it in items}, misses)
+        if not misses:
+            break
+    assert best is not None
+    for it in items:
+        it.xy, it.yaw, it.z = best[1][it.key]
+    return list(best[2])
+
+
+RELATION_RETRIES = 8
+
+
+def _place_units(units: dict[str, list[Item]], order: list[str], support: SupportPlane, obstacles: list[np.ndarray],
+                 rng: np.random.Generator, params: LayoutParams, region: tuple[np.ndarray, np.ndarray] | None, keys: set[str]) -> list[str]:
+    """One seeded pass over the units; returns the relations it could not keep."""
+    warnings: list[str] = []
+    placed: dict[str, np.ndarray] = {}
+    polys: list[np.ndarray] = list(obstacles)
     for key in order:
         unit = units[key]
         offsets = _row_offsets(unit)
@@ -141,7 +168,7 @@ def _row_offsets(unit: list[Item]) -> list[np.ndarray]:
     """x offsets of a row's members (side by side, 2 cm apart), centred."""
     if len(unit) == 1:
         return [np.zeros(2)]
-    widths = [float(np.ptp(np.vstack([h[:, 0] for h in it.hulls]))) for it in unit]
+    widths = [float(np.ptp(np.concatenate([h[:, 0] for h in it.hulls]))) for it in unit]
     xs, x = [], 0.0
     for w in widths:
         xs.append(x + w / 2)
@@ -175,7 +202,7 @@ def _try_place(unit: list[Item], offsets: list[np.ndarray], support: SupportPlan
                 if region is not None and (np.any(p < region[0]) or np.any(p > region[1])):
                     ok = False
                     break
-                if not all(polygons_apart(p, other, params.clearance) for other in polys + prints):
+                if not all(polygons_apart(p, other, params.clearance) for other in polys):  # a row's members stand closer
                     ok = False
                     break
                 prints.append(p)
@@ -263,11 +290,15 @@ def _lower(it: Item, parent: Item, below: list[np.ndarray], rng: np.random.Gener
             continue
         if cavity is None and not it.stacked and not np.all(inside_convex_polygon(poly.mean(axis=0, keepdims=True), region, -0.01)):
             continue
-        z = rest_height(it.hulls, below, xy, yaw)
-        if z is None:
+        found = rest_contact(it.hulls, below, xy, yaw)
+        if found is None:
             continue
+        z, touching = found
         if cavity is not None and z > p_top - 0.004:  # must sit in the cavity, below the rim
             continue
-        if best is None or z < best[2] - 1e-4:
-            best = (xy, yaw, z)
-    return best
+        # prefer resting places whose contacts surround the centre (a knife across a plate's rim slides)
+        steady = len(touching) >= 3 and bool(inside_convex_polygon(poly.mean(axis=0, keepdims=True), footprint(touching), -0.005)[0])
+        key = (not steady, z)
+        if best is None or key < best[0]:
+            best = (key, (xy, yaw, z))
+    return None if best is None else best[1]

@@ -64,12 +64,12 @@ MARKERS: list[tuple[str, str]] = [
     (r"behind|in back of|at the back of", "behind"),
     (r"next to|beside|besides|near|nearby|alongside|close to|by", "next_to"),
     (r"(?:on|at|to) the (?:left|right|back|front|far end|near end)(?: side)?(?: of it)?", "REGION"),
-    (r"full of|filled with|containing|holding|that holds|which holds|that has|with", "with"),
+    (r"full of|filled with|containing|holding|that holds|which holds|that has|has|have|holds|with", "with"),
     (r"inside of|inside|into|within|in", "in"),
     (r"on top of|ontop of|on to|onto|on|upon|atop|on top", "on"),
     (r"under|underneath|beneath|below", "under"),
     (r"of", "of"),
-    (r"and|plus|as well as|also|along with|then|together with|[,]|there is|there are|i have|we have|i've got|i got|you have|is|are|"
+    (r"and|plus|as well as|also|along with|then|together with|[,]|there is|there are|i've got|i got|is|are|"
      r"sits|stands|lies|sitting|standing|lying|placed|resting|rests|stand|sit|lie", "and"),
     (r"[.;!?:]", "SENT"),
 ]
@@ -96,6 +96,7 @@ class _State:
     listing: bool = False  # phrases after "with" go on / in the owner
     topic: Phrase | None = None
     pending: tuple[str, Phrase] | None = None  # a relation said before its subjects ("on the desk there's ...")
+    recent: list[Phrase] = field(default_factory=list)  # object phrases read so far
 
 
 def _tokens(text: str) -> list[str]:
@@ -110,13 +111,34 @@ def _prepare(text: str) -> str:
     t = text.lower().replace("&", " and ").replace("’", "'")
     t = re.sub(r"\b(a|one) (pair|couple) of\b", "two", t)
     t = re.sub(r"\ba (few|bunch|handful|dozen) of\b", r"\1", t)
-    t = re.sub(r"\ba dozen\b", "dozen", t)
-    t = re.sub(rf"\b(?:a )?(?:bottle|glass|cup|mug|jar|can|carton|box|bowl|pot|bag|tin|packet) of ({MASS_NOUNS})\b",
-               lambda m: m.group(0).split(" of ")[0], t)
+    t = re.sub(r"\ba (few|dozen|handful|bunch)\b", r"\1", t)
+    t = re.sub(rf"\b(bottle|glass|cup|mug|jar|can|carton|box|bowl|pot|bag|tin|packet)s? of ({MASS_NOUNS})\b", _mass_container, t)
     t = re.sub(r"\b(each|every) (?:one )?of them\b", "", t)
     t = re.sub(r"\bthere's\b", "there is", t)
     t = re.sub(r"(\d+)\s*x\b", r"\1", t)
     return t
+
+
+def _mass_container(m: re.Match) -> str:
+    """"a bottle of wine" -> "wine bottle" when the table knows it, else "bottle" (the contents are not modelled)."""
+    container, contents = m.group(1), m.group(2)
+    found = lookup(f"{contents} {container}")
+    return f"{contents} {container}" if found is not None and found.how != "fuzzy" else m.group(0).split(" of ")[0]
+
+
+IRREGULAR = {"knives": "knife", "glasses": "glass", "dishes": "dish", "boxes": "box", "leaves": "leaf", "loaves": "loaf", "mice": "mouse",
+             "potatoes": "potato", "tomatoes": "tomato", "shelves": "shelf", "dice": "dice", "scissors": "scissors", "headphones": "headphones",
+             "chopsticks": "chopsticks", "pliers": "pliers", "glass": "glass", "grass": "grass"}
+
+
+def _singular(text: str) -> str:
+    return " ".join(IRREGULAR.get(w) or (w[:-2] if w.endswith("sses") else singular(w)) for w in text.split())
+
+
+def known(label: str) -> bool:
+    """True when the size table knows the label (an exact, alias or close match)."""
+    m = lookup(label)
+    return m is not None and (m.how != "fuzzy" or m.score >= 0.85)
 
 
 def _match_noun(words: list[str]) -> tuple[str, int, int] | None:
@@ -138,7 +160,7 @@ def _phrase(words: list[str]) -> Phrase | None:
     if not words:
         return None
     if any(w in PRONOUNS for w in words) and not any(w not in FILLER and w not in PRONOUNS and w not in NUMBERS for w in words):
-        return Phrase("pronoun")
+        return Phrase("pronoun", plural=any(w in ("them", "these", "those") for w in words))
     for i, w in enumerate(words):
         if w in SUPPORTS and not (i + 1 < len(words) and words[i + 1] in NOT_SUPPORT_AFTER) and not (i > 0 and words[i - 1] in ("drawer", "bedside") and w != "table"):
             kind, height = SUPPORTS[w]
@@ -174,8 +196,8 @@ def _phrase(words: list[str]) -> Phrase | None:
         head = rest[end - 1]
     else:
         phrase, head = " ".join(rest[-2:]), rest[-1]
-    label = singular(normalize_label(phrase))
-    plural = singular(head) != head and not head.endswith("ss")
+    label = _singular(normalize_label(phrase))
+    plural = _singular(head) != head
     if plural and not counted:
         count = PLURAL_COUNT
     spec = ObjectSpec(id=label, label=label, name=label,
@@ -238,6 +260,8 @@ class _Builder:
                 else:
                     self.spec.warnings.append(f"'{s.spec.display} under {t.display}': {t.display} already rests elsewhere; ignored")
             else:
+                if t.id in (s.spec.on, s.spec.inside):  # "a vase with a candle next to it": beside it, not in it
+                    s.spec.on = s.spec.inside = None
                 s.spec.relations.append(RelationSpec(relation=rel, target=t.id))  # type: ignore[arg-type]
 
     def with_default(self, owner: Phrase, p: Phrase) -> None:
@@ -272,9 +296,12 @@ def _items(tokens: list[str]) -> list[str | Phrase]:
 
     def flush() -> None:
         if words:
-            p = _phrase(words)
-            if p is not None:
-                items.append(p)
+            # "my kitchen counter has a cutting board": a support word followed by an object: two phrases
+            cut = next((i + 1 for i, w in enumerate(words) if w in SUPPORTS and any(v not in FILLER and v not in NUMBERS for v in words[i + 1:])), None)
+            for part in ([words[:cut], words[cut:]] if cut else [words]):
+                p = _phrase(part)
+                if p is not None:
+                    items.append(p)
             words.clear()
 
     for tok in tokens:
@@ -298,9 +325,16 @@ def parse_scene(text: str) -> SceneSpec:
 
 
 def _resolve(p: Phrase, st: _State) -> Phrase | None:
+    """A pronoun's phrase: the object "with" was said of, else the latest object outside the
+    current group agreeing in number ("it": one, "them": several), else the topic."""
     if p.kind != "pronoun":
         return p
-    return st.owner if st.owner is not None and st.owner.kind == "object" else st.topic
+    if st.owner is not None and st.owner.kind == "object":
+        return st.owner
+    for q in reversed(st.recent):
+        if q not in st.group and q.spec is not None and (q.spec.count > 1) == p.plural:
+            return q
+    return st.topic
 
 
 def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> Phrase | None:
@@ -320,6 +354,7 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                     st.owner = it
             elif it.kind == "object":
                 b.add_object(it)
+                st.recent.append(it)
                 assert it.spec is not None
                 it.spec.stacked |= stack_next and it.spec.count > 1
                 it.spec.row |= row_next and it.spec.count > 1
@@ -377,8 +412,9 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 b.add_support(target)
             elif target.kind == "object" and target is nxt:
                 b.add_object(target)
+                st.recent.append(target)
             subjects = [p for p in st.group if p is not target] if not st.closed or marker != "on" else [st.group[-1]] if st.group else []
-            if marker not in ("on", "in", "under"):
+            if marker not in ("on", "in", "under") or (st.listing and st.owner is not None and target is not st.owner):
                 subjects = subjects[-1:]  # "a laptop, a mouse next to the laptop": only the phrase before
             owner = st.owner if st.owner is not None and st.owner.kind == "object" else None
             if owner is not None and target is not owner and owner.spec is not None:  # contents follow their container
@@ -407,10 +443,13 @@ def _finish(b: _Builder) -> None:
     if not spec.supports or (elevated == [] and any(o.on is None and o.inside is None for o in spec.objects) and "floor" not in b.support_order):
         b.add_support(Phrase("support", support="table"))
     default = elevated[0] if elevated else ("floor" if "floor" in b.support_order else "table")
+    for o in [o for o in spec.objects if o.inside and not known(o.label)]:  # "a vase with flowers": not modelled
+        spec.warnings.append(f"{o.label!r} in the {o.inside.replace('_', ' ')} is not in the size table: left out")
+        spec.objects.remove(o)
     for o in spec.objects:
         if o.on is None and o.inside is None:
             o.on = default
-        if lookup(o.label) is None:
+        if not known(o.label):
             spec.warnings.append(f"{o.label!r} is not in the size table: a box of default size stands in")
     used = {o.on for o in spec.objects} | {o.inside for o in spec.objects}
     spec.supports = [s for s in spec.supports if s.id in used] or spec.supports[:1]

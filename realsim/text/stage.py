@@ -169,10 +169,11 @@ def _build(scene: Scene, spec: SceneSpec, params: TextParams) -> list[_Instance]
     next_id = max((o.id for o in scene.objects), default=0) + 1
     sites = scene.capture.metadata.setdefault(OBJECT_SITES, {})
     arts = scene.capture.metadata.setdefault(ARTICULATIONS, {})
+    room = _room_needed(spec, scene.seed, params)
     for o in spec.objects:
         label = display_label(o)
         for k in range(o.count):
-            gen = generate(label, rng, o.size or None, object_rgb(o), variation=params.variation, dims=o.size_m)
+            gen = generate(label, rng, o.size or None, object_rgb(o), variation=params.variation, dims=o.size_m, at_least=room.get(o.id, 0.0))
             scene.warnings.extend(n for n in gen.notes if n not in scene.warnings)
             inst = _Instance(o, k, gen)
             for part in gen.parts:
@@ -200,6 +201,24 @@ def _build(scene: Scene, spec: SceneSpec, params: TextParams) -> list[_Instance]
     return out
 
 
+CAVITY_SHARE = 0.8  # of a container's width that its cavity offers
+
+
+def _room_needed(spec: SceneSpec, seed: int, params: TextParams) -> dict[str, float]:
+    """Container id -> the largest extent (m) it needs to hold what is said to be in it: its
+    contents' footprints side by side in a square grid (a bowl of bananas is a wide bowl)."""
+    rng = np.random.default_rng(seed + 1)
+    need: dict[str, float] = {}
+    for o in spec.objects:
+        if not o.inside:
+            continue
+        gen = generate(display_label(o), rng, o.size or None, None, variation=0.0, dims=o.size_m)
+        span = float(max(gen.dims[:2]))
+        per_row = int(np.ceil(np.sqrt(o.count)))
+        need[o.inside] = max(need.get(o.inside, 0.0), (span * per_row + 0.01 * per_row) / CAVITY_SHARE)
+    return need
+
+
 def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: dict[str, SupportPlane], params: TextParams) -> None:
     """Instances -> arrangement items -> placed SceneObjects."""
     rng = np.random.default_rng(scene.seed)
@@ -221,7 +240,9 @@ def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: 
             item.parent, item.stacked = siblings[inst.index - 1].objects[0].name, True
         elif o.inside or (o.on and o.on in by_spec):
             target = by_spec[o.inside or o.on]  # type: ignore[index]
-            item.parent = target[inst.index % len(target)].objects[0].name
+            tspec = target[0].spec
+            # on a stack: on its top; otherwise shared out among the target's instances
+            item.parent = (target[-1] if tspec.stacked and not o.inside else target[inst.index % len(target)]).objects[0].name
             item.inside = o.inside is not None
         else:
             item.support = planes[o.on or next(iter(planes))].id if (o.on or planes) else None
