@@ -127,18 +127,23 @@ def cmd_convert(args: argparse.Namespace) -> int:
 
 
 def cmd_example(args: argparse.Namespace) -> int:
-    if args.layout:  # YCB scans on a table, counter or floor, in every capture form (realsim.synth)
-        from realsim.synth import SceneSpec, make_scene, write_all
+    from realsim.destination import atomic_folder, check_destination
 
-        objects = tuple(args.objects.split(",")) if args.objects else None
-        scene = make_scene(SceneSpec(layout=args.layout, objects=objects, n_objects=args.count, seed=args.seed))
-        path = write_all(scene, Path(args.dest), forms=tuple(args.forms.split(",")), cloud_points=args.points, seed=args.seed)
-        print(f"wrote synthetic {args.layout} capture ({args.forms}) with ground truth to {path}")
-        return 0
-    from realsim.synthetic import make_tabletop_capture
+    dest = check_destination(args.dest, force=args.force)
+    with atomic_folder(dest, force=args.force, kind="example") as tmp:
+        if args.layout:  # YCB scans on a table, counter or floor, in every capture form (realsim.synth)
+            from realsim.synth import SceneSpec, make_scene, write_all
 
-    path = make_tabletop_capture(Path(args.dest), seed=args.seed)
-    print(f"wrote synthetic tabletop capture to {path}")
+            objects = tuple(args.objects.split(",")) if args.objects else None
+            scene = make_scene(SceneSpec(layout=args.layout, objects=objects, n_objects=args.count, seed=args.seed))
+            write_all(scene, tmp, forms=tuple(args.forms.split(",")), cloud_points=args.points, seed=args.seed)
+            what = f"{args.layout} capture ({args.forms}) with ground truth"
+        else:
+            from realsim.synthetic import make_tabletop_capture
+
+            make_tabletop_capture(tmp, seed=args.seed)
+            what = "tabletop capture"
+    print(f"wrote synthetic {what} to {args.dest}")
     return 0
 
 
@@ -216,7 +221,8 @@ def build_parser() -> argparse.ArgumentParser:
     convert.set_defaults(func=cmd_convert)
 
     example = sub.add_parser("example", help="render the bundled synthetic tabletop capture (with ground truth)")
-    example.add_argument("dest", help="folder to write the capture into")
+    example.add_argument("dest", help="folder to write the capture into (new, empty, or an earlier example with --force)")
+    example.add_argument("--force", action="store_true", help="replace an example realsim wrote before")
     example.add_argument("--seed", type=seed_arg, default=0)
     example.add_argument("--layout", choices=["table", "counter", "floor"], help="YCB scans on this support, in every capture form")
     example.add_argument("--objects", help="with --layout: comma-separated YCB names (default: --count drawn)")

@@ -183,6 +183,16 @@ def _exchange(a: Path, b: Path) -> bool:
     raise OSError(err, os.strerror(err), str(b))
 
 
+def normal_permissions(folder: Path) -> None:
+    """Give ``folder`` and everything in it the user's normal modes (umask), whatever wrote them
+    (temporary-file helpers create 0600 files and 0700 folders)."""
+    umask = os.umask(0)
+    os.umask(umask)
+    for path in [folder, *folder.rglob("*")]:
+        if not path.is_symlink():
+            path.chmod((0o777 if path.is_dir() else 0o666) & ~umask)
+
+
 def write_manifest(folder: Path, kind: str) -> None:
     """Record every file in ``folder`` as written by realsim (what a later ``--force`` may replace)."""
     record = {"written_by": f"realsim {__version__}", "kind": kind, "files": _written_files(folder)}
@@ -196,6 +206,7 @@ def publish(tmp: Path, dest: Path, *, force: bool = False, kind: str = "scene") 
     between the check and the swap; the old folder is removed only after the swap.
     """
     write_manifest(tmp, kind)
+    normal_permissions(tmp)
     with _locked(dest.parent):
         check_destination(dest, force=force, flag="output")
         if not dest.exists():

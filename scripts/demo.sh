@@ -10,8 +10,8 @@ export MUJOCO_GL="${MUJOCO_GL:-egl}"
 if [ -z "${MENAGERIE_ROOT:-}" ] && [ -d ../shared/data/franka_emika_panda ]; then
   export MENAGERIE_ROOT="$(cd ../shared/data && pwd)"
 fi
-.venv/bin/realsim example examples/generated/tabletop
-.venv/bin/realsim convert examples/generated/tabletop -o out/tabletop
+.venv/bin/realsim example examples/generated/tabletop --force
+.venv/bin/realsim convert examples/generated/tabletop -o out/tabletop --force  # --force: a rerun replaces its own earlier output
 .venv/bin/python - <<'PY'
 import mujoco
 m = mujoco.MjModel.from_xml_path("out/tabletop/scene.xml")
