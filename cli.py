@@ -176,15 +176,22 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
+    from realsim.destination import check_file_destination
     from realsim.render import render_scene
 
-    out = render_scene(Path(args.scene), Path(args.output), camera=args.camera, width=args.width, height=args.height)
+    output = check_file_destination(args.output, inputs=[Path(args.scene)], force=args.force)
+    out = render_scene(Path(args.scene), output, camera=args.camera, width=args.width, height=args.height)
     print(f"wrote {out}")
     return 0
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    from realsim.destination import check_file_destination
     from realsim.runtime.console import run_cli
+
+    for flag, path in (("--video", args.video), ("--log", args.log)):
+        if path is not None:
+            check_file_destination(path, force=args.force, flag=flag)
 
     return run_cli(args.scene, args.text, args.program, planner=args.planner, seed=args.seed, video=args.video, log=args.log,
                    video_fps=args.video_fps)
@@ -252,6 +259,7 @@ def build_parser() -> argparse.ArgumentParser:
     render = sub.add_parser("render", help="render a converted scene at keyframe 'initial' to a PNG")
     render.add_argument("scene", help="an output folder of `realsim convert` (or its scene.xml)")
     render.add_argument("-o", "--output", default="preview.png", help="PNG to write (default preview.png)")
+    render.add_argument("--force", action="store_true", help="replace an existing file at -o")
     render.add_argument("--camera", help="a camera of the model, e.g. 'capture' (default: an overview)")
     render.add_argument("--width", type=bounded(int, 16, 8192), default=960)
     render.add_argument("--height", type=bounded(int, 16, 8192), default=720)
@@ -265,6 +273,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--video", metavar="OUT.mp4", help="record an MP4 (30 fps of simulated time)")
     run.add_argument("--video-fps", type=bounded(float, 1.0, 240.0), default=30.0, metavar="FPS", help="frames per simulated second of --video (default 30)")
     run.add_argument("--log", metavar="PATH", help="JSON log path (default <scene>/runs/run_<n>.json)")
+    run.add_argument("--force", action="store_true", help="replace existing files at --video / --log")
     run.add_argument("--seed", type=seed_arg, default=0, help="seed of the grasp search (default 0)")
     run.set_defaults(func=cmd_run)
     return parser

@@ -258,8 +258,8 @@ def check_file_destination(dest: str | Path, *, inputs: Iterable[Path | None] = 
     if path.exists() and not force:
         raise InputError(f"{flag} {dest}: the file exists; pass --force to replace it")
     for source in inputs:
-        if source is not None and Path(source).expanduser().resolve() in (path, *path.parents):
-            raise InputError(f"{flag} {dest}: is the input {source} or inside it; name a new file elsewhere")
+        if source is not None and Path(source).expanduser().resolve() == path:
+            raise InputError(f"{flag} {dest}: is the input {source}; name a new file")
     parent = _nearest_existing(path.parent)
     if not os.access(parent, os.W_OK | os.X_OK):
         reason = "read-only file system" if _read_only(parent) else "permission denied"
