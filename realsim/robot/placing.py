@@ -69,13 +69,13 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
     return out
 
 
-def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams()) -> list[tuple[np.ndarray, float, float]]:
+def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams(), limit: bool = True) -> list[tuple[np.ndarray, float, float]]:
     """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, then
-    the other spots, then higher releases; at most ``params.max_poses``."""
+    the other spots, then higher releases; at most ``params.max_poses`` with ``limit``."""
     out: list[tuple[np.ndarray, float, float]] = []
     first = params.drops[0]
     for k, xy in enumerate(spot_list):
         yaws = params.yaws if k == 0 else params.yaws[:3]
         out += [(xy, yaw, first) for yaw in yaws]
     out += [(spot_list[0], yaw, drop) for drop in params.drops[1:] for yaw in params.yaws[:3]]
-    return out[: params.max_poses]
+    return out[: params.max_poses] if limit else out

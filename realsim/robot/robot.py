@@ -114,6 +114,7 @@ class Robot:
         self.grip_act = model.actuator(prefix + GRIPPER_ACTUATOR).id
         self.tcp = model.site(prefix + "tcp").id
         self.finger_bodies = {model.body(prefix + "left_finger").id, model.body(prefix + "right_finger").id}
+        self.hand_bodies = self.finger_bodies | {model.body(prefix + "hand").id}
         self.robot_bodies = {b for b in range(model.nbody) if model.body(b).name.startswith(prefix)}
         mujoco.mj_kinematics(model, data)
         self.base_pos = data.xpos[self.base_id].copy()
@@ -326,12 +327,36 @@ class Robot:
             for z in heights:
                 try:
                     path = plan(z)
+                    self._check_clear(path, ignore={skip} if skip else set())
                 except _Fail as exc:
                     last = exc
                     continue
                 self._follow(path)
                 return
         raise last or _Fail("no safe path")
+
+    def _check_clear(self, path: list[np.ndarray], ignore: set[str] = frozenset(), hand_may_touch: set[str] = frozenset(),
+                     start: np.ndarray | None = None) -> None:
+        """Raise _Fail when the arm would touch an object along ``path`` from ``start`` (default:
+        the commanded joints), at waypoints and midpoints; the held object is carried, not hit."""
+        if self.held:
+            ignore = set(ignore) | {self.held}
+        q_prev = self.data.ctrl[self.act].copy() if start is None else np.asarray(start, float)
+        for q in path:
+            for f in (0.5, 1.0):
+                hits = self.geometry.robot_hits(self.qadr, q_prev + f * (q - q_prev), ignore, hand_may_touch, self.hand_bodies)
+                if hits:
+                    raise _Fail(f"the arm would touch {', '.join(sorted(hits))}")
+            q_prev = q
+
+    def _check_stroke(self, obj: str, path: list[np.ndarray], contact: np.ndarray, d: np.ndarray, gap: float = 0.03) -> None:
+        """Raise _Fail when a link other than the hand would touch the pushed ``obj`` (carried along
+        once the fingers reach it) or the arm any other object, along the push ``path``."""
+        for q in path:
+            advanced = float((self.ik.fk(q)[0] - contact) @ d)
+            hits = self.geometry.robot_hits(self.qadr, q, (), {obj}, self.hand_bodies, {obj: d * max(0.0, advanced - gap)})
+            if hits:
+                raise _Fail(f"the arm would touch {', '.join(sorted(hits))} while pushing")
 
     def _gripper(self, ctrl: float) -> None:
         self.data.ctrl[self.grip_act] = ctrl
@@ -605,7 +630,9 @@ class Robot:
             u = (cb - ca) / max(float(np.linalg.norm(cb - ca)), 1e-9)
             perp = np.array([-u[1], u[0]])
             t = (float(((pa[:, :2] - ca) @ u).max()) + float(((pb[:, :2] - ca) @ u).min())) / 2
-            cands = [ca + u * t + perp * lat for lat in (0.0, 0.02, -0.02, 0.04, -0.04)]
+            a_edge, b_edge = float(((pa[:, :2] - ca) @ u).max()), float(((pb[:, :2] - ca) @ u).min())
+            along = [t] + [t + f * (b_edge - a_edge) for f in (0.15, -0.15, 0.3, -0.3)]
+            cands = [ca + u * tt + perp * lat for lat in (0.0, 0.02, -0.02, 0.04, -0.04, 0.06, -0.06) for tt in along]
             return self._place(obj, cands, np.nan, "place_between", lambda: relations.between(
                 self.object_points(obj), pa, pb, self.geometry.touching(obj)), Keepout(self._others(obj), margin=0.005))
         return self._run("place_between", body, max_sim_time)
@@ -625,6 +652,12 @@ class Robot:
                 return ActionResult("place_down", False, f"no free table surface within 30 cm of {obj}")
             return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)), Keepout(self._others(obj)))
         return self._run("place_down", body, max_sim_time)
+
+    def _owner_of_xy(self, obj: str, xy: np.ndarray, above: float) -> str:
+        """The object (not ``obj``) with a surface point nearest ``xy``."""
+        best = min(((float(np.min(np.linalg.norm(p[p[:, 2] > above, :2] - xy, axis=1))) if (p[:, 2] > above).any() else np.inf, n)
+                    for n in self.object_names() if n != obj for p in [self.object_points(n)]), default=(np.inf, "another object"))
+        return best[1]
 
     def _others(self, obj: str, skip: frozenset[str] | set[str] = frozenset(), above: float = -np.inf) -> np.ndarray:
         """xy of every other object's surface points higher than ``above`` (what a release must clear)."""
@@ -670,21 +703,28 @@ class Robot:
         tcp, rot = self.tcp_pose()
         offset = self._centre_xy(obj) - tcp[:2]  # object centre relative to the tcp, turns with the hand
         below = tcp[2] - float(pts[:, 2].min())
-        poses = release_poses(candidates, self.release)
+        poses = release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))
         if keepout is not None and len(keepout.xy):
-            foot = pts[:, :2] - tcp[:2]
+            # the object's footprint and the fingers as they open (4 cm each side along the closing axis)
+            y, x = rot[:2, 1], rot[:2, 0]
+            fingers = np.array([sy * 0.05 * y + sx * 0.012 * x for sy in (-1.0, 1.0) for sx in (-1.0, 0.0, 1.0)])
+            foot = np.vstack([pts[:, :2] - tcp[:2], fingers])
             tree = cKDTree(keepout.xy)
+
+            def turn_offset(yaw: float) -> np.ndarray:  # the object's centre relative to the tcp, turned
+                c, s_ = np.cos(yaw), np.sin(yaw)
+                return offset @ np.array([[c, s_], [-s_, c]])
 
             def fits(pose: tuple[np.ndarray, float, float]) -> bool:
                 xy, yaw, _ = pose
                 c, s_ = np.cos(yaw), np.sin(yaw)
                 turned = foot @ np.array([[c, s_], [-s_, c]])
-                at = turned - (turned.min(axis=0) + turned.max(axis=0)) / 2 + xy
+                at = turned - turn_offset(yaw) + xy
                 return bool(tree.query(at[:: max(1, len(at) // 400)])[0].min() >= keepout.margin)
             clear = [pose for pose in poses if fits(pose)]
             if not clear and not keepout.soft:
                 raise _Fail(f"no release pose leaves {keepout.margin * 1000:.0f} mm to the other objects ({len(poses)} tried)")
-            poses = clear or poses
+            poses = (clear or poses)[: self.release.max_poses]
         last: _Fail | None = None
         for k, (xy, yaw, drop) in enumerate(poses):
             turn = rotate_about(np.array([0.0, 0.0, 1.0]), yaw)
@@ -744,15 +784,33 @@ class Robot:
             upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
             upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
             rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
+            # the object's footprint swept along the push must not run into another object
+            others = self._others(obj, above=bottom + 0.005)
+            if len(others):
+                tree = cKDTree(others)
+                foot = pts[:: max(1, len(pts) // 400), :2]
+                for k in np.linspace(0.0, distance, max(2, int(distance / 0.01) + 1)):
+                    gap, idx = tree.query(foot + k * d[:2])
+                    if gap.min() < 0.005:
+                        hit = self._owner_of_xy(obj, others[idx[int(np.argmin(gap))]], bottom)
+                        return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove {hit} "
+                                            f"(after {k * 100:.0f} cm)", values={"moved": 0.0})
             self._gripper(0.0)
-            for i, rot in enumerate(rots):
-                try:
-                    self._transit(contact + np.array([0, 0, 0.0]), rot, skip=None)
+            end = contact + d * (distance + 0.03)
+            last: _Fail | None = None
+            for rot in rots:
+                try:  # the stroke is planned and checked first: only the hand may touch the pushed object
+                    q_c = self._ik(contact, rot, np.array(self.ik.home))
+                    if not q_c.converged:
+                        raise _Fail(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
+                    self._check_stroke(obj, self._line(contact, end, rot, rot, q_c.q), contact, d)
+                    self._transit(contact, rot, skip=None)
                     break
-                except _Fail:
-                    if i == len(rots) - 1:
-                        raise
-            self._straight(contact + d * (distance + 0.03), rot)
+                except _Fail as exc:
+                    last = exc
+            else:
+                raise last or _Fail("no push pose")
+            self._straight(end, rot)
             pos, _ = self.tcp_pose()
             for retreat in (pos - d * 0.03 + np.array([0, 0, 0.1]), pos + np.array([0, 0, 0.1]), pos - d * 0.03):
                 try:  # back off the object; the push itself is judged by how far the object moved

@@ -111,6 +111,38 @@ class SceneGeometry:
                 break
         return float(best) if np.isfinite(best) else 0.0
 
+    def robot_hits(self, qadr: np.ndarray, q_arm: np.ndarray, ignore: Iterable[str] = (), hand_may_touch: Iterable[str] = (),
+                   hand_bodies: Iterable[int] = (), shifted: dict[str, np.ndarray] | None = None) -> set[str]:
+        """Objects the robot would touch with its arm at joints ``q_arm`` (everything else as now):
+        a kinematic check on a scratch copy of the state, nothing moves. ``ignore``: objects that
+        may touch any link (the held one); ``hand_may_touch``: objects only the hand and fingers
+        (``hand_bodies``) may touch (what is being pushed); ``shifted``: objects displaced by an xyz
+        offset (where a pushed object will be by then)."""
+        if not hasattr(self, "_scratch"):
+            self._scratch = mujoco.MjData(self.model)
+        d = self._scratch
+        d.qpos[:] = self.data.qpos
+        d.qpos[qadr] = q_arm
+        for name, offset in (shifted or {}).items():
+            adr = self.model.jnt_qposadr[self.model.body_jntadr[self.body(name)]]
+            d.qpos[adr:adr + 3] += offset
+        mujoco.mj_kinematics(self.model, d)
+        mujoco.mj_collision(self.model, d)
+        ignore, hand_ok, hand = set(ignore), set(hand_may_touch), set(hand_bodies)
+        out: set[str] = set()
+        for i in range(d.ncon):
+            c = d.contact[i]
+            if c.dist > 0.0:
+                continue
+            b1, b2 = int(self.model.geom_bodyid[c.geom1]), int(self.model.geom_bodyid[c.geom2])
+            for rb, ob in ((b1, b2), (b2, b1)):
+                if rb in self.robot_bodies and ob not in self.robot_bodies:
+                    owner = self.owner(ob)
+                    if owner == WORLD or owner in ignore or (owner in hand_ok and rb in hand):
+                        continue
+                    out.add(owner)
+        return out
+
     def tallest(self, skip: str | None = None, default: float = 0.0) -> float:
         """Highest point of every object but ``skip``."""
         tops = [self.points(n)[:, 2].max() for n in self.object_names() if n != skip]
