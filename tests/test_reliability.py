@@ -306,3 +306,16 @@ def test_concurrent_conversions_share_a_cache_and_an_output(tmp_path: Path) -> N
     assert sorted(manifest["files"] + [".realsim-manifest.json"]) == files
     seed = json.loads((tmp_path / "same" / "scene.json").read_text())["seed"]
     assert seed in (5, 6)
+
+
+def test_render_and_run_files_replaced_only_with_force(converted: Path, tmp_path: Path) -> None:
+    png = tmp_path / "shot.png"
+    png.write_bytes(b"my own picture")
+    one_line_error(cli("render", str(converted), "-o", str(png), "--width", "64", "--height", "48"), "--force")
+    assert png.read_bytes() == b"my own picture"
+    assert cli("render", str(converted), "-o", str(png), "--width", "64", "--height", "48", "--force").returncode == 0
+    assert png.read_bytes() != b"my own picture"
+    log = tmp_path / "log.json"
+    log.write_text("mine")
+    one_line_error(cli("run", str(converted), "go home", "--log", str(log)), "--force")
+    assert log.read_text() == "mine"
