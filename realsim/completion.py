@@ -25,6 +25,9 @@ from realsim.intrinsics import Intrinsics
 from realsim.scene import Scene, SceneObject
 
 
+OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space
+
+
 @dataclass(frozen=True)
 class DepthView:
     """What the capture camera saw: per-pixel depth (m along the optical axis, NaN = nothing)."""
@@ -33,6 +36,7 @@ class DepthView:
     world_to_optical: np.ndarray  # (4, 4), optical units
     scale: float  # optical units per metre
     depth: np.ndarray  # (H, W)
+    labels: np.ndarray | None = None  # (H, W) object id per pixel (0 support/background), if known
 
     @classmethod
     def of(cls, scene: Scene) -> "DepthView | None":
@@ -42,7 +46,8 @@ class DepthView:
         w2o = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
         scale = float(np.cbrt(abs(np.linalg.det(w2o[:3, :3]))))
         z = (scene.points @ w2o[2, :3] + w2o[2, 3]) / scale
-        return cls(intr, w2o, scale, z.reshape(intr.height, intr.width))
+        labels = scene.labels.reshape(intr.height, intr.width) if scene.labels is not None else None
+        return cls(intr, w2o, scale, z.reshape(intr.height, intr.width), labels)
 
     def veil(self, tolerance_deg: float = 80.0) -> np.ndarray:
         """(H, W) mask of veil pixels: mixed depths at silhouettes, seen almost edge-on (a surface whose
@@ -62,16 +67,23 @@ class DepthView:
             cos = np.abs((n * p).sum(-1)) / (np.linalg.norm(n, axis=-1) * np.linalg.norm(p, axis=-1))
         return np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
 
-    def seen_through(self, points: np.ndarray, tolerance: float) -> np.ndarray:
-        """Mask of world points the camera saw through: nearer than the captured depth at their pixel."""
+    def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None) -> np.ndarray:
+        """Mask of world points the camera saw through: nearer than the captured depth at their pixel
+        by more than ``tolerance`` where the pixel shows object ``own`` (its own noisy surface), by
+        more than a millimetre where it shows anything else (nothing of ``own`` can be in front of that)."""
         opt = points @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
         pix = np.rint(self.intrinsics.project(opt)).astype(np.int64, copy=False) if len(points) else np.zeros((0, 2), np.int64)
         h, w = self.depth.shape
         inside = (opt[:, 2] > 0) & (pix[:, 0] >= 0) & (pix[:, 0] < w) & (pix[:, 1] >= 0) & (pix[:, 1] < h)
         seen = np.full(len(points), np.nan)
         seen[inside] = self.depth[pix[inside, 1], pix[inside, 0]]
+        tol = np.full(len(points), tolerance)
+        if own is not None and self.labels is not None:
+            other = np.ones(len(points), bool)
+            other[inside] = self.labels[pix[inside, 1], pix[inside, 0]] != own
+            tol[other] = OTHER_SURFACE_TOLERANCE
         with np.errstate(invalid="ignore"):
-            return opt[:, 2] / self.scale < seen - tolerance
+            return opt[:, 2] / self.scale < seen - tol
 
 
 def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -94,7 +106,7 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
 
 
 def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
-                     params: CompletionParams) -> tuple[trimesh.Trimesh, float]:
+                     params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
     """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
     the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
     ``carve_min_fraction`` is free."""
@@ -107,7 +119,7 @@ def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, obse
     col = np.repeat(np.arange(len(xy)), counts)
     k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
     cells = np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
-    free = view.seen_through(cells, params.carve_tolerance)
+    free = view.seen_through(cells, params.carve_tolerance, own)
     fraction = float(free.mean())
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return mesh, fraction
@@ -242,7 +254,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         kind = "cylinder" if shape is not None else "hull"
         mesh, base_centre = shape if shape is not None else complete_hull(pts, base_z, top_z)
         if view is not None:
-            mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params)
+            mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
             if carved >= params.carve_min_fraction:
                 kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         done[obj.id] = mesh

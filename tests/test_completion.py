@@ -1,0 +1,67 @@
+"""Completion uses what the camera saw: free-space carving, veils, neighbours cut apart."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex
+from realsim.intrinsics import Intrinsics
+
+INTR = Intrinsics(fx=200.0, fy=200.0, cx=79.5, cy=59.5, width=160, height=120)
+
+
+def _view(depth: np.ndarray, labels: np.ndarray | None = None) -> DepthView:
+    """A camera at the origin looking down -z of the world (optical z = -world z, y flipped)."""
+    world_to_optical = np.diag([1.0, -1.0, -1.0, 1.0])
+    return DepthView(INTR, world_to_optical, 1.0, depth, labels)
+
+
+def _depth_of_box(lo: np.ndarray, hi: np.ndarray, floor: float) -> np.ndarray:
+    """What the camera above sees: the top of the box [lo, hi] (world, z up) on a floor at z = floor."""
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
+    ray = np.stack([(u - INTR.cx) / INTR.fx, -(v - INTR.cy) / INTR.fy], axis=-1)  # world xy per unit depth
+    depth = np.full(u.shape, -floor)
+    top = -hi[2]
+    xy = ray * top
+    on_box = (xy[..., 0] >= lo[0]) & (xy[..., 0] <= hi[0]) & (xy[..., 1] >= lo[1]) & (xy[..., 1] <= hi[1])
+    depth[on_box] = top
+    return depth
+
+
+def test_a_shape_grown_where_the_camera_saw_the_floor_is_carved_back() -> None:
+    lo, hi = np.array([-0.05, -0.04, -1.0]), np.array([0.05, 0.04, -0.9])  # a 10 x 8 x 10 cm box, 0.9 m below the camera
+    depth = _depth_of_box(lo, hi, floor=-1.0)
+    view = _view(depth, np.where(depth < 0.95, 1, 0))  # object 1 where the camera saw the box top
+    too_big = trimesh.creation.box(bounds=[[-0.05, -0.04, -1.0], [0.12, 0.04, -0.9]])  # extruded 7 cm too far in +x
+    observed = np.array([[x, y, -0.9] for x in np.linspace(-0.05, 0.05, 11) for y in np.linspace(-0.04, 0.04, 9)])
+    carved, fraction = carve_free_space(too_big, view, -1.0, observed, CompletionParams(), own=1)
+    assert 0.3 < fraction < 0.5  # 7 of 17 cm were seen through
+    assert carved.bounds[1][0] < 0.06 and carved.bounds[0][0] < -0.045
+    assert abs(carved.bounds[0][2] + 1.0) < 1e-9  # still standing on its base
+    right, f = carve_free_space(trimesh.creation.box(bounds=[lo, hi]), view, -1.0, observed, CompletionParams(), own=1)
+    assert f < CompletionParams().carve_min_fraction and np.allclose(right.bounds, [lo, hi])  # a correct shape is left alone
+    # the carved shape hides few pixels where the camera saw farther (a voxel's width along its outline)
+    pts = carved.sample(20000, seed=0)
+    bad = pts[view.seen_through(pts, 0.006)]
+    bad_pixels = {tuple(p) for p in np.rint(INTR.project(bad * [1, -1, -1])).astype(int)}
+    too_big_pts = too_big.sample(20000, seed=0)
+    before = {tuple(p) for p in np.rint(INTR.project(too_big_pts[view.seen_through(too_big_pts, 0.006)] * [1, -1, -1])).astype(int)}
+    assert len(bad_pixels) < 0.15 * len(before)
+
+
+def test_veil_pixels_are_the_ones_seen_edge_on() -> None:
+    depth = _depth_of_box(np.array([-0.05, -0.04, -1.0]), np.array([0.05, 0.04, -0.9]), floor=-1.0)
+    veil = _view(depth).veil(80.0)
+    assert veil.sum() > 0
+    v, u = np.nonzero(veil)
+    assert np.all(np.abs(np.diff(depth, axis=1, prepend=depth[:, :1]))[v, u] + np.abs(np.diff(depth, axis=0, prepend=depth[:1]))[v, u] > 0) \
+        or veil.mean() < 0.05  # only along the box's silhouette
+    assert veil.mean() < 0.05
+
+
+def test_clip_convex_keeps_one_side() -> None:
+    box = trimesh.creation.box(extents=[0.2, 0.1, 0.1])
+    half = clip_convex(box, np.array([1.0, 0.0, 0.0]), 0.05)
+    assert half is not None and np.isclose(half.bounds[0][0], 0.05) and np.isclose(half.volume, 0.05 * 0.1 * 0.1)
+    assert clip_convex(box, np.array([1.0, 0.0, 0.0]), 0.2) is None
