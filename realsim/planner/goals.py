@@ -260,14 +260,8 @@ class Moved(Goal):
     def evaluate(self, world: WorldView) -> GoalResult:
         if self.start is None:
             return GoalResult(self.describe(), False, "start position not recorded (prepare() was not called)")
-        p = _pos(world, self.obj)
-        ux, uy = direction_in_world(self.direction, world.robot_yaw())
-        dx, dy = p[0] - self.start[0], p[1] - self.start[1]
-        along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
-        tol = max(0.02, 0.4 * self.distance)
-        ok = abs(along - self.distance) <= tol and across <= max(0.03, 0.5 * self.distance)
-        measured = f"moved {along:.3f} m along (target {self.distance:.3f} +- {tol:.3f}), {across:.3f} m sideways"
-        return GoalResult(self.describe(), ok, measured)
+        d = direction_in_world(self.direction, world.robot_yaw())
+        return _result(self, relations.moved(self.start, _pos(world, self.obj), d, self.distance))
 
 
 @dataclass

@@ -166,6 +166,17 @@ def between(obj: np.ndarray, a: np.ndarray, b: np.ndarray, touching: set[str] | 
                         f"(<= {allowed:.3f}){_contact_note(touching)}")
 
 
+def moved(start: Sequence[float], end: Sequence[float], direction: Sequence[float], distance: float) -> Relation:
+    """An object moved about ``distance`` m along the world xy unit vector ``direction``: within
+    max(2 cm, 40 %) along it and at most max(3 cm, half the distance) sideways."""
+    ux, uy = float(direction[0]), float(direction[1])
+    dx, dy = float(end[0]) - float(start[0]), float(end[1]) - float(start[1])
+    along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
+    tol = max(0.02, 0.4 * distance)
+    ok = abs(along - distance) <= tol and across <= max(0.03, 0.5 * distance)
+    return Relation(ok, f"moved {along:.3f} m along (target {distance:.3f} +- {tol:.3f}), {across:.3f} m sideways")
+
+
 def box_points(centre: Sequence[float], size: Sequence[float], n: int = 5) -> np.ndarray:
     """Surface samples of an axis-aligned box: the geometry of an object known only by its extents."""
     g = np.linspace(-0.5, 0.5, n)

@@ -82,6 +82,11 @@ def _box_centre(pts: np.ndarray) -> np.ndarray:
     return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
 
 
+def _box_centre_3d(pts: np.ndarray) -> np.ndarray:
+    """Centre of the points' bounding box: where goals measure an object."""
+    return (pts.min(axis=0) + pts.max(axis=0)) / 2
+
+
 def _on_table(touching: set[str]) -> relations.Relation:
     ok = relations.WORLD in touching and relations.ROBOT not in touching
     return relations.Relation(ok, "touching " + (", ".join(sorted(touching)) or "nothing"))
@@ -770,7 +775,7 @@ class Robot:
 
         def body() -> ActionResult:
             pts = self.object_points(obj)
-            start_pos, _ = self.object_pose(obj)
+            start_pos = _box_centre_3d(pts)
             bottom = float(pts[:, 2].min())
             height = float(pts[:, 2].max()) - bottom
             centre = np.array([*pts[:, :2].mean(axis=0), bottom + min(0.03, height / 2) + 0.005])
@@ -819,10 +824,10 @@ class Robot:
                 except _Fail:
                     continue
             self._wait(0.3)
-            end_pos, _ = self.object_pose(obj)
+            end_pos = _box_centre_3d(self.object_points(obj))
             moved = float((end_pos - start_pos) @ d)
-            ok = moved >= 0.7 * distance
-            return ActionResult("push", ok, "" if ok else f"object moved {moved * 1000:.0f} mm of {distance * 1000:.0f}", values={"moved": moved})
+            verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
+            return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
 
     def open_drawer(self, obj: str, amount: float | None = None, max_sim_time: float | None = None) -> ActionResult:
