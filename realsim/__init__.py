@@ -1,8 +1,83 @@
-"""realsim: turn a captured real scene into a settled MuJoCo simulation."""
+"""realsim: turn a captured real scene into a settled MuJoCo simulation a Franka Panda can act in.
 
+The public API (imported lazily, so ``import realsim`` stays fast)::
+
+    import realsim
+
+    scene = realsim.convert("capture/", "out/kitchen", seed=0)        # capture -> scene folder
+    sim = realsim.Sim.load("out/kitchen")                              # a converted scene
+    record = realsim.run_command(sim, "put the mug in the bowl")       # a sentence, in the sandbox
+    print(record.verdict)
+
+Errors meant for the user derive from :class:`RealsimError` (:class:`InputError`: bad input,
+:class:`TaskFailed`: a goal not met).
+"""
+
+from __future__ import annotations
+
+import importlib
 import os
+from typing import TYPE_CHECKING, Any
 
 # MuJoCo picks its GL backend when first imported: offscreen EGL works on CPU-only machines.
 os.environ.setdefault("MUJOCO_GL", "egl")
 
 __version__ = "0.1.0"
+
+_EXPORTS: dict[str, str] = {
+    # conversion
+    "convert": "realsim.pipeline",
+    "run_pipeline": "realsim.pipeline",
+    "plan_pipeline": "realsim.pipeline",
+    "load_capture": "realsim.capture",
+    "LoadParams": "realsim.capture",
+    "CaptureConfig": "realsim.capture_config",
+    "Scene": "realsim.scene",
+    "SceneObject": "realsim.scene",
+    "SupportPlane": "realsim.scene",
+    "write_scene": "realsim.output",
+    # the runtime
+    "Sim": "realsim.runtime",
+    "RunRecord": "realsim.runtime",
+    "run_command": "realsim.runtime",
+    "run_program": "realsim.runtime",
+    "write_log": "realsim.runtime",
+    # export and viewing
+    "export_mjcf": "realsim.export",
+    "export_objects": "realsim.export",
+    "export_usd": "realsim.export",
+    "render_scene": "realsim.render",
+    # errors
+    "RealsimError": "realsim.errors",
+    "InputError": "realsim.errors",
+    "TaskFailed": "realsim.errors",
+    "SimulationDiverged": "realsim.errors",
+}
+
+__all__ = ["__version__", *_EXPORTS]
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public name from its module on first use."""
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'realsim' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)
+
+
+if TYPE_CHECKING:  # for type checkers and IDEs: the same names, eagerly
+    from realsim.capture import LoadParams, load_capture
+    from realsim.capture_config import CaptureConfig
+    from realsim.errors import InputError, RealsimError, SimulationDiverged, TaskFailed
+    from realsim.export import export_mjcf, export_objects, export_usd
+    from realsim.output import write_scene
+    from realsim.pipeline import convert, plan_pipeline, run_pipeline
+    from realsim.render import render_scene
+    from realsim.runtime import RunRecord, Sim, run_command, run_program, write_log
+    from realsim.scene import Scene, SceneObject, SupportPlane

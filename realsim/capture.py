@@ -30,13 +30,15 @@ import yaml
 
 from realsim.capture_config import read_capture_config
 from realsim.errors import InputError
+from realsim.resolution import UNIT_SCALE, check_scale, plausible_units, point_spacing
+from realsim.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 
 POINT_CLOUD_SUFFIXES = {".pcd", ".ply", ".xyz", ".pts"}
 MESH_SUFFIXES = {".obj", ".stl", ".ply", ".glb", ".gltf", ".off"}
+USD_SUFFIXES = {".usd", ".usda", ".usdc", ".usdz"}
 UP_AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
 MIN_CAPTURE_POINTS = 100  # fewer finite points than this cannot show a support and an object
-UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 
 
 @dataclass(frozen=True)
@@ -45,8 +47,9 @@ class LoadParams:
 
     units: str | None = None  # override unit detection
     up: str | None = None  # override up-axis detection
-    mesh_sample_points: int = 200_000  # points sampled from an environment mesh
-    mm_extent_threshold: float = 30.0  # a scene larger than this many units is in millimetres
+    mesh_sample_spacing: float = 0.005  # environment meshes are sampled by area this finely (m): 3 cm objects
+    mesh_max_points: int = 2_000_000  # ... up to this many points
+    mesh_pilot_points: int = 100_000  # points sampled first to find the up axis and the units
     text: str | None = None  # a scene description (``--text``): wins over capture.yaml's ``text:``
 
 
@@ -60,6 +63,10 @@ class RawCloud:
     is_camera_view: bool
     fmt: str
     annotations: np.ndarray | None = None
+    mesh: Any = None  # trimesh.Trimesh of an environment mesh (points are a pilot sample until resampled)
+    units_hint: str | None = None  # units and up axis the file itself declares (USD, RGB-D sequences)
+    up_hint: str | None = None
+    splat: Path | None = None  # a Gaussian splat PLY read as its centres
 
 
 def up_rotation(up: str) -> np.ndarray:
@@ -128,18 +135,43 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
             raise InputError(f"{path}: the file holds no geometry")
         return RawCloud(np.asarray(verts, dtype=np.float64), None, None, False, path.suffix[1:].lower())
     check_mesh_arrays(path, np.asarray(loaded.vertices), np.asarray(loaded.faces))
+    pts, cols, _ = sample_mesh(loaded, count, seed, path)
+    return RawCloud(pts, cols, None, False, path.suffix[1:].lower(), mesh=loaded)
+
+
+def sample_mesh(mesh: Any, count: int, seed: int, path: Path) -> tuple[np.ndarray, np.ndarray | None, np.ndarray]:
+    """``count`` points sampled by area (seeded): points, colours in [0, 1] (vertex, face or texture
+    colour; None without colour) and the face normal of each point."""
+    import trimesh
+
     try:
-        pts, face_idx = trimesh.sample.sample_surface(loaded, count, seed=seed)
+        pts, face_idx = trimesh.sample.sample_surface(mesh, count, seed=seed)
     except (ValueError, IndexError, TypeError) as exc:  # degenerate data trimesh cannot sample
         raise InputError(f"{path}: corrupt mesh ({type(exc).__name__}: {exc})") from None
     cols = None
     try:
-        fc = loaded.visual.face_colors
-        if fc is not None and len(fc) == len(loaded.faces):
-            cols = np.asarray(fc)[face_idx, :3] / 255.0
-    except Exception:  # textured visuals have no face colours; colour is optional
+        visual = mesh.visual
+        if visual.kind == "texture" and getattr(visual.material, "image", None) is not None:
+            visual = visual.to_color()
+        if visual.kind == "vertex":
+            cols = np.asarray(visual.vertex_colors)[mesh.faces[face_idx], :3].mean(axis=1) / 255.0
+        elif visual.kind == "face":
+            cols = np.asarray(visual.face_colors)[face_idx, :3] / 255.0
+    except Exception:  # colour is optional: a broken material leaves the points uncoloured
         cols = None
-    return RawCloud(np.asarray(pts, dtype=np.float64), cols, None, False, path.suffix[1:].lower())
+    return np.asarray(pts, dtype=np.float64), cols, np.asarray(mesh.face_normals)[face_idx]
+
+
+def resample_mesh(cloud: RawCloud, to_world: np.ndarray, params: LoadParams, seed: int, path: Path) -> RawCloud:
+    """Sample an environment mesh by area at ``mesh_sample_spacing`` (in metres, through
+    ``to_world``), dropping points on downward-facing faces: the underside of a table top or a
+    floor slab is never a support, and object bottoms are hidden on their support."""
+    area_m2 = float(cloud.mesh.area) * float(abs(np.linalg.det(to_world))) ** (2.0 / 3.0)
+    count = int(np.clip(area_m2 / params.mesh_sample_spacing**2, params.mesh_pilot_points, params.mesh_max_points))
+    pts, cols, normals = sample_mesh(cloud.mesh, count, seed, path)
+    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # world +Z in input coordinates
+    keep = normals @ up > -0.3
+    return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt)
 
 
 def check_mesh_arrays(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -170,16 +202,33 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     if path.is_file() and path.stat().st_size == 0:
         raise InputError(f"{path}: the file is empty")
     suffix = path.suffix.lower()
-    if suffix == ".ply" and _is_point_cloud_ply(path):
-        cloud = _load_mesh_points(path, params.mesh_sample_points, seed)
+    if path.is_dir():
+        from realsim.rgbd import fuse_sequence
+
+        pts, cols = fuse_sequence(path)
+        cloud = RawCloud(pts, cols, None, False, "rgbd", units_hint="m", up_hint="+y")
+    elif suffix == ".ply" and is_splat_ply(path):
+        from realsim.viewer.splat import read_splat_ply
+
+        splats = read_splat_ply(path)
+        solid = splats.opacities[:, 0] >= 0.2  # faint splats are floaters, not surfaces
+        cloud = RawCloud(splats.centers[solid].astype(np.float64), splats.rgbs[solid].astype(np.float64), None, False, "ply", splat=path)
+    elif suffix == ".ply" and _is_point_cloud_ply(path):
+        cloud = _load_mesh_points(path, params.mesh_pilot_points, seed)
     elif suffix in POINT_CLOUD_SUFFIXES - {".ply"}:
         cloud = _read_point_file(path)
     elif suffix in MESH_SUFFIXES:
-        cloud = _load_mesh_points(path, params.mesh_sample_points, seed)
+        cloud = _load_mesh_points(path, params.mesh_pilot_points, seed)
+    elif suffix in USD_SUFFIXES:
+        from realsim.usd_mesh import read_usd_mesh
+
+        mesh, units_hint, up_hint = read_usd_mesh(path)
+        pts, cols, _ = sample_mesh(mesh, params.mesh_pilot_points, seed, path)
+        cloud = RawCloud(pts, cols, None, False, "usd", mesh=mesh, units_hint=units_hint, up_hint=up_hint)
     else:
         raise InputError(
             f"{path}: unsupported capture format {suffix or '(no extension)'!r}; "
-            "use PCD, PLY, OBJ, STL, GLB or glTF"
+            "use PCD, PLY, XYZ, OBJ, STL, GLB, glTF or USD (or an RGB-D sequence folder)"
         )
     if cloud.points.ndim != 2 or cloud.points.shape[1] != 3:
         raise InputError(f"{path}: corrupt point data (shape {cloud.points.shape}, expected (N, 3))")
@@ -191,11 +240,11 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     return cloud
 
 
-def detect_units(points: np.ndarray, threshold: float) -> str:
-    """'mm' when the finite extent is implausibly large for metres, else 'm'."""
-    finite = points[np.isfinite(points).all(axis=1)]
-    lo, hi = np.percentile(finite, [1, 99], axis=0)
-    return "mm" if float(np.max(hi - lo)) > threshold else "m"
+def is_splat_ply(path: Path) -> bool:
+    """True for a 3D Gaussian splat PLY (vertex properties ``f_dc_0`` and ``opacity``)."""
+    with path.open("rb") as fh:
+        head = fh.read(8192).split(b"end_header")[0]
+    return b"property float f_dc_0" in head and b"property float opacity" in head
 
 
 def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
@@ -285,7 +334,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     object_files: list[Path] = []
     if path.is_dir():
         metadata = read_capture_config(path)
-        env = _find_environment(path)
+        env = _find_environment(path) or (path if is_rgbd_sequence(path) else None)
         object_files = _object_files(path)
         photos = [p for p in path.glob("photo.*") if p.suffix.lower() in (".jpg", ".jpeg", ".png", ".webp")]
         if params.text:
@@ -310,13 +359,23 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     transform = np.eye(4)
     if env is not None:
         cloud = read_environment(env, params, seed)
-        kind = "pointcloud" if cloud.fmt in ("pcd", "xyz", "pts") or (cloud.fmt == "ply" and _is_point_cloud_ply(env)) else "mesh"
-        if units is None:
-            units, units_detected = detect_units(cloud.points, params.mm_extent_threshold), True
+        kind = "pointcloud" if cloud.fmt in ("pcd", "xyz", "pts", "rgbd") or (cloud.fmt == "ply" and cloud.mesh is None) else "mesh"
+        units, up = units or cloud.units_hint, up or cloud.up_hint
         if up is None:
             up, up_detected = detect_up(cloud, cloud.fmt, seed), True
+        if units is None:
+            units, why = plausible_units(cloud.points, up_rotation(up)[2])
+            units_detected = True
+            metadata["units_reason"] = why
+        else:
+            check_scale(cloud.points * UNIT_SCALE[units], units)
         transform[:3, :3] = up_rotation(up) * UNIT_SCALE[units]
+        if cloud.mesh is not None:
+            cloud = resample_mesh(cloud, transform, params, seed, env)
         scene_points = cloud.points @ transform[:3, :3].T
+        metadata["point_spacing"] = point_spacing(scene_points, seed)
+        if cloud.splat is not None:
+            metadata["splat"] = str(cloud.splat)
         scene_colors = cloud.colors
         grid_shape = cloud.grid_shape
         annotations = cloud.annotations

@@ -31,6 +31,7 @@ class ComposeParams:
     """Parameters of MJCF composition."""
 
     timestep: float = 0.002
+    sleep: bool = True  # MuJoCo's island sleeping in the written scene (settling and rest checks run awake)
     object_condim: int = 4
     default_density: float = 300.0  # kg/m^3 for scan objects without a manifest
     min_mass: float = 0.02
@@ -83,6 +84,8 @@ def new_spec(params: ComposeParams) -> mujoco.MjSpec:
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
     spec.option.impratio = 10.0
+    if params.sleep:  # bodies at rest are skipped until something touches them (measured: bench/bench_sim.py)
+        spec.option.enableflags |= int(mujoco.mjtEnableBit.mjENBL_SLEEP)
     spec.visual.global_.offwidth = 1280
     spec.visual.global_.offheight = 960
     spec.visual.headlight.ambient = [params.headlight_ambient] * 3
@@ -134,6 +137,7 @@ def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np
 
 
 JOINT_TYPES = {"slide": mujoco.mjtJoint.mjJNT_SLIDE, "hinge": mujoco.mjtJoint.mjJNT_HINGE}
+PRIMITIVES = {"box": mujoco.mjtGeom.mjGEOM_BOX, "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER, "sphere": mujoco.mjtGeom.mjGEOM_SPHERE}
 
 
 def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, assets: dict[str, bytes],
@@ -165,13 +169,17 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
     body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
     body.explicitinertial = True
     for i, hull in enumerate(obj.collision):
-        file = f"{obj.name}_collision_{i}.stl"
-        assets[file] = mesh_bytes(hull, "stl")
-        spec.add_mesh(name=f"{obj.name}_collision_{i}", file=file)
+        primitive = hull.metadata.get("mujoco_primitive")  # realsim.assets.primitives: a box, cylinder or sphere
+        if primitive is not None:
+            shape = dict(type=PRIMITIVES[primitive["type"]], size=list(primitive["size"]), pos=list(primitive["pos"]), quat=list(primitive["quat"]))
+        else:
+            file = f"{obj.name}_collision_{i}.stl"
+            assets[file] = mesh_bytes(hull, "stl")
+            spec.add_mesh(name=f"{obj.name}_collision_{i}", file=file)
+            shape = dict(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"{obj.name}_collision_{i}")
         body.add_geom(
             name=f"{obj.name}_collision_{i}",
-            type=mujoco.mjtGeom.mjGEOM_MESH,
-            meshname=f"{obj.name}_collision_{i}",
+            **shape,
             group=COLLISION_GROUP,
             contype=1,
             conaffinity=1,

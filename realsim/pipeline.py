@@ -32,6 +32,7 @@ from realsim.objects_stage import ObjectsParams, prepare_scene_objects
 from realsim.output import write_scene
 from realsim.planes import PlaneParams, detect_planes
 from realsim.resources import data_dir
+from realsim.rgbd import is_rgbd_sequence
 from realsim.robot_stage import RobotStageParams, robot_scene
 from realsim.scene import Scene
 from realsim.segment_stage import SegmentParams, segment_scene
@@ -120,7 +121,7 @@ def pipeline_for(source: Path | None, text: str | None = None) -> str:
             return "photo"  # a folder holding only photo.*
     if source.is_file() and source.suffix.lower() in PHOTO_SUFFIXES:
         return "photo"
-    if source.is_dir() and not any(source.glob("scene.*")):
+    if source.is_dir() and not any(source.glob("scene.*")) and not is_rgbd_sequence(source):
         return "objects"
     return "scan"
 
@@ -185,14 +186,23 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path | None, dest: Path | str, *, force: bool = False, check_only: bool = False,
-            **kwargs: Any) -> Scene | None:
-    """Run the pipeline on ``source`` (None with a ``load.text`` override) and write ``dest`` atomically.
+def convert(source: Path | str | None, dest: Path | str, *, text: str | None = None, force: bool = False,
+            check_only: bool = False, **kwargs: Any) -> Scene | None:
+    """Convert a capture (a file or folder; None with ``text``) into a scene folder at ``dest``.
 
-    ``dest`` is checked before any work (:func:`realsim.destination.check_destination`): a new
-    path, an empty folder, or earlier realsim output replaced only with ``force``. With
-    ``check_only`` everything is validated and nothing is run or written (returns None).
+    ``text`` describes a scene instead ("a table with a mug and a bowl"). ``dest`` is checked
+    before any work (:func:`realsim.destination.check_destination`): a new path, an empty
+    folder, or earlier realsim output replaced only with ``force``; the folder is written
+    atomically. Other keywords go to :func:`run_pipeline` (``seed``, ``pipeline``,
+    ``overrides={"stage": {"param": value}}``). With ``check_only`` everything is validated and
+    nothing is run or written (returns None).
     """
+    if text is not None:
+        if not text.strip():
+            raise InputError('the description is empty: describe the scene, e.g. "a table with a mug and two soda cans"')
+        overrides = dict(kwargs.get("overrides") or {})
+        overrides["load"] = {**(overrides.get("load") or {}), "text": text}
+        kwargs["overrides"] = overrides
     started = time.perf_counter()
     photo = ((kwargs.get("overrides") or {}).get("objects", {}).get("understanding", {}) or {}).get("photo")
     dest = check_destination(dest, inputs=[source, Path(photo) if photo else None], force=force)

@@ -7,6 +7,7 @@ near it, which is what brings the height to millimetres.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -15,6 +16,7 @@ from scipy import ndimage
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from realsim.errors import InputError
+from realsim.resolution import working_resolution
 from realsim.scene import Scene, SupportPlane
 
 
@@ -39,6 +41,10 @@ class PlaneParams:
     floor_min_size: float = 1.5  # a lowest support this large in both directions is the floor (m)
     assumed_support_height: float = 0.75  # height given to the lowest support when no floor is seen
     max_support_height: float = 2.5  # planes higher than this above the floor are ceilings
+    max_covered_fraction: float = 0.5  # a surface mostly covered by another just above it is an underside
+    covered_band: tuple[float, float] = (0.01, 0.08)  # ... within this height band above it (m)
+    max_work_points: int = 1_500_000  # denser captures are voxel-downsampled at their working resolution
+    table_heights: tuple[float, float] = (0.4, 1.2)  # plausible table or counter tops above the floor (m)
 
 
 def _finite(points: np.ndarray) -> np.ndarray:
@@ -252,7 +258,12 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     if scene.points is None:
         return scene
     finite = _finite(scene.points)
-    proposals = ransac_proposals(scene.points[finite], params, scene.seed)
+    resolution = working_resolution(float(scene.capture.metadata.get("point_spacing", float("nan"))))
+    params = at_resolution(params, resolution)
+    work = scene.points[finite]
+    if len(work) > params.max_work_points:  # a dense capture is worked at its resolution: bounded cost
+        work = voxel_downsample(work, resolution)
+    proposals = ransac_proposals(work, params, scene.seed)
     viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.metadata.get("camera_view") else None
     cos_level = np.cos(np.radians(params.level_max_tilt_deg))
     candidates = [prop for prop in proposals if abs(prop[0][2]) >= cos_level]
@@ -265,9 +276,9 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     # roughly upright, so a big wall seen at a grazing angle does not win over the table.
     normal, d, _ = max(candidates, key=lambda c: len(c[2]) * c[0][2] ** 2)
     normal, d = _orient_up(normal, d, viewpoint)
-    normal, d, _ = refine_plane(scene.points[finite], normal, d, params.refine_threshold)
+    normal, d, _ = refine_plane(work, normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))
-    pts = scene.points[finite] @ rotation.T
+    pts = work @ rotation.T
 
     cos_support = np.cos(np.radians(params.support_max_tilt_deg))
     regions: list[tuple[float, np.ndarray]] = []  # (height, downsampled region points)
@@ -285,15 +296,48 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
             continue
         n, dd, mask = refine_plane(band, np.array([0.0, 0.0, 1.0]), -float(np.median(band[:, 2])), params.refine_threshold)
         supports.append((float(-dd / n[2]), band[mask], n))
+    supports = [sup for sup in supports if _covered_from_above(pts, sup[0], sup[1], params, scene.seed) <= params.max_covered_fraction]
     if not supports:
-        raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan")
+        raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan; "
+                         "check --up and --units")
     supports.sort(key=lambda r: r[0])
     supports = _drop_object_tops(supports, params)
     planes, shift = _place_floor(scene, supports, params)
+    _warn_implausible(scene, planes, params)
     offset = _recentre(planes)
     scene.planes = planes
     _apply_rigid(scene, rotation, np.array([offset[0], offset[1], shift]))
     return scene
+
+
+def at_resolution(params: PlaneParams, resolution: float) -> PlaneParams:
+    """Grid cells at least twice the capture's working resolution, so sparse captures still fill them."""
+    return dataclasses.replace(params, voxel_size=max(params.voxel_size, resolution),
+                               region_cell=max(params.region_cell, 2.0 * resolution))
+
+
+def _covered_from_above(pts: np.ndarray, height: float, support_pts: np.ndarray, params: PlaneParams, seed: int) -> float:
+    """Fraction of a support's points with another surface right above them (``covered_band``):
+    the underside of a table top or of a floor slab, never the surface things stand on."""
+    lo, hi = params.covered_band
+    above = pts[(pts[:, 2] > height + lo) & (pts[:, 2] < height + hi)]
+    if len(above) == 0:
+        return 0.0
+    rng = np.random.default_rng(seed)
+    sample = support_pts[rng.choice(len(support_pts), min(len(support_pts), 3000), replace=False)]
+    dist, _ = cKDTree(above[:, :2]).query(sample[:, :2], distance_upper_bound=max(0.01, params.voxel_size))
+    return float(np.isfinite(dist).mean())
+
+
+def _warn_implausible(scene: Scene, planes: list[SupportPlane], params: PlaneParams) -> None:
+    """Say when an observed support stands at a height no table or counter has."""
+    lo, hi = params.table_heights
+    if not any(p.kind == "floor" and p.observed for p in planes):
+        return
+    for p in planes:
+        if p.kind != "floor" and p.observed and not lo <= p.height <= hi:
+            scene.warn(f"support {p.id} is {p.height:.2f} m above the floor, outside the {lo}-{hi} m of tables and "
+                       "counters: check it (a shelf, a step, or wrong --units)")
 
 
 def _merge_regions(regions: list[tuple[float, np.ndarray]], params: PlaneParams) -> list[np.ndarray]:

@@ -52,7 +52,7 @@ class SegmentParams:
     min_fragment_points: int = 8  # smaller supervoxel parts are absorbed by their best neighbour
     # merging supervoxels (LCCP)
     convex_tolerance: float = 40.0  # connections this close to flat count as convex
-    orientation_neighbors: int = 8  # unorganized clouds: segment graph degree for consistent normal orientation
+    orientation_radius: float = 0.06  # unorganized clouds: segment normals point away from the centre of what lies this close
     min_contact_links: int = 6  # fewer links between two fragments are not a contact
     color_edge: float | None = None  # segments whose mean RGB differ more do not join directly (None: off;
     # on textured real objects any useful threshold splits objects, see bench)
@@ -387,28 +387,35 @@ def merge_regions(n_seg: int, si: np.ndarray, sj: np.ndarray, weight: np.ndarray
 # objects
 
 
-def _consistent_outward(centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray, k: int) -> np.ndarray:
-    """For clouds without a viewpoint: orient segment normals consistently, pointing outward.
+def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray, radius: float) -> np.ndarray:
+    """For clouds without a viewpoint: each segment normal points away from the (point-weighted)
+    centre of the segments within ``radius``, which lies inside the object the segment bounds."""
+    tree = cKDTree(centroids)
+    pairs = tree.query_pairs(radius, output_type="ndarray")
+    i = np.concatenate([pairs[:, 0], pairs[:, 1], np.arange(len(centroids))])
+    j = np.concatenate([pairs[:, 1], pairs[:, 0], np.arange(len(centroids))])
+    w = counts[j]
+    total = np.bincount(i, w, minlength=len(centroids))
+    centre = np.stack([np.bincount(i, w * centroids[j, a], minlength=len(centroids)) for a in range(3)], axis=1) / total[:, None]
+    outward = ((centroids - centre) * normals).sum(axis=1)
+    return normals * np.where(outward < 0, -1.0, 1.0)[:, None]
 
-    Normals are made consistent along a minimum spanning tree of the k-nearest segment graph
-    (Open3D's tangent-plane propagation); then each connected group of segments is flipped so
-    that its normals point, on average (weighted by points), away from the group's centre.
-    """
-    import open3d as o3d
 
-    out = normals.copy()
-    if len(centroids) > k + 1:
-        pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(centroids))
-        pcd.normals = o3d.utility.Vector3dVector(normals)
-        pcd.orient_normals_consistent_tangent_plane(k)
-        out = np.asarray(pcd.normals).copy()
-    _, nn = cKDTree(centroids).query(centroids, k=min(k + 1, len(centroids)))
-    nn = nn.reshape(len(centroids), -1)
-    group = _components(len(centroids), np.repeat(np.arange(len(centroids)), nn.shape[1]), nn.ravel())
-    size = np.bincount(group, counts)
-    centre = np.stack([np.bincount(group, counts * centroids[:, i]) for i in range(3)], axis=1) / size[:, None]
-    score = np.bincount(group, counts * ((centroids - centre[group]) * out).sum(axis=1))
-    return out * np.where(score[group] < 0, -1.0, 1.0)[:, None]
+def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
+                           radius: float, step: float) -> np.ndarray:
+    """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
+    of it is empty. Each segment normal points to the side along which fewer points lie in a thin
+    cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule."""
+    tree = cKDTree(points)
+    ts = np.arange(2 * step, radius + 1e-9, step)
+    score = np.zeros(len(centroids))
+    for t in ts:
+        ahead = tree.query_ball_point(centroids + t * normals, step, return_length=True)
+        behind = tree.query_ball_point(centroids - t * normals, step, return_length=True)
+        score += np.asarray(behind, float) - np.asarray(ahead, float)
+    fallback = _outward_from_local_centre(centroids, normals, counts, radius)
+    sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
+    return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
 
 
 def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
@@ -514,7 +521,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         # pixel normals point toward the camera: their sum gives the outward side of each segment
         away_seg = -np.stack([np.bincount(part, normals[ids, i], minlength=n_seg) for i in range(3)], axis=1)
     else:
-        nrm = _consistent_outward(cent, nrm, seg_count, params.orientation_neighbors)
+        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from realsim.compose import safe_name
 from realsim.scene import Scene, SceneObject
-from realsim.segment import SegmentParams, segment_objects
+from realsim.resolution import working_resolution
+from realsim.segment import SegmentParams, SegmentResult, assign_supports, segment_objects
 
 __all__ = ["SegmentParams", "segment_scene"]
 
@@ -25,12 +28,68 @@ def _label_for(scene: Scene, mask: np.ndarray) -> str:
     return str(label) if label else "object"
 
 
+def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
+    """The parameters for an unorganized cloud worked at ``resolution`` (m): link and supervoxel
+    lengths grow with the spacing, and the point counts of the defaults (tuned on Kinect views,
+    about 1.5 mm apart) become the same areas counted in cells of this size."""
+    kinect_cell = 0.0015**2
+
+    def count(points: int, floor: int) -> int:
+        return max(floor, int(round(points * kinect_cell / resolution**2)))
+
+    return dataclasses.replace(
+        params,
+        jump_distance=max(params.jump_distance, 2.5 * resolution),
+        supervoxel_size=max(params.supervoxel_size, 4.0 * resolution),
+        min_fragment_points=count(params.min_fragment_points, 3),
+        min_contact_links=min(params.min_contact_links, count(params.min_contact_links * 4, 2)),
+        absorb_points=count(params.absorb_points, 6),
+        min_object_points=count(params.min_object_points, 5),
+    )
+
+
+def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarray, SegmentResult]:
+    """Segment the points above the supports on a voxel grid at the capture's working resolution,
+    then give every input point its voxel's label: the cost depends on the scene, not on how
+    densely it was sampled."""
+    resolution = working_resolution(float(scene.capture.metadata.get("point_spacing", float("nan"))))
+    support, _ = assign_supports(scene.points, scene.planes, params)
+    fg = np.flatnonzero(support >= 0)
+    labels = np.zeros(len(scene.points), dtype=np.int32)
+    if len(fg) == 0:
+        return labels, SegmentResult(labels)
+    cells = np.floor(scene.points[fg] / resolution).astype(np.int64)
+    cells -= cells.min(axis=0)
+    span = cells.max(axis=0) + 1
+    keys = (cells[:, 0] * span[1] + cells[:, 1]) * span[2] + cells[:, 2]
+    _, inverse, counts = np.unique(keys, return_inverse=True, return_counts=True)
+    inverse = inverse.ravel()
+
+    def mean(values: np.ndarray) -> np.ndarray:
+        return np.stack([np.bincount(inverse, values[:, i], minlength=len(counts)) for i in range(3)], axis=1) / counts[:, None]
+
+    centres = mean(scene.points[fg])
+    colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
+    result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
+    labels[fg] = result.labels[inverse]
+    return labels, result
+
+
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
-    """Label every input point (0 support, -1 noise, k object) and create one SceneObject per k."""
+    """Label every input point (0 support, -1 noise, k object) and create one SceneObject per k.
+
+    Organized camera views are segmented on their image grid; unorganized clouds (sampled
+    meshes, fused sequences, scans of any density) on voxels at their working resolution."""
     if scene.points is None:
         return scene
-    result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=scene.seed)
-    scene.labels = result.labels.astype(np.int32)
+    if scene.grid_shape is not None and scene.grid_shape[0] * scene.grid_shape[1] == len(scene.points):
+        result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=scene.seed)
+        scene.labels = result.labels.astype(np.int32)
+    else:
+        scene.labels, result = _segment_unorganized(scene, params)
+    if not (scene.labels > 0).any():
+        scene.warn("no objects found above the supports: the scene converts with an empty table; check the capture "
+                   "(objects at least 2 cm tall, in view) or --set segment.min_height=...")
     counts = np.bincount(scene.labels[scene.labels > 0], minlength=int(scene.labels.max(initial=0)) + 1)
     scene.objects = []
     for k in range(1, len(counts)):

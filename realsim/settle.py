@@ -8,6 +8,8 @@ cached under the spec's content (XML, assets, parameters, code digest), so a rer
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Any
 
@@ -68,6 +70,23 @@ def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME,
                state: tuple[np.ndarray, np.ndarray] | None = None) -> dict[str, Any]:
     """Reset to ``key`` (or to ``state`` = (qpos, ctrl)), simulate ``duration`` s and report each
     free body's displacement."""
+    with awake(model):
+        return _rest_check(model, duration, key, state)
+
+
+@contextmanager
+def awake(model: mujoco.MjModel) -> Iterator[mujoco.MjModel]:
+    """``model`` with MuJoCo's sleeping off for the block: settling and rest checks measure every
+    body's motion (a sleeping body would read as perfectly still)."""
+    flags = model.opt.enableflags
+    model.opt.enableflags = flags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+    try:
+        yield model
+    finally:
+        model.opt.enableflags = flags
+
+
+def _rest_check(model: mujoco.MjModel, duration: float, key: str, state: tuple[np.ndarray, np.ndarray] | None) -> dict[str, Any]:
     data = mujoco.MjData(model)
     if state is None:
         mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
@@ -99,7 +118,8 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     cache_id = output_key("settle", data=spec_digest(spec, scene.assets), params=params)
     settled = cache.get(cache_id)  # this very spec settled before: reuse its rest state and check
     if settled is None:
-        settled = _settle(model, params)
+        with awake(model):
+            settled = _settle(model, params)
         cache.put(cache_id, settled)
     qpos, key_qpos, key_ctrl, report = settled["qpos"], settled["key_qpos"], settled["key_ctrl"], dict(settled["report"])
     free = free_joint_bodies(model)

@@ -1,4 +1,8 @@
-"""Convex decomposition for collision: a single hull when exact enough, else tuned CoACD.
+"""Convex decomposition for collision: a primitive or a single hull when exact enough, else tuned CoACD.
+
+A hull budget then merges CoACD's parts down to the fewest hulls that still pass the fidelity
+self-check (fewer hulls, fewer narrow-phase pairs per step); CoACD's own parts are cached apart
+from the merging settings.
 
 CoACD runs on a decimated copy of the solid with its own hull merging off (that merge is
 quadratic and dominates its run time); parts are merged here greedily by added volume per area
@@ -10,6 +14,7 @@ from __future__ import annotations
 
 import heapq
 import warnings
+from dataclasses import replace
 
 import numpy as np
 import trimesh
@@ -17,6 +22,7 @@ from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from realsim.assets.fidelity import sample_surface
 from realsim.assets.params import AssetParams
+from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
 
 
 def _import_single_threaded(name: str):
@@ -188,6 +194,55 @@ def _merge_hulls(parts: list[np.ndarray], params: AssetParams) -> list[np.ndarra
     return [alive[k][0] for k in sorted(alive)]
 
 
+def _coacd_parts(coacd, dec: trimesh.Trimesh, pre: str, threshold: float, params: AssetParams) -> list[np.ndarray]:
+    """CoACD's convex parts (vertex arrays) of the decimated solid, cached by the mesh and CoACD's
+    own settings only: changing how parts are merged or budgeted never re-runs CoACD."""
+    from realsim.cache import DiskCache, cache_key
+
+    settings = {"threshold": threshold, "pre": pre, "preprocess_resolution": params.preprocess_resolution, "resolution": params.resolution,
+                "mcts": [params.mcts_iterations, params.mcts_nodes, params.mcts_max_depth], "seed": params.seed}
+    key = cache_key("assets.coacd_parts", data=np.asarray(dec.vertices, np.float64).tobytes() + np.asarray(dec.faces, np.int64).tobytes(),
+                    params=settings)
+    cache = DiskCache()
+    parts = cache.get(key)
+    if parts is None:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            raw = coacd.run_coacd(
+                coacd.Mesh(np.asarray(dec.vertices), np.asarray(dec.faces)),
+                threshold=threshold, max_convex_hull=-1, preprocess_mode=pre, preprocess_resolution=params.preprocess_resolution,
+                resolution=params.resolution, mcts_iterations=params.mcts_iterations, mcts_nodes=params.mcts_nodes,
+                mcts_max_depth=params.mcts_max_depth, merge=False, seed=params.seed,
+            )
+        parts = [np.asarray(v, float) for v, _ in raw if len(v) >= 4]
+        cache.put(key, parts)
+    return parts
+
+
+def _fewest_hulls(parts: list[np.ndarray], hulls: list[trimesh.Trimesh], solid: trimesh.Trimesh, params: AssetParams,
+                  cavity: bool, info: dict) -> list[trimesh.Trimesh]:
+    """The hull budget: merge ``parts`` down to ever fewer hulls while the self-check still holds
+    (two-way p95 within ``target_p95``; IoU at ``target_iou`` unless the scan is a cavity's
+    walls), and keep the smallest set that passes (``hulls`` when none does)."""
+    d95, iou = parts_fidelity(hulls, solid)
+    if not (d95 <= params.target_p95 and (cavity or iou >= params.target_iou)):
+        return hulls
+    best = hulls
+    for budget in params.hull_budgets:
+        if budget >= len(best):
+            continue
+        merged = _merge_hulls(parts, replace(params, max_hulls=budget))
+        fewer = [h for h in (make_hull(p, params.min_hull_thickness, params.max_hull_vertices) for p in merged) if h is not None]
+        if not fewer:
+            break
+        d95, iou = parts_fidelity(fewer, solid)
+        if not (d95 <= params.target_p95 and (cavity or iou >= params.target_iou)):
+            break
+        best = fewer
+        info["budget_check"] = {"hulls": len(fewer), "p95": d95, "iou": iou}
+    return best
+
+
 def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool | None = None) -> tuple[list[trimesh.Trimesh], dict]:
     """Convex parts of ``solid`` (object frame) and a small report.
 
@@ -198,41 +253,31 @@ def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool 
     hull = make_hull(solid.vertices, params.min_hull_thickness, 10**6)
     ratio = solid.volume / hull.volume if hull is not None and hull.volume > 0 else 0.0
     info["convex_ratio"] = float(ratio)
+    cavity = open_container if open_container is not None else ratio < 0.6  # walls only: IoU is not meaningful
+    if params.primitives and not cavity:  # a box, cylinder or sphere as faithful as hulls collides far more cheaply
+        primitive, info["primitive_fits"] = fit_primitive(solid, params.primitive_tolerance, params.target_iou)
+        if primitive is not None:
+            info["method"] = "primitive_" + primitive.metadata[PRIMITIVE_KEY]["type"]
+            return [primitive], info
     if hull is not None and ratio >= params.convex_volume_ratio:
         d95 = hull_p95_distance(hull, solid)
         info["convex_p95"] = d95
         if d95 <= params.convex_tolerance:
             info["method"] = "single_hull"
-            single = make_hull(solid.vertices, params.min_hull_thickness, max(params.max_hull_vertices, 128))
+            single = make_hull(solid.vertices, params.min_hull_thickness, params.max_hull_vertices)
             return [single], info
     coacd = _import_single_threaded("coacd")
     coacd.set_log_level("error")
     dec = decimate(solid, params.decimate_faces)
     pre = "off" if dec.is_watertight else params.preprocess_mode
     info["decimated_faces"] = len(dec.faces)
-    cavity = open_container if open_container is not None else ratio < 0.6  # walls only: IoU is not meaningful
     hulls: list[trimesh.Trimesh] = []
     threshold = params.threshold
     for attempt in range(1 + params.refine_attempts):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            parts = coacd.run_coacd(
-                coacd.Mesh(np.asarray(dec.vertices), np.asarray(dec.faces)),
-                threshold=threshold,
-                max_convex_hull=-1,
-                preprocess_mode=pre,
-                preprocess_resolution=params.preprocess_resolution,
-                resolution=params.resolution,
-                mcts_iterations=params.mcts_iterations,
-                mcts_nodes=params.mcts_nodes,
-                mcts_max_depth=params.mcts_max_depth,
-                merge=False,
-                seed=params.seed,
-            )
-        pts = [np.asarray(v, float) for v, _ in parts if len(v) >= 4]
+        pts = _coacd_parts(coacd, dec, pre, threshold, params)
         merged = _merge_hulls(pts, params)
         hulls = [h for h in (make_hull(p, params.min_hull_thickness, params.max_hull_vertices) for p in merged) if h is not None]
-        info["coacd_parts"] = len(parts)
+        info["coacd_parts"] = len(pts)
         info["threshold"] = threshold
         if not hulls or attempt == params.refine_attempts:
             break
@@ -241,6 +286,8 @@ def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool 
         if d95 <= params.target_p95 and (cavity or iou >= params.target_iou):
             break
         threshold *= 0.6
+    if hulls and params.hull_budget:
+        hulls = _fewest_hulls(pts, hulls, solid, params, cavity, info)
     info["method"] = "coacd"
     info["hulls"] = len(hulls)
     if not hulls:

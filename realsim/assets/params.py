@@ -19,6 +19,9 @@ class AssetParams:
     plausible_margin: float = 1.6  # accept [min / margin, max * margin] of the size table
     # --- solid
     voxel_fallback_pitch: float = 0.003  # m, voxel fill when the mesh can't be made manifold
+    # --- primitives: a box, upright cylinder or sphere when it is as faithful as hulls
+    primitives: bool = True
+    primitive_tolerance: float = 0.003  # m, two-way p95 surface distance of the primitive
     # --- convex shortcut: a single hull when it is already faithful
     convex_volume_ratio: float = 0.90  # solid volume / hull volume at least this ...
     convex_tolerance: float = 0.0025  # ... and p95 hull-surface-to-scan distance (m) at most this
@@ -38,6 +41,8 @@ class AssetParams:
     target_iou: float = 0.85  # volume IoU (objects without an open cavity)
     # --- hull post-processing
     max_hulls: int = 48
+    hull_budget: bool = True  # merge further while the self-check holds (fewer hulls, cheaper contacts)
+    hull_budgets: tuple[int, ...] = (32, 24, 16, 12, 8, 6, 4, 3, 2, 1)
     merge_tolerance: float = 0.0015  # m: merge two parts while the merged hull stays this close to them
     min_hull_thickness: float = 0.0005  # m: thinner hulls are thickened to this
     max_hull_vertices: int = 64

@@ -76,6 +76,11 @@ def find_splat(scene_json: dict) -> Path | None:
     if not source:
         return None
     src = Path(source)
+    if src.is_file() and src.suffix.lower() == ".ply":
+        from realsim.capture import is_splat_ply
+
+        if is_splat_ply(src):  # the capture itself is a splat: its centres were the points
+            return src
     folder = src if src.is_dir() else src.parent
     for name in ("splat.ply", "splats.ply", "gaussians.ply"):
         if (folder / name).is_file():
