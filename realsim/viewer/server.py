@@ -20,7 +20,8 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.errors import InputError
+from realsim.errors import InputError, SimulationDiverged
+from realsim.physics.divergence import check_state
 from realsim.settle import KEYFRAME
 from realsim.output import scene_xml
 from realsim.viewer.commands import on_command
@@ -174,6 +175,12 @@ class Viewer:
                 budget = time.perf_counter() + 0.02
                 while data.time < target and time.perf_counter() < budget:
                     mujoco.mj_step(model, data)
+                try:
+                    check_state(model, data, "viewer")
+                except SimulationDiverged as exc:  # pause and say so; Reset brings the scene back
+                    self.sim.paused = True
+                    self.last_reply = str(exc)
+                    self._reply.content = f"physics paused: {exc}"
             if target - data.time > 0.1:  # slower than real time: don't try to catch up
                 wall0, sim0 = time.perf_counter(), data.time
             time.sleep(0.002)
