@@ -86,8 +86,9 @@ def _one_line(exc: ValidationError, where: str) -> str:
     err = exc.errors()[0]
     loc = ".".join(str(p) for p in err["loc"])
     if err["type"] == "extra_forbidden":
-        nested = {"support": DeclaredSupport, "camera": CameraIntrinsics}
-        valid = (nested[str(err["loc"][0])] if len(err["loc"]) > 1 else CaptureConfig).model_fields
+        nested: dict[str, type[BaseModel]] = {"support": DeclaredSupport, "camera": CameraIntrinsics}
+        model = nested[str(err["loc"][0])] if len(err["loc"]) > 1 else CaptureConfig
+        valid = list(model.model_fields)
         return f"{where}: unknown key {loc!r}{did_you_mean(str(err['loc'][-1]), valid)}; valid keys: {', '.join(valid)}"
     got = err.get("input")
     shown = "" if isinstance(got, (dict, list)) and len(str(got)) > 60 else f" (got {got!r})"
