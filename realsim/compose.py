@@ -61,17 +61,20 @@ def mesh_bytes(mesh: trimesh.Trimesh, file_type: str) -> bytes:
 
 
 def obj_bytes(mesh: trimesh.Trimesh) -> bytes:
-    """A minimal OBJ (v, vt, f) written with numpy: ~50x faster than trimesh's exporter."""
-    out = io.StringIO()
-    np.savetxt(out, mesh.vertices, fmt="v %.6f %.6f %.6f")
+    """A minimal OBJ (v, vt, f), formatted in one pass per block: far faster than trimesh's exporter."""
+    def rows(fmt: str, values: np.ndarray) -> str:  # one C-level % for the whole array (savetxt formats row by row)
+        return (fmt * len(values)) % tuple(values.ravel().tolist())
+
+    verts = np.asarray(mesh.vertices, dtype=np.float64)
     uv = getattr(mesh.visual, "uv", None)
-    faces = np.asarray(mesh.faces) + 1
+    faces = np.asarray(mesh.faces, dtype=np.int64) + 1
+    parts = [rows("v %.6f %.6f %.6f\n", verts)]
     if uv is not None and len(uv) == len(mesh.vertices):
-        np.savetxt(out, uv, fmt="vt %.6f %.6f")
-        np.savetxt(out, np.repeat(faces, 2, axis=1), fmt="f %d/%d %d/%d %d/%d")
+        parts.append(rows("vt %.6f %.6f\n", np.asarray(uv, dtype=np.float64)))
+        parts.append(rows("f %d/%d %d/%d %d/%d\n", np.repeat(faces, 2, axis=1)))
     else:
-        np.savetxt(out, faces, fmt="f %d %d %d")
-    return out.getvalue().encode()
+        parts.append(rows("f %d %d %d\n", faces))
+    return "".join(parts).encode()
 
 
 def new_spec(params: ComposeParams) -> mujoco.MjSpec:

@@ -9,6 +9,7 @@ import trimesh
 from conftest import MOSD
 from realsim.pipeline import convert
 from realsim.understanding.naming import Name, colour_words, distinct, offline_name, shape_word, white_balance
+from realsim.understanding.shape_label import is_cylinder, is_prism
 
 NO_ROBOT = {"robot": {"enabled": False}}
 COLOURS = {"red", "orange", "yellow", "green", "blue", "purple", "pink", "brown", "white", "grey", "black"}
@@ -32,11 +33,11 @@ def test_white_balance_removes_a_colour_cast() -> None:
 def test_shape_words_from_completed_solids() -> None:
     can = trimesh.creation.cylinder(radius=0.033, height=0.10, sections=32)
     can.apply_translation([0, 0, 0.05])
-    word, adjective, cylinder, _ = shape_word(can, can.extents, np.zeros((0, 3)), np.zeros(2))
+    word, adjective, cylinder, _ = shape_word(can.extents, np.zeros((0, 3)), np.zeros(2), is_cylinder(can, can.extents), False)
     assert (word, cylinder) == ("can", True) and adjective == ""
     box = trimesh.creation.box(extents=[0.16, 0.06, 0.21])
     box.apply_translation([0, 0, 0.105])
-    assert shape_word(box, box.extents, np.zeros((0, 3)), np.zeros(2))[0] == "box"
+    assert shape_word(box.extents, np.zeros((0, 3)), np.zeros(2), False, is_prism(box))[0] == "box"
     # a bowl: round, squat, its observed inside lower than its rim
     bowl = trimesh.creation.cylinder(radius=0.08, height=0.06, sections=32)
     bowl.apply_translation([0, 0, 0.03])
@@ -44,8 +45,8 @@ def test_shape_words_from_completed_solids() -> None:
     a = np.random.default_rng(2).uniform(0, 2 * np.pi, 3000)
     z = 0.01 + 0.05 * (r / 0.08) ** 2
     pts = np.column_stack([r * np.cos(a), r * np.sin(a), z])
-    assert shape_word(bowl, bowl.extents, pts, np.zeros(2))[0] == "bowl"
-    name, _ = offline_name(bowl, bowl.extents, pts, np.tile([[0.9, 0.9, 0.88]], (100, 1)), np.zeros(2))
+    assert shape_word(bowl.extents, pts, np.zeros(2), True, False)[0] == "bowl"
+    name, _ = offline_name(bowl.extents, pts, np.tile([[0.9, 0.9, 0.88]], (100, 1)), np.zeros(2), True, False)
     assert name.label == "white_bowl"
 
 

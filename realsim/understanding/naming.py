@@ -19,7 +19,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
-from realsim.understanding.shape_label import is_cylinder, is_prism, ranked_labels
+from realsim.understanding.shape_label import ranked_labels
 
 # Hue bins (degrees) of the chromatic colour words; achromatic words come from value alone.
 HUES = ((15, "red"), (40, "orange"), (70, "yellow"), (165, "green"), (255, "blue"), (290, "purple"), (345, "pink"), (361, "red"))
@@ -104,12 +104,11 @@ def top_is_rectangle(points: np.ndarray, top_z: float, height: float, min_fill: 
     return float(hull.volume) / max(float(np.prod(extents)), 1e-12) >= min_fill
 
 
-def shape_word(obj_visual, size: np.ndarray, points: np.ndarray, axis_xy: np.ndarray) -> tuple[str, str, bool, bool]:
-    """(shape word, adjective, cylinder, prism) of a completed scan object (``points``: observed,
-    world; ``axis_xy``: the centre of its base)."""
+def shape_word(size: np.ndarray, points: np.ndarray, axis_xy: np.ndarray, cylinder: bool, prism: bool) -> tuple[str, str, bool, bool]:
+    """(shape word, adjective, cylinder, prism) of a completed scan object: ``cylinder`` / ``prism``
+    from its solid (:func:`realsim.understanding.shape_label.is_cylinder`, ``is_prism``),
+    ``points`` observed (world), ``axis_xy`` the centre of its base."""
     size = np.asarray(size, float)
-    cylinder = is_cylinder(obj_visual, size)
-    prism = not cylinder and is_prism(obj_visual)
     width, height = float(max(size[0], size[1])), float(size[2])
     if cylinder:
         ratio = height / max(width, 1e-6)
@@ -127,12 +126,13 @@ def shape_word(obj_visual, size: np.ndarray, points: np.ndarray, axis_xy: np.nda
     return "object", "", cylinder, prism
 
 
-def offline_name(obj_visual, size: np.ndarray, points: np.ndarray, rgb: np.ndarray, axis_xy: np.ndarray) -> tuple[Name, list[tuple[str, float]]]:
+def offline_name(size: np.ndarray, points: np.ndarray, rgb: np.ndarray, axis_xy: np.ndarray, cylinder: bool,
+                 prism: bool) -> tuple[Name, list[tuple[str, float]]]:
     """The colour+shape name of one object (or colour+category when the shape is a box or round and
     the size-table fit among categories of that shape is unambiguous)."""
     colours = dominant_colours(rgb)
     colour = colours[0][0]
-    word, adjective, cylinder, prism = shape_word(obj_visual, size, points, axis_xy)
+    word, adjective, cylinder, prism = shape_word(size, points, axis_xy, cylinder, prism)
     ranked = ranked_labels(size, cylinder, prism=prism) if (cylinder or prism) else []
     dims = " x ".join(f"{v * 1000:.0f}" for v in size)
     if ranked and ranked[0].distance <= CATEGORY_MAX_DISTANCE and (len(ranked) == 1 or ranked[1].distance - ranked[0].distance >= CATEGORY_MARGIN):

@@ -172,8 +172,9 @@ class Understanding:
             mask = scene.labels == o.id
             pts = scene.points[mask]
             rgb = colors[mask] if colors is not None else np.zeros((0, 3))
-            size, _, _ = _extents(o)
-            name, cols = offline_name(o.visual, size, pts[np.all(np.isfinite(pts), axis=1)], rgb[np.all(np.isfinite(rgb), axis=1)], o.position[:2])
+            size, cylinder, prism = _extents(o)
+            name, cols = offline_name(size, pts[np.all(np.isfinite(pts), axis=1)], rgb[np.all(np.isfinite(rgb), axis=1)], o.position[:2],
+                                      cylinder, prism)
             names.append(name)
             colours.append(cols)
             volumes.append(float(abs(o.visual.volume)) if o.visual is not None and o.visual.is_volume else float(np.prod(o.size)))
