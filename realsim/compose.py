@@ -20,10 +20,8 @@ from realsim.appearance import AppearanceParams, CaptureImage, capture_image, ca
 from realsim.arena import ArenaParams, add_arena
 from realsim.backdrop import BackdropParams, build_backdrop
 from realsim.scene import Scene, SceneObject
+from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 
-VISUAL_GROUP = 2
-COLLISION_GROUP = 3
-ASSET_DIR = "assets"
 
 
 @dataclass(frozen=True)

@@ -15,20 +15,10 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.compose import ASSET_DIR
 from realsim.destination import atomic_folder
-from realsim.errors import InputError
 from realsim.render import write_preview
 from realsim.scene import Scene
-
-
-def scene_xml(folder: Path) -> Path:
-    """The ``scene.xml`` of a realsim output folder (or the file itself); InputError if none."""
-    folder = Path(folder)
-    xml = folder / "scene.xml" if folder.is_dir() else folder
-    if not xml.is_file():
-        raise InputError(f"{folder}: no scene.xml here; pass an output folder of `realsim convert`")
-    return xml
+from realsim.scene_format import ASSET_DIR, KEYFRAME, SCENE_FORMAT, scene_xml  # noqa: F401 (scene_xml: re-exported)
 
 
 def jsonable(value: Any, digits: int = 6) -> Any:
@@ -56,7 +46,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
     """The scene.json content: capture, transform, planes, objects, settling and timings."""
     cap = scene.capture
     return jsonable({
-        "format": "realsim-scene/1",
+        "format": SCENE_FORMAT,
         "capture": {
             "source": str(cap.source),
             "kind": cap.kind,
@@ -88,7 +78,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
             for o in scene.objects
         ],
         "robot": scene.robot,
-        "keyframe": "initial",
+        "keyframe": KEYFRAME,
         "settle": scene.settle_report,
         "timings_s": scene.timings,
         "warnings": scene.warnings,

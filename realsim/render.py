@@ -11,6 +11,8 @@ import mujoco  # noqa: E402
 import numpy as np  # noqa: E402
 from PIL import Image  # noqa: E402
 
+from realsim.scene_format import KEYFRAME, scene_xml  # noqa: E402
+
 
 def overview_camera(model: mujoco.MjModel) -> mujoco.MjvCamera:
     """A free camera looking at the scene's objects from the front and above."""
@@ -38,7 +40,7 @@ def render_image(model: mujoco.MjModel, data: mujoco.MjData | None = None, *, ca
     if data is None:
         data = mujoco.MjData(model)
         if model.nkey:
-            initial = [k for k in range(model.nkey) if model.key(k).name == "initial"]
+            initial = [k for k in range(model.nkey) if model.key(k).name == KEYFRAME]
             mujoco.mj_resetDataKeyframe(model, data, initial[0] if initial else 0)
     mujoco.mj_forward(model, data)
     with mujoco.Renderer(model, height=height, width=width) as renderer:
@@ -67,7 +69,6 @@ def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: i
     """
     from realsim.errors import InputError
 
-    from realsim.output import scene_xml  # output imports this module (write_preview)
 
     xml = scene_xml(scene)
     model = mujoco.MjModel.from_xml_path(str(xml))
@@ -78,7 +79,7 @@ def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: i
     width = min(width, model.vis.global_.offwidth)
     height = min(height, model.vis.global_.offheight)
     data = mujoco.MjData(model)
-    key = next((k for k in range(model.nkey) if model.key(k).name == "initial"), 0 if model.nkey else None)
+    key = next((k for k in range(model.nkey) if model.key(k).name == KEYFRAME), 0 if model.nkey else None)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)
     out_png = Path(out_png)

@@ -10,17 +10,18 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import mujoco
 import numpy as np
 
 from realsim.cache import DiskCache, output_key, spec_digest
+from realsim.physics.capacity import CapacityParams, measure_capacity
 from realsim.physics.divergence import check_state
 from realsim.scene import Scene
+from realsim.scene_format import HOME_KEYFRAME, KEYFRAME
 
-KEYFRAME = "initial"
 
 
 @dataclass(frozen=True)
@@ -32,6 +33,7 @@ class SettleParams:
     rest_speed: float = 2e-3  # m/s (and rad/s) below which every object is at rest
     check_time: float = 2.0  # simulated seconds of the rest check
     max_drift: float = 0.005  # m an object may move during the check
+    capacity: CapacityParams = field(default_factory=CapacityParams)  # nconmax / njmax recorded for batched engines
 
 
 def free_joint_bodies(model: mujoco.MjModel) -> list[tuple[str, int, int]]:
@@ -120,7 +122,9 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     if settled is None:
         with awake(model):
             settled = _settle(model, params)
+            settled["capacity"] = measure_capacity(model, params.capacity)
         cache.put(cache_id, settled)
+    spec.nconmax, spec.njmax = settled["capacity"]["nconmax"], settled["capacity"]["njmax"]  # read by MJX / MuJoCo Warp users
     qpos, key_qpos, key_ctrl, report = settled["qpos"], settled["key_qpos"], settled["key_ctrl"], dict(settled["report"])
     free = free_joint_bodies(model)
     for key in list(spec.keys):
@@ -130,6 +134,7 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     if model.nu:
         key.ctrl = key_ctrl.tolist()
     report["moved_during_settling"] = {}
+    report["capacity"] = settled["capacity"]  # per-world contacts and constraint rows (scene.json settle.capacity)
     for obj in scene.objects:
         for name, q, _ in free:
             if name == obj.name:
@@ -170,6 +175,6 @@ def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
 def _home_key(model: mujoco.MjModel) -> int | None:
     """Id of a ``home`` keyframe (the robot's posture) if the model has one."""
     for k in range(model.nkey):
-        if model.key(k).name == "home":
+        if model.key(k).name == HOME_KEYFRAME:
             return k
     return None

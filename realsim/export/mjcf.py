@@ -15,13 +15,12 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from realsim.compose import ASSET_DIR
 from realsim.errors import InputError
 from realsim.destination import atomic_folder, check_destination
-from realsim.output import scene_xml, verify_compiles
-from realsim.settle import KEYFRAME, free_joint_bodies
+from realsim.output import verify_compiles
+from realsim.scene_format import ASSET_DIR, KEYFRAME, ROBOT_PREFIX, scene_xml
+from realsim.settle import free_joint_bodies
 
-ROBOT_PREFIX = "panda/"
 
 
 @dataclass(frozen=True)

@@ -21,11 +21,10 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from realsim.compose import VISUAL_GROUP
 from realsim.destination import build_folder, check_destination, check_file_destination, publish
 from realsim.errors import InputError
 from realsim.export.mjcf import ROBOT_PREFIX, load_spec, object_bodies, _resolve
-from realsim.settle import KEYFRAME
+from realsim.scene_format import KEYFRAME, VISUAL_GROUP
 
 ROBOT_NOTE = (
     "The Franka Panda of the MJCF scene is not exported: its actuated joints and mimic-driven gripper "

@@ -25,8 +25,8 @@ from realsim.errors import InputError
 from realsim.planner.types import ObjectInfo
 from realsim.robot.model import PREFIX, describe_robot
 from realsim.robot.robot import Robot, RobotParams
+from realsim.scene_format import KEYFRAME
 
-KEYFRAME = "initial"
 HOME_TOLERANCE = 0.05  # rad, max joint error still "at home"
 
 

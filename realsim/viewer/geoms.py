@@ -8,7 +8,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from realsim.compose import VISUAL_GROUP
+from realsim.scene_format import VISUAL_GROUP
 from realsim.viewer.frames import to_viser
 
 PLANE_EXTENT = 8.0  # metres: how much of an infinite MuJoCo plane to draw

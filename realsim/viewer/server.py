@@ -22,8 +22,7 @@ import numpy as np
 
 from realsim.errors import InputError, SimulationDiverged
 from realsim.physics.divergence import check_state
-from realsim.settle import KEYFRAME
-from realsim.output import scene_xml
+from realsim.scene_format import KEYFRAME, scene_xml
 from realsim.viewer.commands import on_command
 from realsim.viewer.frames import configure_up, to_viser
 from realsim.viewer.geoms import add_support_outlines, add_visual_geoms

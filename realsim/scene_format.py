@@ -1,0 +1,58 @@
+"""The on-disk contract of a scene folder: file names, geom groups, keyframes, and one reader.
+
+Conversion writes these names; the runtime, the viewer and the exporters read them through
+this module, never through the conversion modules.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import mujoco
+
+from realsim.errors import InputError
+
+SCENE_XML = "scene.xml"
+SCENE_JSON = "scene.json"
+LABELS_NPY = "labels.npy"
+PREVIEW_PNG = "preview.png"
+ASSET_DIR = "assets"
+RUNS_DIR = "runs"
+SCENE_FORMAT = "realsim-scene/1"  # scene.json's "format"
+
+VISUAL_GROUP = 2  # visual meshes: contype/conaffinity 0 (the Menagerie convention)
+COLLISION_GROUP = 3  # collision hulls and primitives
+KEYFRAME = "initial"  # everything at rest, robot at home
+HOME_KEYFRAME = "home"  # the robot's posture before settling
+ROBOT_PREFIX = "panda/"  # the attached Panda's element names
+
+
+def scene_xml(folder: Path | str) -> Path:
+    """The ``scene.xml`` of a realsim output folder (or the file itself); InputError if none."""
+    folder = Path(folder)
+    xml = folder / SCENE_XML if folder.is_dir() else folder
+    if not xml.is_file():
+        raise InputError(f"{folder}: no {SCENE_XML} here; pass an output folder of `realsim convert`")
+    return xml
+
+
+def read_scene_record(folder: Path | str) -> dict[str, Any]:
+    """The ``scene.json`` of a scene folder as a dict (``{}`` when absent); InputError if unreadable."""
+    path = Path(folder) / SCENE_JSON
+    if not path.is_file():
+        return {}
+    try:
+        record = json.loads(path.read_text())
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{path}: not a readable scene record ({exc})") from None
+    if not isinstance(record, dict):
+        raise InputError(f"{path}: not a scene record (expected a JSON object)")
+    return record
+
+
+def keyframe_id(model: mujoco.MjModel, name: str = KEYFRAME) -> int | None:
+    """Id of the keyframe called ``name``, or None when the model has none."""
+    key = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, name)
+    return None if key < 0 else int(key)
