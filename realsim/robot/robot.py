@@ -796,7 +796,7 @@ class Robot:
                 foot = pts[:: max(1, len(pts) // 400), :2]
                 for k in np.linspace(0.0, distance, max(2, int(distance / 0.01) + 1)):
                     gap, idx = tree.query(foot + k * d[:2])
-                    if gap.min() < 0.005:
+                    if gap.min() < 0.002:
                         hit = self._owner_of_xy(obj, others[idx[int(np.argmin(gap))]], bottom)
                         return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove {hit} "
                                             f"(after {k * 100:.0f} cm)", values={"moved": 0.0})

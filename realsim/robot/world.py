@@ -29,6 +29,7 @@ class SceneGeometry:
         self.model, self.data = model, data
         self.robot_bodies = set(robot_bodies)
         self._surfaces: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self._scratch: mujoco.MjData | None = None
         root = model.body_rootid
         self._root_name = {b: (WORLD if root[b] == 0 else model.body(int(root[b])).name) for b in range(model.nbody)}
 
@@ -79,8 +80,9 @@ class SceneGeometry:
         """Owners of every geom in contact with object ``name`` (see :meth:`owner`)."""
         parts = set(self.subtree(self.body(name)))
         out: set[str] = set()
-        for i in range(self.data.ncon):
-            c = self.data.contact[i]
+        d = self._collide()  # on a scratch copy: MuJoCo computes no contacts for sleeping bodies
+        for i in range(d.ncon):
+            c = d.contact[i]
             if c.dist > CONTACT_DISTANCE:
                 continue
             b1, b2 = int(self.model.geom_bodyid[c.geom1]), int(self.model.geom_bodyid[c.geom2])
@@ -89,6 +91,19 @@ class SceneGeometry:
             elif b2 in parts and b1 not in parts:
                 out.add(self.owner(b1))
         return out
+
+    def _scratch_data(self) -> mujoco.MjData:
+        if self._scratch is None:
+            self._scratch = mujoco.MjData(self.model)
+        return self._scratch
+
+    def _collide(self) -> mujoco.MjData:
+        """The live state's contacts, computed on a scratch copy (every body awake)."""
+        d = self._scratch_data()
+        d.qpos[:] = self.data.qpos
+        mujoco.mj_kinematics(self.model, d)
+        mujoco.mj_collision(self.model, d)
+        return d
 
     # --- free space ---------------------------------------------------------------------------
     def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None, static_only: bool = False) -> float:
@@ -118,9 +133,7 @@ class SceneGeometry:
         may touch any link (the held one); ``hand_may_touch``: objects only the hand and fingers
         (``hand_bodies``) may touch (what is being pushed); ``shifted``: objects displaced by an xyz
         offset (where a pushed object will be by then)."""
-        if not hasattr(self, "_scratch"):
-            self._scratch = mujoco.MjData(self.model)
-        d = self._scratch
+        d = self._scratch_data()
         d.qpos[:] = self.data.qpos
         d.qpos[qadr] = q_arm
         for name, offset in (shifted or {}).items():
