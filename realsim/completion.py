@@ -21,6 +21,7 @@ import trimesh
 from scipy.spatial import QhullError
 
 from realsim.appearance import capture_intrinsics
+from realsim.containers import ContainerParams, OpenContainer, complete_open_container, round_rim
 from realsim.intrinsics import Intrinsics
 from realsim.scene import Scene, SceneObject
 
@@ -159,6 +160,7 @@ class CompletionParams:
     carve_tolerance: float = 0.005  # a voxel this much nearer than the captured depth at its pixel is free space (m)
     carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
+    containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30
@@ -235,13 +237,14 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
     observed: dict[int, np.ndarray] = {}
+    hollow: set[int] = set()
     view = DepthView.of(scene) if params.carve else None
     veil = view.veil(params.veil_deg).ravel() if view is not None else np.zeros(len(labels), bool)
     order = _bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id
         pts = scene.points[mask & ~veil] if (mask & ~veil).sum() >= params.min_points else scene.points[mask]
-        if obj.resting_on is not None and obj.resting_on in done:
+        if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow:
             base_z = _top_under(done[obj.resting_on], pts)
             done[obj.resting_on] = _flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
         else:
@@ -253,18 +256,27 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             shape = None
         kind = "cylinder" if shape is not None else "hull"
         mesh, base_centre = shape if shape is not None else complete_hull(pts, base_z, top_z)
-        if view is not None:
+        container = None
+        rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
+        if rim is not None:
+            container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers)
+        if container is not None:
+            mesh = container.outer
+            base_centre = np.array([rim[0][0], rim[0][1], base_z])
+            hollow.add(obj.id)
+            kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
+        elif view is not None:
             mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
             if carved >= params.carve_min_fraction:
                 kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         done[obj.id] = mesh
         observed[obj.id] = pts
-        _set_shape(obj, mesh, base_centre, params)
+        _set_shape(obj, mesh, base_centre, params, container)
         obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
         if scene.colors is not None:
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
-    _separate_neighbours(order, done, observed, params)
+    _separate_neighbours([o for o in order if o.id not in hollow], done, observed, params)
     return scene
 
 
@@ -322,14 +334,20 @@ def _separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Tri
                 obj.notes.append(f"cut apart from {(b if obj is a else a).name}, whose shape it overlapped")
 
 
-def _set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams) -> None:
-    """Give ``obj`` the world-frame ``mesh`` in its object frame (origin at ``base_centre``)."""
+def _set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams,
+               container: OpenContainer | None = None) -> None:
+    """Give ``obj`` the world-frame ``mesh`` (or ``container``'s pieces and visual) in its object
+    frame (origin at ``base_centre``)."""
     local = mesh.copy()
     local.apply_translation(-base_centre)
     obj.position = base_centre + np.array([0.0, 0.0, params.base_clearance])
     obj.size = local.extents.copy()
-    obj.collision = [local]
-    obj.visual = local
+    if container is None:
+        obj.collision = [local]
+        obj.visual = local
+        return
+    obj.collision = [p.copy().apply_translation(-base_centre) for p in container.pieces]
+    obj.visual = container.visual.copy().apply_translation(-base_centre)
 
 
 def _flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params: CompletionParams) -> trimesh.Trimesh:

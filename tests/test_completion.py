@@ -65,3 +65,46 @@ def test_clip_convex_keeps_one_side() -> None:
     half = clip_convex(box, np.array([1.0, 0.0, 0.0]), 0.05)
     assert half is not None and np.isclose(half.bounds[0][0], 0.05) and np.isclose(half.volume, 0.05 * 0.1 * 0.1)
     assert clip_convex(box, np.array([1.0, 0.0, 0.0]), 0.2) is None
+
+
+def _bowl_points(radius: float = 0.08, height: float = 0.055, seed: int = 0) -> np.ndarray:
+    """What a camera above sees of a bowl on z = 0: its rim, its inside and part of its outside."""
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(0, 2 * np.pi, 6000)
+    s = np.sqrt(rng.uniform(0, 1, 6000))
+    inside = np.column_stack([0.92 * radius * s * np.cos(a), 0.92 * radius * s * np.sin(a), 0.008 + (height - 0.008) * s**2])
+    b = rng.uniform(-np.pi / 2, np.pi / 2, 3000)  # the near half of the outside
+    h = rng.uniform(0, height, 3000)
+    r_out = radius * (0.6 + 0.4 * np.sqrt(h / height))
+    outside = np.column_stack([r_out * np.cos(b), r_out * np.sin(b), h])
+    return np.vstack([inside, outside]) + rng.normal(0, 0.001, (9000, 3))
+
+
+def test_an_open_bowl_is_completed_hollow_and_holds_a_ball() -> None:
+    import mujoco
+
+    from realsim.containers import complete_open_container, round_rim
+
+    pts = _bowl_points()
+    rim = round_rim(pts, 0.0, 0.055, 0.2)
+    assert rim is not None and abs(rim[1] - 0.08) < 0.008
+    bowl = complete_open_container(pts, rim[0], rim[1], 0.0, 0.055)
+    assert bowl is not None and 0.002 <= bowl.wall <= 0.02 and bowl.floor_z < 0.02
+    assert bowl.visual.is_volume and bowl.visual.volume < 0.5 * bowl.outer.volume  # hollow
+    can = complete_open_container(np.column_stack([pts[:, :2], np.full(len(pts), 0.055)]), rim[0], rim[1], 0.0, 0.055)
+    assert can is None  # a closed top is not a container
+    spec = mujoco.MjSpec()
+    spec.option.timestep = 0.002
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1, 1, 0.1])
+    for i, piece in enumerate(bowl.pieces):
+        spec.add_mesh(name=f"p{i}", uservert=piece.vertices.ravel().tolist(), userface=piece.faces.ravel().tolist())
+        spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"p{i}")
+    ball = spec.worldbody.add_body(name="ball", pos=[0.02, 0.0, 0.15])
+    ball.add_freejoint()
+    ball.add_geom(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.015, 0, 0], density=1000)
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    for _ in range(1000):
+        mujoco.mj_step(model, data)
+    x, y, z = data.body("ball").xpos
+    assert np.hypot(x - rim[0][0], y - rim[0][1]) < rim[1] - bowl.wall and bowl.floor_z - 0.003 < z - 0.015 < 0.05
