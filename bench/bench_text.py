@@ -12,7 +12,7 @@ the support's front: left -x, behind +y), and rest (largest displacement in 2 s 
 With ``--robot``: a text scene per graspable family, the Franka placed, and one grasp-and-lift of
 an object of each family (up to 4 attempts).
 
-    MENAGERIE_ROOT=../shared/data python bench/bench_text.py [--robot] [--only N]
+    MENAGERIE_ROOT=../shared/data python bench/bench_text.py [--held-out] [--robot] [--only N]
 """
 
 from __future__ import annotations
@@ -125,6 +125,46 @@ CASES: list[tuple[str, dict]] = [
     ("a closed laptop with a phone on top of it",
      {"counts": {"laptop": 1, "phone": 1}, "on": {"phone": "laptop"}}),
 ]
+# Written after the parser was tuned on CASES and run once without changes (``--held-out``): how it
+# does on phrasing it was not built on.
+HELD_OUT: list[tuple[str, dict]] = [
+    ("Could you set up a breakfast table: two plates, a mug of coffee next to each plate, and a bowl of cereal in the middle?",
+     {"counts": {"plate": 2, "mug": 2, "bowl": 1}, "on": {"plate": "table", "mug": "table", "bowl": "table"}}),
+    ("desk setup - laptop in the center, a desk lamp to its left, notebook in front of the laptop",
+     {"counts": {"laptop": 1, "lamp": 1, "book": 1}, "rel": [("lamp", "left_of", "laptop"), ("book", "in_front_of", "laptop")]}),
+    ("A wicker basket full of apples sits on the kitchen island.",
+     {"counts": {"basket": 1, "apple": 3}, "on": {"basket": "counter"}, "inside": [("apple", "basket")]}),
+    ("Put three books on the shelf, stacked, and a small plant next to them",
+     {"counts": {"book": 3, "flower pot": 1}, "stacked": {"book": 3}, "on": {"book": "shelf", "flower pot": "shelf"}}),
+    ("there is a frying pan on the counter with two eggs in it",
+     {"counts": {"pan": 1, "egg": 2}, "on": {"pan": "counter"}, "inside": [("egg", "pan")]}),
+    ("a messy workbench with a hammer, two wrenches and a screwdriver",
+     {"counts": {"hammer": 1, "wrench": 2, "screwdriver": 1}, "on": {"hammer": "table", "wrench": "table", "screwdriver": "table"}}),
+    ("the floor has a big crate with a soccer ball inside",
+     {"counts": {"crate": 1, "soccer ball": 1}, "on": {"crate": "floor"}, "inside": [("soccer ball", "crate")]}),
+    ("on the dining table: a teapot, four teacups and a plate",
+     {"counts": {"teapot": 1, "cup": 4, "plate": 1}, "on": {"teapot": "table", "cup": "table", "plate": "table"}}),
+    ("A stack of plates, with a glass sitting on top",
+     {"counts": {"plate": 3, "glass": 1}, "stacked": {"plate": 3}, "on": {"glass": "plate"}}),
+    ("two bottles of water and a jar on the counter, the jar to the right of the bottles",
+     {"counts": {"bottle": 2, "jar": 1}, "on": {"bottle": "counter", "jar": "counter"}, "rel": [("jar", "right_of", "bottle")]}),
+    ("one big pot on the floor and a small pot on the table",
+     {"counts": {"pot": 2}, "on": {"pot": {"floor", "table"}}}),
+    ("a cutting board with a carrot and a knife on it, next to a bowl",
+     {"counts": {"cutting board": 1, "carrot": 1, "knife": 1, "bowl": 1}, "on": {"carrot": "cutting board", "knife": "cutting board"}}),
+    ("I see a tray with a teapot and two cups on it",
+     {"counts": {"tray": 1, "teapot": 1, "cup": 2}, "inside": [("teapot", "tray"), ("cup", "tray")]}),
+    ("a bucket with three tennis balls in it, on the floor",
+     {"counts": {"bucket": 1, "ball": 3}, "on": {"bucket": "floor"}, "inside": [("ball", "bucket")]}),
+    ("a kettle behind a mug on the counter",
+     {"counts": {"kettle": 1, "mug": 1}, "on": {"kettle": "counter", "mug": "counter"}, "rel": [("kettle", "behind", "mug")]}),
+    ("a pen and a marker lying next to a notebook on the desk",
+     {"counts": {"pen": 1, "marker": 1, "book": 1}, "on": {"pen": "desk", "marker": "desk", "book": "desk"}}),
+    ("a crate of potatoes and a basket of onions on the floor",
+     {"counts": {"crate": 1, "potato": 6, "basket": 1}, "on": {"crate": "floor", "basket": "floor"}, "inside": [("potato", {"basket", "crate"})]}),
+    ("a glass bowl with three lemons, and a wooden spoon to the left of the bowl",
+     {"counts": {"bowl": 1, "orange": 3, "spoon": 1}, "inside": [("orange", "bowl")], "rel": [("spoon", "left_of", "bowl")]}),
+]
 SUPPORT_KINDS = {"table", "desk", "counter", "shelf", "floor"}
 GRASP_FAMILIES = ["mug", "cup", "glass", "bowl", "soda can", "bottle", "jar", "cereal box", "knife", "spoon", "fork", "hammer", "screwdriver",
                   "wrench", "carrot", "banana", "apple", "pen", "frying pan", "cooking pot", "kettle", "teapot", "candle", "phone", "tennis ball"]
@@ -140,7 +180,9 @@ class Built:
 
     def __init__(self, scene) -> None:
         self.scene = scene
-        self.model = scene.spec.compile()
+        spec = scene.spec.copy()  # MuJoCo's default contact memory: what is measured here is rest, not capacity sizing
+        spec.memory, spec.nconmax, spec.njmax = -1, -1, -1
+        self.model = spec.compile()
         data = mujoco.MjData(self.model)
         mujoco.mj_resetDataKeyframe(self.model, data, self.model.key("initial").id)
         mujoco.mj_forward(self.model, data)
@@ -211,8 +253,9 @@ def check(built: Built, exp: dict) -> list[str]:
             if not built.on_object(above, below):
                 bad.append(f"{above.name} not stacked on {below.name}")
     for label, container in exp.get("inside", []):
+        options = container if isinstance(container, set) else {container}
         for o in cats.get(category(label), []):
-            if not any(built.inside(o, t) for t in cats.get(category(container), [])):
+            if not any(built.inside(o, t) for c in options for t in cats.get(category(c), [])):
                 bad.append(f"{o.name} not in a {container}")
     for a, rel, b in exp.get("rel", []):
         for oa in cats.get(category(a), []):
@@ -255,7 +298,8 @@ def main() -> int:
         return robot_bench()
     only = int(sys.argv[sys.argv.index("--only") + 1]) if "--only" in sys.argv else None
     passed = rested = 0
-    cases = [(i, c) for i, c in enumerate(CASES) if only is None or i == only]
+    pool = HELD_OUT if "--held-out" in sys.argv else CASES
+    cases = [(i, c) for i, c in enumerate(pool) if only is None or i == only]
     for i, (text, exp) in cases:
         started = time.perf_counter()
         try:

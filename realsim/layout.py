@@ -136,61 +136,85 @@ def _place(footprints: list[np.ndarray], support: SupportPlane, obstacles: list[
 
 
 # ---------------------------------------------------------------- resting on other objects
-def hull_equations(hulls: list[np.ndarray]) -> list[np.ndarray]:
-    """Facet planes (n, d with n.p + d <= 0 inside) of each convex point set."""
+Piece = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # facet planes (n, d: n.p + d <= 0 inside), xy min, xy max, vertices xy
+
+
+def hull_pieces(hulls: list[np.ndarray]) -> list[Piece]:
+    """Facet planes, xy bounds and vertices (xy) of each convex point set."""
     out = []
     for pts in hulls:
+        pts = np.asarray(pts, float)
         try:
-            out.append(ConvexHull(np.asarray(pts, float)).equations)
+            hull = ConvexHull(pts)
         except (QhullError, ValueError):
             continue
+        out.append((hull.equations, pts[:, :2].min(axis=0), pts[:, :2].max(axis=0), pts[hull.vertices, :2]))
     return out
 
 
-def vertical_extent(equations: list[np.ndarray], xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def moved_pieces(pieces: list[Piece], xy: np.ndarray, yaw: float, z: float = 0.0) -> list[Piece]:
+    """The pieces turned by ``yaw`` about z and moved by (``xy``, ``z``)."""
+    c, s = np.cos(yaw), np.sin(yaw)
+    rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    t = np.array([xy[0], xy[1], z])
+    out = []
+    for eq, _, _, verts in pieces:
+        n = eq[:, :3] @ rot.T
+        v = verts @ rot[:2, :2].T + t[:2]
+        out.append((np.column_stack([n, eq[:, 3] - n @ t]), v.min(axis=0), v.max(axis=0), v))
+    return out
+
+
+def vertical_extent(pieces: list[Piece], xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(lowest, highest) z of the convex pieces along vertical lines through ``xy`` (N, 2); NaN
     where no piece is crossed. Exact for convex pieces given by their facet planes."""
     lo = np.full(len(xy), np.nan)
     hi = np.full(len(xy), np.nan)
-    for eq in equations:
+    for eq, blo, bhi, _ in pieces:
+        idx = np.nonzero(np.all(xy >= blo - 1e-9, axis=1) & np.all(xy <= bhi + 1e-9, axis=1))[0]
+        if len(idx) == 0:
+            continue
         n, d = eq[:, :3], eq[:, 3]
-        c = -(d[None, :] + xy @ n[:, :2].T)  # n_z z <= c
+        c = -(d[None, :] + xy[idx] @ n[:, :2].T)  # n_z z <= c
         nz = n[:, 2]
         up, down, flat = nz > 1e-9, nz < -1e-9, np.abs(nz) <= 1e-9
-        zmax = np.min(np.where(up[None, :], c / np.where(up, nz, 1.0)[None, :], np.inf), axis=1)
-        zmin = np.max(np.where(down[None, :], c / np.where(down, nz, 1.0)[None, :], -np.inf), axis=1)
-        ok = (zmin <= zmax + 1e-9) & np.all(np.where(flat[None, :], c >= -1e-9, True), axis=1) & np.isfinite(zmin) & np.isfinite(zmax)
-        lo = np.where(ok, np.fmin(lo, zmin), lo)
-        hi = np.where(ok, np.fmax(hi, zmax), hi)
+        zmax = (c[:, up] / nz[up]).min(axis=1) if up.any() else np.full(len(idx), np.inf)
+        zmin = (c[:, down] / nz[down]).max(axis=1) if down.any() else np.full(len(idx), -np.inf)
+        ok = (zmin <= zmax + 1e-9) & np.isfinite(zmin) & np.isfinite(zmax)
+        if flat.any():
+            ok &= np.all(c[:, flat] >= -1e-9, axis=1)
+        sel = idx[ok]
+        lo[sel] = np.fmin(lo[sel], zmin[ok])
+        hi[sel] = np.fmax(hi[sel], zmax[ok])
     return lo, hi
 
 
 def rest_height(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray, yaw: float, step: float = 0.004) -> float | None:
     """z of the child's frame origin lowered onto ``below`` (see :func:`rest_contact`), or None."""
-    found = rest_contact(child, below, xy, yaw, step)
+    found = rest_contact(hull_pieces(child), hull_pieces(below), xy, yaw, step)
     return None if found is None else found[0]
 
 
-def rest_contact(child: list[np.ndarray], below: list[np.ndarray], xy: np.ndarray, yaw: float, step: float = 0.004,
+def rest_contact(child: list[Piece], below: list[Piece], xy: np.ndarray, yaw: float, step: float = 0.004,
                  touch: float = 0.0015) -> tuple[float, np.ndarray] | None:
     """(z of the child's frame origin, xy of the contacts) when it is lowered at (``xy``, ``yaw``)
     onto the convex pieces ``below`` (world frame) until it touches them; None when nothing is under it.
 
-    ``child`` are its convex pieces in its own frame. Vertical lines are sampled on a ``step`` grid
-    over the child's footprint plus the vertices of both, so thin rims are not missed.
+    ``child`` are its pieces in its own frame (:func:`hull_pieces`). Vertical lines are sampled on a
+    ``step`` grid over the child's footprint and through every vertex of both, so rims are not missed.
     """
-    c, s = np.cos(yaw), np.sin(yaw)
-    rot = np.array([[c, -s], [s, c]])
-    child_w = [np.column_stack([p[:, :2] @ rot.T + xy, p[:, 2]]) for p in child]
-    pts = np.vstack([p[:, :2] for p in child_w])
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
-    n = np.maximum(np.ceil((hi - lo) / step).astype(int), 2)
-    gx, gy = np.meshgrid(np.linspace(lo[0], hi[0], min(n[0], 80)), np.linspace(lo[1], hi[1], min(n[1], 80)))
-    below_pts = np.vstack([p[:, :2] for p in below]) if below else np.zeros((0, 2))
-    inside = below_pts[(below_pts[:, 0] >= lo[0]) & (below_pts[:, 0] <= hi[0]) & (below_pts[:, 1] >= lo[1]) & (below_pts[:, 1] <= hi[1])]
-    samples = np.vstack([np.column_stack([gx.ravel(), gy.ravel()]), pts, inside])
-    bottom, _ = vertical_extent(hull_equations(child_w), samples)
-    _, top = vertical_extent(hull_equations(below), samples)
+    child_w = moved_pieces(child, np.asarray(xy, float), yaw)
+    lo = np.min([p[1] for p in child_w], axis=0)
+    hi = np.max([p[2] for p in child_w], axis=0)
+    n = np.maximum(np.ceil((hi - lo) / step).astype(int) + 1, 2)
+    gx, gy = np.meshgrid(np.linspace(lo[0], hi[0], min(n[0], 90)), np.linspace(lo[1], hi[1], min(n[1], 90)))
+    # the grid plus every vertex of both (the highest and lowest points of convex pieces are vertices)
+    verts = [p[3] for p in child_w] + [p[3][np.all(p[3] >= lo, axis=1) & np.all(p[3] <= hi, axis=1)] for p in below]
+    samples = np.vstack([np.column_stack([gx.ravel(), gy.ravel()]), *verts])
+    bottom, _ = vertical_extent(child_w, samples)
+    keep = np.isfinite(bottom)
+    samples, bottom = samples[keep], bottom[keep]
+    _, top = vertical_extent(below, samples)
     gap = top - bottom
     ok = np.isfinite(gap)
     if not ok.any():

@@ -14,11 +14,11 @@ Directions are seen from the support's front edge (local -y): left -x, right +x,
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from realsim.layout import LayoutParams, footprint, hull_equations, polygons_apart, reach_anchor, rest_contact, vertical_extent
+from realsim.layout import LayoutParams, footprint, hull_pieces, polygons_apart, reach_anchor, rest_contact, vertical_extent
 from realsim.planes import inside_convex_polygon
 from realsim.scene import SupportPlane
 
@@ -96,6 +96,23 @@ def _sample_xy(rng: np.random.Generator, lo: np.ndarray, hi: np.ndarray, item: I
     return support.rect_center + _rot(support.rect_yaw) @ local + rng.normal(0.0, spread, 2)
 
 
+def _near(rng: np.random.Generator, relation: tuple[str, str], placed: dict[str, np.ndarray], support: SupportPlane) -> np.ndarray:
+    """A position on the named side of an object already placed (support frame: left -x, behind +y)."""
+    rel, target = relation
+    b = _local(support, placed[target])
+    lo, hi = b.min(axis=0), b.max(axis=0)
+    c = (lo + hi) / 2
+    gap = float(rng.uniform(0.05, 0.35))
+    side = {"left_of": np.array([lo[0] - gap, c[1]]), "right_of": np.array([hi[0] + gap, c[1]]),
+            "behind": np.array([c[0], hi[1] + gap]), "in_front_of": np.array([c[0], lo[1] - gap])}
+    if rel in side:
+        local = side[rel] + rng.normal(0.0, 0.04, 2)
+    else:  # next to: any side, just beyond the target's edge
+        angle = float(rng.uniform(-np.pi, np.pi))
+        local = c + np.array([np.cos(angle), np.sin(angle)]) * (float(np.max(hi - lo)) / 2 + gap * 0.6)
+    return support.rect_center + _rot(support.rect_yaw) @ local
+
+
 def place_roots(items: list[Item], support: SupportPlane, obstacles: list[np.ndarray], rng: np.random.Generator,
                 params: LayoutParams, region: tuple[np.ndarray, np.ndarray] | None = None) -> list[str]:
     """Place the items standing on ``support``; returns warnings. Items of a row move as one; the
@@ -110,9 +127,11 @@ def place_roots(items: list[Item], support: SupportPlane, obstacles: list[np.nda
 
     order = sorted(units, key=lambda k: (depth(units[k]), -ConvexHull_area(units[k])))
     best: tuple[int, dict[str, tuple], list[str]] | None = None
-    for _ in range(RELATION_RETRIES if any(depth(u) for u in units.values()) else 1):  # a layout keeping every relation, if one is found
+    retries = RELATION_RETRIES if any(depth(u) for u in units.values()) else 1
+    for attempt in range(retries):  # a layout keeping every relation, if one is found (the later half anywhere on the support)
+        narrow = params if attempt < max(retries // 2, 1) else replace(params, reach_radius=None)
         try:
-            misses = _place_units(units, order, support, obstacles, rng, params, region, keys)
+            misses = _place_units(units, order, support, obstacles, rng, narrow, region, keys)
         except _NoRoom:
             if best is None:
                 raise
@@ -188,7 +207,7 @@ def _try_place(unit: list[Item], offsets: list[np.ndarray], support: SupportPlan
             yaw = 0.0 if (unit[0].fixed_yaw or len(unit) > 1 or not params.random_yaw) else float(rng.uniform(-np.pi, np.pi))
             if len(unit) > 1:
                 yaw = support.rect_yaw
-            xy = _sample_xy(rng, a_lo, a_hi, unit[0], support, k)
+            xy = _near(rng, wanted[k % len(wanted)], placed, support) if wanted and k % 2 == 0 else _sample_xy(rng, a_lo, a_hi, unit[0], support, k)
             ok = True
             prints = []
             for it, off in zip(unit, offsets):
@@ -221,7 +240,7 @@ def cavity_polygon(item: Item, step: float = 0.004) -> np.ndarray | None:
     """The xy polygon (world) over the item's open cavity: where its top surface lies well below
     its rim; None when it has none."""
     hulls = world_hulls(item)
-    eqs = hull_equations(hulls)
+    eqs = hull_pieces(hulls)
     pts = np.vstack([h[:, :2] for h in hulls])
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     n = np.minimum(np.maximum(np.ceil((hi - lo) / step).astype(int), 3), 100)
@@ -277,6 +296,7 @@ def _lower(it: Item, parent: Item, below: list[np.ndarray], rng: np.random.Gener
     region = cavity if cavity is not None else footprint(top[:, :2])
     lo, hi = region.min(axis=0), region.max(axis=0)
     best = None
+    child, under = hull_pieces(it.hulls), hull_pieces(below)
     for k in range(tries if not it.stacked else 8):
         if it.stacked:
             xy = parent.xy + rng.normal(0.0, 0.002, 2)
@@ -290,7 +310,7 @@ def _lower(it: Item, parent: Item, below: list[np.ndarray], rng: np.random.Gener
             continue
         if cavity is None and not it.stacked and not np.all(inside_convex_polygon(poly.mean(axis=0, keepdims=True), region, -0.01)):
             continue
-        found = rest_contact(it.hulls, below, xy, yaw)
+        found = rest_contact(child, under, xy, yaw)
         if found is None:
             continue
         z, touching = found
@@ -298,7 +318,8 @@ def _lower(it: Item, parent: Item, below: list[np.ndarray], rng: np.random.Gener
             continue
         # prefer resting places whose contacts surround the centre (a knife across a plate's rim slides)
         steady = len(touching) >= 3 and bool(inside_convex_polygon(poly.mean(axis=0, keepdims=True), footprint(touching), -0.005)[0])
-        key = (not steady, z)
+        over = cavity is not None or bool(np.all(inside_convex_polygon(poly, region, 0.0)))  # wholly over what it rests on
+        key = (not over, not steady, z)
         if best is None or key < best[0]:
             best = (key, (xy, yaw, z))
     return None if best is None else best[1]

@@ -49,7 +49,8 @@ FILLER = {"the", "there", "is", "are", "s", "some", "its", "it", "that", "which"
           "old", "nice", "little", "bit", "each", "other", "them", "they", "those", "these", "this", "up", "down", "out", "around",
           "sort", "kind", "type", "stuff", "things", "thing", "bunch", "got", "sat", "left", "right", "corner", "middle", "center",
           "centre", "edge", "side", "back", "front", "top", "together", "neatly", "too", "else", "whole", "next", "near", "far", "end",
-          "be", "should", "want", "like", "would", "let", "make", "made", "with", "of", "and", "or", "but", "so", "at", "to", "onto"}
+          "be", "should", "want", "like", "would", "let", "make", "made", "with", "of", "and", "or", "but", "so", "at", "to", "onto",
+          "each", "every", "could", "please", "setup"}
 MASS_NOUNS = r"water|juice|milk|soda|wine|beer|coffee|tea|jam|honey|oil|flour|rice|pasta|cereal|sugar|salt|soup|sauce|cream|butter|food|snacks|candy|sand|soil|dirt"
 PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
 # Marker patterns, longest first; each becomes a token "§<kind>§".
@@ -86,6 +87,7 @@ class Phrase:
     plural: bool = False
     region: str | None = None
     definite: bool = False  # "the mug": an object already named, when there is one
+    each: bool = False  # "next to each plate": one subject per instance of the target
 
 
 @dataclass
@@ -115,6 +117,8 @@ def _prepare(text: str) -> str:
     t = re.sub(rf"\b(bottle|glass|cup|mug|jar|can|carton|box|bowl|pot|bag|tin|packet)s? of ({MASS_NOUNS})\b", _mass_container, t)
     t = re.sub(r"\b(each|every) (?:one )?of them\b", "", t)
     t = re.sub(r"\bthere's\b", "there is", t)
+    t = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?: side| hand side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", t)
+    t = re.sub(r"\bin front\b(?! of)", "in front of it", t)
     t = re.sub(r"(\d+)\s*x\b", r"\1", t)
     return t
 
@@ -148,8 +152,9 @@ def _match_noun(words: list[str]) -> tuple[str, int, int] | None:
             for i in range(len(words) - n, -1, -1):
                 phrase = " ".join(words[i: i + n])
                 m = lookup(phrase)
-                if m is None or (strict and m.how == "fuzzy") or (not strict and m.score < 0.85):
-                    continue
+                if m is None or (strict and (m.how == "fuzzy" or m.matched not in (phrase, singular(phrase), _singular(phrase), phrase.replace(" ", "")))) \
+                        or (not strict and m.score < 0.85):
+                    continue  # strict: the whole phrase is a name ("setup laptop" is not; "laptop" is)
                 return phrase, i, i + n
     return None
 
@@ -202,7 +207,9 @@ def _phrase(words: list[str]) -> Phrase | None:
         count = PLURAL_COUNT
     spec = ObjectSpec(id=label, label=label, name=label,
                       count=count, color=color, size=size, material=material)
-    return Phrase("object", spec=spec, plural=plural or count > 1, definite=words[0] in ("the", "that", "this", "those", "these") and not counted)
+    each = words[0] in ("each", "every")
+    return Phrase("object", spec=spec, plural=plural or count > 1, definite=each or (words[0] in ("the", "that", "this", "those", "these") and not counted),
+                  each=each)
 
 
 class _Builder:
@@ -260,6 +267,8 @@ class _Builder:
                 else:
                     self.spec.warnings.append(f"'{s.spec.display} under {t.display}': {t.display} already rests elsewhere; ignored")
             else:
+                if target.each and s.spec.count == 1:  # "a mug next to each plate": one mug per plate
+                    s.spec.count = t.count
                 if t.id in (s.spec.on, s.spec.inside):  # "a vase with a candle next to it": beside it, not in it
                     s.spec.on = s.spec.inside = None
                 s.spec.relations.append(RelationSpec(relation=rel, target=t.id))  # type: ignore[arg-type]
@@ -390,7 +399,7 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
         elif marker == "REGION":
             pass  # "on the left": a place on the support, not kept offline
         elif marker == "with":
-            prev = items[i - 1] if i > 0 else None
+            prev = next((q for q in reversed(items[:i]) if q != "and"), None)  # "a stack of plates, with ..."
             if isinstance(prev, Phrase) and prev.kind != "pronoun":
                 st.owner, st.listing = prev, True
                 st.group, st.closed = [], False
@@ -402,6 +411,9 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 i += 2
                 continue
         elif marker in REL_MARKERS:
+            if marker == "on" and not isinstance(nxt, Phrase):  # "... with a glass sitting on top": on what was just named
+                nxt = Phrase("pronoun")
+                items.insert(i + 1, nxt)
             target = _resolve(nxt, st) if isinstance(nxt, Phrase) else None
             if target is None:
                 if isinstance(nxt, Phrase) and nxt.kind == "pronoun" and st.group:

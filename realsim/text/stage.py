@@ -249,8 +249,10 @@ def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: 
             if o.row and o.count > 1:
                 item.group = f"row:{o.id}"
         for rel in o.relations:
-            if rel.target in by_spec:
-                item.relations.append((rel.relation, by_spec[rel.target][0].objects[0].name))
+            if rel.target in by_spec:  # as many as the target: one each ("a mug next to each plate")
+                targets = by_spec[rel.target]
+                pick = targets[inst.index] if len(targets) == len(siblings) else targets[0]
+                item.relations.append((rel.relation, pick.objects[0].name))
         inst.item = item
     items = [i.item for i in instances if i.item is not None]
     roots = [it for it in items if it.parent is None]
