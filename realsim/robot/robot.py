@@ -47,6 +47,7 @@ class RobotParams:
     lifted_min: float = 0.04  # m the object must rise to count as lifted
     track_tol: float = 0.01  # m tcp error accepted at the end of a straight move
     push_tilt: float = 0.4  # rad the hand leans back when pushing (fingertips lead)
+    push_nudge: float = 0.015  # m a pushed object may travel in contact with another (it nudges it that far at most)
 
 
 @dataclass
@@ -796,7 +797,7 @@ class Robot:
                 foot = pts[:: max(1, len(pts) // 400), :2]
                 for k in np.linspace(0.0, distance, max(2, int(distance / 0.01) + 1)):
                     gap, idx = tree.query(foot + k * d[:2])
-                    if gap.min() < 0.002:
+                    if gap.min() < 0.002 and k < distance - self.params.push_nudge:  # a last-centimetre touch nudges, no more
                         hit = self._owner_of_xy(obj, others[idx[int(np.argmin(gap))]], bottom)
                         return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove {hit} "
                                             f"(after {k * 100:.0f} cm)", values={"moved": 0.0})
