@@ -64,7 +64,8 @@ TEXT_SCENES: dict[str, str] = {
     "textkitchen": "a kitchen table with a mug, a bowl, two soda cans and a cereal box",
     "textblocks": "a table with a red cube, a blue cube, a green cube and a plate",
 }
-SCAN_SCENES: dict[str, Path] = {"scan45": DATA / "pcl_scenes" / "mOSD" / "test45.pcd"}
+SCAN_SCENES: dict[str, Path] = {"scan45": DATA / "pcl_scenes" / "mOSD" / "test45.pcd",
+                                 "scan55": DATA / "pcl_scenes" / "mOSD" / "test55.pcd"}
 
 # (scene, sentence as a person would say it, expected goal)
 SUITE: list[tuple[str, str, str]] = [
@@ -218,6 +219,17 @@ SUITE: list[tuple[str, str, str]] = [
     ("scan45", "pick up the glass, then go home", "lift glass"),
     ("scan45", "slide the mug to the left 4 cm", "moved mug left 0.04"),
     ("scan45", "grab the bottle", "refuse"),
+    # --- a cluttered converted scan (mOSD test55, 15 objects named by colour and shape)
+    ("scan55", "pick up the red box", "lift red_box"),
+    ("scan55", "grab the grey thing", "lift grey_object"),
+    ("scan55", "put the red box next to the grey object", "next red_box grey_object"),
+    ("scan55", "lift the tall white can", "lift tall_white_can"),
+    ("scan55", "push the red box 5 cm to the right", "moved red_box right 0.05"),
+    ("scan55", "take the grey object and put it in front of the red box", "front grey_object red_box"),
+    ("scan55", "grab the yellow object", "refuse"),
+    ("scan55", "move the grey object a little to the left", "moved grey_object left 0.05"),
+    ("scan55", "pick up the white box, then go home", "lift white_box"),
+    ("scan55", "could you put the red box on the green thing", "on red_box green_object"),
 ]
 
 

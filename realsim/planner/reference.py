@@ -90,11 +90,13 @@ class Resolver:
         return [[w for w in name_words(t) if w not in COLOR_WORDS] for t in (o.label, o.name)]
 
     def color_of(self, o: ObjectInfo) -> str | None:
-        if o.color:
-            return COLOR_WORDS.get(o.color.lower(), o.color.lower())
-        for w in norm(o.name).split() + norm(o.label).split():
+        """A colour word in the object's name or label (the scene's own naming) first, else its
+        ``color`` field (measured from the capture)."""
+        for w in norm(o.label).split() + norm(o.name).split():
             if w in COLOR_WORDS:
                 return COLOR_WORDS[w]
+        if o.color:
+            return COLOR_WORDS.get(o.color.lower(), o.color.lower())
         return None
 
     def kinds_of(self, o: ObjectInfo) -> set[str]:

@@ -360,6 +360,14 @@ _TAIL = re.compile(rf"\b(?:by|about|around|roughly|some|approximately|like|to th
                    + "|".join(re.escape(v) for v in VAGUE_DISTANCES) + r")\b|(?<![a-z])\.?\d")
 
 
+_NOT_OBJECT = re.compile(r"\b(?:by|about|around|roughly|approximately|toward|towards|to the|over to)\b|(?<![a-z])\.?\d|"
+                         + "|".join(rf"\b{re.escape(v)}\b" for v in VAGUE_DISTANCES))
+
+
+def _has_direction(text: str) -> bool:
+    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", text))
+
+
 def _is_push(rest: str) -> bool:
     """A direction word outside any object relation ("push the mug left", not "put it left of the box")."""
     if re.search(r"\b(?:left|right) (?:of|side of)\b|\bin front of\b|\bbehind\b|\bnext to\b|\bbeside\b|\bbetween\b|\b(?:in|into|onto|inside|on top of)\b", rest):
@@ -392,7 +400,7 @@ def _push(rest: str, p: _Parser, clause: str) -> _Step:
     objs, tail, first_error = None, "", None
     for cut in [*_TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
         obj_phrase = rest[: cut.start()].strip() if cut else rest
-        if not obj_phrase:
+        if not obj_phrase or _NOT_OBJECT.search(obj_phrase) or (cut is not None and not _has_direction(rest[cut.start():])):
             continue
         try:
             objs = _objs(obj_phrase, p)
