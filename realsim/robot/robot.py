@@ -83,6 +83,12 @@ def _box_centre(pts: np.ndarray) -> np.ndarray:
     return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
 
 
+def _min_gap(pts: np.ndarray, foot_xy: np.ndarray, above: float) -> float:
+    """Smallest horizontal distance from ``foot_xy`` to the points of ``pts`` higher than ``above``."""
+    high = pts[pts[:, 2] > above, :2]
+    return float(cKDTree(high).query(foot_xy)[0].min()) if len(high) else np.inf
+
+
 def _box_centre_3d(pts: np.ndarray) -> np.ndarray:
     """Centre of the points' bounding box: where goals measure an object."""
     return (pts.min(axis=0) + pts.max(axis=0)) / 2
@@ -355,12 +361,14 @@ class Robot:
                     raise _Fail(f"the arm would touch {', '.join(sorted(hits))}")
             q_prev = q
 
-    def _check_stroke(self, obj: str, path: list[np.ndarray], contact: np.ndarray, d: np.ndarray, gap: float = 0.03) -> None:
-        """Raise _Fail when a link other than the hand would touch the pushed ``obj`` (carried along
-        once the fingers reach it) or the arm any other object, along the push ``path``."""
+    def _check_stroke(self, pushed: set[str], path: list[np.ndarray], contact: np.ndarray, d: np.ndarray, gap: float = 0.03) -> None:
+        """Raise _Fail when a link other than the hand would touch the ``pushed`` objects (the
+        object and what rides in or on it, carried along once the fingers reach it) or the arm
+        any other object, along the push ``path``."""
         for q in path:
             advanced = float((self.ik.fk(q)[0] - contact) @ d)
-            hits = self.geometry.robot_hits(self.qadr, q, (), {obj}, self.hand_bodies, {obj: d * max(0.0, advanced - gap)})
+            shift = d * max(0.0, advanced - gap)
+            hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, {n: shift for n in pushed})
             if hits:
                 raise _Fail(f"the arm would touch {', '.join(sorted(hits))} while pushing")
 
@@ -791,10 +799,12 @@ class Robot:
             upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
             rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
             # the object's footprint swept along the push must not run into another object
-            others = self._others(obj, above=bottom + 0.005)
+            foot = pts[:: max(1, len(pts) // 400), :2]
+            # what already overlaps the object's footprint rides in or on it: not in the way
+            riding = {n for n in self.object_names() if n != obj and _min_gap(self.object_points(n), foot, bottom + 0.005) < 0.002}
+            others = self._others(obj, skip=riding, above=bottom + 0.005)
             if len(others):
                 tree = cKDTree(others)
-                foot = pts[:: max(1, len(pts) // 400), :2]
                 for k in np.linspace(0.0, distance, max(2, int(distance / 0.01) + 1)):
                     gap, idx = tree.query(foot + k * d[:2])
                     if gap.min() < 0.002 and k < distance - self.params.push_nudge:  # a last-centimetre touch nudges, no more
@@ -809,7 +819,7 @@ class Robot:
                     q_c = self._ik(contact, rot, np.array(self.ik.home))
                     if not q_c.converged:
                         raise _Fail(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
-                    self._check_stroke(obj, self._line(contact, end, rot, rot, q_c.q), contact, d)
+                    self._check_stroke({obj, *riding}, self._line(contact, end, rot, rot, q_c.q), contact, d)
                     self._transit(contact, rot, skip=None)
                     break
                 except _Fail as exc:
