@@ -4,7 +4,13 @@ Every primitive steps the physics (simulated time only) with the position-contro
 following an interpolated joint trajectory, within a ``max_sim_time`` budget, and returns an
 :class:`ActionResult` whose ``success`` is measured in the simulation (contacts, poses), never
 assumed. Motions lift before they traverse: transits go up to a safe height above everything,
-across, and down; approaches are straight lines along the grasp axis.
+across, and down; approaches are straight lines along the grasp axis. Every transit is checked
+against the scene's objects before it runs (a kinematic MuJoCo collision check on a scratch
+state), pushes too (only the hand may touch what it pushes, which is carried along), and a push
+that would shove the object into another is refused. Places try spots within the target's free
+area, hand yaws and heights, keep the object's footprint and the opening fingers clear of other
+objects, and judge the end state with the same relations as the goal checks
+(:mod:`realsim.planner.relations`).
 """
 
 from __future__ import annotations
