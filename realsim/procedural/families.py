@@ -97,14 +97,15 @@ def pan(d: D) -> Shape:
 def pot(d: D) -> Shape:
     """A cooking pot: a deep vessel with two loop handles (+x and -x)."""
     r, h = d[1] / 2, d[2]
-    body = vessel([(r, 0.0), (r, h)], wall=0.0025, bottom=0.005, segments=2)
+    body = vessel([(r, 0.0), (r, h)], wall=0.002, bottom=0.005, segments=2)
     loops = []
+    zh = h - 0.045  # the loops sit below the rim, leaving the rim free for a pinch
     for sign in (1, -1):
-        path = arc((0.0, 0.0, 0.0), 0.025, -60, 60, "xz", 5)
+        path = arc((0.0, 0.0, 0.0), 0.02, -60, 60, "xz", 5)
         path = np.vstack([[-0.02, 0.0, path[0, 2]], path, [-0.02, 0.0, path[-1, 2]]])  # ends inside the wall
-        path = np.column_stack([sign * (r - 0.003 + path[:, 0]), path[:, 1], h * 0.82 + path[:, 2]])
+        path = np.column_stack([sign * (r - 0.002 + path[:, 0]), path[:, 1], zh + path[:, 2]])
         loops.append(tube(path, 0.005, 6))
-    return union(body, *loops).with_sites(handle=(r + 0.025, 0.0, h * 0.82), handle_2=(-r - 0.025, 0.0, h * 0.82))
+    return union(body, *loops).with_sites(handle=(r + 0.02, 0.0, zh), handle_2=(-r - 0.02, 0.0, zh))
 
 
 def kettle(d: D) -> Shape:
@@ -289,8 +290,10 @@ def _flat_utensil(d: D, head: Shape, head_len: float) -> Shape:
 def fork(d: D) -> Shape:
     length, width = d[0], d[1]
     head_len = length * 0.3
-    head = box(head_len, width, 0.006, at=(length / 2 - head_len / 2, 0.0, 0.0))
-    tines = Manifold.cube([head_len * 0.6, 0.003, 0.02], center=True)
+    x0, x1 = length / 2 - head_len, length / 2
+    # the head curves up towards the tines, as a fork's does (something for fingers to close on)
+    head = hull_shape(np.array([[x, y, z] for x, zs in ((x0, (0.0, 0.005)), (x1, (0.008, 0.013))) for y in (-width / 2, width / 2) for z in zs]))
+    tines = Manifold.cube([head_len * 0.6, 0.003, 0.04], center=True)
     cut = None
     for yy in (-width / 6, width / 6, 0.0):
         s = tines.translate([length / 2 - head_len * 0.3 + 0.001, yy, 0.0])
