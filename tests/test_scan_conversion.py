@@ -36,7 +36,7 @@ def _world_points(scene_json: dict, raw: np.ndarray) -> np.ndarray:
 
 def test_output_folder_is_complete_and_loads_from_anywhere(converted: dict[str, Path], tmp_path: Path) -> None:
     folder = converted["test45"]
-    assert sorted(p.name for p in folder.iterdir()) == ["assets", "labels.npy", "preview.png", "scene.json", "scene.xml"]
+    assert sorted(p.name for p in folder.iterdir()) == [".realsim-manifest.json", "assets", "labels.npy", "preview.png", "scene.json", "scene.xml"]
     moved = tmp_path / "elsewhere" / "copy"
     import shutil
 
