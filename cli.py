@@ -197,6 +197,29 @@ def cmd_run(args: argparse.Namespace) -> int:
                    video_fps=args.video_fps)
 
 
+def cmd_bench_sim(args: argparse.Namespace) -> int:
+    from realsim.physics.throughput import bench_scene
+
+    result = bench_scene(Path(args.scene), worlds=args.worlds, steps=args.steps, engine=args.engine)
+    cap = f"nconmax {result.nconmax}, njmax {result.njmax}" if result.nconmax else "no recorded capacity"
+    print(f"{result.engine}: {result.worlds} world(s) x {result.steps} steps in {result.seconds:.2f} s = "
+          f"{result.steps_per_second:,.0f} steps/s; peak per world: {result.peak_ncon} contacts, {result.peak_nefc} rows ({cap})"
+          + ("; OVERFLOW: raise the scene's <size nconmax/njmax>" if result.overflow else ""))
+    return 1 if result.overflow else 0
+
+
+def cmd_batch(args: argparse.Namespace) -> int:
+    from realsim.batch import print_summary, run_batch
+
+    overrides = _parse_set(args.set)
+    if args.no_robot:
+        overrides.setdefault("robot", {})["enabled"] = False
+    jobs, summary = run_batch(args.captures, Path(args.output), seed=args.seed, overrides=overrides, address=args.address,
+                              workers=args.workers, force=args.force)
+    print_summary(jobs, summary, Path(args.output).expanduser().resolve())
+    return 1 if summary["failed"] else 0
+
+
 class OneLineParser(argparse.ArgumentParser):
     """argparse with usage errors on one line (exit 2) and a pointer to ``--help``."""
 
@@ -276,6 +299,24 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--force", action="store_true", help="replace existing files at --video / --log")
     run.add_argument("--seed", type=seed_arg, default=0, help="seed of the grasp search (default 0)")
     run.set_defaults(func=cmd_run)
+
+    bench = sub.add_parser("bench-sim", help="steps per second of a converted scene over N worlds (MuJoCo Warp if installed, else C)")
+    bench.add_argument("scene", help="an output folder of `realsim convert`")
+    bench.add_argument("--worlds", type=bounded(int, 1, 1_000_000), default=1, help="parallel worlds (default 1)")
+    bench.add_argument("--steps", type=bounded(int, 1, 10_000_000), default=200, help="steps per world (default 200)")
+    bench.add_argument("--engine", choices=["auto", "warp", "c"], default="auto", help="auto: MuJoCo Warp when installed, else the C engine")
+    bench.set_defaults(func=cmd_bench_sim)
+
+    batch = sub.add_parser("batch", help="convert many captures (a folder, a glob or a list file) on Ray, resumably")
+    batch.add_argument("captures", nargs="+", help="a folder of captures, a glob, a text file listing one capture per line, or captures")
+    batch.add_argument("-o", "--output", required=True, help="folder that receives one scene folder per capture (and batch.json)")
+    batch.add_argument("--address", help="an existing Ray cluster (default: a local one)")
+    batch.add_argument("--workers", type=bounded(int, 1, 4096), help="parallel conversions (default: the CPUs Ray sees)")
+    batch.add_argument("--seed", type=seed_arg, default=0, help="seed of every conversion (default 0)")
+    batch.add_argument("--set", action="append", default=[], metavar="STAGE.PARAM=VALUE", help="override a stage parameter for all")
+    batch.add_argument("--no-robot", action="store_true", help="compose the scenes without the Panda")
+    batch.add_argument("--force", action="store_true", help="reconvert captures whose scene is already written and unchanged")
+    batch.set_defaults(func=cmd_batch)
     return parser
 
 

@@ -14,15 +14,17 @@ contents by their SHA-256, so identical files (the Panda's meshes) are stored on
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import json
 import os
 import pickle
 import tempfile
 from dataclasses import asdict, is_dataclass
+from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Callable, TypeVar
+from typing import Any, Callable, Iterator, TypeVar
 
 from realsim import __version__
 
@@ -166,6 +168,19 @@ class DiskCache:
         with os.fdopen(fd, "wb") as fh:
             pickle.dump(value, fh, protocol=pickle.HIGHEST_PROTOCOL)
         os.replace(tmp, path)
+
+    @contextmanager
+    def lock(self, key: str) -> Iterator[None]:
+        """An exclusive lock on ``key`` shared by every process using this cache folder (also on
+        other machines when the folder is shared): expensive work for one key happens once."""
+        path = self.root / "locks" / f"{key}.lock"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with path.open("a") as fh:
+            fcntl.flock(fh, fcntl.LOCK_EX)
+            try:
+                yield
+            finally:
+                fcntl.flock(fh, fcntl.LOCK_UN)
 
     def get_or_compute(self, key: str, compute: Callable[[], T]) -> T:
         """Return the cached value for ``key`` or compute, store and return it."""

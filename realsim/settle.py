@@ -122,7 +122,7 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     if settled is None:
         with awake(model):
             settled = _settle(model, params)
-            settled["capacity"] = measure_capacity(model, params.capacity)
+            settled["capacity"] = measure_capacity(model, (settled["key_qpos"], settled["key_ctrl"]), params.capacity)
         cache.put(cache_id, settled)
     spec.nconmax, spec.njmax = settled["capacity"]["nconmax"], settled["capacity"]["njmax"]  # read by MJX / MuJoCo Warp users
     qpos, key_qpos, key_ctrl, report = settled["qpos"], settled["key_qpos"], settled["key_ctrl"], dict(settled["report"])

@@ -84,19 +84,38 @@ def make_hull(points: np.ndarray, min_thickness: float = 0.0005, max_vertices: i
     except QhullError:
         return None
     verts = pts[hull.vertices]
-    if len(verts) > max_vertices:  # keep the extreme points in many directions
-        dirs = _fibonacci(max_vertices * 2)
-        idx = np.unique(np.argmax(verts @ dirs.T, axis=0))
-        verts = verts[idx]
-        try:
-            hull = ConvexHull(verts)
-        except QhullError:
+    if len(verts) > max_vertices:
+        verts = _cap_vertices(verts, max_vertices)
+        if verts is None:
             return None
-        verts = verts[hull.vertices]
     mesh = trimesh.convex.convex_hull(verts)
     if len(mesh.vertices) < 4 or mesh.volume <= 1e-12:
         return None
     return mesh
+
+
+def _cap_vertices(verts: np.ndarray, max_vertices: int) -> np.ndarray | None:
+    """At most ``max_vertices`` of a convex polytope's vertices whose hull stays closest to it:
+    start from the extreme points in 12 directions, then add, one at a time, the vertex lying
+    farthest outside the current hull (greedy Hausdorff reduction: the base an object stands on
+    and every protrusion are kept first)."""
+    idx = list(np.unique(np.argmax(verts @ _fibonacci(12).T, axis=0)))
+    while len(idx) < max_vertices:
+        try:
+            eq = ConvexHull(verts[idx]).equations
+        except QhullError:
+            return None
+        outside = (verts @ eq[:, :3].T + eq[:, 3]).max(axis=1)
+        outside[idx] = -np.inf
+        far = int(np.argmax(outside))
+        if outside[far] <= 1e-9:
+            break
+        idx.append(far)
+    try:
+        hull = ConvexHull(verts[idx])
+    except QhullError:
+        return None
+    return verts[idx][hull.vertices]
 
 
 def _fibonacci(n: int) -> np.ndarray:
@@ -205,7 +224,12 @@ def _coacd_parts(coacd, dec: trimesh.Trimesh, pre: str, threshold: float, params
                     params=settings)
     cache = DiskCache()
     parts = cache.get(key)
-    if parts is None:
+    if parts is not None:
+        return parts
+    with cache.lock(key):  # another worker on the same mesh waits, then reads its result
+        parts = cache.get(key)
+        if parts is not None:
+            return parts
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             raw = coacd.run_coacd(

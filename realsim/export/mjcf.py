@@ -196,6 +196,7 @@ def export_objects(source: Path, dest: Path | str, robot_prefix: str = ROBOT_PRE
             body.quat = [1.0, 0.0, 0.0, 0.0]
             child.modelname = name
             child.option = mujoco.MjSpec().option  # the host scene's options win on attach
+            child.nconmax = child.njmax = -1  # so do its sizes (the scene's capacity is for the whole scene)
             folder = tmp / name
             relocate_assets(child, src_dir, folder)
             xml = folder / f"{name}.xml"

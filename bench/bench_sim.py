@@ -1,0 +1,151 @@
+"""Physics speed of a converted scene, before and after the collision and sleep changes, in one run.
+
+The scene: 10 YCB scans on a 1.2 x 0.8 m table with the Panda (objects capture, seed 3). It is
+converted twice from the same capture: "before" with the former settings (CoACD hulls capped at
+48, no primitives, no hull budget, no sleeping) and "after" with the defaults. For each, two
+workloads are timed on one core (process CPU time of ``mj_step`` only):
+
+- rest: 5 s from keyframe ``initial``, the robot holding its home posture;
+- robot: a pick and place commanded through the runtime ("put the soup can next to the bowl"),
+  its controls recorded and replayed open loop, so only physics is timed.
+
+x real time = simulated seconds / CPU seconds. Also printed: hulls and primitives, peak
+contacts and constraint rows, the goal verdict, and a table of solver options on the "after"
+scene (so the defaults are chosen by measurement).
+
+    MENAGERIE_ROOT=../shared/data .venv/bin/python bench/bench_sim.py [--rest 5] [--no-options]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
+os.environ["REALSIM_REUSE"] = "0"  # convert for real (stage caches still apply)
+
+from realsim.pipeline import convert  # noqa: E402
+from realsim.runtime import Sim, run_command  # noqa: E402
+
+YCB = REPO.parent / "shared" / "data" / "ycb_google16k"
+OBJECTS = ("003_cracker_box", "005_tomato_soup_can", "006_mustard_bottle", "010_potted_meat_can", "011_banana",
+           "024_bowl", "025_mug", "035_power_drill", "037_scissors", "061_foam_brick")
+COMMAND = "put the soup can next to the bowl"
+BEFORE = {"objects": {"assets": {"primitives": False, "hull_budget": False}}, "compose": {"sleep": False}}
+
+
+def make_capture(root: Path) -> Path:
+    cap = root / "ycb10"
+    for folder in OBJECTS:
+        dest = cap / "objects" / folder.split("_", 1)[1]
+        dest.mkdir(parents=True)
+        for f in (YCB / folder).glob("textured.*"):
+            shutil.copyfile(f, dest / f.name)
+    (cap / "capture.yaml").write_text("support: {size: [1.2, 0.8], height: 0.75}\n")
+    return cap
+
+
+def collision_summary(model: mujoco.MjModel) -> str:
+    kinds = {"mesh": 0, "primitive": 0}
+    for g in range(model.ngeom):
+        name = model.geom(g).name
+        if name.startswith("obj") and "_collision_" in name:
+            kinds["mesh" if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH else "primitive"] += 1
+    return f"{kinds['mesh']} hulls + {kinds['primitive']} primitives"
+
+
+def time_steps(model: mujoco.MjModel, ctrls: np.ndarray | None, seconds: float) -> tuple[float, int, int]:
+    """(x real time, peak ncon, peak nefc) stepping from keyframe initial: replaying ``ctrls``
+    (one row per step) or holding the keyframe's controls for ``seconds``."""
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("initial").id)
+    steps = len(ctrls) if ctrls is not None else int(round(seconds / model.opt.timestep))
+    ncon = nefc = 0
+    busy = 0.0
+    for i in range(steps):
+        if ctrls is not None:
+            data.ctrl[:] = ctrls[i]
+        t0 = time.process_time()
+        mujoco.mj_step(model, data)
+        busy += time.process_time() - t0
+        ncon, nefc = max(ncon, data.ncon), max(nefc, data.nefc)
+    return steps * model.opt.timestep / max(busy, 1e-9), ncon, nefc
+
+
+def record_command(folder: Path) -> tuple[np.ndarray, str]:
+    """The controls of every physics step of COMMAND run by the rule planner, and the verdict."""
+    sim = Sim.load(folder)
+    ctrls: list[np.ndarray] = []
+    original = sim.reset
+
+    def reset() -> None:
+        original()
+        sim.robot.step_hook = lambda m, d: ctrls.append(d.ctrl.copy())
+        sim.robot.hook_every = 1
+
+    sim.reset = reset  # type: ignore[method-assign]
+    record = run_command(sim, COMMAND, planner="rules")
+    return np.array(ctrls), record.verdict
+
+
+def options_table(model_path: Path, ctrls: np.ndarray, rest: float) -> None:
+    variants = {
+        "defaults (Newton, elliptic, sleep)": lambda o: None,
+        "sleep off": lambda o: setattr(o, "enableflags", o.enableflags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)),
+        "CG solver": lambda o: setattr(o, "solver", mujoco.mjtSolver.mjSOL_CG),
+        "pyramidal cone": lambda o: setattr(o, "cone", mujoco.mjtCone.mjCONE_PYRAMIDAL),
+        "islands off": lambda o: setattr(o, "disableflags", o.disableflags | int(mujoco.mjtDisableBit.mjDSBL_ISLAND)),
+    }
+    print("\n## solver options on the 'after' scene (x real time, one core)")
+    print(f"{'option':38s} {'rest':>8s} {'robot':>8s}")
+    for name, change in variants.items():
+        model = mujoco.MjModel.from_xml_path(str(model_path))
+        change(model.opt)
+        rest_x, _, _ = time_steps(model, None, rest)
+        robot_x, _, _ = time_steps(model, ctrls, 0.0)
+        print(f"{name:38s} {rest_x:8.1f} {robot_x:8.1f}")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--rest", type=float, default=5.0, help="simulated seconds of the rest workload")
+    ap.add_argument("--no-options", action="store_true", help="skip the solver-options table")
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        cap = make_capture(Path(tmp))
+        rows = []
+        for label, overrides in (("before", BEFORE), ("after", {})):
+            out = Path(tmp) / label
+            started = time.perf_counter()
+            convert(cap, out, seed=3, overrides=overrides)
+            took = time.perf_counter() - started
+            model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+            ctrls, verdict = record_command(out)
+            rest_x, rest_con, rest_efc = time_steps(model, None, args.rest)
+            robot_x, robot_con, robot_efc = time_steps(model, ctrls, 0.0)
+            rows.append((label, collision_summary(model), rest_x, robot_x, max(rest_con, robot_con), max(rest_efc, robot_efc),
+                         verdict, len(ctrls) * model.opt.timestep, took))
+            if label == "after":
+                after_xml, after_ctrls = out / "scene.xml", ctrls
+        print("## 10 YCB objects + Panda, one core (x real time = simulated s / CPU s of mj_step)")
+        print(f"{'scene':8s} {'collision geoms':28s} {'rest x':>8s} {'robot x':>8s} {'ncon':>5s} {'nefc':>5s}  {'command':10s} {'sim s':>6s} {'convert s':>9s}")
+        for label, geoms, rest_x, robot_x, ncon, nefc, verdict, sim_s, took in rows:
+            print(f"{label:8s} {geoms:28s} {rest_x:8.1f} {robot_x:8.1f} {ncon:5d} {nefc:5d}  {verdict:10s} {sim_s:6.1f} {took:9.1f}")
+        before, after = rows[0], rows[1]
+        print(f"speed-up after/before: rest {after[2] / before[2]:.1f}x, robot {after[3] / before[3]:.1f}x")
+        if not args.no_options:
+            options_table(after_xml, after_ctrls, args.rest)
+
+
+if __name__ == "__main__":
+    main()
