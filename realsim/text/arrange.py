@@ -125,7 +125,7 @@ def place_roots(items: list[Item], support: SupportPlane, obstacles: list[np.nda
     def depth(u: list[Item]) -> int:
         return sum(1 for it in u for _, t in it.relations if t in keys)
 
-    order = sorted(units, key=lambda k: (depth(units[k]), -ConvexHull_area(units[k])))
+    order = sorted(units, key=lambda k: (depth(units[k]), -_unit_area(units[k])))
     best: tuple[int, dict[str, tuple], list[str]] | None = None
     retries = RELATION_RETRIES if any(depth(u) for u in units.values()) else 1
     for attempt in range(retries):  # a layout keeping every relation, if one is found (the later half anywhere on the support)
@@ -177,7 +177,8 @@ class _NoRoom(Exception):
     pass
 
 
-def ConvexHull_area(unit: list[Item]) -> float:  # noqa: N802 - sort key
+def _unit_area(unit: list[Item]) -> float:
+    """Footprint box area of a unit (sort key: largest first)."""
     pts = np.vstack([h[:, :2] for it in unit for h in it.hulls])
     span = pts.max(axis=0) - pts.min(axis=0)
     return float(span[0] * span[1]) * len(unit)

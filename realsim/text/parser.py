@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass, field
 
 from realsim.physics.size_table import lookup, normalize_label, singular
-from realsim.text.schema import SIZE_WORDS, SUPPORT_DEFAULTS, MAX_COUNT, ObjectSpec, RelationSpec, SceneSpec, SupportSpec
+from realsim.text.schema import MAX_COUNT, SIZE_WORDS, SUPPORT_DEFAULTS, ObjectSpec, RelationSpec, SceneSpec, SupportSpec
 
 NUMBERS = {"a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
            "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "couple": 2, "pair": 2, "another": 1, "dozen": 12, "few": 3,
@@ -275,8 +275,8 @@ class _Builder:
 
     def with_default(self, owner: Phrase, p: Phrase) -> None:
         """What "X with Y" means for Y: on a support, in a container, else on X."""
-        from realsim.procedural.generate import kind_for
         from realsim.procedural.families import CONTAINERS
+        from realsim.procedural.generate import kind_for
 
         if owner.kind == "support":
             self.relate([p], "on", owner)

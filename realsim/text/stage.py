@@ -28,7 +28,7 @@ from realsim.layout import LayoutParams, declared_support
 from realsim.objects_stage import ObjectsParams, _yaw_quat, scene_object
 from realsim.physics import estimate_manifest
 from realsim.physics.size_table import lookup
-from realsim.procedural import Generated, generate, get_backend, write_ply
+from realsim.procedural import Generated, generate, get_backend
 from realsim.procedural.prepare import prepare_part
 from realsim.scene import Scene, SceneObject, SupportPlane
 from realsim.text.arrange import Item, _NoRoom, place_children, place_roots

@@ -25,8 +25,8 @@ from realsim import llm
 from realsim.cache import DiskCache
 from realsim.errors import InputError
 from realsim.scene import Scene
-from realsim.understanding.calls import CallLog, image_block
 from realsim.text.photo_input import NEEDS_KEY
+from realsim.understanding.calls import CallLog, image_block
 from realsim.understanding.photo import read_photo
 
 PHOTO_SCENE_PROMPT = "scene_photo.md"
