@@ -44,23 +44,62 @@ from realsim.understanding.photo_scene import BackdropParams, PhotoParams, photo
 
 @dataclass(frozen=True)
 class Stage:
-    """A named step: its function and its parameter dataclass."""
+    """A named step: its function, its parameter dataclass, and the Scene fields it needs."""
 
     run: Callable[[Scene, Any], Scene]
     params: type
+    needs: tuple[str, ...] = ()  # Scene fields an earlier stage must have filled
+
+    def check(self, scene: Scene, name: str, pipeline: str) -> None:
+        """InputError when an earlier stage has not filled what this one needs."""
+        for attr in self.needs:
+            value = getattr(scene, attr)
+            if value is None or (hasattr(value, "__len__") and len(value) == 0):
+                raise InputError(f"pipeline {pipeline}: stage {name!r} needs the scene's {attr}, which no earlier stage "
+                                 f"produced; {NEEDS_HINT.get(attr, 'check the order of the stages')}")
+
+
+NEEDS_HINT = {
+    "points": "it runs on a scanned point cloud or mesh (use the scan pipeline with a scan capture)",
+    "planes": "list 'planes' (scans) or 'objects'/'text' (declared supports) before it",
+    "spec": "list 'compose' before it",
+}
+
+
+@dataclass(frozen=True)
+class WriteParams:
+    """Where the write stage puts the scene folder (set by :func:`convert`)."""
+
+    dest: Path | None = None
+    force: bool = False  # replace earlier realsim output at ``dest``
+
+
+def load_stage(scene: Scene, params: LoadParams) -> Scene:
+    """Read the capture the unread record names (``scene.capture.source``; None: a description)."""
+    return load_capture(scene.capture.source, params, seed=scene.seed)
+
+
+def write_stage(scene: Scene, params: WriteParams) -> Scene:
+    """Write the scene folder atomically (:func:`realsim.output.write_scene`)."""
+    if params.dest is None:
+        raise InputError("the write stage needs a destination: use realsim.convert(source, dest) or --output")
+    write_scene(scene, params.dest, force=params.force)
+    return scene
 
 
 STAGES: dict[str, Stage] = {
-    "planes": Stage(detect_planes, PlaneParams),
-    "segment": Stage(segment_scene, SegmentParams),
-    "complete": Stage(complete_objects, CompletionParams),
+    "load": Stage(load_stage, LoadParams),
+    "planes": Stage(detect_planes, PlaneParams, needs=("points",)),
+    "segment": Stage(segment_scene, SegmentParams, needs=("points", "planes")),
+    "complete": Stage(complete_objects, CompletionParams, needs=("planes",)),
     "text": Stage(text_scene, TextParams),
     "photo": Stage(photo_scene, PhotoParams),
-    "photo_backdrop": Stage(photo_backdrop, BackdropParams),
+    "photo_backdrop": Stage(photo_backdrop, BackdropParams, needs=("spec",)),
     "objects": Stage(prepare_scene_objects, ObjectsParams),
-    "compose": Stage(compose_scene, ComposeParams),
-    "robot": Stage(robot_scene, RobotStageParams),
-    "settle": Stage(settle_scene, SettleParams),
+    "compose": Stage(compose_scene, ComposeParams, needs=("planes",)),
+    "robot": Stage(robot_scene, RobotStageParams, needs=("spec",)),
+    "settle": Stage(settle_scene, SettleParams, needs=("spec",)),
+    "write": Stage(write_stage, WriteParams, needs=("spec",)),
 }
 
 
@@ -97,9 +136,13 @@ def load_pipeline(name_or_path: str | Path) -> PipelineSpec:
             name, params = entry, {}
         if not isinstance(name, str) or not isinstance(params or {}, dict):
             raise InputError(f"pipeline {name_or_path}: a stage is a name or {{name: {{param: value}}}}, got {entry!r}")
-        if name != "load":
-            unknown_names([name], STAGES, f"pipeline {data.get('name')}")
+        unknown_names([name], STAGES, f"pipeline {data.get('name')}")
         stages.append((name, params or {}))
+    names = [name for name, _ in stages]
+    if not names or names[0] != "load" or names.count("load") != 1:
+        raise InputError(f"pipeline {name_or_path}: the first stage (and only the first) must be 'load'")
+    if "write" in names and names.index("write") != len(names) - 1:
+        raise InputError(f"pipeline {name_or_path}: 'write' must be the last stage")
     return PipelineSpec(name=data.get("name", str(name_or_path)), stages=stages)
 
 
@@ -146,10 +189,10 @@ def plan_pipeline(
         if Path(source).is_dir():
             read_capture_config(Path(source))
     spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))
-    unknown_names(overrides, {name for name, _ in spec.stages} | {"load"}, f"stages of pipeline {spec.name}")
+    unknown_names(overrides, {name for name, _ in spec.stages} | {"load", "write"}, f"stages of pipeline {spec.name}")
     plan = []
     for name, params in spec.stages:
-        cls = LoadParams if name == "load" else STAGES[name].params
+        cls = STAGES[name].params
         plan.append((name, build_params(cls, {**params, **overrides.get(name, {})}, name)))
     return spec, plan
 
@@ -161,27 +204,29 @@ def run_pipeline(
     seed: int = 0,
     overrides: dict[str, dict[str, Any]] | None = None,
     console: Console | None = None,
+    write: bool = False,
 ) -> Scene:
-    """Run every stage of the pipeline on ``source`` and return the composed, settled Scene.
+    """Run the pipeline's stages in order on ``source`` and return the composed, settled Scene.
 
     ``overrides`` maps stage names to parameter values that win over the pipeline file's
     (the CLI's ``--units``/``--up`` arrive as ``{"load": {"units": ..., "up": ...}}``).
-    Everything is validated (:func:`plan_pipeline`) before the first stage runs.
+    Everything is validated (:func:`plan_pipeline`) before the first stage runs, and each stage
+    checks that the earlier ones gave it what it needs. The ``write`` stage runs only with
+    ``write=True`` (its destination in ``overrides["write"]``; :func:`convert` does this);
+    otherwise the pipeline ends before it and the returned Scene is what would be written.
     """
     spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
-    scene: Scene | None = None
+    scene = Scene.unread(source, seed)
     for name, params in plan:
+        if name == "write" and not write:
+            break
+        stage = STAGES[name]
+        stage.check(scene, name, spec.name)
         started = time.perf_counter()
         if console is not None:
             console.log(f"[bold]{name}[/bold]")
-        if name == "load":
-            scene = load_capture(source, params, seed=seed)
-        elif scene is None:
-            raise InputError(f"pipeline {spec.name}: the first stage must be 'load'")
-        else:
-            scene = STAGES[name].run(scene, params)
+        scene = stage.run(scene, params)
         scene.timings[name] = round(time.perf_counter() - started, 4)
-    assert scene is not None
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
     return scene
 
@@ -213,10 +258,9 @@ def convert(source: Path | str | None, dest: Path | str, *, text: str | None = N
     key = rerun.conversion_key(source, kwargs)  # a warm rerun restores the stored output, byte for byte
     if (reused := rerun.restore(key, dest, force=force)) is not None:
         return reused
-    scene = run_pipeline(source, **kwargs)
-    write_started = time.perf_counter()
-    write_scene(scene, dest, force=force)
-    scene.timings["write"] = round(time.perf_counter() - write_started, 4)
+    overrides = dict(kwargs.pop("overrides", None) or {})
+    overrides["write"] = {"dest": dest, "force": force}
+    scene = run_pipeline(source, overrides=overrides, write=True, **kwargs)
     scene.timings["total"] = round(time.perf_counter() - started, 4)
     rerun.remember(key, dest, scene)
     return scene

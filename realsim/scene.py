@@ -18,8 +18,8 @@ import trimesh
 class CaptureInfo:
     """Where the capture came from and how it was brought into the world frame."""
 
-    source: Path
-    kind: str  # "pointcloud" | "mesh" | "objects"
+    source: Path | None  # None only before the load stage, for a description alone
+    kind: str  # "unread" (before load) | "pointcloud" | "mesh" | "objects" | "text" | ...
     environment_file: Path | None
     units: str  # "m" | "mm" | "cm"
     up: str  # "+z", "-y", "+y", ...
@@ -103,6 +103,13 @@ class Scene:
     settle_report: dict[str, Any] = field(default_factory=dict)
     robot: dict[str, Any] | None = None  # where the Panda stands, when the robot stage ran
     llm: dict[str, Any] | None = None  # Claude calls, tokens, cost, failures (realsim.understanding), when used
+
+    @classmethod
+    def unread(cls, source: Path | None, seed: int = 0) -> "Scene":
+        """The record before the load stage: where the capture is, nothing read yet."""
+        capture = CaptureInfo(source=source, kind="unread", environment_file=None, units="m", up="+z", units_detected=False,
+                              up_detected=False, input_to_world=np.eye(4))
+        return cls(capture=capture, seed=seed)
 
     @property
     def floor_height(self) -> float:
