@@ -2,6 +2,7 @@
 
     python bench/bench_commands.py            # rule planner only (offline), recording primitives
     python bench/bench_commands.py --claude   # also Claude (needs ANTHROPIC_API_KEY; costs tokens)
+    python bench/bench_commands.py --plans [--scenes DIR]   # the sim suite's sentences planned, no physics
     MENAGERIE_ROOT=../shared/data python bench/bench_commands.py --sim [--scenes DIR] [--only TEXT] [--scene NAME]
 
 With ``--sim``, seven scenes are made with the real pipeline (YCB meshes + ``capture.yaml``,
@@ -445,6 +446,36 @@ def bench_sim(args: argparse.Namespace) -> int:
     return 0
 
 
+def bench_plans(args: argparse.Namespace) -> int:
+    """Plan every sentence of :data:`SUITE` on its scene (no physics): a plan is right when it
+    refuses exactly the "refuse" sentences and otherwise acts on exactly the objects the goal moves."""
+    import re
+
+    from realsim.planner import make_planner
+    from realsim.planner.vocab import with_colors
+    from realsim.runtime import Sim
+
+    root = Path(args.scenes)
+    sims: dict = {}
+    right = 0
+    for scene, sentence, spec in SUITE:
+        if scene not in sims:
+            sims[scene] = Sim.load(make_scene(scene, root))
+        sim = sims[scene]
+        _, movers = expected_goals(spec, sim)
+        try:
+            plan = make_planner(args.planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
+            acted = set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program))
+            ok, got = spec != "refuse" and acted == movers, ", ".join(sorted(acted)) or "nothing"
+        except InputError as exc:
+            ok, got = spec == "refuse", f"refused: {exc}"
+        right += ok
+        if not ok:
+            print(f"  WRONG {scene}: {sentence!r} -> {got[:160]} (expected {spec})")
+    print(f"{args.planner} planner: {right}/{len(SUITE)} plans right (refusals and acted-on objects) over {len(sims)} scenes")
+    return 0
+
+
 def bench_language(args: argparse.Namespace) -> int:
     from test_planner_rules import CASES, OBJECTS
     from test_sandbox import Recorder
@@ -479,6 +510,7 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--claude", action="store_true", help="also plan with Claude (language benchmark)")
     ap.add_argument("--sim", action="store_true", help="run the sentence suite in the simulation")
+    ap.add_argument("--plans", action="store_true", help="plan the sentence suite on its scenes (no physics)")
     ap.add_argument("--scenes", default=str(Path(os.environ.get("TMPDIR", "/tmp")) / "realsim_bench_commands"),
                     help="where the scenes are made and cached")
     ap.add_argument("--planner", default="rules", choices=["rules", "claude", "auto"], help="planner for --sim")
@@ -487,6 +519,8 @@ def main() -> int:
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
+    if args.plans:
+        return bench_plans(args)
     return bench_sim(args) if args.sim else bench_language(args)
 
 
