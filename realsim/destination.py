@@ -109,11 +109,16 @@ def check_destination(dest: str | Path, *, inputs: Iterable[Path | None] = (), f
                 raise InputError(f"{flag} {dest}: holds files realsim did not write ({shown}); move them or name a new folder")
             if not force:
                 raise InputError(f"{flag} {dest}: already holds realsim output; pass --force to replace it")
+    _check_writable(path, dest, flag)
+    return path
+
+
+def _check_writable(path: Path, dest: str | Path, flag: str) -> None:
+    """InputError unless the nearest existing folder above ``path`` can be written to."""
     parent = _nearest_existing(path.parent)
     if not os.access(parent, os.W_OK | os.X_OK):
         reason = "read-only file system" if _read_only(parent) else "permission denied"
         raise InputError(f"{flag} {dest}: cannot write in {parent} ({reason}); choose a writable folder")
-    return path
 
 
 def _read_only(folder: Path) -> bool:
@@ -260,8 +265,5 @@ def check_file_destination(dest: str | Path, *, inputs: Iterable[Path | None] = 
     for source in inputs:
         if source is not None and Path(source).expanduser().resolve() == path:
             raise InputError(f"{flag} {dest}: is the input {source}; name a new file")
-    parent = _nearest_existing(path.parent)
-    if not os.access(parent, os.W_OK | os.X_OK):
-        reason = "read-only file system" if _read_only(parent) else "permission denied"
-        raise InputError(f"{flag} {dest}: cannot write in {parent} ({reason}); choose a writable folder")
+    _check_writable(path, dest, flag)
     return path
