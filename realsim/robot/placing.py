@@ -21,7 +21,7 @@ class ReleaseParams:
     ring: int = 6  # spots around the centre of the free area
     yaws: tuple[float, ...] = (0.0, 0.5, -0.5, 1.0, -1.0, np.pi / 2)  # rad the hand turns about the vertical
     drops: tuple[float, ...] = (0.01, 0.03, 0.05)  # m above the surface at release
-    max_poses: int = 24
+    max_poses: int = 40
 
 
 def footprint_radius(obj_pts: np.ndarray) -> float:
