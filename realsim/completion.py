@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import trimesh
-from scipy.spatial import QhullError
+from scipy.spatial import ConvexHull, QhullError
 
 from realsim.appearance import capture_intrinsics
 from realsim.containers import ContainerParams, OpenContainer, complete_open_container, round_rim
@@ -161,6 +161,7 @@ class CompletionParams:
     carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
+    mirror_max_depth_share: float = 0.6  # visible depth below this share of the width: the back half is missing
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30
@@ -196,6 +197,37 @@ def complete_cylinder(points: np.ndarray, base_z: float, top_z: float, params: C
     mesh = trimesh.creation.cylinder(radius=radius, height=height, sections=params.cylinder_sections)
     mesh.apply_translation([centre[0], centre[1], base_z + height / 2])
     return mesh, np.array([centre[0], centre[1], base_z])
+
+
+def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
+    """The observed points plus their mirror image behind the silhouette, when the camera evidently saw
+    only the front half of a body: its visible depth (along the horizontal view direction) is short
+    of its width and its top is not seen whole (a box whose top face is seen has its depth already)."""
+    camera = np.linalg.inv(view.world_to_optical)[:3, 3]
+    d = np.append(points[:, :2].mean(axis=0) - camera[:2], 0.0)
+    if np.linalg.norm(d) < 1e-6:
+        return None
+    d /= np.linalg.norm(d)
+    lateral = np.array([-d[1], d[0], 0.0])
+    s, w = points @ d, points @ lateral
+    depth = float(np.percentile(s, 98) - np.percentile(s, 2))
+    width = float(np.percentile(w, 98) - np.percentile(w, 2))
+    if depth >= params.mirror_max_depth_share * width or _top_face_seen(points[points[:, 2] >= top_z - 0.1 * (top_z - base_z)], d, depth):
+        return None
+    plane = float(np.percentile(s, 98))
+    return np.vstack([points, points - 2.0 * (s - plane)[:, None] * d[None, :]])
+
+
+def _top_face_seen(top: np.ndarray, d: np.ndarray, depth: float, cell: float = 0.005) -> bool:
+    """The top band spans the visible depth and fills its outline (a face seen whole, not a rim arc)."""
+    if len(top) < 10 or float(np.ptp(top @ d)) < 0.6 * depth:
+        return False
+    try:
+        area = float(ConvexHull(top[:, :2]).volume)
+    except QhullError:
+        return False
+    cells = len(np.unique(np.floor(top[:, :2] / cell).astype(np.int64), axis=0))
+    return cells * cell * cell >= 0.6 * area
 
 
 def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trimesh.Trimesh, np.ndarray]:
@@ -255,7 +287,10 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         if shape is not None and _foreign_fraction(shape[0], others[:: max(1, len(others) // 20000)]) > params.max_foreign_fraction:
             shape = None
         kind = "cylinder" if shape is not None else "hull"
-        mesh, base_centre = shape if shape is not None else complete_hull(pts, base_z, top_z)
+        mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if shape is None and view is not None else None
+        if mirrored is not None:
+            kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)"
+        mesh, base_centre = shape if shape is not None else complete_hull(pts if mirrored is None else mirrored, base_z, top_z)
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex
+from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex, mirror_hidden_half
 from realsim.intrinsics import Intrinsics
 
 INTR = Intrinsics(fx=200.0, fy=200.0, cx=79.5, cy=59.5, width=160, height=120)
@@ -108,3 +108,19 @@ def test_an_open_bowl_is_completed_hollow_and_holds_a_ball() -> None:
         mujoco.mj_step(model, data)
     x, y, z = data.body("ball").xpos
     assert np.hypot(x - rim[0][0], y - rim[0][1]) < rim[1] - bowl.wall and bowl.floor_z - 0.003 < z - 0.015 < 0.05
+
+
+def test_the_hidden_half_of_a_flat_bottle_is_mirrored_behind_its_silhouette() -> None:
+    # an elliptic bottle (10 cm wide, 6 cm deep, 20 cm tall) seen from the front (camera far along -x, looking +x)
+    t = np.linspace(-np.pi / 2, np.pi / 2, 60)
+    z = np.linspace(0.0, 0.2, 40)
+    tt, zz = np.meshgrid(t, z)
+    front = np.column_stack([-0.03 * np.cos(tt).ravel(), 0.05 * np.sin(tt).ravel(), zz.ravel()])
+    world_to_optical = np.eye(4)
+    world_to_optical[:3, :3] = [[0, -1, 0], [0, 0, -1], [1, 0, 0]]  # optical +z = world +x
+    world_to_optical[:3, 3] = world_to_optical[:3, :3] @ -np.array([-1.0, 0.0, 0.1])
+    view = DepthView(INTR, world_to_optical, 1.0, np.full((INTR.height, INTR.width), np.nan))
+    both = mirror_hidden_half(front, view, 0.0, 0.2, CompletionParams())
+    assert both is not None and np.isclose(np.ptp(both[:, 0]), 0.06, atol=0.002)
+    box_top = np.column_stack([np.tile(np.linspace(-0.03, 0.03, 30), 40), np.repeat(np.linspace(-0.05, 0.05, 40), 30), np.full(1200, 0.2)])
+    assert mirror_hidden_half(np.vstack([front, box_top]), view, 0.0, 0.2, CompletionParams()) is None  # its whole top is seen
