@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import heapq
 import warnings
+from contextlib import nullcontext
 from dataclasses import replace
 
 import numpy as np
@@ -23,6 +24,7 @@ from scipy.spatial import ConvexHull, QhullError, cKDTree
 from realsim.assets.fidelity import sample_surface
 from realsim.assets.params import AssetParams
 from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
+from realsim.cache import DiskCache
 
 
 def _import_single_threaded(name: str):
@@ -213,20 +215,21 @@ def _merge_hulls(parts: list[np.ndarray], params: AssetParams) -> list[np.ndarra
     return [alive[k][0] for k in sorted(alive)]
 
 
-def _coacd_parts(coacd, dec: trimesh.Trimesh, pre: str, threshold: float, params: AssetParams) -> list[np.ndarray]:
-    """CoACD's convex parts (vertex arrays) of the decimated solid, cached by the mesh and CoACD's
-    own settings only: changing how parts are merged or budgeted never re-runs CoACD."""
-    from realsim.cache import DiskCache, cache_key
+def _coacd_parts(coacd, dec: trimesh.Trimesh, pre: str, threshold: float, params: AssetParams, cache: DiskCache | None) -> list[np.ndarray]:
+    """CoACD's convex parts (vertex arrays) of the decimated solid, cached (in ``cache``) by the mesh
+    and CoACD's own settings only: changing how parts are merged or budgeted never re-runs CoACD."""
+    from realsim.cache import cache_key
+
+    cache = cache if cache is not None else DiskCache(enabled=False)
 
     settings = {"threshold": threshold, "pre": pre, "preprocess_resolution": params.preprocess_resolution, "resolution": params.resolution,
                 "mcts": [params.mcts_iterations, params.mcts_nodes, params.mcts_max_depth], "seed": params.seed}
     key = cache_key("assets.coacd_parts", data=np.asarray(dec.vertices, np.float64).tobytes() + np.asarray(dec.faces, np.int64).tobytes(),
                     params=settings)
-    cache = DiskCache()
     parts = cache.get(key)
     if parts is not None:
         return parts
-    with cache.lock(key):  # another worker on the same mesh waits, then reads its result
+    with cache.lock(key) if cache.enabled else nullcontext():  # another worker on the same mesh waits, then reads its result
         parts = cache.get(key)
         if parts is not None:
             return parts
@@ -267,7 +270,8 @@ def _fewest_hulls(parts: list[np.ndarray], hulls: list[trimesh.Trimesh], solid: 
     return best
 
 
-def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool | None = None) -> tuple[list[trimesh.Trimesh], dict]:
+def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool | None = None,
+              cache: DiskCache | None = None) -> tuple[list[trimesh.Trimesh], dict]:
     """Convex parts of ``solid`` (object frame) and a small report.
 
     ``open_container`` (from the size table) says the mesh shows a cavity, so only surface
@@ -298,7 +302,7 @@ def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool 
     hulls: list[trimesh.Trimesh] = []
     threshold = params.threshold
     for attempt in range(1 + params.refine_attempts):
-        pts = _coacd_parts(coacd, dec, pre, threshold, params)
+        pts = _coacd_parts(coacd, dec, pre, threshold, params, cache)
         merged = _merge_hulls(pts, params)
         hulls = [h for h in (make_hull(p, params.min_hull_thickness, params.max_hull_vertices) for p in merged) if h is not None]
         info["coacd_parts"] = len(pts)

@@ -78,7 +78,7 @@ def _inertia_for(solid: trimesh.Trimesh, label: str, open_cavity: bool) -> tuple
     return com, I, "shell+contents"
 
 
-def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetParams) -> dict:
+def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetParams, cache: DiskCache | None = None) -> dict:
     """The cached part: normalization, solid and decomposition (pure function of its inputs)."""
     t: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -102,7 +102,7 @@ def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetPara
     t["solid"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     category = lookup(label)
-    hulls, info = decompose(solid, params, open_container=category.category.form == "open_container" if category else None)
+    hulls, info = decompose(solid, params, open_container=category.category.form == "open_container" if category else None, cache=cache)
     t["decompose"] = time.perf_counter() - t0
     hull_vol = float(solid.convex_hull.volume)
     return dict(scale=scale, offset=offset, solid=solid, method=method, notes=notes, warnings=warns, hulls=hulls, info=info, hull_volume=hull_vol, timings=t)
@@ -153,7 +153,7 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
     heavy = cache.get(key)
     hit = heavy is not None
     if heavy is None:
-        heavy = _heavy(v, f, label, params)
+        heavy = _heavy(v, f, label, params, cache)
         cache.put(key, heavy)
     t_heavy = time.perf_counter() - t0
     t0 = time.perf_counter()
