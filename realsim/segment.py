@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 from realsim.planes import inside_convex_polygon
 from realsim.scene import SupportPlane
 
-__all__ = ["SegmentParams", "SegmentResult", "segment_objects"]
+__all__ = ["SegmentParams", "SegmentResult", "filter_by_size", "segment_objects"]
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,10 @@ class SegmentParams:
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
     stack_min_height: float = 0.015  # an object whose base is this high rests on another one
+    # sizes of objects (unorganized clouds): larger clusters are structure (walls, furniture sides),
+    # smaller ones and floating ones (resting on nothing) are noise
+    min_object_size: float = 0.02  # m, largest extent
+    max_object_size: float = 0.8  # m, largest extent
 
 
 @dataclass
@@ -559,3 +563,48 @@ def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:
     rank[order] = np.arange(1, len(uniq) + 1)
     out[valid] = rank[inv]
     return out
+
+
+def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[SupportPlane], params: SegmentParams) -> SegmentResult:
+    """Keep the objects a capture can hold: clusters wider or taller than ``max_object_size`` are
+    structure (0), ones smaller than ``min_object_size`` or floating above their support with
+    nothing under them are noise (-1). The rest are renumbered 1..K in their order."""
+    labels = result.labels
+    k = int(labels.max(initial=0))
+    if k == 0:
+        return result
+    height_of = {p.id: p.height for p in planes}
+    fate: dict[int, int] = {}  # 1 object, 0 structure, -1 noise
+    for o in range(1, k + 1):
+        pts = points[labels == o]
+        if len(pts) == 0:
+            continue
+        extent = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
+        base = float(np.percentile(pts[:, 2], 2)) - height_of.get(result.support_of.get(o, -1), float(pts[:, 2].min()))
+        if extent > params.max_object_size:
+            fate[o] = 0
+        elif extent < params.min_object_size or (base > params.stack_min_height and result.resting_on.get(o) is None):
+            fate[o] = -1
+        else:
+            fate[o] = 1
+    for _ in range(k):  # what rests on structure is structure, on noise is noise
+        changed = False
+        for o, f in fate.items():
+            below = result.resting_on.get(o)
+            if f == 1 and below is not None and fate.get(below, -1) != 1:
+                fate[o], changed = fate.get(below, -1), True
+        if not changed:
+            break
+    out = labels.copy()
+    for o, f in fate.items():
+        if f != 1:
+            out[labels == o] = f
+    keep = [o for o, f in fate.items() if f == 1]
+    new_id = {o: i + 1 for i, o in enumerate(keep)}
+    lut = np.zeros(k + 1, dtype=np.int32)
+    for o, n in new_id.items():
+        lut[o] = n
+    obj = out > 0
+    out[obj] = lut[out[obj]]
+    resting = {new_id[o]: new_id.get(r) if r is not None else None for o, r in result.resting_on.items() if o in new_id}
+    return SegmentResult(out.astype(np.int32), {new_id[o]: s for o, s in result.support_of.items() if o in new_id}, resting)

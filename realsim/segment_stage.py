@@ -9,7 +9,7 @@ import numpy as np
 from realsim.compose import safe_name
 from realsim.scene import Scene, SceneObject
 from realsim.resolution import working_resolution
-from realsim.segment import SegmentParams, SegmentResult, assign_supports, segment_objects
+from realsim.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 
 __all__ = ["SegmentParams", "segment_scene"]
 
@@ -71,6 +71,7 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
     result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
+    result = filter_by_size(centres, result, scene.planes, params)
     labels[fg] = result.labels[inverse]
     return labels, result
 

@@ -1,0 +1,124 @@
+"""Capture forms people make (meshes, clouds at any density and units, splats, USD, RGB-D sweeps),
+checked against generated ground truth (realsim.synth)."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+from realsim.capture import load_capture
+from realsim.errors import InputError
+from realsim.pipeline import run_pipeline
+from realsim.resolution import plausible_units
+from realsim.synth import SceneSpec, make_scene, sample_cloud, write_mesh, write_point_cloud, write_rgbd_sequence
+from realsim.synth.scene import ycb_root
+
+pytestmark = pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared/data/ycb_google16k")
+OBJECTS = ("003_cracker_box", "077_rubiks_cube", "005_tomato_soup_can", "025_mug")
+
+
+@pytest.fixture(scope="module")
+def gt():
+    return make_scene(SceneSpec(layout="table", objects=OBJECTS, seed=0))
+
+
+def _pipeline(tmp: Path, stages: str = "planes, segment") -> Path:
+    path = tmp / "detect.yaml"
+    path.write_text("name: detect\nstages:\n  - load\n" + "".join(f"  - {s.strip()}\n" for s in stages.split(",")))
+    return path
+
+
+def _table_height(scene, entry: dict) -> float:
+    """Height of the detected table in the ground-truth frame."""
+    to_gt = np.asarray(entry["capture_to_world"]) @ np.linalg.inv(scene.capture.input_to_world)
+    table = max((p for p in scene.planes if p.kind != "floor"), key=lambda p: p.inlier_count)
+    return float((to_gt @ np.r_[table.rect_center, table.height, 1.0])[2])
+
+
+@pytest.mark.parametrize("units", ["m", "cm", "mm"])
+def test_units_by_plausibility(gt, units: str) -> None:
+    pts, _, _ = sample_cloud(gt, 30_000, noise=0.002)
+    scale = {"m": 1.0, "cm": 100.0, "mm": 1000.0}[units]
+    found, why = plausible_units(pts * scale, np.array([0.0, 0.0, 1.0]))
+    assert found == units, why
+    assert "m across" in why
+
+
+def test_implausible_scale_fails_fast_naming_units(gt, tmp_path: Path) -> None:
+    pts, _, _ = sample_cloud(gt, 200_000)
+    trimesh.PointCloud(pts * 1e6).export(tmp_path / "huge.ply")
+    started = time.perf_counter()
+    with pytest.raises(InputError, match="--units"):
+        load_capture(tmp_path / "huge.ply")
+    assert time.perf_counter() - started < 5.0
+
+
+def test_mesh_in_millimetres_y_up_table_top_not_underside(gt, tmp_path: Path) -> None:
+    entry = write_mesh(gt, tmp_path / "room.glb")  # glTF, Y up, millimetres, a 40 mm table top
+    scene = run_pipeline(tmp_path / "room.glb", pipeline=_pipeline(tmp_path))
+    assert scene.capture.units == "mm" and scene.capture.up == "+y"
+    assert "m across" in scene.capture.metadata["units_reason"]
+    assert abs(_table_height(scene, entry) - gt.primary_support().height) < 0.003
+    assert [p.kind for p in scene.planes].count("table") == 1  # no underside, slab or object top
+    assert len(scene.objects) == len(gt.objects)
+
+
+def test_same_scene_at_two_densities_same_objects(gt, tmp_path: Path) -> None:
+    counts = []
+    for n in (60_000, 600_000):
+        entry, _ = write_point_cloud(gt, tmp_path / f"c{n}.ply", n)
+        scene = run_pipeline(tmp_path / f"c{n}.ply", pipeline=_pipeline(tmp_path))
+        assert abs(_table_height(scene, entry) - gt.primary_support().height) < 0.003
+        counts.append(len(scene.objects))
+    assert counts[0] == counts[1] == len(gt.objects)
+
+
+def test_rgbd_sequence_is_fused(gt, tmp_path: Path) -> None:
+    entry = write_rgbd_sequence(gt, tmp_path / "seq", frames=8, width=320, height=240)
+    scene = run_pipeline(tmp_path / "seq", pipeline=_pipeline(tmp_path, "planes"))
+    assert scene.capture.up == "+y" and not scene.capture.up_detected and scene.capture.units == "m"
+    assert abs(_table_height(scene, entry) - gt.primary_support().height) < 0.005
+
+
+def test_splat_ply_is_read_as_its_centres(gt, tmp_path: Path) -> None:
+    pts, cols, _ = sample_cloud(gt, 20_000)
+    n = len(pts)
+    names = ["x", "y", "z", "f_dc_0", "f_dc_1", "f_dc_2", "opacity", "scale_0", "scale_1", "scale_2", "rot_0", "rot_1", "rot_2", "rot_3"]
+    data = np.zeros(n, dtype=[(k, "<f4") for k in names])
+    data["x"], data["y"], data["z"] = pts.T
+    for i in range(3):
+        data[f"f_dc_{i}"] = (cols[:, i] / 255.0 - 0.5) / 0.28209479177387814
+    data["opacity"] = np.where(np.arange(n) % 10 == 0, -5.0, 5.0)  # every tenth splat is a faint floater
+    data["scale_0"] = data["scale_1"] = data["scale_2"] = np.log(0.003)
+    data["rot_0"] = 1.0
+    header = "ply\nformat binary_little_endian 1.0\nelement vertex %d\n" % n + "".join(f"property float {k}\n" for k in names) + "end_header\n"
+    (tmp_path / "splat.ply").write_bytes(header.encode() + data.tobytes())
+    scene = load_capture(tmp_path / "splat.ply")
+    assert len(scene.points) == n - (n + 9) // 10
+    assert scene.capture.metadata["splat"].endswith("splat.ply") and scene.colors is not None
+    assert np.allclose(scene.colors.mean(axis=0), cols[np.arange(n) % 10 != 0].mean(axis=0) / 255.0, atol=0.01)
+
+
+def test_usd_stage_units_and_up(gt, tmp_path: Path) -> None:
+    from pxr import Gf, Usd, UsdGeom, Vt
+
+    from realsim.usd_mesh import read_usd_mesh
+
+    stage = Usd.Stage.CreateNew(str(tmp_path / "room.usda"))
+    UsdGeom.SetStageMetersPerUnit(stage, 0.01)
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+    mesh = gt.objects[0].mesh()
+    prim = UsdGeom.Mesh.Define(stage, "/room")
+    prim.GetPointsAttr().Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, v)) for v in mesh.vertices * 100.0]))
+    faces = mesh.faces
+    prim.GetFaceVertexCountsAttr().Set(Vt.IntArray([3] * len(faces)))
+    prim.GetFaceVertexIndicesAttr().Set(Vt.IntArray(faces.ravel().tolist()))
+    UsdGeom.Xformable(prim).AddTranslateOp().Set(Gf.Vec3d(10.0, 0.0, 0.0))
+    stage.Save()
+    tm, units, up = read_usd_mesh(tmp_path / "room.usda")
+    assert units == "cm" and up == "+z" and len(tm.faces) == len(faces)
+    assert np.allclose(tm.vertices[0], mesh.vertices[0] * 100.0 + [10.0, 0.0, 0.0], atol=1e-3)
