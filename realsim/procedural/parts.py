@@ -156,7 +156,7 @@ def vessel(outer: list[tuple[float, float]], wall: float, bottom: float, segment
         inner.insert(0, (max(r_at(bottom) - wall, 0.002), bottom))
     poly = [(0.0, 0.0), *map(tuple, prof), *reversed(inner), (0.0, bottom)]
     solid = CrossSection([np.asarray(poly)]).revolve(SEGMENTS)
-    levels = np.linspace(0.0, h, segments + 1)
+    levels = np.linspace(bottom, h, segments + 1)  # walls stand on the floor disc: only the disc touches the table
     pieces = [np.vstack([_ring(r_at(0.0), 0.0, 24), _ring(r_at(bottom), bottom, 24)])]
     step = 2 * np.pi / wedges
     for z0, z1 in zip(levels[:-1], levels[1:]):
@@ -194,9 +194,9 @@ def open_box(x: float, y: float, z: float, wall: float, bottom: float | None = N
         return np.asarray(pts)
 
     fx, fy = 1 - 2 * wall / x, 1 - 2 * wall / y
-    pieces = [slab(-1, 1, -1, 1, 0.0, bottom),
-              slab(-1, -fx, -1, 1, 0.0, z), slab(fx, 1, -1, 1, 0.0, z),
-              slab(-fx, fx, -1, -fy, 0.0, z), slab(-fx, fx, fy, 1, 0.0, z)]
+    pieces = [slab(-1, 1, -1, 1, 0.0, bottom),  # the walls stand on the floor slab: only it touches the table
+              slab(-1, -fx, -1, 1, bottom, z), slab(fx, 1, -1, 1, bottom, z),
+              slab(-fx, fx, -1, -fy, bottom, z), slab(-fx, fx, fy, 1, bottom, z)]
     return Shape(pieces_solid(pieces), pieces, {"rim": (0.0, y / 2 - wall / 2, z), "cavity": (0.0, 0.0, bottom)})
 
 
