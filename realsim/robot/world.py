@@ -20,6 +20,7 @@ COLLISION_GROUPS = np.array([0, 0, 0, 1, 0, 0], dtype=np.uint8)
 WORLD = "world"
 ROBOT = "robot"
 CONTACT_DISTANCE = 0.002  # m: geoms closer than this touch
+GRAZE = 0.002  # m: a planned arm pose may graze an object this deep (its collision hull's own error), no more
 
 
 class SceneGeometry:
@@ -145,7 +146,7 @@ class SceneGeometry:
         out: set[str] = set()
         for i in range(d.ncon):
             c = d.contact[i]
-            if c.dist > 0.0:
+            if c.dist > -GRAZE:
                 continue
             b1, b2 = int(self.model.geom_bodyid[c.geom1]), int(self.model.geom_bodyid[c.geom2])
             for rb, ob in ((b1, b2), (b2, b1)):
