@@ -34,7 +34,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.metrics import matched_iou
-from realsim.pipeline import run_pipeline
+from realsim.pipeline import convert, run_pipeline
 from realsim.synth import SceneSpec, SynthScene, make_scene, write_mesh, write_organized_view, write_point_cloud, write_rgbd_sequence
 
 SCENES = {
@@ -185,14 +185,21 @@ def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: 
             if frames:
                 entry = write_rgbd_sequence(gt, d / "sequence", frames)
                 rows.append(evaluate(gt, d / "sequence", entry["capture_to_world"], f"RGB-D {frames} fr"))
-            print_rows(rows[-1:]) if False else None
+            print(f"[{layout} done]", flush=True)
         print_rows(rows)
-        good = [r for r in rows]
+        good = rows
         print(f"\nall forms: F1 mean {np.mean([r.f1 for r in good]):.3f} (min {min(r.f1 for r in good):.2f}), "
               f"IoU mean {np.mean([r.iou for r in good]):.3f}, worst support {np.nanmax([r.sup_err_mm for r in good]):.2f} mm / "
               f"{np.nanmax([r.sup_tilt_deg for r in good]):.2f} deg, missing {sum(r.sup_missing for r in good)}, extra {sum(r.sup_extra for r in good)}")
         print("\nunits (table scene, 200k cloud, no flags):")
         print("\n".join(units_check(make_scene(SceneSpec(layout=layouts[0], objects=SCENES[layouts[0]], seed=0)), tmp)))
+        if full:
+            print("\nfull conversions (all stages, robot, settle, written), table scene:")
+            for path in (tmp / layouts[0] / "cloud_1000000.ply", tmp / layouts[0] / "mesh.glb"):
+                if path.exists():
+                    started = time.perf_counter()
+                    scene = convert(path, tmp / f"out_{path.stem}")
+                    print(f"  {path.name}: {time.perf_counter() - started:.2f} s, {len(scene.objects)} objects, warnings: {scene.warnings}")
         if big:
             print(peak_memory_10m(layouts[0], tmp))
     print(f"\nbench peak memory (this process): {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss // 1024} MB")

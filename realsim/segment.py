@@ -64,6 +64,8 @@ class SegmentParams:
     # sizes of objects (unorganized clouds): larger clusters are structure (walls, furniture sides),
     # smaller ones and floating ones (resting on nothing) are noise
     min_object_size: float = 0.02  # m, largest extent
+    absorb_area: float = 0.005  # m^2: unorganized clouds, smaller segments touching another join it
+    min_object_area: float = 0.0015  # m^2: unorganized clouds, smaller isolated clusters are noise
     max_object_size: float = 0.8  # m, largest extent
 
 
@@ -409,7 +411,9 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
                            radius: float, step: float) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
-    cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule."""
+    cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
+    Near-horizontal surfaces face up: scans see tops, and an object stacked on a top fills the
+    space above it."""
     tree = cKDTree(points)
     ts = np.arange(2 * step, radius + 1e-9, step)
     score = np.zeros(len(centroids))
@@ -419,6 +423,9 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
         score += np.asarray(behind, float) - np.asarray(ahead, float)
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
+    # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
+    level = np.abs(normals[:, 2]) > 0.7
+    sign = np.where(level, np.sign(normals[:, 2]), sign)
     return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
 
 

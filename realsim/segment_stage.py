@@ -30,8 +30,8 @@ def _label_for(scene: Scene, mask: np.ndarray) -> str:
 
 def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
     """The parameters for an unorganized cloud worked at ``resolution`` (m): link and supervoxel
-    lengths grow with the spacing, and the point counts of the defaults (tuned on Kinect views,
-    about 1.5 mm apart) become the same areas counted in cells of this size."""
+    lengths grow with the spacing, the point counts of the defaults (tuned on Kinect views, about
+    1.5 mm apart) become the same areas counted in cells of this size, and object sizes are areas."""
     kinect_cell = 0.0015**2
 
     def count(points: int, floor: int) -> int:
@@ -43,8 +43,8 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
         supervoxel_size=max(params.supervoxel_size, 4.0 * resolution),
         min_fragment_points=count(params.min_fragment_points, 3),
         min_contact_links=min(params.min_contact_links, count(params.min_contact_links * 4, 2)),
-        absorb_points=count(params.absorb_points, 6),
-        min_object_points=count(params.min_object_points, 5),
+        absorb_points=max(6, int(round(params.absorb_area / resolution**2))),
+        min_object_points=max(5, int(round(params.min_object_area / resolution**2))),
     )
 
 
