@@ -31,7 +31,7 @@ class AppearanceParams:
     """How the captured photo becomes textures."""
 
     enabled: bool = True
-    object_edge: float = 0.025  # object visual meshes subdivided to this edge (m)
+    object_edge: float = 0.04  # object visual meshes subdivided to this edge (m)
     support_cell: float = 0.03  # grid cell of a support's textured top (m)
     support_tolerance: float = 0.012  # a pixel within this of a support plane, inside its polygon, is the support (m)
     top_lift: float = 0.0005  # the textured top sits this far above the collision top (m)

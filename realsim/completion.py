@@ -50,23 +50,30 @@ class DepthView:
         labels = scene.labels.reshape(intr.height, intr.width) if scene.labels is not None else None
         return cls(intr, w2o, scale, z.reshape(intr.height, intr.width), labels)
 
-    def veil(self, tolerance_deg: float = 80.0) -> np.ndarray:
+    def veil(self, tolerance_deg: float = 80.0, where: np.ndarray | None = None) -> np.ndarray:
         """(H, W) mask of veil pixels: mixed depths at silhouettes, seen almost edge-on (a surface whose
-        normal, from the grid neighbours, is within ``90 - tolerance_deg`` degrees of perpendicular to the ray)."""
+        normal, from the grid neighbours, is within ``90 - tolerance_deg`` degrees of perpendicular to the
+        ray). Only pixels in ``where`` (default all) are tested."""
         h, w = self.depth.shape
-        v, u = np.mgrid[0:h, 0:w]
-        z = self.depth
-        x = (u - self.intrinsics.cx) / self.intrinsics.fx * z
-        y = (v - self.intrinsics.cy) / self.intrinsics.fy * z
-        p = np.stack([x, y, z], axis=-1)
-        du = np.zeros_like(p)
-        dv = np.zeros_like(p)
-        du[:, 1:-1] = p[:, 2:] - p[:, :-2]
-        dv[1:-1] = p[2:] - p[:-2]
+        idx = np.flatnonzero(where.ravel() if where is not None else np.ones(h * w, bool))
+        v, u = np.divmod(idx, w)
+        inner = (u > 0) & (u < w - 1) & (v > 0) & (v < h - 1)
+        idx, v, u = idx[inner], v[inner], u[inner]
+
+        def point(k: np.ndarray) -> np.ndarray:
+            kv, ku = np.divmod(k, w)
+            z = self.depth.ravel()[k]
+            return np.column_stack([(ku - self.intrinsics.cx) / self.intrinsics.fx * z, (kv - self.intrinsics.cy) / self.intrinsics.fy * z, z])
+
+        du = point(idx + 1) - point(idx - 1)
+        dv = point(idx + w) - point(idx - w)
+        p = point(idx)
         n = np.cross(du, dv)
         with np.errstate(invalid="ignore", divide="ignore"):
             cos = np.abs((n * p).sum(-1)) / (np.linalg.norm(n, axis=-1) * np.linalg.norm(p, axis=-1))
-        return np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
+        out = np.zeros(h * w, bool)
+        out[idx] = np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
+        return out.reshape(h, w)
 
     def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None) -> np.ndarray:
         """Mask of world points the camera saw through: nearer than the captured depth at their pixel
@@ -271,7 +278,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     observed: dict[int, np.ndarray] = {}
     hollow: set[int] = set()
     view = DepthView.of(scene) if params.carve else None
-    veil = view.veil(params.veil_deg).ravel() if view is not None else np.zeros(len(labels), bool)
+    veil = view.veil(params.veil_deg, labels.reshape(view.depth.shape) > 0).ravel() if view is not None else np.zeros(len(labels), bool)
     order = _bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id
