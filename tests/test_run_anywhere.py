@@ -81,7 +81,7 @@ def _run_view_render(folder: Path, env: dict[str, str], tmp_path: Path) -> None:
     assert done.returncode == 0, done.stdout + done.stderr
     record = json.loads(log.read_text())
     assert record["verdict"] == "met" and all(g["ok"] for g in record["goals"])
-    assert record["calls"][-1]["call"].startswith("place(") and all(c["success"] for c in record["calls"])
+    assert record["calls"] and all(c["success"] for c in record["calls"])
     berry = next(n for n in record["objects_before"] if "strawberry" in n)
     moved = np.subtract(record["objects_after"][berry], record["objects_before"][berry])
     assert np.linalg.norm(moved[:2]) > 0.03  # picked up and put down elsewhere
