@@ -48,6 +48,12 @@ EXTREMES: dict[str, tuple[int, float]] = {
 }
 
 
+# words in a scene's own names that describe rather than name ("obj3_left_tall_white_can"):
+# the resolver reads them as colour, size and position, never as the noun
+_DESCRIPTIVE = frozenset(COLOR_WORDS) | frozenset(BIG) | frozenset(SMALL) | frozenset(EXTREMES) | frozenset(ORDINALS) | {
+    "from", "middle", "center", "centre", "most"}
+
+
 @dataclass
 class Context:
     """What earlier clauses referred to ("it", "them", "the other one")."""
@@ -81,13 +87,13 @@ class Resolver:
             names.append(name_words(rec[0]))
         out: list[list[str]] = []
         for n in names:
-            n = [w for w in n if w not in COLOR_WORDS]
+            n = [w for w in n if w not in _DESCRIPTIVE]
             if n and n not in out:
                 out.append(n)
         return out
 
     def _primary(self, o: ObjectInfo) -> list[list[str]]:
-        return [[w for w in name_words(t) if w not in COLOR_WORDS] for t in (o.label, o.name)]
+        return [[w for w in name_words(t) if w not in _DESCRIPTIVE] for t in (o.label, o.name)]
 
     def color_of(self, o: ObjectInfo) -> str | None:
         """A colour word in the object's name or label (the scene's own naming) first, else its

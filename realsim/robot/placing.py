@@ -58,14 +58,15 @@ def top_area(support_pts: np.ndarray) -> tuple[np.ndarray, float]:
 
 
 def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) -> list[np.ndarray]:
-    """``centre`` first, then points on a ring of radius ``slack / 2`` about it, nearer the
-    robot base first (a ring only when there is at least 1 cm of slack)."""
+    """``centre`` first, then points on rings of radius ``slack / 2`` and ``0.9 slack`` about it,
+    nearer the robot base first (rings only when there is at least 1 cm of slack)."""
     out = [np.asarray(centre, float)]
     if slack >= 0.01:
         ang = 2 * np.pi * np.arange(ring) / ring
-        ringed = [centre + 0.5 * slack * np.array([np.cos(a), np.sin(a)]) for a in ang]
-        ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
-        out += ringed
+        for frac in (0.5, 0.9):  # an inner ring, then one near the edge of the free area
+            ringed = [centre + frac * slack * np.array([np.cos(a), np.sin(a)]) for a in ang]
+            ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
+            out += ringed
     return out
 
 
