@@ -123,3 +123,10 @@ def test_usd_stage_units_and_up(gt, tmp_path: Path) -> None:
     tm, units, up = read_usd_mesh(tmp_path / "room.usda")
     assert units == "cm" and up == "+z" and len(tm.faces) == len(faces)
     assert np.allclose(tm.vertices[0], mesh.vertices[0] * 100.0 + [10.0, 0.0, 0.0], atol=1e-3)
+
+
+def test_empty_table_converts_with_a_warning(tmp_path: Path) -> None:
+    empty = make_scene(SceneSpec(layout="table", objects=(), stacked=False, touching=False, seed=2))
+    write_point_cloud(empty, tmp_path / "empty.ply", 100_000)
+    scene = run_pipeline(tmp_path / "empty.ply", pipeline=_pipeline(tmp_path))
+    assert scene.objects == [] and any("no objects found" in w for w in scene.warnings)
