@@ -130,7 +130,7 @@ HOSTILE: list[tuple[str, int]] = [
 RUNAWAY: list[tuple[str, int, str]] = [
     ("while True:\n    pass", 1, "while loop ran more than"),
     ("n = 0\nwhile n >= 0:\n    n = n + 1", 2, "while loop ran more than"),
-    ("for i in range(9000):\n    for j in range(9000):\n        pass", 3, "steps"),
+    ("for i in range(9000):\n    for j in range(9000):\n        pass", 3, "steps|longer than"),  # a loaded machine may hit the time budget first
     ("x = [0]\nfor i in range(100):\n    x = x + x", 3, "elements"),
     ("x = [0] * 9999\ny = x * 9999", 2, "repetition"),
     ("n = 10\nfor i in range(40):\n    n = n * n", 3, "too large"),
@@ -166,7 +166,7 @@ def test_runaway_program_is_stopped_naming_the_line(program: str, line: int, why
     assert time.monotonic() - t0 < 5.0
     assert report.error is not None and not report.ok
     assert report.error.startswith(f"line {line}:"), report.error
-    assert why in report.error, report.error
+    assert re.search(why, report.error), report.error
 
 
 def test_cpu_time_budget_stops_a_busy_program() -> None:
