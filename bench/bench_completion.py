@@ -6,7 +6,7 @@ converted object holding most of its pixels. Per object: volume IoU of the compl
 its composed pose) with the true mesh (occupancy on a 2 mm grid), the oriented size error (sorted
 extents of the oriented bounding boxes) and whether it was found once. Run:
 
-    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5]
+    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--baseline]
 """
 
 from __future__ import annotations
@@ -51,13 +51,16 @@ def obb_extents(mesh: trimesh.Trimesh) -> np.ndarray:
     return np.sort(np.asarray(mesh.bounding_box_oriented.primitive.extents, float))[::-1]
 
 
-def measure(seed: int, n_objects: int, root: Path) -> list[dict]:
+BASELINE = {"complete": {"carve": False, "containers": {"enabled": False}, "mirror_max_depth_share": 1e-6}}  # extrusion and cylinders only
+
+
+def measure(seed: int, n_objects: int, root: Path, baseline: bool = False) -> list[dict]:
     scene = make_scene(SceneSpec(layout="table", n_objects=n_objects, stacked=True, touching=True, seed=seed))
     capture = root / f"seed{seed}"
     capture.mkdir(parents=True)
     form = write_organized_view(scene, capture / "view.pcd", seed=seed)
     out = root / f"out{seed}"
-    convert(capture / "view.pcd", out, overrides={"robot": {"enabled": False}})
+    convert(capture / "view.pcd", out, overrides={"robot": {"enabled": False}, **(BASELINE if baseline else {})})
     record = json.loads((out / "scene.json").read_text())
     synth_to_realsim = np.asarray(record["capture"]["input_to_world"]) @ np.linalg.inv(np.asarray(form["capture_to_world"]))
     labels = np.load(out / "labels.npy")
@@ -93,9 +96,10 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", nargs="*", type=int, default=[0, 1, 2])
     parser.add_argument("--objects", type=int, default=5)
+    parser.add_argument("--baseline", action="store_true", help="without free-space carving, hollow containers and mirroring")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        rows = [r for seed in args.seeds for r in measure(seed, args.objects, Path(tmp))]
+        rows = [r for seed in args.seeds for r in measure(seed, args.objects, Path(tmp), args.baseline)]
     print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s}  name given")
     for r in rows:
         print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f}  "
