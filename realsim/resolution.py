@@ -17,6 +17,7 @@ MIN_RESOLUTION = 0.003  # m: fine enough for 3 cm objects (10 cells across)
 PLAUSIBLE_EXTENT = (0.1, 60.0)  # m: a captured scene is this large
 TYPICAL_EXTENT = 2.0  # m: the scene size preferred when several units are plausible
 SUPPORT_GAP = (0.4, 1.2)  # m: a table or counter top stands this high above the floor
+TABLE_BONUS = 1.5  # log-extent units a table-high layer is worth (extents 4.5x apart still tie)
 _SAMPLE = 200_000
 
 
@@ -68,9 +69,9 @@ def _layer_gaps(points: np.ndarray, up: np.ndarray) -> np.ndarray:
 def plausible_units(points: np.ndarray, up: np.ndarray | None = None) -> tuple[str, str]:
     """Units the capture is in (m, cm or mm) by physical plausibility, and why.
 
-    A unit is plausible when the scene's extent in it is 0.1-60 m; among plausible ones a unit
-    that puts the highest large horizontal layer 0.4-1.2 m above the lowest (a table over a
-    floor) wins, then the one whose extent is nearest a room-sized 2 m. None plausible: an
+    A unit is plausible when the scene's extent in it is 0.1-60 m; among plausible ones the
+    extent nearest a room-sized 2 m (in log scale) wins, and a large horizontal layer 0.4-1.2 m
+    above the lowest (a table over a floor) decides between extents of similar plausibility. None plausible: an
     InputError naming ``--units``.
     """
     pts = _subsample(points, _SAMPLE)
@@ -89,12 +90,12 @@ def plausible_units(points: np.ndarray, up: np.ndarray | None = None) -> tuple[s
         fit = [g * UNIT_SCALE[u] for g in gaps if SUPPORT_GAP[0] <= g * UNIT_SCALE[u] <= SUPPORT_GAP[1]]
         return max(fit) if fit else None
 
-    def score(u: str) -> tuple[int, float]:
-        return (int(table(u) is not None), -abs(math.log(plausible[u] / TYPICAL_EXTENT)))
+    def score(u: str) -> float:  # a room-sized extent first; a table-high layer breaks near ties
+        return -abs(math.log(plausible[u] / TYPICAL_EXTENT)) + (TABLE_BONUS if table(u) is not None else 0.0)
 
     best = max(plausible, key=score)
     why = f"{extent * UNIT_SCALE[best]:.2f} m across"
-    if score(best)[0]:
+    if table(best) is not None:
         why += f", a support {table(best):.2f} m above the floor"
     others = [f"{u}: {plausible[u]:.3g} m across" for u in plausible if u != best]
     if others:
