@@ -373,7 +373,7 @@ def _separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Tri
                 lo, hi = cut.bounds
                 done[obj.id] = cut
                 _set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params)
-                obj.notes.append(f"cut apart from {(b if obj is a else a).name}, whose shape it overlapped")
+                obj.notes.append(f"cut apart from object {(b if obj is a else a).id}, whose completed shape it overlapped")
 
 
 def _set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams,
