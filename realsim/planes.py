@@ -185,7 +185,8 @@ def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
     point_labels = labels[ij[:, 0], ij[:, 1]]
     occupied = np.bincount(point_labels, minlength=count + 1)
     cells = np.zeros(count + 1, dtype=np.int64)
-    unique_cells = np.unique(ij, axis=0)
+    flat = np.unique(ij[:, 0] * (ij[:, 1].max() + 1) + ij[:, 1])
+    unique_cells = np.stack([flat // (ij[:, 1].max() + 1), flat % (ij[:, 1].max() + 1)], axis=1)
     np.add.at(cells, labels[unique_cells[:, 0], unique_cells[:, 1]], 1)
     big = [k for k in range(1, count + 1) if cells[k] * cell * cell >= min_area and occupied[k] >= 3]
     return [np.flatnonzero(point_labels == k) for k in big]
@@ -375,8 +376,16 @@ def _support_points(pts: np.ndarray, group: np.ndarray, params: PlaneParams) -> 
     near = (np.abs(pts[:, 2] - z) < params.distance_threshold) & np.all((pts[:, :2] >= lo) & (pts[:, :2] <= hi), axis=1)
     band = pts[near][inside_convex_polygon(pts[near, :2], polygon)]
     cell = params.voxel_size
-    observed_area = len(np.unique(np.floor(band[:, :2] / cell).astype(np.int64), axis=0)) * cell * cell
+    observed_area = _occupied_cells(band[:, :2], cell) * cell * cell
     return band if observed_area >= params.min_support_area else None
+
+
+def _occupied_cells(xy: np.ndarray, cell: float) -> int:
+    """Number of distinct ``cell``-sized grid squares holding points (one int64 key per square)."""
+    if len(xy) == 0:
+        return 0
+    ij = np.floor((xy - xy.min(axis=0)) / cell).astype(np.int64)
+    return len(np.unique(ij[:, 0] * (ij[:, 1].max() + 1) + ij[:, 1]))
 
 
 def inside_convex_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
