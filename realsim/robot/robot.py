@@ -89,12 +89,6 @@ def _box_centre(pts: np.ndarray) -> np.ndarray:
     return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
 
 
-def _min_gap(pts: np.ndarray, foot_xy: np.ndarray, above: float) -> float:
-    """Smallest horizontal distance from ``foot_xy`` to the points of ``pts`` higher than ``above``."""
-    high = pts[pts[:, 2] > above, :2]
-    return float(cKDTree(high).query(foot_xy)[0].min()) if len(high) else np.inf
-
-
 def _box_centre_3d(pts: np.ndarray) -> np.ndarray:
     """Centre of the points' bounding box: where goals measure an object."""
     return (pts.min(axis=0) + pts.max(axis=0)) / 2
@@ -357,12 +351,20 @@ class Robot:
                      start: np.ndarray | None = None) -> None:
         """Raise _Fail when the arm would touch an object along ``path`` from ``start`` (default:
         the commanded joints), at waypoints and midpoints; the held object is carried, not hit."""
-        if self.held:
-            ignore = set(ignore) | {self.held}
+        rel = None
+        if self.held:  # the held object moves with the hand: checked against the others like a link
+            b = self._body(self.held)
+            tcp, rot = self.tcp_pose()
+            rel = (rot.T @ (self.data.xpos[b] - tcp), rot.T @ self.data.xmat[b].reshape(3, 3))
         q_prev = self.data.ctrl[self.act].copy() if start is None else np.asarray(start, float)
         for q in path:
             for f in (0.5, 1.0):
-                hits = self.geometry.robot_hits(self.qadr, q_prev + f * (q - q_prev), ignore, hand_may_touch, self.hand_bodies)
+                qf = q_prev + f * (q - q_prev)
+                carried = None
+                if rel is not None:
+                    p_w, r_w = self.ik.fk(qf)
+                    carried = {self.held: (r_w @ rel[0] + p_w, mat_to_quat(r_w @ rel[1]))}
+                hits = self.geometry.robot_hits(self.qadr, qf, ignore, hand_may_touch, self.hand_bodies, carried=carried)
                 if hits:
                     raise _Fail(f"the arm would touch {', '.join(sorted(hits))}")
             q_prev = q
@@ -806,8 +808,10 @@ class Robot:
             rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
             # the object's footprint swept along the push must not run into another object
             foot = pts[:: max(1, len(pts) // 400), :2]
-            # what already overlaps the object's footprint rides in or on it: not in the way
-            riding = {n for n in self.object_names() if n != obj and _min_gap(self.object_points(n), foot, bottom + 0.005) < 0.002}
+            # what rests in or on the object (touching it, centred over its footprint) rides along: not in the way
+            lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+            riding = {n for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}
+                      if np.all((_box_centre(self.object_points(n)) >= lo) & (_box_centre(self.object_points(n)) <= hi))}
             others = self._others(obj, skip=riding, above=bottom + 0.005)
             if len(others):
                 tree = cKDTree(others)

@@ -128,21 +128,28 @@ class SceneGeometry:
         return float(best) if np.isfinite(best) else 0.0
 
     def robot_hits(self, qadr: np.ndarray, q_arm: np.ndarray, ignore: Iterable[str] = (), hand_may_touch: Iterable[str] = (),
-                   hand_bodies: Iterable[int] = (), shifted: dict[str, np.ndarray] | None = None) -> set[str]:
+                   hand_bodies: Iterable[int] = (), shifted: dict[str, np.ndarray] | None = None,
+                   carried: dict[str, tuple[np.ndarray, np.ndarray]] | None = None) -> set[str]:
         """Objects the robot would touch with its arm at joints ``q_arm`` (everything else as now):
         a kinematic check on a scratch copy of the state, nothing moves. ``ignore``: objects that
         may touch any link (the held one); ``hand_may_touch``: objects only the hand and fingers
         (``hand_bodies``) may touch (what is being pushed); ``shifted``: objects displaced by an xyz
-        offset (where a pushed object will be by then)."""
+        offset (where a pushed object will be by then); ``carried``: objects moved with the hand to
+        a world (position, quaternion) and checked like a link (the held object)."""
         d = self._scratch_data()
         d.qpos[:] = self.data.qpos
         d.qpos[qadr] = q_arm
         for name, offset in (shifted or {}).items():
             adr = self.model.jnt_qposadr[self.model.body_jntadr[self.body(name)]]
             d.qpos[adr:adr + 3] += offset
+        arm = set(self.robot_bodies)
+        for name, (pos, quat) in (carried or {}).items():
+            adr = self.model.jnt_qposadr[self.model.body_jntadr[self.body(name)]]
+            d.qpos[adr:adr + 3], d.qpos[adr + 3:adr + 7] = pos, quat
+            arm |= set(self.subtree(self.body(name)))
         mujoco.mj_kinematics(self.model, d)
         mujoco.mj_collision(self.model, d)
-        ignore, hand_ok, hand = set(ignore), set(hand_may_touch), set(hand_bodies)
+        ignore, hand_ok, hand = set(ignore) - set(carried or {}), set(hand_may_touch), set(hand_bodies)
         out: set[str] = set()
         for i in range(d.ncon):
             c = d.contact[i]
@@ -150,7 +157,7 @@ class SceneGeometry:
                 continue
             b1, b2 = int(self.model.geom_bodyid[c.geom1]), int(self.model.geom_bodyid[c.geom2])
             for rb, ob in ((b1, b2), (b2, b1)):
-                if rb in self.robot_bodies and ob not in self.robot_bodies:
+                if rb in arm and ob not in arm:
                     owner = self.owner(ob)
                     if owner == WORLD or owner in ignore or (owner in hand_ok and rb in hand):
                         continue
