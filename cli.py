@@ -215,7 +215,7 @@ def cmd_batch(args: argparse.Namespace) -> int:
     if args.no_robot:
         overrides.setdefault("robot", {})["enabled"] = False
     jobs, summary = run_batch(args.captures, Path(args.output), seed=args.seed, overrides=overrides, address=args.address,
-                              workers=args.workers, force=args.force)
+                              workers=args.workers, force=args.force, retry_failed=args.retry_failed)
     print_summary(jobs, summary, Path(args.output).expanduser().resolve())
     return 1 if summary["failed"] else 0
 
@@ -316,6 +316,7 @@ def build_parser() -> argparse.ArgumentParser:
     batch.add_argument("--set", action="append", default=[], metavar="STAGE.PARAM=VALUE", help="override a stage parameter for all")
     batch.add_argument("--no-robot", action="store_true", help="compose the scenes without the Panda")
     batch.add_argument("--force", action="store_true", help="reconvert captures whose scene is already written and unchanged")
+    batch.add_argument("--retry-failed", action="store_true", help="run captures that failed last time although unchanged")
     batch.set_defaults(func=cmd_batch)
     return parser
 

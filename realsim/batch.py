@@ -9,8 +9,8 @@ keyed by its cache key, so a mesh met by several captures is decomposed once.
 
 ``<output>/batch.json`` records each capture's conversion key (inputs, parameters, code digest:
 :func:`realsim.rerun.conversion_key`), status, time and error. A rerun skips a capture whose
-scene folder exists and whose key is unchanged; a failed capture is reported and retried next
-time while the others go on. The run ends with a summary table; the exit code is 1 when any
+scene folder exists and whose key is unchanged; a failure is isolated (the others go on) and
+reported, and is not retried while its key is unchanged unless asked (``--retry-failed``). The run ends with a summary table; the exit code is 1 when any
 capture failed.
 """
 
@@ -28,6 +28,7 @@ from typing import Any
 from realsim.errors import InputError
 
 RECORD = "batch.json"
+UNCHANGED = " (unchanged since the last run: not retried; --retry-failed runs it again)"
 FORMAT = "realsim-batch/1"
 CAPTURE_FILES = {".pcd", ".ply", ".xyz", ".obj", ".stl", ".glb", ".gltf", ".txt", ".jpg", ".jpeg", ".png", ".webp"}
 LIST_FILES = {".list", ".lst"}
@@ -145,9 +146,12 @@ def _write_record(output: Path, jobs: list[Job], summary: dict[str, Any]) -> Non
 
 
 def run_batch(items: list[str], output: Path, *, seed: int = 0, overrides: dict[str, Any] | None = None,
-              address: str | None = None, workers: int | None = None, force: bool = False,
+              address: str | None = None, workers: int | None = None, force: bool = False, retry_failed: bool = False,
               progress: bool = True) -> tuple[list[Job], dict[str, Any]]:
-    """Convert every capture of ``items`` into ``output/<name>``; returns the jobs and a summary."""
+    """Convert every capture of ``items`` into ``output/<name>``; returns the jobs and a summary.
+
+    Unchanged captures are not run again: a converted one is skipped, a failed one keeps its
+    error (``retry_failed`` runs it again, e.g. after a network failure)."""
     import ray
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
@@ -167,9 +171,11 @@ def run_batch(items: list[str], output: Path, *, seed: int = 0, overrides: dict[
     for job in jobs:
         job.key = conversion_key(job.capture, kwargs)
         before = previous.get(str(job.capture))
-        done = before is not None and before.get("status") in ("ok", "skipped") and before.get("key") == job.key
-        if done and not force and (output / job.name / "scene.xml").is_file():
+        same = before is not None and before.get("key") == job.key and not force
+        if same and before.get("status") in ("ok", "skipped") and (output / job.name / "scene.xml").is_file():
             job.status, job.objects, job.seconds = "skipped", int(before.get("objects", 0)), 0.0
+        elif same and before.get("status") == "failed" and not retry_failed:  # the same inputs and code fail the same way
+            job.status, job.error = "failed", str(before.get("error", "")).removesuffix(UNCHANGED) + UNCHANGED
         else:
             todo.append(job)
     started = time.perf_counter()
