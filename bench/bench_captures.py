@@ -156,9 +156,11 @@ def peak_memory_10m(gt_layout: str, tmp: Path) -> str:
     gt = make_scene(SceneSpec(layout=gt_layout, objects=SCENES[gt_layout], seed=0))
     path = tmp / "cloud10m.ply"
     write_point_cloud(gt, path, 10_000_000)
-    code = (f"import time,resource;from realsim.pipeline import run_pipeline;t=time.perf_counter();"
+    # ru_maxrss survives fork+exec (it would report the parent's peak): reset the high-water mark first
+    code = (f"open('/proc/self/clear_refs','w').write('5');import time;from realsim.pipeline import run_pipeline;t=time.perf_counter();"
             f"s=run_pipeline('{path}', pipeline='{_pipeline_file()}');"
-            f"print(len(s.objects), round(time.perf_counter()-t,2), resource.getrusage(resource.RUSAGE_SELF).ru_maxrss//1024)")
+            f"hwm=[l for l in open('/proc/self/status') if l.startswith('VmHWM')][0].split()[1];"
+            f"print(len(s.objects), round(time.perf_counter()-t,2), int(hwm)//1024)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     if out.returncode:
         return f"  10M: failed: {out.stderr.strip().splitlines()[-1] if out.stderr.strip() else out.returncode}"
