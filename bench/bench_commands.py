@@ -314,7 +314,17 @@ def resolve_key(key: str, sim) -> str:
 def expected_goals(spec: str, sim):
     """(goals, objects the goal moves) for a goal spec; [] for "refuse"."""
     from realsim.planner.goals import (
-        DIRECTIONS, AtHome, Between, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf,
+        DIRECTIONS,
+        AtHome,
+        Between,
+        Inside,
+        Lifted,
+        Moved,
+        NextTo,
+        On,
+        OnTable,
+        Placed,
+        SideOf,
     )
 
     goals, movers = [], set()

@@ -6,7 +6,19 @@ import pytest
 
 from realsim.errors import InputError
 from realsim.planner import (
-    AtHome, Between, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, ObjectInfo, On, RulePlanner, SideOf, check,
+    AtHome,
+    Between,
+    DrawerClosed,
+    DrawerOpen,
+    Inside,
+    Lifted,
+    Moved,
+    NextTo,
+    ObjectInfo,
+    On,
+    RulePlanner,
+    SideOf,
+    check,
 )
 from realsim.planner.rules import split_command
 

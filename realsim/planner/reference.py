@@ -23,7 +23,20 @@ from realsim.errors import InputError
 from realsim.planner import relations
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import (
-    BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SIZE_AXIS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular,
+    BIG,
+    COLOR_WORDS,
+    GENERIC,
+    KINDS,
+    NUMBERS,
+    ORDINALS,
+    SIZE_AXIS,
+    SMALL,
+    SYNONYMS,
+    is_plural,
+    name_words,
+    norm,
+    record,
+    singular,
 )
 
 DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those"}

@@ -18,8 +18,6 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-import numpy as np
-
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.reference import Context, Resolver
@@ -256,7 +254,7 @@ def _find_relation(rest: str) -> list[tuple[int, int, str]]:
 
 def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
-    m = re.fullmatch(rf"(.+?)\s+(back|down)(?: where it (?:was|came from|belongs)| in its (?:place|spot)| on its spot)?", rest)
+    m = re.fullmatch(r"(.+?)\s+(back|down)(?: where it (?:was|came from|belongs)| in its (?:place|spot)| on its spot)?", rest)
     if verb in ("put back", "put down", "set down", "lay down") and not _find_relation(rest):
         m = re.fullmatch(r"(.+)", rest)
     if m and not _relation_tail(rest):
@@ -423,14 +421,3 @@ def _push(rest: str, p: _Parser, clause: str) -> _Step:
     return _Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
                  [Moved(o.name, DIRECTIONS[direction], round(dist, 3)) for o in objs], tuple(o.name for o in objs))
 
-
-def free_spot(o: ObjectInfo, objects: Sequence[ObjectInfo], near: np.ndarray, gap: float = 0.03) -> np.ndarray:
-    """The xy nearest ``near`` where ``o``'s footprint clears every other object's box by ``gap``."""
-    r = float(np.hypot(o.size[0], o.size[1])) / 2
-    others = [x for x in objects if x.name != o.name]
-    for radius in np.arange(0.0, 0.4, 0.02):
-        for ang in np.linspace(0, 2 * np.pi, max(1, int(radius / 0.02) * 6), endpoint=False):
-            xy = np.asarray(near, float) + radius * np.array([np.cos(ang), np.sin(ang)])
-            if all(np.any(np.abs(xy - np.asarray(x.position[:2])) > np.asarray(x.size[:2]) / 2 + r + gap) for x in others):
-                return xy
-    return np.asarray(near, float)
