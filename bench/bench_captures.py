@@ -62,8 +62,7 @@ class Row:
 
 
 def _pipeline_file() -> Path:
-    if not DETECT.exists():
-        DETECT.write_text("name: detect\nstages:\n  - load\n  - planes\n  - segment\n")
+    """The detection stages only (load, planes, segment): what the quality figures measure."""
     return DETECT
 
 
