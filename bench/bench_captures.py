@@ -21,7 +21,6 @@ segment) and compared in the ground-truth frame:
 from __future__ import annotations
 
 import argparse
-import json
 import resource
 import subprocess
 import sys

@@ -26,7 +26,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import yaml
 
 from realsim.capture_config import read_capture_config
 from realsim.errors import InputError

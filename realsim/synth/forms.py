@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.synth.camera import Camera, backproject, kinect_noise, kinect_view, orbit, render
+from realsim.synth.camera import backproject, kinect_noise, kinect_view, orbit, render
 from realsim.synth.scene import SynthScene, _raycaster
 
 UNIT_SCALE = {"m": 1.0, "cm": 100.0, "mm": 1000.0}  # capture units per metre
