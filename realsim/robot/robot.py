@@ -33,6 +33,7 @@ from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPE
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
 from realsim.robot.placing import ReleaseParams, cavity_centre, footprint_radius, release_poses, spots, top_area
 from realsim.robot.world import SceneGeometry
+from realsim.physics.divergence import check_state
 
 
 @dataclass(frozen=True)
@@ -227,6 +228,8 @@ class Robot:
             raise _Budget()
         mujoco.mj_step(self.model, self.data)
         self._steps += 1
+        if self._steps % 50 == 0:  # a diverged simulation stops with a message, never a hang
+            check_state(self.model, self.data, "robot motion")
         if self.step_hook is not None and self._steps % self.hook_every == 0:
             self.step_hook(self.model, self.data)
 

@@ -22,6 +22,7 @@ from realsim.errors import InputError
 from realsim.planner import make_planner, sandbox
 from realsim.planner.goals import Goal, GoalResult, evaluate_all, prepare_all, verdict
 from realsim.planner.types import Plan
+from realsim.planner.vocab import with_colors
 from realsim.runtime.primitives import ProgramAPI, _jsonable
 from realsim.runtime.sim import Sim
 
@@ -180,7 +181,8 @@ def run_command(sim: Sim, text: str, planner: str = "auto", seed: int | None = N
     p = make_planner(planner, settings)
     usage_before = llm.Usage()
     usage_before.add(llm.SESSION_USAGE)
-    plan = p.plan(text, sim.object_infos())
+    # the planner reads colours from the capture and directions from where the robot stands
+    plan = p.plan(text, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
     t_plan = time.perf_counter() - t0
     record = RunRecord(scene=str(sim.folder), command=text, planner=plan.planner, program=plan.program, seed=sim.seed,
                        notes=list(plan.notes))
