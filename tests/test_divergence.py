@@ -30,7 +30,8 @@ def test_a_calm_simulation_passes() -> None:
 
 
 @pytest.mark.parametrize("field", ["qpos", "qvel"])
-def test_non_finite_state_stops_settling(field: str) -> None:
+def test_non_finite_state_stops_settling(field: str, tmp_path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)  # MuJoCo logs its bad-state warning to MUJOCO_LOG.TXT in the working directory
     model, data = falling_box()
     getattr(data, field)[2] = np.nan
     with pytest.raises(SimulationDiverged, match="settling: the simulation diverged"):
