@@ -69,42 +69,11 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
         return np.stack([np.bincount(inverse, values[:, i], minlength=len(counts)) for i in range(3)], axis=1) / counts[:, None]
 
     centres = mean(scene.points[fg])
-    wall = _on_walls(centres, resolution, scene.seed)
-    if wall.any():  # walls and furniture sides are structure, never objects
-        labels[fg[wall[inverse]]] = 0
-        keep = ~wall[inverse]
-        fg, inverse = fg[keep], np.unique(inverse[keep], return_inverse=True)[1].ravel()
-        centres = centres[~wall]
-        counts = counts[~wall]
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
     result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
     result = filter_by_size(centres, result, scene.planes, params)
     labels[fg] = result.labels[inverse]
     return labels, result
-
-
-def _on_walls(points: np.ndarray, resolution: float, seed: int, max_object: float = 0.6) -> np.ndarray:
-    """Points on large vertical planes (walls, cabinet fronts): a flat vertical face wider or
-    taller than any object (``max_object``, m) is structure."""
-    from realsim.planes import PlaneParams, ransac_proposals
-
-    on = np.zeros(len(points), dtype=bool)
-    if len(points) < 100:
-        return on
-    params = PlaneParams(voxel_size=max(0.01, resolution), distance_threshold=max(0.01, 2 * resolution), min_plane_points=50, max_planes=6)
-    for normal, d, inliers in ransac_proposals(points, params, seed):
-        if abs(normal[2]) > 0.2:
-            continue
-        along = np.cross(normal, [0.0, 0.0, 1.0])
-        along /= np.linalg.norm(along)
-        width = np.ptp(inliers @ along)
-        height = np.ptp(inliers[:, 2])
-        if max(width, height) > max_object:
-            near = np.abs(points @ normal + d) < params.distance_threshold
-            lo, hi = (inliers @ along).min(), (inliers @ along).max()
-            t = points @ along
-            on |= near & (t >= lo - resolution) & (t <= hi + resolution)
-    return on
 
 
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
