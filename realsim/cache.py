@@ -20,8 +20,8 @@ import json
 import os
 import pickle
 import tempfile
-from dataclasses import asdict, is_dataclass
 from contextlib import contextmanager
+from dataclasses import asdict, is_dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import Any, Callable, Iterator, TypeVar

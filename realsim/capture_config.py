@@ -84,7 +84,7 @@ class CaptureConfig(BaseModel):
 def _one_line(exc: ValidationError, where: str) -> str:
     """The first problem of a validation error as one line a user can act on."""
     err = exc.errors()[0]
-    loc = ".".join(str(p) for p in err["loc"])
+    loc = ".".join(p if isinstance(p, str) and p.isprintable() and p.strip() == p and p else repr(p) for p in err["loc"])
     if err["type"] == "extra_forbidden":
         nested: dict[str, type[BaseModel]] = {"support": DeclaredSupport, "camera": CameraIntrinsics}
         model = nested[str(err["loc"][0])] if len(err["loc"]) > 1 else CaptureConfig

@@ -25,7 +25,6 @@ from realsim.containers import ContainerParams, OpenContainer, complete_open_con
 from realsim.intrinsics import Intrinsics
 from realsim.scene import Scene, SceneObject
 
-
 OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space
 
 

@@ -7,7 +7,6 @@ get in ``assets/``, so the spec compiles before anything is written and the writ
 
 from __future__ import annotations
 
-import io
 import re
 from dataclasses import dataclass
 
@@ -21,7 +20,6 @@ from realsim.arena import ArenaParams, add_arena
 from realsim.backdrop import BackdropParams, build_backdrop
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
-
 
 
 @dataclass(frozen=True)

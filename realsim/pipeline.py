@@ -27,7 +27,6 @@ from realsim.completion import CompletionParams, complete_objects
 from realsim.compose import ComposeParams, compose_scene
 from realsim.destination import check_destination
 from realsim.errors import InputError
-from realsim.validation import build_params, check_seed, unknown_names
 from realsim.objects_stage import ObjectsParams, prepare_scene_objects
 from realsim.output import write_scene
 from realsim.planes import PlaneParams, detect_planes
@@ -40,6 +39,7 @@ from realsim.settle import SettleParams, settle_scene
 from realsim.text.stage import TextParams, text_scene
 from realsim.understanding.photo import PHOTO_SUFFIXES, find_photo
 from realsim.understanding.photo_scene import BackdropParams, PhotoParams, photo_backdrop, photo_scene
+from realsim.validation import build_params, check_seed, unknown_names
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ import mujoco  # noqa: E402
 import numpy as np  # noqa: E402
 from PIL import Image  # noqa: E402
 
-from realsim.scene_format import KEYFRAME, scene_xml  # noqa: E402
+from realsim.scene_format import KEYFRAME, SCENE_XML, scene_xml  # noqa: E402
 
 
 def overview_camera(model: mujoco.MjModel) -> mujoco.MjvCamera:
@@ -99,6 +99,8 @@ def write_preview(folder: Path, width: int = 640, height: int = 480) -> Path | N
 
     folder = Path(folder)
     out = folder / PREVIEW_FILE
+    if not (folder / SCENE_XML).is_file():
+        return None
     key = output_key("preview", data=_folder_digest(folder), params={"width": width, "height": height})
     cache = DiskCache()
     digest = cache.get(key)  # the same files rendered before: the same picture

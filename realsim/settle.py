@@ -23,7 +23,6 @@ from realsim.scene import Scene
 from realsim.scene_format import HOME_KEYFRAME, KEYFRAME
 
 
-
 @dataclass(frozen=True)
 class SettleParams:
     """Parameters of settling and of the rest check."""

@@ -6,4 +6,6 @@ bash scripts/setup.sh
 export MUJOCO_GL="${MUJOCO_GL:-egl}"
 export MENAGERIE_ROOT="${MENAGERIE_ROOT:-$(cd .. && pwd)/shared/data}"
 export REALSIM_CACHE="${REALSIM_CACHE:-$(mktemp -d)}"
+.venv/bin/ruff check realsim cli.py tests bench  # lint: unused names, import order, errors
+.venv/bin/mypy  # types: the strictly typed modules listed in pyproject.toml
 exec .venv/bin/python -m pytest -q "$@"

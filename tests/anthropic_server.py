@@ -81,6 +81,10 @@ def json_reply(obj: Any, *, status: int = 200, headers: dict[str, str] | None = 
     return Reply(status=status, body=json.dumps(obj).encode(), headers=dict(headers or {}))
 
 
+class _Server(ThreadingHTTPServer):
+    request_queue_size = 128  # many concurrent manifest calls on a loaded machine: no refused connections
+
+
 class MessagesServer:
     """A threaded HTTP server on a free 127.0.0.1 port answering from a queue of :class:`Reply`."""
 
@@ -89,7 +93,7 @@ class MessagesServer:
         self.requests: list[dict[str, Any]] = []
         self.headers: list[dict[str, str]] = []
         self._lock = threading.Lock()
-        self._httpd = ThreadingHTTPServer(("127.0.0.1", 0), self._handler())
+        self._httpd = _Server(("127.0.0.1", 0), self._handler())
         self._httpd.daemon_threads = True
         self._thread = threading.Thread(target=self._httpd.serve_forever, kwargs={"poll_interval": 0.02}, daemon=True)
 
@@ -136,6 +140,11 @@ class MessagesServer:
     @property
     def calls(self) -> int:
         return len(self.requests)
+
+    @property
+    def distinct_calls(self) -> int:
+        """Requests with different bodies: the SDK's transport retries of one call count once."""
+        return len({json.dumps(r, sort_keys=True) for r in self.requests})
 
     # http ------------------------------------------------------------------------------
     def _next(self) -> Reply:

@@ -148,10 +148,20 @@ def test_usd_stage_has_physics_on_every_object(scenes, kind, tmp_path, capsys):
         colliders = [p for p in Usd.PrimRange(prim) if p.HasAPI(UsdPhysics.CollisionAPI)]
         hulls = sum(1 for g in range(model.ngeom) if model.geom_bodyid[g] == b and model.geom_group[g] == 3)
         assert len(colliders) == hulls
-        for c in colliders:
-            assert c.IsA(UsdGeom.Mesh) and c.HasAPI(UsdPhysics.MeshCollisionAPI)
-            assert UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == UsdPhysics.Tokens.convexHull
-            assert len(UsdGeom.Mesh(c).GetPointsAttr().Get()) >= 4
+        geoms = [g for g in range(model.ngeom) if model.geom_bodyid[g] == b and model.geom_group[g] == 3]
+        for c, g in zip(sorted(colliders, key=lambda p: p.GetName()), sorted(geoms, key=lambda g: model.geom(g).name)):
+            kind = model.geom_type[g]
+            if kind == mujoco.mjtGeom.mjGEOM_MESH:  # a hull: convex mesh collider with its points
+                assert c.IsA(UsdGeom.Mesh) and c.HasAPI(UsdPhysics.MeshCollisionAPI)
+                assert UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == UsdPhysics.Tokens.convexHull
+                assert len(UsdGeom.Mesh(c).GetPointsAttr().Get()) >= 4
+            elif kind == mujoco.mjtGeom.mjGEOM_BOX:  # a primitive: USD's cube of side 2 scaled to the half sizes
+                assert c.IsA(UsdGeom.Cube) and UsdGeom.Cube(c).GetSizeAttr().Get() == 2.0
+                scale = [op.Get() for op in UsdGeom.Xformable(c).GetOrderedXformOps() if op.GetOpType() == UsdGeom.XformOp.TypeScale]
+                np.testing.assert_allclose(scale[0], model.geom_size[g], rtol=1e-5)
+            else:
+                assert c.IsA(UsdGeom.Sphere) or c.IsA(UsdGeom.Cylinder) or c.IsA(UsdGeom.Capsule)
+                assert c.GetAttribute("radius").Get() == pytest.approx(model.geom_size[g][0], rel=1e-5)
         visuals = [p for p in Usd.PrimRange(prim) if p.IsA(UsdGeom.Mesh) and not p.HasAPI(UsdPhysics.CollisionAPI)]
         assert len(visuals) == 1
         material, _ = UsdShade.MaterialBindingAPI(visuals[0]).ComputeBoundMaterial()

@@ -10,11 +10,11 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
 from anthropic_server import MessagesServer, text  # noqa: E402
+from test_planner_rules import OBJECTS  # noqa: E402
 
 from realsim import llm  # noqa: E402
 from realsim.planner import ClaudePlanner, Inside, PlanningError, RulePlanner, make_planner  # noqa: E402
 from realsim.planner.claude import extract_code, load_prompt  # noqa: E402
-from test_planner_rules import OBJECTS  # noqa: E402
 
 GOOD = "Here is the program:\n```python\nplace_in(\"obj1_mug\", \"obj2_bowl\")\n```\nDone."
 BAD = "```python\nimport os\nplace_in(\"obj1_mug\", \"obj2_bowl\")\n```"

@@ -4,12 +4,24 @@ from __future__ import annotations
 
 import math
 
-
-from realsim.planner import (
-    AtHome, DrawerClosed, DrawerOpen, Inside, Lifted, Moved, NextTo, On, RulePlanner, evaluate_all, prepare_all, run, verdict,
-)
 from test_planner_rules import OBJECTS
 from test_sandbox import Recorder
+
+from realsim.planner import (
+    AtHome,
+    DrawerClosed,
+    DrawerOpen,
+    Inside,
+    Lifted,
+    Moved,
+    NextTo,
+    On,
+    RulePlanner,
+    evaluate_all,
+    prepare_all,
+    run,
+    verdict,
+)
 
 
 class FakeWorld:

@@ -13,14 +13,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from anthropic_server import MessagesServer
 
 import cli
-from anthropic_server import MessagesServer
 from conftest import YCB
 from realsim.errors import InputError
 from realsim.planner.sandbox import SandboxViolation
 from realsim.runtime import Sim, probe, run_command, run_program
-
 
 
 @pytest.fixture(scope="session")

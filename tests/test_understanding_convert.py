@@ -17,9 +17,9 @@ from PIL import Image
 
 sys.path.insert(0, str(Path(__file__).parent))
 from anthropic_server import Reply, tool_use  # noqa: E402
-from conftest import DATA, REPO, YCB  # noqa: E402
 from test_understanding import RECORD_CAN, VALUES_CAN, RoutingServer, tool_name, user_text  # noqa: E402
 
+from conftest import DATA, REPO, YCB  # noqa: E402
 from realsim.assets import prepare_object  # noqa: E402
 from realsim.cache import DiskCache  # noqa: E402
 from realsim.pcd_io import read_pcd  # noqa: E402
@@ -85,7 +85,7 @@ def test_scan_with_photo_labels_clusters_and_claude_manifests(synthetic: Path, t
         monkeypatch.setenv("ANTHROPIC_BASE_URL", server.base_url)
         monkeypatch.setenv("REALSIM_CACHE", str(tmp_path / "cache"))
         scene = convert(synthetic, tmp_path / "out", overrides=NO_ROBOT)
-        calls = server.calls
+        calls, requests = server.distinct_calls, server.calls
         gt = json.loads((synthetic / "ground_truth.json").read_text())
         # every ground-truth object names the cluster that holds its points (the annotation says which)
         for o in scene.objects:
@@ -106,7 +106,7 @@ def test_scan_with_photo_labels_clusters_and_claude_manifests(synthetic: Path, t
         assert sum(tool_name(r) == PHOTO_TOOL for r in server.requests) == 1
         # a rerun is free: every reply comes from the cache
         again = convert(synthetic, tmp_path / "out2", overrides=NO_ROBOT)
-        assert server.calls == calls and again.llm["calls"] == 0 and again.llm["cache_hits"] == calls
+        assert server.calls == requests and again.llm["calls"] == 0 and again.llm["cache_hits"] == calls
         assert [o.name for o in again.objects] == [o.name for o in scene.objects]
         assert (tmp_path / "out" / "scene.xml").read_text() == (tmp_path / "out2" / "scene.xml").read_text()
 

@@ -15,12 +15,11 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from realsim.errors import InputError
 from realsim.destination import atomic_folder, check_destination
+from realsim.errors import InputError
 from realsim.output import verify_compiles
 from realsim.scene_format import ASSET_DIR, KEYFRAME, ROBOT_PREFIX, scene_xml
 from realsim.settle import free_joint_bodies
-
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,7 @@ import numpy as np
 
 from realsim.destination import build_folder, check_destination, check_file_destination, publish
 from realsim.errors import InputError
-from realsim.export.mjcf import ROBOT_PREFIX, load_spec, object_bodies, _resolve
+from realsim.export.mjcf import ROBOT_PREFIX, _resolve, load_spec, object_bodies
 from realsim.scene_format import KEYFRAME, VISUAL_GROUP
 
 ROBOT_NOTE = (

@@ -23,17 +23,23 @@ import mujoco
 import numpy as np
 from scipy.spatial import cKDTree
 
+from realsim.physics.divergence import check_state
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
 from realsim.robot.grasps import (
-    MAX_WIDTH, GraspCandidate, frame_from, grasp_candidates, narrowest_width, rotate_about, twist_check,
+    MAX_WIDTH,
+    GraspCandidate,
+    frame_from,
+    grasp_candidates,
+    narrowest_width,
+    rotate_about,
+    twist_check,
 )
 from realsim.robot.ik import ArmIK, IKParams, IKResult, mat_to_quat, quat_to_mat
 from realsim.robot.model import ARM_ACTUATORS, ARM_JOINTS, FINGER_JOINTS, GRIPPER_ACTUATOR, GRIPPER_OPEN_CTRL, HOME_ARM, PREFIX
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
 from realsim.robot.placing import ReleaseParams, cavity_centre, footprint_radius, release_poses, spots, top_area
 from realsim.robot.world import SceneGeometry
-from realsim.physics.divergence import check_state
 
 
 @dataclass(frozen=True)

@@ -31,10 +31,10 @@ from realsim.scene import Scene, SceneObject
 from realsim.understanding.calls import CallLog
 from realsim.understanding.camera import capture_camera
 from realsim.understanding.manifest_claude import claude_manifest, fallback_manifest
+from realsim.understanding.naming import distinct, offline_name, white_balance
 from realsim.understanding.photo import PhotoObject, find_photo, label_photo, match_clusters
 from realsim.understanding.primitives import prepared_from_mesh, primitive_extents, primitive_mesh
 from realsim.understanding.sanitize import clean_text, safe_label
-from realsim.understanding.naming import distinct, offline_name, white_balance
 from realsim.understanding.shape_label import is_cylinder, is_prism
 from realsim.understanding.thumbnail import thumbnail
 
