@@ -10,16 +10,13 @@ no structure).
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
 
-os.environ.setdefault("MUJOCO_GL", "egl")
+import mujoco
+import numpy as np
+from scipy.ndimage import gaussian_filter
 
-import mujoco  # noqa: E402
-import numpy as np  # noqa: E402
-from scipy.ndimage import gaussian_filter  # noqa: E402
-
-from realsim.intrinsics import Intrinsics  # noqa: E402
+from realsim.intrinsics import Intrinsics
 
 ROBOT_PREFIX = "panda/"
 

@@ -2,16 +2,13 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
-os.environ.setdefault("MUJOCO_GL", "egl")
+import mujoco
+import numpy as np
+from PIL import Image
 
-import mujoco  # noqa: E402
-import numpy as np  # noqa: E402
-from PIL import Image  # noqa: E402
-
-from realsim.scene_format import KEYFRAME, SCENE_XML, scene_xml  # noqa: E402
+from realsim.scene_format import KEYFRAME, SCENE_XML, scene_xml
 
 
 def overview_camera(model: mujoco.MjModel) -> mujoco.MjvCamera:

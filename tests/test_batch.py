@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-import cli
 from conftest import YCB
+from realsim import cli
 from realsim.batch import expand_captures, run_batch
 from realsim.errors import InputError
 

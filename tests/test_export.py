@@ -16,8 +16,8 @@ import mujoco
 import numpy as np
 import pytest
 
-import cli
 from conftest import MOSD, YCB
+from realsim import cli
 
 YCB_OBJECTS = ("077_rubiks_cube", "061_foam_brick")
 

@@ -20,8 +20,8 @@ import trimesh
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import cli
 from conftest import MOSD
+from realsim import cli
 from realsim.capture import load_capture
 from realsim.capture_config import parse_capture_config, read_capture_config
 from realsim.errors import InputError

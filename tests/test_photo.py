@@ -16,9 +16,9 @@ from PIL import Image
 sys.path.insert(0, str(Path(__file__).parent))
 from anthropic_server import MessagesServer, tool_use  # noqa: E402
 
-from cli import main  # noqa: E402
 from realsim import llm  # noqa: E402
 from realsim.capture import load_capture  # noqa: E402
+from realsim.cli import main  # noqa: E402
 from realsim.pipeline import convert, pipeline_for  # noqa: E402
 from realsim.runtime import Sim, run_command  # noqa: E402
 from realsim.settle import rest_check  # noqa: E402

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-import cli
+from realsim import cli
 from realsim.render import write_preview
 
 

@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 from anthropic_server import MessagesServer
 
-import cli
 from conftest import YCB
+from realsim import cli
 from realsim.errors import InputError
 from realsim.planner.sandbox import SandboxViolation
 from realsim.runtime import Sim, probe, run_command, run_program

@@ -24,8 +24,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-import cli
 from conftest import REPO, YCB
+from realsim import cli
 
 COMMAND = "put the strawberry next to the rubiks cube"
 

@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 import trimesh
 
-import cli
 from conftest import YCB
+from realsim import cli
 from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
 from realsim.physics.throughput import bench_scene, warp_available
 from realsim.settle import rest_check

@@ -9,7 +9,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from cli import main
+from realsim.cli import main
 from realsim.pipeline import pipeline_for, run_pipeline
 from realsim.procedural import size_range
 from realsim.runtime import Sim, run_command

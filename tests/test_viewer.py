@@ -25,8 +25,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-import cli
 from conftest import REPO, YCB
+from realsim import cli
 
 CHROMIUM = Path("/usr/bin/chromium")
 WIDTH, HEIGHT = 800, 600  # SwiftShader renders on the CPU: a small viewport keeps the test quick

@@ -14,9 +14,8 @@ from pathlib import Path
 
 import pytest
 
-import cli
 from conftest import YCB
-from realsim import rerun
+from realsim import cli, rerun
 
 
 def _files(folder: Path) -> dict[str, bytes]:

@@ -17,8 +17,6 @@ import numpy as np
 
 from realsim.errors import InputError
 
-os.environ.setdefault("MUJOCO_GL", "egl")
-
 
 def _camera(model: mujoco.MjModel, data: mujoco.MjData, object_names: list[str], base_pos: np.ndarray) -> mujoco.MjvCamera:
     """A free camera looking at the objects and the robot from the front-left, above the table."""

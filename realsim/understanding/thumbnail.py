@@ -8,16 +8,13 @@ the caller treats a failure as "no thumbnail".
 from __future__ import annotations
 
 import io
-import os
 
-os.environ.setdefault("MUJOCO_GL", "egl")
+import mujoco
+import numpy as np
+import trimesh
+from PIL import Image
 
-import mujoco  # noqa: E402
-import numpy as np  # noqa: E402
-import trimesh  # noqa: E402
-from PIL import Image  # noqa: E402
-
-from realsim.cache import DiskCache, cache_key  # noqa: E402
+from realsim.cache import DiskCache, cache_key
 
 SIZE = 256
 
