@@ -67,8 +67,8 @@ class LLMSettings:
     """Which model, how long to wait, how often to retry.
 
     Defaults read ``REALSIM_MODEL``, ``REALSIM_LLM_TIMEOUT`` (s) and ``REALSIM_LLM_MAX_RETRIES``.
-    ``base_url=None`` lets the SDK read ``ANTHROPIC_BASE_URL``; ``api_key=None`` reads
-    ``ANTHROPIC_API_KEY``.
+    ``base_url`` and ``api_key`` default to ``ANTHROPIC_BASE_URL`` and ``ANTHROPIC_API_KEY`` as
+    they are when the settings are made.
     """
 
     model: str = field(default_factory=lambda: os.environ.get("REALSIM_MODEL") or DEFAULT_MODEL)
@@ -76,8 +76,10 @@ class LLMSettings:
     max_retries: int = field(default_factory=lambda: int(_env_float("REALSIM_LLM_MAX_RETRIES", DEFAULT_MAX_RETRIES)))
     max_tokens: int = DEFAULT_MAX_TOKENS
     temperature: float | None = None  # None: the model default (some models reject the parameter)
-    base_url: str | None = None
-    api_key: str | None = None
+    # read once, when the settings are made: calls still running after a deadline keep talking
+    # to the endpoint of the conversion that started them
+    base_url: str | None = field(default_factory=lambda: os.environ.get("ANTHROPIC_BASE_URL") or None)
+    api_key: str | None = field(default_factory=lambda: os.environ.get("ANTHROPIC_API_KEY") or None)
 
     def key(self) -> str | None:
         return self.api_key or os.environ.get("ANTHROPIC_API_KEY") or None

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from realsim.appearance import capture_intrinsics
+from realsim.intrinsics import Intrinsics
 from realsim.scene import Scene
 
 DEFAULT_FOVY_DEG = 45.0  # Kinect v1: 43-45 deg vertical
@@ -24,21 +25,16 @@ DEFAULT_FOVY_DEG = 45.0  # Kinect v1: 43-45 deg vertical
 
 @dataclass(frozen=True)
 class CaptureCamera:
+    """The capture's pinhole camera placed in the world."""
+
     world_to_optical: np.ndarray  # (4, 4)
-    fx: float
-    fy: float
-    cx: float
-    cy: float
-    width: int
-    height: int
+    intrinsics: Intrinsics
 
     def project(self, points: np.ndarray) -> np.ndarray:
         """(N, 2) normalized image coordinates in [0, 1] (x right, y down); NaN behind the camera."""
         p = np.asarray(points, float).reshape(-1, 3) @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
-        z = np.where(p[:, 2] > 1e-6, p[:, 2], np.nan)
-        u = self.fx * p[:, 0] / z + self.cx
-        v = self.fy * p[:, 1] / z + self.cy
-        return np.column_stack([(u + 0.5) / self.width, (v + 0.5) / self.height])
+        k = self.intrinsics
+        return (k.project(p) + 0.5) / np.array([k.width, k.height], float)
 
 
 def _num(d: dict[str, Any], key: str) -> float | None:
@@ -62,4 +58,4 @@ def capture_camera(scene: Scene) -> CaptureCamera | None:
         fx = fy = 0.5 * h / math.tan(math.radians(fovy) / 2)
     cx = (w - 1) / 2 if cx is None else cx
     cy = (h - 1) / 2 if cy is None else cy
-    return CaptureCamera(np.linalg.inv(np.asarray(scene.capture.input_to_world, float)), fx, fy, cx, cy, w, h)
+    return CaptureCamera(np.linalg.inv(np.asarray(scene.capture.input_to_world, float)), Intrinsics(fx, fy, cx, cy, w, h))
