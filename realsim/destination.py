@@ -78,6 +78,14 @@ def _nearest_existing(path: Path) -> Path:
     return path
 
 
+def _resolve(path: str | Path, what: str) -> Path:
+    """``path`` made absolute with its symbolic links followed; InputError on a link loop."""
+    try:
+        return Path(path).expanduser().resolve()
+    except (RuntimeError, OSError) as exc:  # Python 3.11 raises RuntimeError on a loop, 3.13 OSError
+        raise InputError(f"{what} {path}: cannot follow its symbolic links ({exc})") from None
+
+
 def check_destination(dest: str | Path, *, inputs: Iterable[Path | None] = (), force: bool = False,
                       flag: str = "-o") -> Path:
     """Validate an output path before any work starts; return it resolved.
@@ -88,14 +96,14 @@ def check_destination(dest: str | Path, *, inputs: Iterable[Path | None] = (), f
     """
     if not str(dest).strip():
         raise InputError(f"{flag} is empty: name a new folder for the output, e.g. {flag} out/scene")
-    path = Path(dest).expanduser().resolve()
+    path = _resolve(dest, flag)
     protected = {Path("/"): "the root folder", Path.home().resolve(): "your home folder"}
     if path in protected:
         raise InputError(f"{flag} {dest}: refusing to write into {protected[path]}; name a new folder")
     if _is_within(path, Path.cwd().resolve()):
         raise InputError(f"{flag} {dest}: is the working directory or one of its parents; name a new folder, e.g. {flag} out/scene")
     for source in inputs:
-        if source is not None and _is_within(path, Path(source).expanduser().resolve()):
+        if source is not None and _is_within(path, _resolve(source, "input")):
             raise InputError(f"{flag} {dest}: is the input {source} or a folder holding it; name a new folder")
     if path.exists() or path.is_symlink():
         if not path.is_dir() or path.is_symlink():
@@ -257,13 +265,13 @@ def check_file_destination(dest: str | Path, *, inputs: Iterable[Path | None] = 
     file is replaced only with ``force``."""
     if not str(dest).strip():
         raise InputError(f"{flag} is empty: name a new file for the output")
-    path = Path(dest).expanduser().resolve()
+    path = _resolve(dest, flag)
     if path.is_dir():
         raise InputError(f"{flag} {dest}: is a folder; name a file")
     if path.exists() and not force:
         raise InputError(f"{flag} {dest}: the file exists; pass --force to replace it")
     for source in inputs:
-        if source is not None and Path(source).expanduser().resolve() == path:
+        if source is not None and _resolve(source, "input") == path:
             raise InputError(f"{flag} {dest}: is the input {source}; name a new file")
     _check_writable(path, dest, flag)
     return path

@@ -107,6 +107,15 @@ def test_output_root_or_home(tmp_path: Path, output: str) -> None:
                    "root folder" if output == "/" else "home folder")
 
 
+@pytest.mark.parametrize("which", ["input", "output"])
+def test_symlink_loop_is_a_one_line_error(tmp_path: Path, which: str) -> None:
+    cap = brick_capture(tmp_path / "cap")
+    loop = tmp_path / "loop"
+    loop.symlink_to(loop)
+    args = ("convert", str(loop), "-o", str(tmp_path / "out")) if which == "input" else ("convert", str(cap), "-o", str(loop))
+    one_line_error(cli(*args), "symbolic links")
+
+
 def test_existing_user_folder_untouched(tmp_path: Path) -> None:
     cap = brick_capture(tmp_path / "cap")
     mine = user_folder(tmp_path / "mine")
