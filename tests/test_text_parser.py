@@ -67,3 +67,28 @@ def test_clamp_records_changes_and_schema_inlines() -> None:
     assert fixed.supports[0].height_m == 2.0 and fixed.objects[0].count == 24 and fixed.objects[0].on is None
     assert fixed.objects[0].position == (1.0, 0.5) and len(notes) == 4
     assert "$ref" not in str(json_schema()) and "objects" in json_schema()["properties"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # contents the size table does not know are left out, whatever links them ("with", "of")
+    ("on the dining table there's a plate with some cheese", {"plate": ("plate", 1, "table", None, False)}),
+    ("a workbench with a drill and a box of screws", {"drill": ("drill", 1, "table", None, False), "box": ("box", 1, "table", None, False)}),
+    # a measure word names the food itself
+    ("a loaf of bread on the counter", {"bread": ("bread", 1, "counter", None, False)}),
+    # a location phrase ends the list of what is in the container
+    ("a bowl with two apples in the middle of the table and a banana",
+     {"bowl": ("bowl", 1, "table", None, False), "apple": ("apple", 2, None, "bowl", False), "banana": ("banana", 1, "table", None, False)}),
+    # a bare plural before a colon names the objects listed after it
+    ("fruit on the counter: two apples and a pear", {"apple": ("apple", 2, "counter", None, False), "pear": ("pear", 1, "counter", None, False)}),
+    # the target of a relation may be a stack
+    ("a mug to the left of a stack of two books", {"mug": ("mug", 1, "table", None, False), "book": ("book", 2, "table", None, True)}),
+])
+def test_phrasing_people_use(text: str, expected: dict) -> None:
+    assert _objs(text) == expected
+
+
+def test_a_similar_word_is_not_a_typo() -> None:
+    spec = parse_scene("two coasters and a bannana on the table")
+    labels = {o.label for o in spec.objects}
+    assert "banana" in labels and "toaster" not in labels  # a typo is corrected; another word is not
+    assert any("coaster" in w for w in spec.warnings)

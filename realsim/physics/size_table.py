@@ -162,9 +162,32 @@ def lookup(label: str, cutoff: float = 0.8) -> Match | None:
             name, how = idx[c]
             exact = c in (q, singular(q), q.replace(" ", ""))
             return Match(objects[name], how if exact else "alias", 1.0 if exact else 0.9, label, c)
-    best = difflib.get_close_matches(singular(q), list(idx), n=1, cutoff=cutoff)
-    if best:
-        name, _ = idx[best[0]]
-        score = difflib.SequenceMatcher(None, singular(q), best[0]).ratio()
-        return Match(objects[name], "fuzzy", score, label, best[0])
+    typed = singular(q)
+    for near in difflib.get_close_matches(typed, list(idx), n=5, cutoff=cutoff):
+        if is_typo(typed, near):
+            name, _ = idx[near]
+            return Match(objects[name], "fuzzy", difflib.SequenceMatcher(None, typed, near).ratio(), label, near)
     return None
+
+
+def is_typo(typed: str, word: str) -> bool:
+    """True when ``typed`` reads as a misspelling of ``word``: the same first letter and at most
+    one slip (an extra, missing, wrong or swapped letter) per five letters, two at most.
+
+    Similar-looking different words are not typos: "coaster" is no "toaster", "rubber" no
+    "scrubber".
+    """
+    if not typed or not word or typed[0] != word[0]:
+        return False
+    return _slips(typed, word) <= min(2, max(1, len(word) // 5))
+
+
+def _slips(a: str, b: str) -> int:
+    """Edit distance counting a swap of two neighbouring letters as one slip (optimal alignment)."""
+    d = [[i + j if i * j == 0 else 0 for j in range(len(b) + 1)] for i in range(len(a) + 1)]
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[len(a)][len(b)]

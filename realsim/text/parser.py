@@ -21,73 +21,23 @@ import re
 from dataclasses import dataclass, field
 
 from realsim.physics.size_table import lookup, normalize_label, singular
-from realsim.text.schema import MAX_COUNT, SIZE_WORDS, SUPPORT_DEFAULTS, ObjectSpec, RelationSpec, SceneSpec, SupportSpec
-
-NUMBERS = {"a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
-           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "couple": 2, "pair": 2, "another": 1, "dozen": 12, "few": 3,
-           "several": 4, "some": 3, "both": 2, "bunch": 4, "handful": 4, "lots": 5, "many": 5}
-PLURAL_COUNT = 3  # "oranges", "some apples": several
-COLORS = {
-    "red": (0.8, 0.1, 0.1), "green": (0.15, 0.6, 0.2), "blue": (0.15, 0.3, 0.8), "yellow": (0.95, 0.85, 0.15),
-    "orange": (0.95, 0.5, 0.1), "purple": (0.5, 0.2, 0.6), "pink": (0.95, 0.55, 0.7), "white": (0.95, 0.95, 0.95),
-    "black": (0.08, 0.08, 0.08), "grey": (0.5, 0.5, 0.5), "gray": (0.5, 0.5, 0.5), "brown": (0.45, 0.3, 0.15),
-    "silver": (0.75, 0.75, 0.78), "gold": (0.85, 0.7, 0.25), "beige": (0.9, 0.85, 0.7), "teal": (0.1, 0.55, 0.55),
-    "cyan": (0.2, 0.8, 0.85), "navy": (0.1, 0.15, 0.4), "clear": (0.85, 0.92, 0.95), "dark": (0.15, 0.15, 0.15),
-}
-MATERIALS = {"wooden": (0.6, 0.45, 0.3), "wood": (0.6, 0.45, 0.3), "plastic": None, "metal": (0.7, 0.7, 0.72), "steel": (0.7, 0.7, 0.72),
-             "glass": (0.85, 0.92, 0.95), "ceramic": None, "paper": None, "cardboard": (0.75, 0.6, 0.4), "wicker": (0.7, 0.55, 0.35),
-             "cast": None, "iron": (0.2, 0.2, 0.2), "porcelain": (0.95, 0.95, 0.95), "aluminium": (0.8, 0.8, 0.82), "aluminum": (0.8, 0.8, 0.82)}
-# support words -> (kind, height override); "coffee table" is low
-SUPPORTS = {"table": ("table", None), "desk": ("desk", None), "workbench": ("table", 0.9), "bench": ("table", 0.9), "counter": ("counter", None),
-            "countertop": ("counter", None), "worktop": ("counter", None), "floor": ("floor", None), "ground": ("floor", None),
-            "shelf": ("shelf", None), "bookshelf": ("shelf", None), "island": ("counter", None), "nightstand": ("table", 0.6)}
-LOW_TABLES = {"coffee": 0.45, "side": 0.6, "bedside": 0.6}
-NOT_SUPPORT_AFTER = {"lamp", "cloth", "mat", "runner", "tennis", "top", "leg", "drawer", "knife", "saw"}
-FILLER = {"the", "there", "is", "are", "s", "some", "its", "it", "that", "which", "has", "have", "i", "we", "you", "my", "our", "your",
-          "see", "put", "set", "placed", "sitting", "standing", "lying", "sits", "stands", "lies", "rests", "resting", "just", "also",
-          "kitchen", "dining", "office", "living", "room", "scene", "here", "me", "image", "empty", "full", "open", "closed", "new",
-          "old", "nice", "little", "bit", "each", "other", "them", "they", "those", "these", "this", "up", "down", "out", "around",
-          "sort", "kind", "type", "stuff", "things", "thing", "bunch", "got", "sat", "left", "right", "corner", "middle", "center",
-          "centre", "edge", "side", "back", "front", "top", "together", "neatly", "too", "else", "whole", "next", "near", "far", "end",
-          "be", "should", "want", "like", "would", "let", "make", "made", "with", "of", "and", "or", "but", "so", "at", "to", "onto",
-          "each", "every", "could", "please", "setup"}
-MASS_NOUNS = r"water|juice|milk|soda|wine|beer|coffee|tea|jam|honey|oil|flour|rice|pasta|cereal|sugar|salt|soup|sauce|cream|butter|food|snacks|candy|sand|soil|dirt"
-PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
-# Marker patterns, longest first; each becomes a token "§<kind>§".
-MARKERS: list[tuple[str, str]] = [
-    (r"stacked (?:up )?on top of each other|stacked up|(?:stacked|piled) on each other|on top of each other|on top of one another|stacked|piled up|piled", "STACKED"),
-    (r"\b(?:a |one )?(?:stack|pile|tower|heap) of", "STACKOF"),
-    (r"\b(?:a |one )?(?:row|line) of", "ROWOF"),
-    (r"in a (?:row|line)|lined up|side by side|in a neat row", "ROW"),
-    (r"(?:to|on|at) the left(?: hand side)? of|left of", "left_of"),
-    (r"(?:to|on|at) the right(?: hand side)? of|right of", "right_of"),
-    (r"in front of", "in_front_of"),
-    (r"behind|in back of|at the back of", "behind"),
-    (r"next to|beside|besides|near|nearby|alongside|close to|by", "next_to"),
-    (r"(?:on|at|to) the (?:left|right|back|front|far end|near end)(?: side)?(?: of it)?", "REGION"),
-    (r"full of|filled with|containing|holding|that holds|which holds|that has|has|have|holds|with", "with"),
-    (r"inside of|inside|into|within|in", "in"),
-    (r"on top of|ontop of|on to|onto|on|upon|atop|on top", "on"),
-    (r"under|underneath|beneath|below", "under"),
-    (r"of", "of"),
-    (r"and|plus|as well as|also|along with|then|together with|[,]|there is|there are|i've got|i got|is|are|"
-     r"sits|stands|lies|sitting|standing|lying|placed|resting|rests|stand|sit|lie", "and"),
-    (r"[.;!?:]", "SENT"),
-]
-REL_MARKERS = {"on", "in", "next_to", "left_of", "right_of", "behind", "in_front_of", "under"}
-
-
-@dataclass
-class Phrase:
-    """A noun phrase: an object mention, a support or a pronoun."""
-
-    kind: str  # "object" | "support" | "pronoun"
-    spec: ObjectSpec | None = None
-    support: str | None = None  # support id
-    plural: bool = False
-    region: str | None = None
-    definite: bool = False  # "the mug": an object already named, when there is one
-    each: bool = False  # "next to each plate": one subject per instance of the target
+from realsim.text.builder import Builder, Phrase
+from realsim.text.schema import MAX_COUNT, SIZE_WORDS, ObjectSpec, SceneSpec
+from realsim.text.vocabulary import (
+    COLORS,
+    FILLER,
+    LOW_TABLES,
+    MARKERS,
+    MASS_NOUNS,
+    MATERIALS,
+    MEASURES,
+    NOT_SUPPORT_AFTER,
+    NUMBERS,
+    PLURAL_COUNT,
+    PRONOUNS,
+    REL_MARKERS,
+    SUPPORTS,
+)
 
 
 @dataclass
@@ -114,6 +64,7 @@ def _prepare(text: str) -> str:
     t = re.sub(r"\b(a|one) (pair|couple) of\b", "two", t)
     t = re.sub(r"\ba (few|bunch|handful|dozen) of\b", r"\1", t)
     t = re.sub(r"\ba (few|dozen|handful|bunch)\b", r"\1", t)
+    t = re.sub(rf"\b({MEASURES}) of\b", "", t)  # "a loaf of bread", "two slices of cake": the food itself
     t = re.sub(rf"\b(bottle|glass|cup|mug|jar|can|carton|box|bowl|pot|bag|tin|packet)s? of ({MASS_NOUNS})\b", _mass_container, t)
     t = re.sub(r"\b(each|every) (?:one )?of them\b", "", t)
     t = re.sub(r"\bthere's\b", "there is", t)
@@ -141,8 +92,7 @@ def _singular(text: str) -> str:
 
 def known(label: str) -> bool:
     """True when the size table knows the label (an exact, alias or close match)."""
-    m = lookup(label)
-    return m is not None and (m.how != "fuzzy" or m.score >= 0.85)
+    return lookup(label) is not None  # fuzzy matches are typos only (size_table.is_typo)
 
 
 def _match_noun(words: list[str]) -> tuple[str, int, int] | None:
@@ -152,8 +102,7 @@ def _match_noun(words: list[str]) -> tuple[str, int, int] | None:
             for i in range(len(words) - n, -1, -1):
                 phrase = " ".join(words[i: i + n])
                 m = lookup(phrase)
-                if m is None or (strict and (m.how == "fuzzy" or m.matched not in (phrase, singular(phrase), _singular(phrase), phrase.replace(" ", "")))) \
-                        or (not strict and m.score < 0.85):
+                if m is None or (strict and (m.how == "fuzzy" or m.matched not in (phrase, singular(phrase), _singular(phrase), phrase.replace(" ", "")))):
                     continue  # strict: the whole phrase is a name ("setup laptop" is not; "laptop" is)
                 return phrase, i, i + n
     return None
@@ -199,6 +148,9 @@ def _phrase(words: list[str]) -> Phrase | None:
     if found is not None:
         phrase, _, end = found
         head = rest[end - 1]
+        typo = lookup(phrase)
+        if typo is not None and typo.how == "fuzzy":  # "bannanas": named as the word meant, still several
+            phrase, head = typo.matched, (typo.matched + "s" if _singular(head) != head else typo.matched)
     else:
         phrase, head = " ".join(rest[-2:]), rest[-1]
     label = _singular(normalize_label(phrase))
@@ -209,92 +161,22 @@ def _phrase(words: list[str]) -> Phrase | None:
                       count=count, color=color, size=size, material=material)
     each = words[0] in ("each", "every")
     return Phrase("object", spec=spec, plural=plural or count > 1, definite=each or (words[0] in ("the", "that", "this", "those", "these") and not counted),
-                  each=each)
+                  each=each, counted=counted)
 
 
-class _Builder:
-    """Collects supports and objects and applies relations between phrases."""
-
-    def __init__(self) -> None:
-        self.spec = SceneSpec()
-        self.support_order: list[str] = []
-
-    def add_support(self, p: Phrase) -> None:
-        kind = p.support or "table"
-        if self.spec.support(kind) is None:
-            height = float(p.region) if p.region else SUPPORT_DEFAULTS[kind][0]
-            self.spec.supports.append(SupportSpec(id=kind, kind=kind, height_m=height, size_m=SUPPORT_DEFAULTS[kind][1]))  # type: ignore[arg-type]
-            self.support_order.append(kind)
-
-    def add_object(self, p: Phrase) -> None:
-        """Add the phrase's object, or point it at the one already named ("the mug")."""
-        assert p.spec is not None
-        if p.definite:
-            words = set(p.spec.label.split())
-            same = [o for o in self.spec.objects if (o.label == p.spec.label or words & set(o.label.split())) and (not p.spec.color or o.color == p.spec.color)]
-            if same:
-                p.spec = same[-1]
-                return
-        ids = {o.id for o in self.spec.objects}
-        base, k = p.spec.id.replace(" ", "_"), 2
-        p.spec.id = base
-        while p.spec.id in ids:
-            p.spec.id, k = f"{base}_{k}", k + 1
-        self.spec.objects.append(p.spec)
-
-    def relate(self, subjects: list[Phrase], rel: str, target: Phrase) -> None:
-        """Apply ``subject rel target`` to each subject (a support target sets the support)."""
-        for s in subjects:
-            if s.spec is None or s is target:
-                continue
-            if target.kind == "support":
-                if rel in ("on", "in"):
-                    s.spec.on, s.spec.inside = target.support, None
-                elif rel == "under":
-                    self.add_support(Phrase("support", support="floor"))
-                    s.spec.on, s.spec.inside = "floor", None
-                continue
-            t = target.spec
-            if t is None:
-                continue
-            if rel == "in":
-                s.spec.inside, s.spec.on = t.id, None
-            elif rel == "on":
-                s.spec.on, s.spec.inside = t.id, None
-            elif rel == "under":  # "a book under the mug": the mug is on the book
-                if t.on is None and t.inside is None:
-                    t.on = s.spec.id
-                else:
-                    self.spec.warnings.append(f"'{s.spec.display} under {t.display}': {t.display} already rests elsewhere; ignored")
-            else:
-                if target.each and s.spec.count == 1:  # "a mug next to each plate": one mug per plate
-                    s.spec.count = t.count
-                if t.id in (s.spec.on, s.spec.inside):  # "a vase with a candle next to it": beside it, not in it
-                    s.spec.on = s.spec.inside = None
-                s.spec.relations.append(RelationSpec(relation=rel, target=t.id))  # type: ignore[arg-type]
-
-    def with_default(self, owner: Phrase, p: Phrase) -> None:
-        """What "X with Y" means for Y: on a support, in a container, else on X."""
-        from realsim.procedural.families import CONTAINERS
-        from realsim.procedural.generate import kind_for
-
-        if owner.kind == "support":
-            self.relate([p], "on", owner)
-        elif owner.spec is not None:
-            self.relate([p], "in" if kind_for(owner.spec.label) in CONTAINERS else "on", owner)
-
-
-def _sentences(text: str) -> list[list[str]]:
-    out, cur = [], []
+def _sentences(text: str) -> list[tuple[list[str], str]]:
+    """The sentences' tokens, each with the punctuation that ends it ("" at the end)."""
+    out: list[tuple[list[str], str]] = []
+    cur: list[str] = []
     for tok in _tokens(_prepare(text)):
-        if tok == "§SENT§":
+        if tok.startswith("§SENT"):
             if cur:
-                out.append(cur)
+                out.append((cur, tok[5:-1]))
             cur = []
         else:
             cur.append(tok)
     if cur:
-        out.append(cur)
+        out.append((cur, ""))
     return out
 
 
@@ -325,12 +207,29 @@ def _items(tokens: list[str]) -> list[str | Phrase]:
 
 def parse_scene(text: str) -> SceneSpec:
     """Parse a scene description offline (see the module doc)."""
-    b = _Builder()
+    b = Builder()
     topic: Phrase | None = None
-    for tokens in _sentences(text):
+    heading: list[ObjectSpec] = []
+    for tokens, end in _sentences(text):
+        before = len(b.spec.objects)
         topic = _sentence(_items(tokens), b, topic)
+        if heading and len(b.spec.objects) > before:
+            _expand_heading(b, heading, b.spec.objects[before:])
+        heading = [o for o in b.spec.objects[before:] if o.id in b.uncounted] if end == ":" else []
     _finish(b)
     return b.spec
+
+
+def _expand_heading(b: Builder, heading: list[ObjectSpec], members: list[ObjectSpec]) -> None:
+    """"Toys on the floor: a duck, a ball and a car": the bare plural before a colon names the
+    objects listed after it; they take its place (and where it was)."""
+    for h in heading:
+        b.spec.objects.remove(h)
+        for o in members:
+            if o.on is None and o.inside is None:
+                o.on, o.inside = h.on, h.inside
+        for o in b.spec.objects:  # what was said to stand on or in the heading now refers to nothing
+            o.relations = [r for r in o.relations if r.target != h.id]
 
 
 def _resolve(p: Phrase, st: _State) -> Phrase | None:
@@ -346,7 +245,7 @@ def _resolve(p: Phrase, st: _State) -> Phrase | None:
     return st.topic
 
 
-def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> Phrase | None:
+def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Phrase | None:
     """Read one sentence; returns what it was about (for "it" in the next one)."""
     st = _State(topic=topic)
     first = True
@@ -371,10 +270,10 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 if st.closed:
                     st.group, st.closed = [], False
                 st.group.append(it)
-                if st.owner is not None and st.listing and st.owner is not it:
-                    b.with_default(st.owner, it)
-                if st.pending is not None:
+                if st.pending is not None:  # "on the table there's a plate with cheese": the plate on the table
                     b.relate([it], *st.pending)
+                if st.owner is not None and st.listing and st.owner is not it:
+                    b.with_default(st.owner, it)  # ... and the cheese on the plate
                 if st.topic is None or st.topic.kind == "support" or first:
                     st.topic, first = it, False
             i += 1
@@ -411,6 +310,10 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
                 i += 2
                 continue
         elif marker in REL_MARKERS:
+            grouped = nxt if nxt in ("STACKOF", "ROWOF") and i + 2 < len(items) and isinstance(items[i + 2], Phrase) else None
+            if grouped is not None:  # "left of a stack of two books": the books are the target, stacked
+                del items[i + 1]
+                nxt = items[i + 1]
             if marker == "on" and not isinstance(nxt, Phrase):  # "... with a glass sitting on top": on what was just named
                 nxt = Phrase("pronoun")
                 items.insert(i + 1, nxt)
@@ -425,6 +328,9 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
             elif target.kind == "object" and target is nxt:
                 b.add_object(target)
                 st.recent.append(target)
+                if grouped is not None and target.spec is not None and target.spec.count > 1:
+                    target.spec.stacked |= grouped == "STACKOF"
+                    target.spec.row |= grouped == "ROWOF"
             subjects = [p for p in st.group if p is not target] if not st.closed or marker != "on" else [st.group[-1]] if st.group else []
             if marker not in ("on", "in", "under") or (st.listing and st.owner is not None and target is not st.owner):
                 subjects = subjects[-1:]  # "a laptop, a mouse next to the laptop": only the phrase before
@@ -438,8 +344,8 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
             else:
                 b.relate(subjects, marker, target)
                 st.closed = True
-                if target is st.owner:  # "a bowl with two apples in it": the list of contents ends
-                    st.listing = False
+                if target is st.owner or target.kind == "support":  # "a bowl with two apples in it", "a vase with
+                    st.listing = False  # flowers on the table and two coasters": the list of contents ends
                 if target.kind == "object" and target is nxt:
                     st.group = [target]  # "two cups on a tray and a bowl": the tray is read; a new group follows
             i += 2
@@ -448,15 +354,16 @@ def _sentence(items: list[str | Phrase], b: _Builder, topic: Phrase | None) -> P
     return st.topic
 
 
-def _finish(b: _Builder) -> None:
+def _finish(b: Builder) -> None:
     """Default supports, names, and warnings for what is not in the size table."""
     spec = b.spec
     elevated = [s for s in b.support_order if s != "floor"]
     if not spec.supports or (elevated == [] and any(o.on is None and o.inside is None for o in spec.objects) and "floor" not in b.support_order):
         b.add_support(Phrase("support", support="table"))
     default = elevated[0] if elevated else ("floor" if "floor" in b.support_order else "table")
-    for o in [o for o in spec.objects if o.inside and not known(o.label)]:  # "a vase with flowers": not modelled
-        spec.warnings.append(f"{o.label!r} in the {o.inside.replace('_', ' ')} is not in the size table: left out")
+    for o in [o for o in spec.objects if (o.inside or o.id in b.contents) and not known(o.label)]:  # "a vase with
+        where = o.inside or o.on or ""  # flowers", "a box of screws": contents the table does not know are not modelled
+        spec.warnings.append(f"{o.label!r} in the {where.replace('_', ' ')} is not in the size table: left out")
         spec.objects.remove(o)
     for o in spec.objects:
         if o.on is None and o.inside is None:

@@ -32,8 +32,9 @@ from realsim.procedural import Generated, generate, get_backend
 from realsim.procedural.prepare import prepare_part
 from realsim.scene import Scene, SceneObject, SupportPlane
 from realsim.text.arrange import Item, _NoRoom, place_children, place_roots
-from realsim.text.parser import COLORS, MATERIALS, parse_scene
+from realsim.text.parser import parse_scene
 from realsim.text.schema import SUPPORT_DEFAULTS, ObjectSpec, SceneSpec, clamp
+from realsim.text.vocabulary import COLORS, MATERIALS
 
 ARTICULATIONS = "articulations"  # capture.metadata key read by compose
 OBJECT_SITES = "object_sites"  # capture.metadata key: {body name: {site: [x, y, z]}} read by compose

@@ -1,0 +1,64 @@
+"""Words of the offline scene parser: numbers, colours, materials, supports, fillers and the
+relation markers (regular expressions, longest first)."""
+
+from __future__ import annotations
+
+NUMBERS = {"a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "couple": 2, "pair": 2, "another": 1, "dozen": 12, "few": 3,
+           "several": 4, "some": 3, "both": 2, "bunch": 4, "handful": 4, "lots": 5, "many": 5}
+PLURAL_COUNT = 3  # "oranges", "some apples": several
+COLORS = {
+    "red": (0.8, 0.1, 0.1), "green": (0.15, 0.6, 0.2), "blue": (0.15, 0.3, 0.8), "yellow": (0.95, 0.85, 0.15),
+    "orange": (0.95, 0.5, 0.1), "purple": (0.5, 0.2, 0.6), "pink": (0.95, 0.55, 0.7), "white": (0.95, 0.95, 0.95),
+    "black": (0.08, 0.08, 0.08), "grey": (0.5, 0.5, 0.5), "gray": (0.5, 0.5, 0.5), "brown": (0.45, 0.3, 0.15),
+    "silver": (0.75, 0.75, 0.78), "gold": (0.85, 0.7, 0.25), "beige": (0.9, 0.85, 0.7), "teal": (0.1, 0.55, 0.55),
+    "cyan": (0.2, 0.8, 0.85), "navy": (0.1, 0.15, 0.4), "clear": (0.85, 0.92, 0.95), "dark": (0.15, 0.15, 0.15),
+}
+MATERIALS = {"wooden": (0.6, 0.45, 0.3), "wood": (0.6, 0.45, 0.3), "plastic": None, "metal": (0.7, 0.7, 0.72), "steel": (0.7, 0.7, 0.72),
+             "glass": (0.85, 0.92, 0.95), "ceramic": None, "paper": None, "cardboard": (0.75, 0.6, 0.4), "wicker": (0.7, 0.55, 0.35),
+             "cast": None, "iron": (0.2, 0.2, 0.2), "porcelain": (0.95, 0.95, 0.95), "aluminium": (0.8, 0.8, 0.82), "aluminum": (0.8, 0.8, 0.82)}
+# support words -> (kind, height override); "coffee table" is low
+SUPPORTS = {"table": ("table", None), "desk": ("desk", None), "workbench": ("table", 0.9), "bench": ("table", 0.9), "counter": ("counter", None),
+            "countertop": ("counter", None), "worktop": ("counter", None), "floor": ("floor", None), "ground": ("floor", None),
+            "shelf": ("shelf", None), "bookshelf": ("shelf", None), "island": ("counter", None), "nightstand": ("table", 0.6),
+            "stove": ("counter", None), "stovetop": ("counter", None), "cooktop": ("counter", None), "hob": ("counter", None),
+            "sideboard": ("counter", None), "dresser": ("table", 0.8), "windowsill": ("shelf", None)}
+LOW_TABLES = {"coffee": 0.45, "side": 0.6, "bedside": 0.6}
+NOT_SUPPORT_AFTER = {"lamp", "cloth", "mat", "runner", "tennis", "top", "leg", "drawer", "knife", "saw"}
+FILLER = {"the", "there", "is", "are", "s", "some", "its", "it", "that", "which", "has", "have", "i", "we", "you", "my", "our", "your",
+          "see", "put", "set", "placed", "sitting", "standing", "lying", "sits", "stands", "lies", "rests", "resting", "just", "also",
+          "kitchen", "dining", "office", "living", "room", "scene", "here", "me", "image", "empty", "full", "open", "closed", "new",
+          "old", "nice", "little", "bit", "each", "other", "them", "they", "those", "these", "this", "up", "down", "out", "around",
+          "sort", "kind", "type", "stuff", "things", "thing", "bunch", "got", "sat", "left", "right", "corner", "middle", "center",
+          "centre", "edge", "side", "back", "front", "top", "together", "neatly", "too", "else", "whole", "next", "near", "far", "end",
+          "be", "should", "want", "like", "would", "let", "make", "made", "with", "of", "and", "or", "but", "so", "at", "to", "onto",
+          "each", "every", "could", "please", "setup"}
+MASS_NOUNS = r"water|juice|milk|soda|wine|beer|coffee|tea|jam|honey|oil|flour|rice|pasta|cereal|sugar|salt|soup|sauce|cream|butter|food|snacks|candy|sand|soil|dirt"
+PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
+# Marker patterns, longest first; each becomes a token "§<kind>§".
+MARKERS: list[tuple[str, str]] = [
+    (r"stacked (?:up )?on top of each other|stacked up|(?:stacked|piled) on each other|on top of each other|on top of one another|stacked|piled up|piled", "STACKED"),
+    (r"\b(?:a |one )?(?:stack|pile|tower|heap) of", "STACKOF"),
+    (r"\b(?:a |one )?(?:row|line) of", "ROWOF"),
+    (r"in a (?:row|line)|lined up|side by side|in a neat row", "ROW"),
+    (r"(?:in|at|on|to|near) the (?:very )?(?:middle|centre|center|corner|edge|far end|near end|back|front)(?: part)? of", "on"),
+    (r"(?:to|on|at) the left(?: hand side)? of|left of", "left_of"),
+    (r"(?:to|on|at) the right(?: hand side)? of|right of", "right_of"),
+    (r"in front of", "in_front_of"),
+    (r"behind|in back of", "behind"),
+    (r"next to|beside|besides|near|nearby|alongside|close to|by", "next_to"),
+    (r"(?:on|at|to) the (?:left|right|back|front|far end|near end)(?: side)?(?: of it)?", "REGION"),
+    (r"full of|filled with|containing|holding|that holds|which holds|that has|has|have|holds|with", "with"),
+    (r"inside of|inside|into|within|in", "in"),
+    (r"on top of|ontop of|on to|onto|on|upon|atop|on top", "on"),
+    (r"under|underneath|beneath|below", "under"),
+    (r"of", "of"),
+    (r"and|plus|as well as|also|along with|then|together with|[,]|there is|there are|i've got|i got|is|are|"
+     r"sits|stands|lies|sitting|standing|lying|placed|resting|rests|stand|sit|lie", "and"),
+    (r"[.;!?]", "SENT"),
+    (r"[:]", "SENT:"),
+]
+REL_MARKERS = {"on", "in", "next_to", "left_of", "right_of", "behind", "in_front_of", "under"}
+
+
+MEASURES = r"loaf|loaves|slice|slices|piece|pieces|chunk|chunks|wedge|wedges|head|heads|stick|sticks|bar|bars|block|blocks|ear|ears|clove|cloves|sprig|sprigs"
