@@ -22,6 +22,7 @@ dominant support. Both transforms are composed into ``capture.input_to_world``.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -29,7 +30,7 @@ import numpy as np
 
 from realsim.capture_config import read_capture_config
 from realsim.errors import InputError
-from realsim.resolution import UNIT_SCALE, check_scale, plausible_units, point_spacing
+from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, plausible_units, point_spacing
 from realsim.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 
@@ -288,6 +289,28 @@ def _object_files(folder: Path) -> list[Path]:
     return files
 
 
+def is_lone_object(path: Path) -> bool:
+    """A mesh file that is a plausible scene in no unit but 1-60 cm across in metres: one object
+    (a scanned or generated asset), converted like a capture holding it in ``objects/``."""
+    if not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES or (path.suffix.lower() == ".ply" and _is_point_cloud_ply(path)):
+        return False
+    extent = _mesh_extent(str(path), path.stat().st_mtime_ns)
+    scene_sized = any(PLAUSIBLE_EXTENT[0] <= extent * s <= PLAUSIBLE_EXTENT[1] for s in UNIT_SCALE.values())
+    return not scene_sized and OBJECT_EXTENT[0] <= extent <= OBJECT_EXTENT[1]
+
+
+@lru_cache(maxsize=16)
+def _mesh_extent(path: str, mtime_ns: int) -> float:
+    """Largest bounding-box side of a mesh file (0 when it cannot be read: the scan path reports why)."""
+    import trimesh
+
+    try:
+        bounds = trimesh.load(path, force="mesh").bounds
+    except Exception:
+        return 0.0
+    return float(np.max(bounds[1] - bounds[0])) if bounds is not None and np.all(np.isfinite(bounds)) else 0.0
+
+
 def _text_capture(text: str, source: Path) -> Scene:
     """A capture made of a description only (realsim.text builds its objects)."""
     capture = CaptureInfo(source=source, kind="text", environment_file=None, units="m", up="+z", units_detected=False,
@@ -296,6 +319,7 @@ def _text_capture(text: str, source: Path) -> Scene:
 
 
 PHOTO_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp")
+OBJECT_EXTENT = (0.01, 0.6)  # m: a lone mesh file this large, and no plausible scene, is one object
 
 
 def _photo_capture(photo: Path, metadata: dict[str, Any], seed: int) -> Scene:
@@ -342,6 +366,8 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
             raise InputError(f"{path}: the capture folder holds neither scene.*, objects/* nor photo.*")
         if env is None and not object_files and photos and not metadata.get("text"):
             return _photo_capture(sorted(photos)[0], metadata, seed)
+    elif is_lone_object(path):
+        env, object_files = None, [path]
     else:
         env = path
     units = params.units or metadata.get("units")

@@ -21,7 +21,7 @@ import yaml
 from rich.console import Console
 
 from realsim import rerun
-from realsim.capture import LoadParams, load_capture
+from realsim.capture import LoadParams, is_lone_object, load_capture
 from realsim.capture_config import read_capture_config
 from realsim.completion import CompletionParams, complete_objects
 from realsim.compose import ComposeParams, compose_scene
@@ -164,6 +164,8 @@ def pipeline_for(source: Path | None, text: str | None = None) -> str:
             return "photo"  # a folder holding only photo.*
     if source.is_file() and source.suffix.lower() in PHOTO_SUFFIXES:
         return "photo"
+    if is_lone_object(source):
+        return "objects"  # one object mesh: on a table, as a capture's objects/
     if source.is_dir() and not any(source.glob("scene.*")) and not is_rgbd_sequence(source):
         return "objects"
     return "scan"

@@ -1,0 +1,35 @@
+"""One object mesh file as the whole capture: placed on a table, like a capture's objects/."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import trimesh
+
+from conftest import YCB
+from realsim.capture import is_lone_object
+from realsim.errors import InputError
+from realsim.pipeline import convert, pipeline_for
+
+
+def test_an_object_mesh_alone_becomes_an_object_scene(tmp_path: Path) -> None:
+    mesh = YCB / "077_rubiks_cube" / "textured.obj"
+    assert is_lone_object(mesh) and pipeline_for(mesh) == "objects"
+    scene = convert(mesh, tmp_path / "out", overrides={"robot": {"enabled": False}})
+    record = json.loads((tmp_path / "out" / "scene.json").read_text())
+    assert [o["label"] for o in record["objects"]] == ["rubiks_cube"]
+    (obj,) = scene.objects
+    assert 0.05 < max(obj.size) < 0.1  # the cube stays its own size
+
+
+def test_scene_sized_or_speck_sized_meshes_are_not_objects(tmp_path: Path) -> None:
+    room = trimesh.creation.box(extents=(3.0, 3.0, 0.05))
+    room.export(tmp_path / "room.obj")
+    assert not is_lone_object(tmp_path / "room.obj")
+    speck = trimesh.creation.box(extents=(1e-4, 1e-4, 1e-4))
+    speck.export(tmp_path / "speck.obj")
+    assert not is_lone_object(tmp_path / "speck.obj")
+    with pytest.raises(InputError, match="--units"):
+        convert(tmp_path / "speck.obj", tmp_path / "out")
