@@ -1,10 +1,13 @@
 """The backdrop: everything the camera saw that is neither an object nor a support, as one mesh.
 
-The organized grid is triangulated directly (pixel neighbours become triangles), subsampled
+An organized grid is triangulated directly (pixel neighbours become triangles), subsampled
 to a stride that keeps the face count within a budget. A triangle is cut where the surface it
 would span is seen edge-on (its normal nearly perpendicular to the view ray): that is a depth
 discontinuity (the gap between a chair and the wall behind it), not a surface. UVs are the
-pixels themselves, so the texture is the photo. The mesh is visual only (group 2, no contacts).
+pixels themselves, so the texture is the photo. An unorganized capture (a cloud, a mesh's
+samples, a fused RGB-D sequence) is thinned to the face budget and meshed by ball pivoting, each
+face coloured from its points through a small texture atlas. The mesh is visual only (group 2,
+no contacts).
 """
 
 from __future__ import annotations
@@ -23,6 +26,8 @@ class BackdropParams:
 
     enabled: bool = True
     max_faces: int = 80000  # face budget: the grid stride grows until it fits
+    cloud_max_faces: int = 40000  # face budget of an unorganized capture's backdrop (the voxel grows until it fits)
+    cloud_min_voxel: float = 0.01  # m: an unorganized capture's backdrop is never finer (it is context, not an object)
     grazing_deg: float = 85.0  # triangles seen more edge-on than this are depth discontinuities
 
 
@@ -32,8 +37,8 @@ class Backdrop:
 
     mesh: trimesh.Trimesh
     texture_png: bytes
-    stride: int
-    pixels: int
+    stride: int  # grid stride (0: an unorganized capture)
+    pixels: int  # captured pixels or points it shows
 
 
 def grid_triangles(image: CaptureImage, mask: np.ndarray, stride: int, grazing_deg: float) -> tuple[np.ndarray, np.ndarray]:
@@ -79,3 +84,51 @@ def build_backdrop(image: CaptureImage, exclude: np.ndarray, params: BackdropPar
     mesh = trimesh.Trimesh(image.world.reshape(-1, 3)[used], faces, process=False)
     mesh.visual = trimesh.visual.TextureVisuals(uv=uv)
     return Backdrop(mesh, png, stride, n)
+
+
+def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarray, spacing: float, viewpoint: np.ndarray,
+                         params: BackdropParams = BackdropParams()) -> Backdrop | None:
+    """The backdrop of an unorganized capture: the ``keep`` points (world frame, colours 0-1) thinned
+    on a voxel grid until the face budget holds, meshed by ball pivoting with normals facing
+    ``viewpoint`` (where a viewer stands), each face its points' colour. None when too little is left."""
+    import open3d as o3d
+
+    ok = keep & np.all(np.isfinite(points), axis=1) & np.all(np.isfinite(colors), axis=1)
+    if not params.enabled or ok.sum() < 100:
+        return None
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points[ok]))
+    cloud.colors = o3d.utility.Vector3dVector(np.clip(colors[ok], 0.0, 1.0))
+    voxel = max(float(spacing) if np.isfinite(spacing) else 0.0, params.cloud_min_voxel)
+    thin = cloud.voxel_down_sample(voxel)
+    while 2 * len(thin.points) > params.cloud_max_faces:  # ball pivoting makes about two faces a point
+        voxel *= 1.25
+        thin = cloud.voxel_down_sample(voxel)
+    if len(thin.points) < 50:
+        return None
+    thin.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=3 * voxel, max_nn=30))
+    thin.orient_normals_towards_camera_location(np.asarray(viewpoint, float))
+    surface = o3d.geometry.TriangleMesh.create_from_point_cloud_ball_pivoting(thin, o3d.utility.DoubleVector([1.5 * voxel, 3.0 * voxel]))
+    faces = np.asarray(surface.triangles)
+    if len(faces) == 0:
+        return None
+    rgb = np.asarray(surface.vertex_colors)[faces].mean(axis=1)
+    mesh, png = face_colour_atlas(np.asarray(surface.vertices), faces, rgb)
+    return Backdrop(mesh, png, 0, int(ok.sum()))
+
+
+def face_colour_atlas(vertices: np.ndarray, faces: np.ndarray, rgb: np.ndarray) -> tuple[trimesh.Trimesh, bytes]:
+    """A mesh whose faces show flat colours ``rgb`` (F, 3; 0-1): each face gets its own 2x2-texel
+    cell of a square texture (2x2, so linear filtering at the cell's centre never mixes
+    neighbours); the mesh's vertices are unshared so every corner carries its face's UV."""
+    from realsim.appearance import png_bytes
+
+    n = len(faces)
+    side = int(np.ceil(np.sqrt(n)))
+    cells = np.zeros((side * side, 3), np.uint8)
+    cells[:n] = (np.clip(rgb, 0.0, 1.0) * 255 + 0.5).astype(np.uint8)
+    image = np.repeat(np.repeat(cells.reshape(side, side, 3), 2, axis=0), 2, axis=1)
+    row, col = np.divmod(np.arange(n), side)
+    uv = np.column_stack([(2 * col + 1) / (2 * side), 1.0 - (2 * row + 1) / (2 * side)])  # OpenGL: v up
+    mesh = trimesh.Trimesh(vertices[faces].reshape(-1, 3), np.arange(3 * n).reshape(-1, 3), process=False)
+    mesh.visual = trimesh.visual.TextureVisuals(uv=np.repeat(uv, 3, axis=0))
+    return mesh, png_bytes(image)

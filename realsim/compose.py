@@ -17,7 +17,8 @@ from scipy.spatial.transform import Rotation
 
 from realsim.appearance import AppearanceParams, CaptureImage, capture_image, capture_intrinsics, projected_texture, support_mask, support_top, texture_object
 from realsim.arena import ArenaParams, add_arena
-from realsim.backdrop import BackdropParams, build_backdrop
+from realsim.backdrop import BackdropParams, build_backdrop, build_cloud_backdrop
+from realsim.planes import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 
@@ -268,6 +269,31 @@ def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImag
     return colours
 
 
+def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams, assets: dict[str, bytes]) -> dict[int, list[float]]:
+    """An unorganized capture's look: each observed support's colour (the median of its points)
+    and the backdrop of what is neither object nor support; returns the supports' colours."""
+    assert scene.points is not None and scene.colors is not None and scene.labels is not None
+    points, colors = np.asarray(scene.points, float), np.asarray(scene.colors, float)
+    background = scene.labels <= 0
+    colours: dict[int, list[float]] = {}
+    for plane in [p for p in scene.planes if p.observed]:
+        near = background & (np.abs(np.nan_to_num(points[:, 2], nan=1e9) - plane.height) < params.appearance.support_tolerance)
+        idx = np.flatnonzero(near)
+        on = idx[inside_convex_polygon(points[idx, :2], np.asarray(plane.polygon, float))]
+        background[on] = False
+        if len(on):
+            colours[plane.id] = [*np.median(np.clip(colors[on], 0.0, 1.0), axis=0).tolist(), 1.0]
+    observed = [p for p in scene.planes if p.observed] or list(scene.planes)
+    centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
+        else np.nanmean(points, axis=0)
+    spacing = float(scene.capture.metadata.get("point_spacing") or float("nan"))
+    backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
+    if backdrop is not None:
+        material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
+        add_visual_mesh(spec, spec.worldbody, "backdrop_visual", backdrop.mesh, assets, material)
+    return colours
+
+
 def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scene:
     """Build the MjSpec of the scene (arena, objects, camera) and check it compiles."""
     spec = new_spec(params)
@@ -278,6 +304,8 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
         for obj in scene.objects:
             texture_object(obj, image, params.appearance)
         slabs = _add_captured_surfaces(spec, scene, image, params, assets)
+    elif params.appearance.enabled and scene.points is not None and scene.colors is not None and scene.labels is not None:
+        slabs = _add_cloud_surfaces(spec, scene, params, assets)  # an unorganized capture: no photo to project
     add_arena(spec, scene, params.arena, slabs)
     articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
     object_sites = scene.capture.metadata.get("object_sites") or {}  # body name -> {site: [x, y, z]} (realsim.text)

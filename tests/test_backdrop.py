@@ -1,0 +1,77 @@
+"""The backdrop of unorganized captures: ball-pivoted, coloured per face, visual only, within budget."""
+
+from __future__ import annotations
+
+from io import BytesIO
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+from PIL import Image
+
+from realsim.backdrop import BackdropParams, build_cloud_backdrop, face_colour_atlas
+from realsim.pipeline import convert
+from realsim.synth import SceneSpec, make_scene, write_point_cloud
+from realsim.synth.scene import ycb_root
+
+
+def _wall(n: int = 60000, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """A 2 x 1.5 m wall at y = 1 (red left half, blue right half) and a floor patch at z = 0."""
+    rng = np.random.default_rng(seed)
+    wall = np.column_stack([rng.uniform(-1, 1, n), np.full(n, 1.0) + rng.normal(0, 0.001, n), rng.uniform(0, 1.5, n)])
+    colors = np.where(wall[:, :1] < 0, [[0.9, 0.1, 0.1]], [[0.1, 0.1, 0.9]])
+    floor = np.column_stack([rng.uniform(-1, 1, n // 4), rng.uniform(-1, 1, n // 4), np.zeros(n // 4)])
+    return np.vstack([wall, floor]), np.vstack([colors, np.full((n // 4, 3), 0.5)])
+
+
+def _face_colours(mesh, png: bytes) -> np.ndarray:
+    image = np.asarray(Image.open(BytesIO(png)).convert("RGB"), float) / 255
+    uv = np.asarray(mesh.visual.uv)[mesh.faces[:, 0]]
+    h, w = image.shape[:2]
+    return image[((1 - uv[:, 1]) * h).astype(int), (uv[:, 0] * w).astype(int)]
+
+
+def test_wall_is_meshed_where_it_was_seen_in_its_colours() -> None:
+    points, colors = _wall()
+    keep = points[:, 2] > 0.01  # the floor is a support: not backdrop
+    params = BackdropParams(cloud_max_faces=6000)
+    backdrop = build_cloud_backdrop(points, colors, keep, 0.005, np.array([0.0, 0.0, 1.2]), params)
+    assert backdrop is not None
+    mesh = backdrop.mesh
+    assert 1000 < len(mesh.faces) <= params.cloud_max_faces
+    assert np.abs(mesh.vertices[:, 1] - 1.0).max() < 0.01 and mesh.vertices[:, 2].min() > 0.0  # on the wall, no floor
+    assert (mesh.face_normals[:, 1] < 0).mean() > 0.95  # facing the viewer in front of the wall
+    shown = _face_colours(mesh, backdrop.texture_png)
+    left = mesh.triangles_center[:, 0] < -0.05
+    right = mesh.triangles_center[:, 0] > 0.05
+    assert (shown[left, 0] > 0.7).mean() > 0.95 and (shown[right, 2] > 0.7).mean() > 0.95
+    again = build_cloud_backdrop(points, colors, keep, 0.005, np.array([0.0, 0.0, 1.2]), params)
+    assert again is not None and np.array_equal(again.mesh.vertices, mesh.vertices) and again.texture_png == backdrop.texture_png
+
+
+def test_atlas_gives_every_face_its_colour() -> None:
+    rng = np.random.default_rng(1)
+    vertices = rng.uniform(0, 1, (30, 3))
+    faces = rng.integers(0, 30, (37, 3))
+    rgb = rng.uniform(0, 1, (37, 3))
+    mesh, png = face_colour_atlas(vertices, faces, rgb)
+    np.testing.assert_allclose(_face_colours(mesh, png), rgb, atol=1 / 255 + 1e-9)
+    np.testing.assert_allclose(mesh.vertices.reshape(-1, 3, 3), vertices[faces])
+
+
+def test_too_little_to_show_gives_no_backdrop() -> None:
+    points, colors = _wall(200)
+    assert build_cloud_backdrop(points, colors, np.zeros(len(points), bool), 0.005, np.zeros(3)) is None
+
+
+@pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared/data/ycb_google16k")
+def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path) -> None:
+    scene = make_scene(SceneSpec(layout="table", objects=("077_rubiks_cube",), seed=0))
+    cloud = tmp_path / "cloud.ply"
+    write_point_cloud(scene, cloud, count=200_000, seed=0)
+    convert(cloud, tmp_path / "out", overrides={"robot": {"enabled": False}})
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / "scene.xml"))
+    backdrop = model.geom("backdrop_visual")
+    assert backdrop.group[0] == 2 and backdrop.contype[0] == 0 and backdrop.conaffinity[0] == 0
+    assert model.mat_texid[backdrop.matid[0]].max() >= 0
