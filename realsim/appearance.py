@@ -174,3 +174,40 @@ def support_top(plane: SupportPlane, cell: float, lift: float) -> trimesh.Trimes
     a, b, cc, d = idx[:-1, :-1].ravel(), idx[:-1, 1:].ravel(), idx[1:, 1:].ravel(), idx[1:, :-1].ravel()
     faces = np.vstack([np.column_stack([a, b, cc]), np.column_stack([a, cc, d])])
     return trimesh.Trimesh(verts, faces, process=False)
+
+
+def face_colour_atlas(vertices: np.ndarray, faces: np.ndarray, rgb: np.ndarray) -> tuple[trimesh.Trimesh, bytes]:
+    """A mesh whose faces show flat colours ``rgb`` (F, 3; 0-1): each face gets its own 2x2-texel
+    cell of a square texture (2x2, so linear filtering at the cell's centre never mixes
+    neighbours); the mesh's vertices are unshared so every corner carries its face's UV."""
+    n = len(faces)
+    side = int(np.ceil(np.sqrt(n)))
+    cells = np.zeros((side * side, 3), np.uint8)
+    cells[:n] = (np.clip(rgb, 0.0, 1.0) * 255 + 0.5).astype(np.uint8)
+    image = np.repeat(np.repeat(cells.reshape(side, side, 3), 2, axis=0), 2, axis=1)
+    row, col = np.divmod(np.arange(n), side)
+    uv = np.column_stack([(2 * col + 1) / (2 * side), 1.0 - (2 * row + 1) / (2 * side)])  # OpenGL: v up
+    mesh = trimesh.Trimesh(vertices[faces].reshape(-1, 3), np.arange(3 * n).reshape(-1, 3), process=False)
+    mesh.visual = trimesh.visual.TextureVisuals(uv=np.repeat(uv, 3, axis=0))
+    return mesh, png_bytes(image)
+
+
+def colour_object_from_points(obj: SceneObject, points: np.ndarray, colors: np.ndarray, labels: np.ndarray,
+                              params: AppearanceParams, neighbours: int = 4) -> bool:
+    """Colour a scanned object's visual mesh from its captured points (an unorganized capture has
+    no photo to project): each face takes the mean colour of the nearest points, so the unseen
+    side continues the seen side next to it."""
+    from scipy.spatial import cKDTree
+
+    if obj.visual is None or obj.source_file is not None:
+        return False
+    mine = (labels == obj.id) & np.all(np.isfinite(points), axis=1) & np.all(np.isfinite(colors), axis=1)
+    if mine.sum() < neighbours:
+        return False
+    mesh = subdivided(obj.visual, params.object_edge)
+    rot, pos = _object_to_world(obj)
+    centres = np.asarray(mesh.triangles_center) @ rot.T + pos
+    _, near = cKDTree(points[mine]).query(centres, k=neighbours)
+    rgb = np.clip(colors[mine], 0.0, 1.0)[near].mean(axis=1)
+    obj.visual, obj.texture_png = face_colour_atlas(np.asarray(mesh.vertices), np.asarray(mesh.faces), rgb)
+    return True

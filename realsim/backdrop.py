@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from realsim.appearance import CaptureImage, projected_texture
+from realsim.appearance import CaptureImage, face_colour_atlas, projected_texture
 
 
 @dataclass(frozen=True)
@@ -114,21 +114,3 @@ def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarra
     rgb = np.asarray(surface.vertex_colors)[faces].mean(axis=1)
     mesh, png = face_colour_atlas(np.asarray(surface.vertices), faces, rgb)
     return Backdrop(mesh, png, 0, int(ok.sum()))
-
-
-def face_colour_atlas(vertices: np.ndarray, faces: np.ndarray, rgb: np.ndarray) -> tuple[trimesh.Trimesh, bytes]:
-    """A mesh whose faces show flat colours ``rgb`` (F, 3; 0-1): each face gets its own 2x2-texel
-    cell of a square texture (2x2, so linear filtering at the cell's centre never mixes
-    neighbours); the mesh's vertices are unshared so every corner carries its face's UV."""
-    from realsim.appearance import png_bytes
-
-    n = len(faces)
-    side = int(np.ceil(np.sqrt(n)))
-    cells = np.zeros((side * side, 3), np.uint8)
-    cells[:n] = (np.clip(rgb, 0.0, 1.0) * 255 + 0.5).astype(np.uint8)
-    image = np.repeat(np.repeat(cells.reshape(side, side, 3), 2, axis=0), 2, axis=1)
-    row, col = np.divmod(np.arange(n), side)
-    uv = np.column_stack([(2 * col + 1) / (2 * side), 1.0 - (2 * row + 1) / (2 * side)])  # OpenGL: v up
-    mesh = trimesh.Trimesh(vertices[faces].reshape(-1, 3), np.arange(3 * n).reshape(-1, 3), process=False)
-    mesh.visual = trimesh.visual.TextureVisuals(uv=np.repeat(uv, 3, axis=0))
-    return mesh, png_bytes(image)

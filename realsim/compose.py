@@ -15,9 +15,19 @@ import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
 
-from realsim.appearance import AppearanceParams, CaptureImage, capture_image, capture_intrinsics, projected_texture, support_mask, support_top, texture_object
+from realsim.appearance import (
+    AppearanceParams,
+    CaptureImage,
+    capture_image,
+    capture_intrinsics,
+    colour_object_from_points,
+    projected_texture,
+    support_mask,
+    support_top,
+    texture_object,
+)
 from realsim.arena import ArenaParams, add_arena
-from realsim.backdrop import BackdropParams, build_backdrop, build_cloud_backdrop
+from realsim.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
 from realsim.planes import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
@@ -264,9 +274,14 @@ def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImag
         colours[plane.id] = [*(np.median(image.rgb[mask], axis=0) / 255.0).tolist(), 1.0]
     backdrop = build_backdrop(image, exclude, params.backdrop)
     if backdrop is not None:
-        material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
-        add_visual_mesh(spec, spec.worldbody, "backdrop_visual", backdrop.mesh, assets, material)
+        _add_backdrop(spec, backdrop, params, assets)
     return colours
+
+
+def _add_backdrop(spec: mujoco.MjSpec, backdrop: Backdrop, params: ComposeParams, assets: dict[str, bytes]) -> None:
+    """The backdrop as one textured visual-only mesh in the world body."""
+    material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
+    add_visual_mesh(spec, spec.worldbody, "backdrop_visual", backdrop.mesh, assets, material)
 
 
 def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams, assets: dict[str, bytes]) -> dict[int, list[float]]:
@@ -289,8 +304,7 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
     spacing = float(scene.capture.metadata.get("point_spacing") or float("nan"))
     backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
     if backdrop is not None:
-        material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
-        add_visual_mesh(spec, spec.worldbody, "backdrop_visual", backdrop.mesh, assets, material)
+        _add_backdrop(spec, backdrop, params, assets)
     return colours
 
 
@@ -305,7 +319,9 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
             texture_object(obj, image, params.appearance)
         slabs = _add_captured_surfaces(spec, scene, image, params, assets)
     elif params.appearance.enabled and scene.points is not None and scene.colors is not None and scene.labels is not None:
-        slabs = _add_cloud_surfaces(spec, scene, params, assets)  # an unorganized capture: no photo to project
+        for obj in scene.objects:  # an unorganized capture: no photo to project, colours from the points
+            colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
+        slabs = _add_cloud_surfaces(spec, scene, params, assets)
     add_arena(spec, scene, params.arena, slabs)
     articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
     object_sites = scene.capture.metadata.get("object_sites") or {}  # body name -> {site: [x, y, z]} (realsim.text)

@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from realsim.backdrop import BackdropParams, build_cloud_backdrop, face_colour_atlas
+from realsim.appearance import face_colour_atlas
+from realsim.backdrop import BackdropParams, build_cloud_backdrop
 from realsim.pipeline import convert
 from realsim.synth import SceneSpec, make_scene, write_point_cloud
 from realsim.synth.scene import ycb_root
@@ -75,3 +76,25 @@ def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path) -> None:
     backdrop = model.geom("backdrop_visual")
     assert backdrop.group[0] == 2 and backdrop.contype[0] == 0 and backdrop.conaffinity[0] == 0
     assert model.mat_texid[backdrop.matid[0]].max() >= 0
+    visuals = [g for g in range(model.ngeom) if model.geom(g).name.startswith("obj") and model.geom(g).name.endswith("_visual")]
+    assert visuals and all(model.mat_texid[model.geom_matid[g]].max() >= 0 for g in visuals)  # coloured from the points
+
+
+def test_object_faces_take_the_colour_of_their_points() -> None:
+    import trimesh
+
+    from realsim.appearance import AppearanceParams, colour_object_from_points
+    from realsim.scene import SceneObject
+
+    box = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
+    box.apply_translation([0.0, 0.0, 0.05])  # object frame: origin at the base centre
+    rng = np.random.default_rng(2)
+    points = rng.uniform(-0.05, 0.05, (4000, 3))
+    points[:, 2] = 0.1  # only the top was seen: red on the left, green on the right
+    colors = np.where(points[:, :1] < 0, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+    obj = SceneObject(id=1, name="obj1_box", label="box", position=np.zeros(3), quat=np.array([1.0, 0, 0, 0]), size=np.full(3, 0.1), visual=box)
+    assert colour_object_from_points(obj, points, colors, np.ones(len(points), int), AppearanceParams())
+    shown = _face_colours(obj.visual, obj.texture_png)
+    centres = obj.visual.triangles_center
+    far_left, far_right = centres[:, 0] < -0.03, centres[:, 0] > 0.03
+    assert (shown[far_left, 0] > 0.9).all() and (shown[far_right, 1] > 0.9).all()  # the unseen sides continue the seen top
