@@ -205,7 +205,7 @@ class Built:
         lo, hi = self.bounds(o)
         c = (lo + hi)[:2] / 2
         for plane in self.scene.planes:
-            from realsim.planes import inside_convex_polygon
+            from realsim.geometry import inside_convex_polygon
 
             if abs(lo[2] - plane.height) < 0.03 and inside_convex_polygon(c[None], plane.polygon, 0.0)[0]:
                 return plane.kind

@@ -21,8 +21,8 @@ from PIL import Image
 from scipy.ndimage import distance_transform_edt
 from scipy.spatial.transform import Rotation
 
+from realsim.geometry import inside_convex_polygon
 from realsim.intrinsics import Intrinsics, fit_intrinsics
-from realsim.planes import inside_convex_polygon
 from realsim.scene import Scene, SceneObject, SupportPlane
 
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from realsim.geometry import yaw_quat
 from realsim.scene import Scene, SupportPlane
 
 VISUAL_GROUP = 2
@@ -32,10 +33,6 @@ class ArenaParams:
     slab_thickness: float = 0.03  # visual thickness of a captured support (m)
 
 
-def _yaw_quat(yaw: float) -> list[float]:
-    return [float(np.cos(yaw / 2)), 0.0, 0.0, float(np.sin(yaw / 2))]
-
-
 def _add_pair(body: mujoco.MjsBody, name: str, rgba, visual: bool = True, **geom) -> None:
     body.add_geom(name=f"{name}_collision", group=COLLISION_GROUP, contype=1, conaffinity=1, rgba=[0.4, 0.6, 0.8, 0.3], **geom)
     if visual:
@@ -47,7 +44,7 @@ def support_box(plane: SupportPlane, floor_z: float) -> tuple[list[float], list[
     depth = max(plane.height - floor_z, 0.02)
     centre = [float(plane.rect_center[0]), float(plane.rect_center[1]), plane.height - depth / 2]
     half = [float(plane.rect_size[0] / 2), float(plane.rect_size[1] / 2), depth / 2]
-    return centre, half, _yaw_quat(plane.rect_yaw)
+    return centre, half, yaw_quat(plane.rect_yaw).tolist()
 
 
 def add_arena(spec: mujoco.MjSpec, scene: Scene, params: ArenaParams = ArenaParams(), slabs: dict[int, list[float]] | None = None) -> None:

@@ -257,20 +257,17 @@ def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
         return "+y"
     if cloud.is_camera_view:
         return "-y"
-    import open3d as o3d
+    from realsim.planes import ransac_plane
 
     pts = cloud.points[np.isfinite(cloud.points).all(axis=1)]
     rng = np.random.default_rng(seed)
     if len(pts) > 50_000:
         pts = pts[rng.choice(len(pts), 50_000, replace=False)]
-    pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(pts))
     extent = float(np.max(np.ptp(pts, axis=0)))
-    o3d.utility.random.seed(seed)
-    model, _ = pcd.segment_plane(max(extent * 0.01, 1e-6), 3, 500)
-    normal = np.asarray(model[:3])
+    normal, offset, _ = ransac_plane(pts, max(extent * 0.01, 1e-6), 500, rng)  # the project's one (seeded) RANSAC
     axis = int(np.argmax(np.abs(normal)))
     signed = normal.copy()
-    side = pts @ normal + model[3]
+    side = pts @ normal + offset
     if np.median(side) < 0:
         signed = -signed
     return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]

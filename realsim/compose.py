@@ -28,7 +28,7 @@ from realsim.appearance import (
 )
 from realsim.arena import ArenaParams, add_arena
 from realsim.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
-from realsim.planes import inside_convex_polygon
+from realsim.geometry import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 

@@ -13,7 +13,8 @@ import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
 from realsim.errors import InputError
-from realsim.planes import inside_convex_polygon, polygon_and_rectangle
+from realsim.geometry import inside_convex_polygon, polygons_apart
+from realsim.planes import polygon_and_rectangle
 from realsim.scene import SupportPlane
 
 
@@ -51,20 +52,6 @@ def footprint(points_xy: np.ndarray) -> np.ndarray:
 def _rotate(poly: np.ndarray, yaw: float) -> np.ndarray:
     c, s = np.cos(yaw), np.sin(yaw)
     return poly @ np.array([[c, s], [-s, c]])
-
-
-def polygons_apart(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
-    """True when convex polygons ``a`` and ``b`` are separated by at least ``gap`` (SAT)."""
-    for poly in (a, b):
-        edges = np.roll(poly, -1, axis=0) - poly
-        normals = np.column_stack([edges[:, 1], -edges[:, 0]])
-        lengths = np.linalg.norm(normals, axis=1)
-        normals = normals[lengths > 1e-12] / lengths[lengths > 1e-12, None]
-        pa, pb = a @ normals.T, b @ normals.T
-        separated = (pa.min(axis=0) - pb.max(axis=0) >= gap) | (pb.min(axis=0) - pa.max(axis=0) >= gap)
-        if np.any(separated):
-            return True
-    return False
 
 
 def declared_support(metadata: dict) -> SupportPlane:

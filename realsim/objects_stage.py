@@ -16,6 +16,7 @@ import numpy as np
 from realsim.assets import AssetParams, PreparedObject, prepare_objects
 from realsim.cache import DiskCache
 from realsim.compose import safe_name
+from realsim.geometry import yaw_quat
 from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
 from realsim.physics import ObjectManifest
 from realsim.planes import primary_support
@@ -82,10 +83,6 @@ def _support_for(scene: Scene) -> SupportPlane:
     return support
 
 
-def _yaw_quat(yaw: float) -> np.ndarray:
-    return np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)])
-
-
 def prepare_scene_objects(scene: Scene, params: ObjectsParams = ObjectsParams()) -> Scene:
     """Prepare every object mesh of the capture and place it on the support.
 
@@ -119,7 +116,7 @@ def prepare_scene_objects(scene: Scene, params: ObjectsParams = ObjectsParams())
     rng = np.random.default_rng(scene.seed)
     for obj, (xy, yaw) in zip(new_objects, place_on_support(prints, support, obstacles, rng, params.layout)):
         obj.position = np.array([xy[0], xy[1], support.height + params.drop_clearance])
-        obj.quat = _yaw_quat(yaw)
+        obj.quat = yaw_quat(yaw)
         obj.support_id = support.id
     scene.objects.extend(new_objects)
     return scene

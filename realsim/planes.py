@@ -16,6 +16,7 @@ from scipy import ndimage
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from realsim.errors import InputError
+from realsim.geometry import inside_convex_polygon
 from realsim.resolution import working_resolution
 from realsim.scene import Scene, SupportPlane
 
@@ -386,21 +387,6 @@ def _occupied_cells(xy: np.ndarray, cell: float) -> int:
         return 0
     ij = np.floor((xy - xy.min(axis=0)) / cell).astype(np.int64)
     return len(np.unique(ij[:, 0] * (ij[:, 1].max() + 1) + ij[:, 1]))
-
-
-def inside_convex_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
-    """Mask of points inside a counter-clockwise convex polygon grown by ``margin``.
-
-    One edge at a time, so memory stays O(N) for full-resolution clouds.
-    """
-    edges = np.roll(polygon, -1, axis=0) - polygon
-    lengths = np.linalg.norm(edges, axis=1)
-    keep = lengths > 1e-12
-    inside = np.ones(len(xy), dtype=bool)
-    for e, start, length in zip(edges[keep], polygon[keep], lengths[keep]):
-        cross = e[0] * (xy[:, 1] - start[1]) - e[1] * (xy[:, 0] - start[0])
-        inside &= cross / length >= -margin
-    return inside
 
 
 def _drop_object_tops(supports: list, params: PlaneParams) -> list:

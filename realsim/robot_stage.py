@@ -12,7 +12,7 @@ import numpy as np
 
 from realsim.cache import DiskCache, output_key, spec_digest
 from realsim.errors import InputError
-from realsim.planes import inside_convex_polygon
+from realsim.geometry import inside_convex_polygon
 from realsim.robot.model import attach_robot
 from realsim.robot.placement import MAX_REACH, PlacementParams, add_robot, pedestal_height
 from realsim.scene import Scene

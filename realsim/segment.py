@@ -21,7 +21,7 @@ from scipy import ndimage, sparse
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from realsim.planes import inside_convex_polygon
+from realsim.geometry import inside_convex_polygon
 from realsim.scene import SupportPlane
 
 __all__ = ["SegmentParams", "SegmentResult", "filter_by_size", "segment_objects"]

@@ -48,6 +48,7 @@ import mujoco  # noqa: E402
 import numpy as np  # noqa: E402
 
 from realsim.errors import InputError, RealsimError  # noqa: E402
+from realsim.geometry import polygons_apart  # noqa: E402
 from realsim.pcd_io import write_pcd  # noqa: E402
 
 __all__ = [
@@ -169,19 +170,6 @@ def _footprint(shape: str, size: tuple[float, float, float], xy: np.ndarray,
     return local @ rot.T + xy
 
 
-def _polygons_clear(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
-    """True if convex polygons a and b are separated by at least ``gap`` along some axis."""
-    for poly in (a, b):
-        edges = np.roll(poly, -1, axis=0) - poly
-        normals = np.stack([edges[:, 1], -edges[:, 0]], axis=1)
-        normals /= np.linalg.norm(normals, axis=1, keepdims=True)
-        pa, pb = a @ normals.T, b @ normals.T
-        sep = np.maximum(pb.min(axis=0) - pa.max(axis=0), pa.min(axis=0) - pb.max(axis=0))
-        if np.any(sep >= gap):
-            return True
-    return False
-
-
 def _on_table(poly: np.ndarray, margin: float, y_range: tuple[float, float] | None = None) -> bool:
     hx, hy = TABLE_SIZE[0] / 2 - margin, TABLE_SIZE[1] / 2 - margin
     ok = bool(np.all(np.abs(poly[:, 0]) <= hx) and np.all(np.abs(poly[:, 1]) <= hy))
@@ -236,7 +224,7 @@ def _try_layout(rng: np.random.Generator) -> tuple[PlacedObject, ...] | None:
     z0 = TABLE_HEIGHT
 
     def free(poly: np.ndarray, ignore: tuple[int, ...] = ()) -> bool:
-        return all(_polygons_clear(poly, q, _CLEARANCE) for i, q in enumerate(polys)
+        return all(polygons_apart(poly, q, _CLEARANCE) for i, q in enumerate(polys)
                    if i not in ignore)
 
     # 1. cereal box, towards the back of the table (+y) so it hides little

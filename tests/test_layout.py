@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from realsim.layout import LayoutParams, declared_support, place_on_support, polygons_apart, reach_anchor
+from realsim.geometry import polygons_apart
+from realsim.layout import LayoutParams, declared_support, place_on_support, reach_anchor
 
 SQUARE = np.array([[-0.04, -0.04], [0.04, -0.04], [0.04, 0.04], [-0.04, 0.04]])
 

@@ -153,7 +153,8 @@ def test_scene_structure(gt: dict) -> None:
     local = _to_object_frame(np.asarray([can["position"]]), box)[0]
     assert abs(local[0]) - box["size"][0] / 2 - can["size"][0] / 2 == pytest.approx(0, abs=1e-3)
     # every other pair of table-standing objects is apart
-    from realsim.synthetic import _footprint, _polygons_clear
+    from realsim.geometry import polygons_apart
+    from realsim.synthetic import _footprint
 
     feet = {i: _footprint(o["shape"], o["size"], np.asarray(o["position"][:2]), o["yaw"])
             for i, o in objs.items() if o["resting_on"] is None}
@@ -161,7 +162,7 @@ def test_scene_structure(gt: dict) -> None:
     for i in ids:
         for j in ids:
             if i < j and sorted((i, j)) != sorted((a, b)):
-                assert _polygons_clear(feet[i], feet[j], 0.01), (i, j)
+                assert polygons_apart(feet[i], feet[j], 0.01), (i, j)
 
 
 def test_capture_yaml(capture: tuple[Path, float], gt: dict) -> None:

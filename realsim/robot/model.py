@@ -25,6 +25,7 @@ import trimesh
 
 from realsim.cache import DiskCache, cache_key
 from realsim.errors import InputError
+from realsim.geometry import yaw_quat
 
 PANDA_DIR = "franka_emika_panda"
 PREFIX = "panda/"
@@ -170,10 +171,6 @@ def _binary_stl(path: Path) -> bytes:
     return trimesh.exchange.stl.export_stl(mesh)
 
 
-def yaw_quat(yaw: float) -> list[float]:
-    return [float(np.cos(yaw / 2)), 0.0, 0.0, float(np.sin(yaw / 2))]
-
-
 def attach_robot(
     spec: mujoco.MjSpec,
     base_pos_xy_yaw: tuple[float, float, float],
@@ -195,10 +192,10 @@ def attach_robot(
     if pedestal_height > 0:
         half = [BASE_FOOTPRINT, BASE_FOOTPRINT, pedestal_height / 2]
         pos = [x, y, base_z + pedestal_height / 2]
-        common = dict(type=mujoco.mjtGeom.mjGEOM_BOX, size=half, pos=pos, quat=yaw_quat(yaw))
+        common = dict(type=mujoco.mjtGeom.mjGEOM_BOX, size=half, pos=pos, quat=yaw_quat(yaw).tolist())
         spec.worldbody.add_geom(name=f"{PEDESTAL_NAME}_collision", group=3, contype=1, conaffinity=1, rgba=[0.4, 0.6, 0.8, 0.3], **common)
         spec.worldbody.add_geom(name=f"{PEDESTAL_NAME}_visual", group=2, contype=0, conaffinity=0, rgba=[0.2, 0.2, 0.22, 1.0], **common)
-    frame = spec.worldbody.add_frame(pos=[x, y, top], quat=yaw_quat(yaw))
+    frame = spec.worldbody.add_frame(pos=[x, y, top], quat=yaw_quat(yaw).tolist())
     spec.attach(child, prefix=prefix, frame=frame)
     spec.assets = {**spec.assets, **assets}
     for mesh in spec.meshes:  # attach prefixes file names too; keep the flat assets/ layout

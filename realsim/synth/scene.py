@@ -339,7 +339,7 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
                 v = _transformed(mesh, pose)
                 poly = _hull2d(v[:, :2])
                 base_poly = _hull2d(topv)
-                from realsim.planes import inside_convex_polygon
+                from realsim.geometry import inside_convex_polygon
 
                 if not inside_convex_polygon(poly, base_poly[::1] if _ccw(base_poly) else base_poly[::-1], 0.01).all():
                     continue

@@ -18,8 +18,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from realsim.layout import LayoutParams, footprint, hull_pieces, polygons_apart, reach_anchor, rest_contact, vertical_extent
-from realsim.planes import inside_convex_polygon
+from realsim.geometry import inside_convex_polygon, polygons_apart
+from realsim.layout import LayoutParams, footprint, hull_pieces, reach_anchor, rest_contact, vertical_extent
 from realsim.scene import SupportPlane
 
 NEAR = 0.12  # m: "next to" means footprints at most this far apart

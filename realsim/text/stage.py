@@ -24,8 +24,9 @@ from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
 from realsim.compose import safe_name
 from realsim.errors import InputError
+from realsim.geometry import yaw_quat
 from realsim.layout import LayoutParams, declared_support
-from realsim.objects_stage import ObjectsParams, _yaw_quat, scene_object
+from realsim.objects_stage import ObjectsParams, scene_object
 from realsim.physics import estimate_manifest
 from realsim.physics.size_table import lookup
 from realsim.procedural import Generated, generate, get_backend
@@ -279,7 +280,7 @@ def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: 
             continue
         main = inst.objects[0]
         main.position = np.array([it.xy[0], it.xy[1], it.z + (params.objects.drop_clearance if it.parent is None else 0.0)])  # type: ignore[index]
-        main.quat = _yaw_quat(it.yaw)
+        main.quat = yaw_quat(it.yaw)
         main.support_id = it.support if it.parent is None else None
         main.resting_on = next((i.objects[0].id for i in instances if i.objects[0].name == it.parent), None)
         scene.objects.append(main)
