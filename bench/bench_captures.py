@@ -124,7 +124,7 @@ def units_check(gt: SynthScene, tmp: Path) -> list[str]:
         write_point_cloud(gt, path, 200_000, units=units, up="+z")
         scene = run_pipeline(path, pipeline=_pipeline_file())
         worlds[units] = (scene.capture.units, scene.capture.input_to_world, scene.planes)
-        lines.append(f"  {units:2s}: detected {scene.capture.units} ({scene.capture.metadata.get('units_reason', '')})")
+        lines.append(f"  {units:2s}: detected {scene.capture.units} ({scene.capture.units_reason or ''})")
     ref = worlds["m"][1]
     probe = np.array([[0.3, 0.2, 0.8], [-0.5, 0.1, 0.0], [0.0, 0.0, 0.75]])
     for units, scale in (("cm", 100.0), ("mm", 1000.0)):

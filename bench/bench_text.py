@@ -186,7 +186,7 @@ class Built:
         data = mujoco.MjData(self.model)
         mujoco.mj_resetDataKeyframe(self.model, data, self.model.key("initial").id)
         mujoco.mj_forward(self.model, data)
-        children = set((scene.capture.metadata.get("articulations") or {}))
+        children = set(scene.articulations)
         self.objects = [o for o in scene.objects if o.name not in children]
         self.pieces = {}
         for o in scene.objects:

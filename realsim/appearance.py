@@ -60,22 +60,22 @@ class CaptureImage:
 
 def capture_intrinsics(scene: Scene) -> Intrinsics | None:
     """The intrinsics of a camera-view organized capture: declared in capture.yaml (``camera: {fx, fy,
-    cx, cy}``), else fitted from the grid (cached in the capture metadata); None if neither."""
-    meta = scene.capture.metadata
-    if scene.points is None or scene.grid_shape is None or not meta.get("camera_view"):
+    cx, cy}``), else fitted from the grid (once per capture); None if neither."""
+    cap = scene.capture
+    if scene.points is None or scene.grid_shape is None or not cap.camera_view:
         return None
-    declared = meta.get("camera") if isinstance(meta.get("camera"), dict) else {}
-    if all(isinstance(declared.get(k), (int, float)) for k in ("fx", "fy")):
+    declared = cap.config.camera
+    if declared is not None and declared.fx is not None and declared.fy is not None:
         h, w = scene.grid_shape
-        return Intrinsics(float(declared["fx"]), float(declared["fy"]), float(declared.get("cx", (w - 1) / 2)),
-                          float(declared.get("cy", (h - 1) / 2)), int(w), int(h))
-    if "_intrinsics" not in meta:
+        return Intrinsics(declared.fx, declared.fy, (w - 1) / 2 if declared.cx is None else declared.cx,
+                          (h - 1) / 2 if declared.cy is None else declared.cy, int(w), int(h))
+    if cap.fitted_intrinsics is None:
         world_to_input = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
         idx = np.arange(0, len(scene.points), 7)  # every 7th pixel: plenty for two lines, pixel indices kept
         optical = np.full_like(scene.points, np.nan)
         optical[idx] = scene.points[idx] @ world_to_input[:3, :3].T + world_to_input[:3, 3]
-        meta["_intrinsics"] = fit_intrinsics(optical, scene.grid_shape)
-    return meta["_intrinsics"]
+        cap.fitted_intrinsics = fit_intrinsics(optical, scene.grid_shape)
+    return cap.fitted_intrinsics
 
 
 def capture_image(scene: Scene) -> CaptureImage | None:

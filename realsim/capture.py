@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.capture_config import read_capture_config
+from realsim.capture_config import CaptureConfig, read_capture_config
 from realsim.errors import InputError
 from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, plausible_units, point_spacing
 from realsim.rgbd import is_rgbd_sequence
@@ -311,7 +311,7 @@ def _mesh_extent(path: str, mtime_ns: int) -> float:
 def _text_capture(text: str, source: Path) -> Scene:
     """A capture made of a description only (realsim.text builds its objects)."""
     capture = CaptureInfo(source=source, kind="text", environment_file=None, units="m", up="+z", units_detected=False,
-                          up_detected=False, input_to_world=np.eye(4), metadata={"text": text})
+                          up_detected=False, input_to_world=np.eye(4), config=CaptureConfig(text=text))
     return Scene(capture=capture)
 
 
@@ -319,11 +319,11 @@ PHOTO_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp")
 OBJECT_EXTENT = (0.01, 0.6)  # m: a lone mesh file this large, and no plausible scene, is one object
 
 
-def _photo_capture(photo: Path, metadata: dict[str, Any], seed: int) -> Scene:
+def _photo_capture(photo: Path, config: CaptureConfig, seed: int) -> Scene:
     """A capture made of a photo only (realsim.understanding.photo_scene describes it)."""
     capture = CaptureInfo(source=photo, kind="photo", environment_file=None, units="m", up="+z", units_detected=False,
-                          up_detected=False, input_to_world=np.eye(4), metadata={**metadata, "photo": str(photo)})
-    return Scene(capture=capture, seed=seed)
+                          up_detected=False, input_to_world=np.eye(4), config=config, photo=photo)
+    return Scene(capture=capture, seed=seed, support=config.support)
 
 
 def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
@@ -349,26 +349,26 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         scene.seed = seed
         return scene
     if path.is_file() and path.suffix.lower() in PHOTO_SUFFIXES:
-        return _photo_capture(path, {}, seed)
-    metadata: dict[str, Any] = {}
+        return _photo_capture(path, CaptureConfig(), seed)
+    config = CaptureConfig()
     object_files: list[Path] = []
     if path.is_dir():
-        metadata = read_capture_config(path)
+        config = read_capture_config(path)
         env = _find_environment(path) or (path if is_rgbd_sequence(path) else None)
         object_files = _object_files(path)
         photos = [p for p in path.glob("photo.*") if p.suffix.lower() in (".jpg", ".jpeg", ".png", ".webp")]
         if params.text:
-            metadata["text"] = params.text
-        if env is None and not object_files and not photos and not metadata.get("text"):
+            config = config.model_copy(update={"text": params.text})
+        if env is None and not object_files and not photos and not config.text:
             raise InputError(f"{path}: the capture folder holds neither scene.*, objects/* nor photo.*")
-        if env is None and not object_files and photos and not metadata.get("text"):
-            return _photo_capture(sorted(photos)[0], metadata, seed)
+        if env is None and not object_files and photos and not config.text:
+            return _photo_capture(sorted(photos)[0], config, seed)
     elif is_lone_object(path):
         env, object_files = None, [path]
     else:
         env = path
-    units = params.units or metadata.get("units")
-    up = params.up or metadata.get("up")
+    units = params.units or config.units
+    up = params.up or config.up
     if units is not None and units not in UNIT_SCALE:
         raise InputError(f"unknown units {units!r}: use m, cm or mm")
     if up is not None and up not in UP_AXES:
@@ -376,7 +376,10 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
 
     scene_points = scene_colors = annotations = None
     grid_shape = None
-    kind = "text" if metadata.get("text") and env is None and not object_files else "objects"
+    kind = "text" if config.text and env is None and not object_files else "objects"
+    units_reason = splat = None
+    spacing: float | None = None
+    camera_view = False
     units_detected = up_detected = False
     transform = np.eye(4)
     if env is not None:
@@ -386,22 +389,20 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         if up is None:
             up, up_detected = detect_up(cloud, cloud.fmt, seed), True
         if units is None:
-            units, why = plausible_units(cloud.points, up_rotation(up)[2])
+            units, units_reason = plausible_units(cloud.points, up_rotation(up)[2])
             units_detected = True
-            metadata["units_reason"] = why
         else:
             check_scale(cloud.points * UNIT_SCALE[units], units)
         transform[:3, :3] = up_rotation(up) * UNIT_SCALE[units]
         if cloud.mesh is not None:
             cloud = resample_mesh(cloud, transform, params, seed, env)
         scene_points = cloud.points @ transform[:3, :3].T
-        metadata["point_spacing"] = point_spacing(scene_points, seed)
-        if cloud.splat is not None:
-            metadata["splat"] = str(cloud.splat)
+        spacing = point_spacing(scene_points, seed)
+        splat = cloud.splat
         scene_colors = cloud.colors
         grid_shape = cloud.grid_shape
         annotations = cloud.annotations
-        metadata.setdefault("camera_view", cloud.is_camera_view)
+        camera_view = cloud.is_camera_view
     capture = CaptureInfo(
         source=path,
         kind=kind,
@@ -411,7 +412,11 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         units_detected=units_detected,
         up_detected=up_detected,
         input_to_world=transform,
-        metadata=metadata,
+        config=config,
+        units_reason=units_reason,
+        point_spacing=spacing,
+        camera_view=camera_view,
+        splat=splat,
     )
     return Scene(
         capture=capture,
@@ -421,4 +426,5 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         grid_shape=grid_shape,
         annotations=annotations,
         object_files=object_files,
+        support=config.support,
     )

@@ -107,14 +107,13 @@ def parse_capture_config(data: Any, where: str = "capture.yaml") -> CaptureConfi
         raise InputError(_one_line(exc, where)) from None
 
 
-def read_capture_config(folder: Path) -> dict[str, Any]:
-    """The validated ``capture.yaml`` of a capture folder as a plain dict (``{}`` when absent)."""
+def read_capture_config(folder: Path) -> CaptureConfig:
+    """The validated ``capture.yaml`` of a capture folder (all defaults when absent)."""
     path = folder / "capture.yaml"
     if not path.exists():
-        return {}
+        return CaptureConfig()
     try:
         data = yaml.safe_load(path.read_text(errors="replace"))
     except yaml.YAMLError as exc:
         raise InputError(f"{path}: invalid YAML ({str(exc).splitlines()[0]})") from None
-    config = parse_capture_config(data, str(path))
-    return config.model_dump(exclude_none=True, exclude_defaults=True)
+    return parse_capture_config(data, str(path))

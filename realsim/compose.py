@@ -237,7 +237,7 @@ def _add_visual(spec: mujoco.MjSpec, body: mujoco.MjsBody, obj: SceneObject, ass
 
 def add_capture_camera(spec: mujoco.MjSpec, scene: Scene) -> None:
     """A camera at the capture's viewpoint (optical frame +z forward, +y down)."""
-    if not scene.capture.metadata.get("camera_view"):
+    if not scene.capture.camera_view:
         return
     transform = scene.capture.input_to_world
     scale = np.cbrt(abs(np.linalg.det(transform[:3, :3])))
@@ -301,7 +301,7 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
     observed = [p for p in scene.planes if p.observed] or list(scene.planes)
     centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
         else np.nanmean(points, axis=0)
-    spacing = float(scene.capture.metadata.get("point_spacing") or float("nan"))
+    spacing = scene.capture.point_spacing or float("nan")
     backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
     if backdrop is not None:
         _add_backdrop(spec, backdrop, params, assets)
@@ -323,8 +323,8 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
             colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
         slabs = _add_cloud_surfaces(spec, scene, params, assets)
     add_arena(spec, scene, params.arena, slabs)
-    articulations = scene.capture.metadata.get("articulations") or {}  # child name -> joint (realsim.text)
-    object_sites = scene.capture.metadata.get("object_sites") or {}  # body name -> {site: [x, y, z]} (realsim.text)
+    articulations = scene.articulations  # child name -> joint (realsim.text)
+    object_sites = scene.object_sites  # body name -> {site: [x, y, z]} (realsim.text)
     bodies: dict[str, mujoco.MjsBody] = {}
     for obj in scene.objects:
         joint = articulations.get(obj.name)

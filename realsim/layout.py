@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
+from realsim.capture_config import DeclaredSupport
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygons_apart
 from realsim.planes import polygon_and_rectangle
@@ -54,21 +55,14 @@ def _rotate(poly: np.ndarray, yaw: float) -> np.ndarray:
     return poly @ np.array([[c, s], [-s, c]])
 
 
-def declared_support(metadata: dict) -> SupportPlane:
-    """The support ``capture.yaml`` declares (``support: {size: [w, d], height: h}``), or a default table."""
-    spec = metadata.get("support") or {}
-    try:
-        size = np.asarray(spec.get("size", [1.2, 0.8]), dtype=np.float64)
-        height = float(spec.get("height", 0.75))
-        center = np.asarray(spec.get("center", [0.0, 0.0]), dtype=np.float64)
-        yaw = float(spec.get("yaw", 0.0))
-    except (TypeError, ValueError):
-        raise InputError("capture.yaml: support needs size: [w, d], height: h (metres)") from None
-    if size.shape != (2,) or np.any(size <= 0.05) or not 0.0 <= height <= 3.0:
-        raise InputError(f"capture.yaml: implausible support size {size.tolist()} / height {height}")
-    corners = _rotate(np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * size / 2, -yaw) + center
+def declared_support(support: DeclaredSupport | None) -> SupportPlane:
+    """The plane of a declared support (``capture.yaml``'s ``support:``, validated there), or a
+    default 1.2 x 0.8 m table at 0.75 m."""
+    support = support or DeclaredSupport()
+    size = np.asarray(support.size, dtype=np.float64)
+    corners = _rotate(np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * size / 2, -support.yaw) + np.asarray(support.center, dtype=np.float64)
     polygon, rect_center, rect_size, rect_yaw = polygon_and_rectangle(corners)
-    return SupportPlane(1, spec.get("kind", "table"), np.array([0.0, 0.0, 1.0]), height, polygon, rect_center, rect_size, rect_yaw, 0, observed=False)
+    return SupportPlane(1, support.kind, np.array([0.0, 0.0, 1.0]), support.height, polygon, rect_center, rect_size, rect_yaw, 0, observed=False)
 
 
 def place_on_support(

@@ -38,7 +38,7 @@ class ObjectsParams:
 
 def _labels(scene: Scene) -> list[str | None]:
     """Labels from capture.yaml by file stem (``labels: {cracker: cracker_box}``), else None."""
-    names = scene.capture.metadata.get("labels") or {}
+    names = scene.capture.config.labels
     return [names.get(p.stem) or names.get(p.name) for p in scene.object_files]
 
 
@@ -74,11 +74,11 @@ def scene_object(prepared: PreparedObject, manifest: ObjectManifest, object_id: 
 def _support_for(scene: Scene) -> SupportPlane:
     if scene.planes:
         return primary_support(scene)
-    support = declared_support(scene.capture.metadata)
+    support = declared_support(scene.support)
     floor = SupportPlane(0, "floor", np.array([0.0, 0.0, 1.0]), 0.0, support.polygon * 3.0, support.rect_center.copy(),
                          support.rect_size * 3.0, support.rect_yaw, 0, observed=False)
     scene.planes = [floor, support]
-    if not scene.capture.metadata.get("support"):
+    if scene.support is None:
         scene.warn("no scan and no support in capture.yaml: objects are placed on a 1.2 x 0.8 m table at 0.75 m")
     return support
 
@@ -111,7 +111,6 @@ def prepare_scene_objects(scene: Scene, params: ObjectsParams = ObjectsParams())
         new_objects.append(obj)
     support = _support_for(scene)
     obstacles = [_world_footprint(o) for o in scene.objects]
-    obstacles += [np.asarray(p, dtype=np.float64) for p in scene.capture.metadata.get("keep_clear", [])]  # e.g. a drawer's travel
     prints = [footprint(np.vstack([h.vertices[:, :2] for h in o.collision])) for o in new_objects]
     rng = np.random.default_rng(scene.seed)
     for obj, (xy, yaw) in zip(new_objects, place_on_support(prints, support, obstacles, rng, params.layout)):

@@ -53,8 +53,8 @@ def scene_record(scene: Scene) -> dict[str, Any]:
             "environment_file": str(cap.environment_file) if cap.environment_file else None,
             "units": cap.units,
             "units_detected": cap.units_detected,
-            "units_reason": cap.metadata.get("units_reason"),  # why detection chose these units
-            "point_spacing": cap.metadata.get("point_spacing"),  # m, the capture's own resolution
+            "units_reason": cap.units_reason,  # why detection chose these units
+            "point_spacing": cap.point_spacing,  # m, the capture's own resolution
             "up": cap.up,
             "up_detected": cap.up_detected,
             "input_to_world": cap.input_to_world,

@@ -260,13 +260,13 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     if scene.points is None:
         return scene
     finite = _finite(scene.points)
-    resolution = working_resolution(float(scene.capture.metadata.get("point_spacing", float("nan"))))
+    resolution = working_resolution(scene.capture.point_spacing if scene.capture.point_spacing is not None else float("nan"))
     params = at_resolution(params, resolution)
     work = scene.points[finite]
     if len(work) > params.max_work_points:  # a dense capture is worked at its resolution: bounded cost
         work = voxel_downsample(work, resolution)
     proposals = ransac_proposals(work, params, scene.seed)
-    viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.metadata.get("camera_view") else None
+    viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.camera_view else None
     cos_level = np.cos(np.radians(params.level_max_tilt_deg))
     candidates = [prop for prop in proposals if abs(prop[0][2]) >= cos_level]
     if not candidates:
@@ -418,7 +418,7 @@ def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> tuple[lis
     highest = supports[-1][0]
     lowest_size = polygon_and_rectangle(lowest_pts[:, :2])[2]
     sees_floor = (highest - lowest) >= params.floor_min_gap or bool(np.min(lowest_size) >= params.floor_min_size)
-    assumed = scene.capture.metadata.get("support_height")
+    assumed = scene.capture.config.support_height
     if sees_floor:
         # The floor is one surface however the furniture splits it up in the view.
         floor_parts = [s for s in supports if s[0] - lowest < params.merge_height_tol]

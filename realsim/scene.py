@@ -13,6 +13,8 @@ from typing import Any
 import numpy as np
 import trimesh
 
+from realsim.capture_config import CaptureConfig, DeclaredSupport
+
 
 @dataclass
 class CaptureInfo:
@@ -26,7 +28,13 @@ class CaptureInfo:
     units_detected: bool
     up_detected: bool
     input_to_world: np.ndarray  # (4, 4), maps input coordinates to world coordinates
-    metadata: dict[str, Any] = field(default_factory=dict)
+    config: CaptureConfig = field(default_factory=CaptureConfig)  # what capture.yaml (and --text) said
+    units_reason: str | None = None  # why detection chose the units
+    point_spacing: float | None = None  # m: the capture's own resolution (median neighbour distance)
+    camera_view: bool = False  # an organized view from one camera (its grid is a photo)
+    splat: Path | None = None  # the Gaussian splat PLY the points came from, kept for the viewer
+    photo: Path | None = None  # the photo of a photo-only capture
+    fitted_intrinsics: Any = None  # realsim.intrinsics.Intrinsics fitted from the grid, once
 
 
 @dataclass
@@ -103,6 +111,11 @@ class Scene:
     settle_report: dict[str, Any] = field(default_factory=dict)
     robot: dict[str, Any] | None = None  # where the Panda stands, when the robot stage ran
     llm: dict[str, Any] | None = None  # Claude calls, tokens, cost, failures (realsim.understanding), when used
+    support: DeclaredSupport | None = None  # the support objects go on without a scan (capture.yaml's, or the text's)
+    scene_spec: Any = None  # realsim.text.schema.SceneSpec to build (from a photo), read by the text stage
+    articulations: dict[str, dict[str, Any]] = field(default_factory=dict)  # child body -> joint (realsim.text), read by compose
+    object_sites: dict[str, dict[str, list[float]]] = field(default_factory=dict)  # body -> {site: [x, y, z]} (realsim.text)
+    photo_asset: str | None = None  # the photo kept in the output (assets/...), for the viewer
 
     @classmethod
     def unread(cls, source: Path | None, seed: int = 0) -> "Scene":

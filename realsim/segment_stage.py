@@ -16,7 +16,7 @@ __all__ = ["SegmentParams", "segment_scene"]
 
 def _label_for(scene: Scene, mask: np.ndarray) -> str:
     """The name capture.yaml gives the annotated object most of the cluster's points belong to."""
-    names = scene.capture.metadata.get("labels") or {}
+    names = scene.capture.config.labels
     if not names or scene.annotations is None:
         return "object"
     annotated = scene.annotations[mask]
@@ -52,7 +52,7 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     """Segment the points above the supports on a voxel grid at the capture's working resolution,
     then give every input point its voxel's label: the cost depends on the scene, not on how
     densely it was sampled."""
-    resolution = working_resolution(float(scene.capture.metadata.get("point_spacing", float("nan"))))
+    resolution = working_resolution(scene.capture.point_spacing if scene.capture.point_spacing is not None else float("nan"))
     support, _ = assign_supports(scene.points, scene.planes, params)
     fg = np.flatnonzero(support >= 0)
     labels = np.zeros(len(scene.points), dtype=np.int32)

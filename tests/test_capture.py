@@ -90,7 +90,7 @@ def test_capture_folder_reads_yaml(tmp_path: Path) -> None:
     (folder / "capture.yaml").write_text("units: m\nup: '-y'\nlabels: {1: cereal_box}\n")
     scene = load_capture(folder)
     assert scene.capture.environment_file == folder / "scene.pcd"
-    assert not scene.capture.up_detected and scene.capture.metadata["labels"] == {1: "cereal_box"}
+    assert not scene.capture.up_detected and scene.capture.config.labels == {1: "cereal_box"}
 
 
 def test_bad_capture_yaml(tmp_path: Path) -> None:

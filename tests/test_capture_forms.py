@@ -61,7 +61,7 @@ def test_mesh_in_millimetres_y_up_table_top_not_underside(gt, tmp_path: Path) ->
     entry = write_mesh(gt, tmp_path / "room.glb")  # glTF, Y up, millimetres, a 40 mm table top
     scene = run_pipeline(tmp_path / "room.glb", pipeline=_pipeline(tmp_path))
     assert scene.capture.units == "mm" and scene.capture.up == "+y"
-    assert "m across" in scene.capture.metadata["units_reason"]
+    assert "m across" in (scene.capture.units_reason or "")
     assert abs(_table_height(scene, entry) - gt.primary_support().height) < 0.003
     assert [p.kind for p in scene.planes].count("table") == 1  # no underside, slab or object top
     # the touching pair (mug against the cube) may merge in a noiseless mesh: at most one object missing
@@ -100,7 +100,7 @@ def test_splat_ply_is_read_as_its_centres(gt, tmp_path: Path) -> None:
     (tmp_path / "splat.ply").write_bytes(header.encode() + data.tobytes())
     scene = load_capture(tmp_path / "splat.ply")
     assert len(scene.points) == n - (n + 9) // 10
-    assert scene.capture.metadata["splat"].endswith("splat.ply") and scene.colors is not None
+    assert str(scene.capture.splat).endswith("splat.ply") and scene.colors is not None
     assert np.allclose(scene.colors.mean(axis=0), cols[np.arange(n) % 10 != 0].mean(axis=0) / 255.0, atol=0.01)
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from realsim.capture_config import DeclaredSupport
 from realsim.geometry import polygons_apart
 from realsim.layout import LayoutParams, declared_support, place_on_support, reach_anchor
 
@@ -11,13 +12,13 @@ SQUARE = np.array([[-0.04, -0.04], [0.04, -0.04], [0.04, 0.04], [-0.04, 0.04]])
 
 
 def _layout(n: int, params: LayoutParams, seed: int = 0) -> list[np.ndarray]:
-    support = declared_support({"support": {"size": [1.2, 0.8], "height": 0.75}})
+    support = declared_support(DeclaredSupport(size=(1.2, 0.8), height=0.75))
     poses = place_on_support([SQUARE] * n, support, [], np.random.default_rng(seed), params)
     return [SQUARE @ np.array([[np.cos(y), np.sin(y)], [-np.sin(y), np.cos(y)]]) + xy for xy, y in poses]
 
 
 def test_reach_region_keeps_objects_near_one_long_edge() -> None:
-    support = declared_support({"support": {"size": [1.2, 0.8], "height": 0.75}})
+    support = declared_support(DeclaredSupport(size=(1.2, 0.8), height=0.75))
     anchor = reach_anchor(support)
     assert np.allclose(anchor, [0.0, -0.4])
     for seed in range(5):

@@ -123,7 +123,7 @@ def test_invalid_reply_repaired_once_then_clear_error(photo: tuple[Path, dict], 
     server.push_tool(SCENE_TOOL, reply)
     scene = _photo_scene(folder)
     assert server.calls == 2 and "invalid" in json.dumps(server.requests[1]["messages"])
-    assert len(scene.capture.metadata["scene_spec"]["objects"]) == len(reply["objects"])
+    assert len(scene.scene_spec.objects) == len(reply["objects"])
     server.push_tool(SCENE_TOOL, {"objects": "none"})
     server.push_tool(SCENE_TOOL, {"objects": [{"label": 3}]})
     with pytest.raises(llm.LLMError, match="failed validation twice"):
@@ -135,7 +135,7 @@ def test_rate_limit_and_overload_retried_then_clear_error(photo: tuple[Path, dic
     folder, reply = photo
     server.push_error(status)
     server.push_tool(SCENE_TOOL, reply)  # the retry succeeds
-    assert _photo_scene(folder).capture.metadata["scene_spec"]["objects"]
+    assert _photo_scene(folder).scene_spec.objects
     server.push_error(status)
     server.push_error(status)
     with pytest.raises(llm.LLMError, match=message):
@@ -157,7 +157,7 @@ def test_out_of_range_values_clamped_and_recorded(photo: tuple[Path, dict], serv
     server.push_tool(SCENE_TOOL, {"supports": [{"id": "table", "kind": "table", "height_m": 9.0, "size_m": [1.2, 0.8]}],
                                   "objects": [{"id": "mug", "label": "mug", "count": 300, "position": [1.7, -0.2], "rgb": [300, 0, 0]}]})
     scene = _photo_scene(folder)
-    spec = scene.capture.metadata["scene_spec"]
-    assert spec["supports"][0]["height_m"] == 2.0 and spec["objects"][0]["count"] == 24
-    assert spec["objects"][0]["position"] == [1.0, 0.0] and spec["objects"][0]["rgb"] == [255, 0, 0]
+    spec = scene.scene_spec
+    assert spec.supports[0].height_m == 2.0 and spec.objects[0].count == 24
+    assert spec.objects[0].position == (1.0, 0.0) and spec.objects[0].rgb == (255, 0, 0)
     assert sum("clamped" in w for w in scene.warnings) >= 4

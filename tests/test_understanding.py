@@ -25,6 +25,7 @@ from anthropic_server import MessagesServer, Reply, error, tool_use  # noqa: E40
 
 from realsim import llm  # noqa: E402
 from realsim.cache import DiskCache  # noqa: E402
+from realsim.capture_config import CameraIntrinsics, CaptureConfig  # noqa: E402
 from realsim.physics import estimate_manifest  # noqa: E402
 from realsim.understanding import (  # noqa: E402
     CallLog,
@@ -412,15 +413,16 @@ def test_capture_camera_projects_points_to_their_pixels() -> None:
     T[:3, :3] = up_rotation("-y") @ np.array([[1, 0, 0], [0, np.cos(0.3), -np.sin(0.3)], [0, np.sin(0.3), np.cos(0.3)]])
     T[:3, 3] = [0.2, -0.1, 1.1]
     world = optical @ T[:3, :3].T + T[:3, 3]
-    scene = Scene(CaptureInfo(Path("c"), "pointcloud", None, "m", "-y", False, False, T, {"camera_view": True}), points=world, grid_shape=(h, w))
+    scene = Scene(CaptureInfo(Path("c"), "pointcloud", None, "m", "-y", False, False, T, camera_view=True), points=world, grid_shape=(h, w))
     uv = capture_camera(scene).project(world)
     rows, cols = np.divmod(np.arange(h * w), w)
     assert np.allclose(uv[:, 0], (cols + 0.5) / w, atol=1e-9) and np.allclose(uv[:, 1], (rows + 0.5) / h, atol=1e-9)
     # intrinsics from capture.yaml win over the default field of view
-    scene.capture.metadata["camera"] = {"fx": 2 * 0.5 * h / np.tan(np.radians(22.5)), "fy": 2 * 0.5 * h / np.tan(np.radians(22.5))}
+    f = 2 * 0.5 * h / np.tan(np.radians(22.5))
+    scene.capture.config = CaptureConfig(camera=CameraIntrinsics(fx=f, fy=f))
     uv2 = capture_camera(scene).project(world)
     assert np.allclose(uv2[:, 0] - 0.5, 2 * (uv[:, 0] - 0.5), atol=0.02)
-    scene.capture.metadata["camera_view"] = False
+    scene.capture.camera_view = False
     assert capture_camera(scene) is None
 
 

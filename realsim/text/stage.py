@@ -2,14 +2,13 @@
 
 The description (``--text`` or ``text:`` in capture.yaml) is read into a
 :class:`~realsim.text.schema.SceneSpec` (offline parser, or Claude with the same schema when a
-key is set and ``use_llm``), or a spec is already in ``capture.metadata["scene_spec"]`` (a
-photo). Each object instance is built by its procedural family (:mod:`realsim.procedural`,
+key is set and ``use_llm``), or a spec is already in ``scene.scene_spec`` (a photo). Each object instance is built by its procedural family (:mod:`realsim.procedural`,
 exact convex pieces, no decomposition), given an offline manifest, and arranged
 (:mod:`realsim.text.arrange`): supports side by side (the first table-like one at the origin, the
 floor around), objects on their support, stacks, contents and objects on objects lowered onto
 what they rest on. Articulated objects (drawer cabinet, hinged box, laptop) keep their child
-part in ``capture.metadata["articulations"]``; grasp sites (handle, rim, lid, ...) go to
-``capture.metadata["object_sites"]`` for :func:`realsim.compose.compose_scene`.
+part in ``scene.articulations``; grasp sites (handle, rim, lid, ...) go to ``scene.object_sites``
+for :func:`realsim.compose.compose_scene`.
 """
 
 from __future__ import annotations
@@ -22,6 +21,7 @@ import numpy as np
 
 from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
+from realsim.capture_config import DeclaredSupport
 from realsim.compose import safe_name
 from realsim.errors import InputError
 from realsim.geometry import yaw_quat
@@ -37,10 +37,6 @@ from realsim.text.parser import parse_scene
 from realsim.text.schema import SUPPORT_DEFAULTS, ObjectSpec, SceneSpec, clamp
 from realsim.text.vocabulary import COLORS, MATERIALS
 
-ARTICULATIONS = "articulations"  # capture.metadata key read by compose
-OBJECT_SITES = "object_sites"  # capture.metadata key: {body name: {site: [x, y, z]}} read by compose
-SCENE_SPEC = "scene_spec"  # capture.metadata key: a SceneSpec given by another stage (a photo)
-KEEP_CLEAR = "keep_clear"
 MAX_OBJECTS = 24
 SUPPORT_GAP = 0.6  # m between supports standing side by side (room for the robot's pedestal)
 
@@ -95,7 +91,7 @@ def _supports(spec: SceneSpec) -> dict[str, SupportPlane]:
         height = s.height_m if s.height_m is not None else SUPPORT_DEFAULTS[s.kind][0]
         size = s.size_m or SUPPORT_DEFAULTS[s.kind][1]
         cx = 0.0 if x is None else x + SUPPORT_GAP + size[0] / 2
-        plane = declared_support({"support": {"size": list(size), "height": height, "center": [cx, 0.0], "kind": s.kind}})
+        plane = declared_support(DeclaredSupport(size=(size[0], size[1]), height=height, center=(cx, 0.0), kind=s.kind))
         plane.id = pid
         pid += 1
         planes[s.id] = plane
@@ -107,7 +103,7 @@ def _supports(spec: SceneSpec) -> dict[str, SupportPlane]:
         corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
         floor = SupportPlane(0, "floor", np.array([0.0, 0.0, 1.0]), 0.0, corners, (lo + hi) / 2, hi - lo, 0.0, 0, observed=False)
     else:
-        floor = declared_support({"support": {"size": list(SUPPORT_DEFAULTS["floor"][1]), "height": 0.0, "kind": "floor"}})
+        floor = declared_support(DeclaredSupport(size=SUPPORT_DEFAULTS["floor"][1], height=0.0, kind="floor"))
         floor.id = 0
     for fid in floor_ids:
         planes[fid] = floor
@@ -135,26 +131,24 @@ class _Instance:
 
 def text_scene(scene: Scene, params: TextParams = TextParams()) -> Scene:
     """Read the description, build the objects and arrange them (see the module doc)."""
-    spec = scene.capture.metadata.get(SCENE_SPEC)
+    text = scene.capture.config.text
+    spec = scene.scene_spec
     if spec is None:
-        text = scene.capture.metadata.get("text")
-        if not text or not str(text).strip():
+        if not text or not text.strip():
             raise InputError("the text pipeline needs a description: pass --text \"a table with a mug\" or put text: in capture.yaml")
-        spec = parse(str(text), params.use_llm)
-    elif isinstance(spec, dict):
-        spec = SceneSpec.model_validate(spec)
+        spec = parse(text, params.use_llm)
     spec, notes = clamp(spec)
     if not spec.objects:
-        raise InputError(f"no objects found in {scene.capture.metadata.get('text')!r}: name some, e.g. \"a table with a mug and two soda cans\"")
+        raise InputError(f"no objects found in {text!r}: name some, e.g. \"a table with a mug and two soda cans\"")
     if spec.total() > MAX_OBJECTS:
         raise InputError(f"the description asks for {spec.total()} objects; at most {MAX_OBJECTS} fit a text scene")
     for note in spec.warnings + notes:
         scene.warn(note)
-    scene.capture.metadata["text_request"] = spec.model_dump(mode="json", exclude_defaults=True)
+    scene.scene_spec = spec
     planes = _supports(spec)
     primary = next((p for p in planes.values() if p.kind != "floor"), None)
-    if primary is not None and not scene.capture.metadata.get("support"):
-        scene.capture.metadata["support"] = {"size": [float(v) for v in primary.rect_size], "height": primary.height, "kind": primary.kind}
+    if primary is not None and scene.support is None:
+        scene.support = DeclaredSupport(size=(float(primary.rect_size[0]), float(primary.rect_size[1])), height=primary.height, kind=primary.kind)
     scene.planes = sorted({id(p): p for p in planes.values()}.values(), key=lambda p: p.id)
     instances = _build(scene, spec, params)
     _arrange(scene, spec, instances, planes, params)
@@ -169,8 +163,7 @@ def _build(scene: Scene, spec: SceneSpec, params: TextParams) -> list[_Instance]
     folder = Path(params.asset_dir) if params.asset_dir else cache_root() / "procedural"
     out: list[_Instance] = []
     next_id = max((o.id for o in scene.objects), default=0) + 1
-    sites = scene.capture.metadata.setdefault(OBJECT_SITES, {})
-    arts = scene.capture.metadata.setdefault(ARTICULATIONS, {})
+    sites, arts = scene.object_sites, scene.articulations
     room = _room_needed(spec, scene.seed, params)
     for o in spec.objects:
         label = display_label(o)
@@ -182,7 +175,7 @@ def _build(scene: Scene, spec: SceneSpec, params: TextParams) -> list[_Instance]
                 prep = None
                 if backend is not None and gen.joint is None:
                     try:
-                        path = backend.generate(label, str(scene.capture.metadata.get("text", "")), folder, scene.seed + next_id)
+                        path = backend.generate(label, scene.capture.config.text or "", folder, scene.seed + next_id)
                         prep = prepare_objects([Path(path)], [label], params.objects.assets, cache)[0]
                     except Exception as exc:  # a remote service may fail in many ways; procedural stands in
                         scene.warn(f"text-to-3D backend {backend.name} failed for {label!r} ({type(exc).__name__}); used the procedural model")
@@ -258,7 +251,7 @@ def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: 
         inst.item = item
     items = [i.item for i in instances if i.item is not None]
     roots = [it for it in items if it.parent is None]
-    obstacles = [np.asarray(p, dtype=np.float64) for p in scene.capture.metadata.get(KEEP_CLEAR, [])]
+    obstacles: list[np.ndarray] = []
     placed: dict[str, Item] = {}
     by_id = {p.id: p for p in planes.values()}
     for pid in sorted({it.support for it in roots}, key=lambda v: (v == 0, v)):  # type: ignore[arg-type]

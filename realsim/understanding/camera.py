@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
@@ -37,25 +36,18 @@ class CaptureCamera:
         return (k.project(p) + 0.5) / np.array([k.width, k.height], float)
 
 
-def _num(d: dict[str, Any], key: str) -> float | None:
-    v = d.get(key)
-    return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) else None
-
-
 def capture_camera(scene: Scene) -> CaptureCamera | None:
     """The capture camera of a camera-view scan, or None (not a camera view / no grid)."""
-    meta = scene.capture.metadata
-    if scene.grid_shape is None or not meta.get("camera_view"):
+    if scene.grid_shape is None or not scene.capture.camera_view:
         return None
+    world_to_optical = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+    known = capture_intrinsics(scene)  # declared in capture.yaml, else fitted from the grid
+    if known is not None:
+        return CaptureCamera(world_to_optical, known)
     h, w = int(scene.grid_shape[0]), int(scene.grid_shape[1])
-    cam = meta.get("camera") if isinstance(meta.get("camera"), dict) else {}
-    fx, fy, cx, cy = (_num(cam, k) for k in ("fx", "fy", "cx", "cy"))
-    fitted = capture_intrinsics(scene) if fx is None or fy is None else None
-    if fitted is not None:  # the organized grid's own intrinsics
-        fx, fy, cx, cy = fitted.fx, fitted.fy, fitted.cx, fitted.cy
-    if fx is None or fy is None:
-        fovy = _num(cam, "fovy_deg") or DEFAULT_FOVY_DEG
-        fx = fy = 0.5 * h / math.tan(math.radians(fovy) / 2)
-    cx = (w - 1) / 2 if cx is None else cx
-    cy = (h - 1) / 2 if cy is None else cy
-    return CaptureCamera(np.linalg.inv(np.asarray(scene.capture.input_to_world, float)), Intrinsics(fx, fy, cx, cy, w, h))
+    declared = scene.capture.config.camera
+    fovy = declared.fovy_deg if declared is not None and declared.fovy_deg is not None else DEFAULT_FOVY_DEG
+    f = 0.5 * h / math.tan(math.radians(fovy) / 2)
+    cx = declared.cx if declared is not None and declared.cx is not None else (w - 1) / 2
+    cy = declared.cy if declared is not None and declared.cy is not None else (h - 1) / 2
+    return CaptureCamera(world_to_optical, Intrinsics(f, f, cx, cy, w, h))

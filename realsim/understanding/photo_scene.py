@@ -30,7 +30,6 @@ from realsim.understanding.calls import CallLog, image_block
 from realsim.understanding.photo import read_photo
 
 PHOTO_SCENE_PROMPT = "scene_photo.md"
-PHOTO_KEY = "photo"  # capture.metadata: path of the photo
 
 
 @dataclass(frozen=True)
@@ -47,12 +46,12 @@ def require_key() -> None:
 
 
 def photo_scene(scene: Scene, params: PhotoParams = PhotoParams()) -> Scene:
-    """Ask Claude for the scene in the photo; put the validated, clamped spec in the metadata."""
+    """Ask Claude for the scene in the photo; the validated, clamped spec becomes ``scene.scene_spec``."""
     from realsim.text.claude import request_scene
     from realsim.text.schema import SUPPORT_DEFAULTS, SupportSpec, clamp
 
     require_key()
-    path = scene.capture.metadata.get(PHOTO_KEY)
+    path = scene.capture.photo
     if not path:
         raise InputError("the photo pipeline needs a photo: pass photo.jpg/png/webp or a folder holding photo.*")
     image, media_type = read_photo(Path(path))
@@ -69,7 +68,7 @@ def photo_scene(scene: Scene, params: PhotoParams = PhotoParams()) -> Scene:
     spec, notes = clamp(spec)
     for note in notes:
         scene.warn(f"photo: {note}")
-    scene.capture.metadata["scene_spec"] = spec.model_dump(mode="json")
+    scene.scene_spec = spec
     return scene
 
 
@@ -88,7 +87,7 @@ def photo_backdrop(scene: Scene, params: BackdropParams = BackdropParams()) -> S
 
     from realsim.planes import primary_support
 
-    path = scene.capture.metadata.get(PHOTO_KEY)
+    path = scene.capture.photo
     if not params.enabled or not path or scene.spec is None or not scene.planes:
         return scene
     with Image.open(path) as im:
@@ -115,5 +114,5 @@ def photo_backdrop(scene: Scene, params: BackdropParams = BackdropParams()) -> S
     spec.worldbody.add_geom(name="photo_backdrop", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[w / 2, params.height / 2, 0.01],
                             pos=[float(back[0]), float(back[1]), float(z)], quat=quat.tolist(), material="photo", group=2,
                             contype=0, conaffinity=0)
-    scene.capture.metadata["photo_asset"] = f"assets/{name}"
+    scene.photo_asset = f"assets/{name}"
     return scene

@@ -100,7 +100,7 @@ class Understanding:
     def _label_capture_photo(self) -> list[PhotoObject]:
         """Claude's objects in the capture's own RGB (organized clouds with colours), else []."""
         scene = self.scene
-        if scene.colors is None or scene.grid_shape is None or not scene.capture.metadata.get("camera_view"):
+        if scene.colors is None or scene.grid_shape is None or not scene.capture.camera_view:
             return []
         h, w = scene.grid_shape
         rgb = (np.clip(np.nan_to_num(scene.colors), 0, 1) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
