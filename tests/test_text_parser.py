@@ -80,6 +80,12 @@ def test_clamp_records_changes_and_schema_inlines() -> None:
      {"bowl": ("bowl", 1, "table", None, False), "apple": ("apple", 2, None, "bowl", False), "banana": ("banana", 1, "table", None, False)}),
     # a bare plural before a colon names the objects listed after it
     ("fruit on the counter: two apples and a pear", {"apple": ("apple", 2, "counter", None, False), "pear": ("pear", 1, "counter", None, False)}),
+    # a request's preamble is not an object
+    ("I need a scene with an apple in a bowl", {"apple": ("apple", 1, None, "bowl", False), "bowl": ("bowl", 1, "table", None, False)}),
+    ("could you make me a desk with a laptop", {"laptop": ("laptop", 1, "desk", None, False)}),
+    # a fixture of the room is where things are, never built
+    ("a cat bowl on the floor by the fridge", {"bowl": ("bowl", 1, "floor", None, False)}),
+    ("two glasses on the counter next to the sink", {"glass": ("glass", 2, "counter", None, False)}),
     # the target of a relation may be a stack
     ("a mug to the left of a stack of two books", {"mug": ("mug", 1, "table", None, False), "book": ("book", 2, "table", None, True)}),
 ])

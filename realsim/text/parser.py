@@ -26,6 +26,7 @@ from realsim.text.schema import MAX_COUNT, SIZE_WORDS, ObjectSpec, SceneSpec
 from realsim.text.vocabulary import (
     COLORS,
     FILLER,
+    FIXTURES,
     LOW_TABLES,
     MARKERS,
     MASS_NOUNS,
@@ -34,6 +35,7 @@ from realsim.text.vocabulary import (
     NOT_SUPPORT_AFTER,
     NUMBERS,
     PLURAL_COUNT,
+    PREAMBLE,
     PRONOUNS,
     REL_MARKERS,
     SUPPORTS,
@@ -61,6 +63,7 @@ def _tokens(text: str) -> list[str]:
 
 def _prepare(text: str) -> str:
     t = text.lower().replace("&", " and ").replace("’", "'")
+    t = re.sub(PREAMBLE, "", t.strip())
     t = re.sub(r"\b(a|one) (pair|couple) of\b", "two", t)
     t = re.sub(r"\ba (few|bunch|handful|dozen) of\b", r"\1", t)
     t = re.sub(r"\ba (few|dozen|handful|bunch)\b", r"\1", t)
@@ -326,6 +329,11 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
             if target.kind == "support":
                 b.add_support(target)
             elif target.kind == "object" and target is nxt:
+                if target.spec is not None and target.spec.label in FIXTURES:  # "by the fridge": where, not what
+                    b.spec.warnings.append(f"'{target.spec.label}' is part of the room: not built; what is {marker.replace('_', ' ')} it stays on its support")
+                    st.closed = True
+                    i += 2
+                    continue
                 b.add_object(target)
                 st.recent.append(target)
                 if grouped is not None and target.spec is not None and target.spec.count > 1:
@@ -362,8 +370,8 @@ def _finish(b: Builder) -> None:
         b.add_support(Phrase("support", support="table"))
     default = elevated[0] if elevated else ("floor" if "floor" in b.support_order else "table")
     for o in [o for o in spec.objects if (o.inside or o.id in b.contents) and not known(o.label)]:  # "a vase with
-        where = o.inside or o.on or ""  # flowers", "a box of screws": contents the table does not know are not modelled
-        spec.warnings.append(f"{o.label!r} in the {where.replace('_', ' ')} is not in the size table: left out")
+        where = o.inside or o.on  # flowers", "a box of screws": contents the table does not know are not modelled
+        spec.warnings.append(f"{o.label!r}{' in the ' + where.replace('_', ' ') if where else ''} is not in the size table: left out")
         spec.objects.remove(o)
     for o in spec.objects:
         if o.on is None and o.inside is None:

@@ -22,7 +22,7 @@ SUPPORTS = {"table": ("table", None), "desk": ("desk", None), "workbench": ("tab
             "countertop": ("counter", None), "worktop": ("counter", None), "floor": ("floor", None), "ground": ("floor", None),
             "shelf": ("shelf", None), "bookshelf": ("shelf", None), "island": ("counter", None), "nightstand": ("table", 0.6),
             "stove": ("counter", None), "stovetop": ("counter", None), "cooktop": ("counter", None), "hob": ("counter", None),
-            "sideboard": ("counter", None), "dresser": ("table", 0.8), "windowsill": ("shelf", None)}
+            "sideboard": ("counter", None), "burner": ("counter", None), "dresser": ("table", 0.8), "windowsill": ("shelf", None)}
 LOW_TABLES = {"coffee": 0.45, "side": 0.6, "bedside": 0.6}
 NOT_SUPPORT_AFTER = {"lamp", "cloth", "mat", "runner", "tennis", "top", "leg", "drawer", "knife", "saw"}
 FILLER = {"the", "there", "is", "are", "s", "some", "its", "it", "that", "which", "has", "have", "i", "we", "you", "my", "our", "your",
@@ -61,4 +61,12 @@ MARKERS: list[tuple[str, str]] = [
 REL_MARKERS = {"on", "in", "next_to", "left_of", "right_of", "behind", "in_front_of", "under"}
 
 
+# "I need a scene with ...", "can you make me a desk with ...": a request, not an object
+PREAMBLE = (r"^\W*(?:please\s+|hey\s+|ok\s+|so\s+)*(?:(?:i|we)\s+(?:need|want|would like|'d like)|(?:can|could|would)\s+you\s+"
+            r"(?:please\s+)?(?:make|build|create|give|set up|generate|show)|make|build|create|give|set up|generate|simulate|show|imagine|picture)"
+            r"\s+(?:me\s+|us\s+)?(?:(?:a|an|the|one)\s+)?(?:(?:simple|small|little|simulated|simulation|new)\s+)*"
+            r"(?:scene|setup|set-up|room|layout|simulation|picture|environment)?\s*(?:with|of|where|in which|that has|containing|showing)?\b")
+# fixtures of a room: named as landmarks ("next to the sink"), never built as objects
+FIXTURES = {"sink", "wall", "window", "door", "fridge", "refrigerator", "freezer", "oven", "dishwasher", "radiator", "fireplace",
+            "couch", "sofa", "bed", "wardrobe", "closet", "cupboard", "staircase", "stairs", "doorway", "corner"}
 MEASURES = r"loaf|loaves|slice|slices|piece|pieces|chunk|chunks|wedge|wedges|head|heads|stick|sticks|bar|bars|block|blocks|ear|ears|clove|cloves|sprig|sprigs"
