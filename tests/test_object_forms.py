@@ -1,0 +1,38 @@
+"""Object meshes as people export them: GLB Y-up in millimetres with vertex colours, PLY in
+centimetres, an open (non-watertight) STL in metres; all come out upright, at their true size."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import trimesh
+
+from realsim.pipeline import convert
+
+
+def test_object_meshes_in_any_unit_and_up_axis(tmp_path: Path) -> None:
+    objects = tmp_path / "capture" / "objects"
+    objects.mkdir(parents=True)
+    can = trimesh.creation.cylinder(radius=40, height=95, sections=48)  # mm, Z up ...
+    can.apply_transform(trimesh.transformations.rotation_matrix(-np.pi / 2, [1, 0, 0]))  # ... written Y up
+    can.visual.vertex_colors = np.tile([200, 30, 30, 255], (len(can.vertices), 1))
+    can.export(objects / "red_can.glb")
+    box = trimesh.creation.box(extents=(20, 7, 28))  # cm
+    box.export(objects / "cereal_box.ply")
+    banana = trimesh.creation.capsule(radius=0.018, height=0.15)
+    banana.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [0, 1, 0]))
+    banana.update_faces(np.arange(len(banana.faces)) % 37 != 0)  # a scan with holes
+    assert not banana.is_watertight
+    banana.export(objects / "banana.stl")
+    scene = convert(tmp_path / "capture", tmp_path / "out", overrides={"robot": {"enabled": False}})
+    sizes = {o.label: np.sort(o.size) * 1000 for o in scene.objects}
+    np.testing.assert_allclose(sizes["red_can"], [80, 80, 95], atol=2)
+    assert abs(next(o for o in scene.objects if o.label == "red_can").size[2] * 1000 - 95) < 2  # upright
+    np.testing.assert_allclose(sizes["cereal_box"], [70, 200, 280], atol=2)
+    np.testing.assert_allclose(sizes["banana"], [36, 36, 186], atol=3)
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / "scene.xml"))
+    red = next(o.name for o in scene.objects if o.label == "red_can")
+    assert model.geom(f"{red}_visual").rgba[0] > 0.7 > model.geom(f"{red}_visual").rgba[2] + 0.5  # its vertex colours
+    assert any("millimetres" in w for w in scene.warnings) and any("centimetres" in w for w in scene.warnings)
