@@ -12,15 +12,14 @@ are subdivided to a few centimetres so the per-vertex projection stays perspecti
 
 from __future__ import annotations
 
-import io
 from dataclasses import dataclass
 
 import numpy as np
 import trimesh
-from PIL import Image
 from scipy.ndimage import distance_transform_edt
 from scipy.spatial.transform import Rotation
 
+from realsim.atlas import face_colour_atlas, png_bytes
 from realsim.geometry import inside_convex_polygon
 from realsim.intrinsics import Intrinsics, fit_intrinsics
 from realsim.scene import Scene, SceneObject, SupportPlane
@@ -87,13 +86,6 @@ def capture_image(scene: Scene) -> CaptureImage | None:
     rgb = (np.clip(np.nan_to_num(scene.colors), 0, 1) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
     return CaptureImage(rgb, scene.labels.reshape(h, w), scene.points.reshape(h, w, 3), intr,
                         np.linalg.inv(np.asarray(scene.capture.input_to_world, float)))
-
-
-def png_bytes(rgb: np.ndarray) -> bytes:
-    """Deterministic PNG bytes of an (H, W, 3) uint8 image."""
-    out = io.BytesIO()
-    Image.fromarray(rgb).save(out, format="PNG", compress_level=1)  # fast; photos barely compress anyway
-    return out.getvalue()
 
 
 def projected_texture(image: CaptureImage, mask: np.ndarray, pix: np.ndarray, margin: int = 2) -> tuple[bytes, np.ndarray] | None:
@@ -174,22 +166,6 @@ def support_top(plane: SupportPlane, cell: float, lift: float) -> trimesh.Trimes
     a, b, cc, d = idx[:-1, :-1].ravel(), idx[:-1, 1:].ravel(), idx[1:, 1:].ravel(), idx[1:, :-1].ravel()
     faces = np.vstack([np.column_stack([a, b, cc]), np.column_stack([a, cc, d])])
     return trimesh.Trimesh(verts, faces, process=False)
-
-
-def face_colour_atlas(vertices: np.ndarray, faces: np.ndarray, rgb: np.ndarray) -> tuple[trimesh.Trimesh, bytes]:
-    """A mesh whose faces show flat colours ``rgb`` (F, 3; 0-1): each face gets its own 2x2-texel
-    cell of a square texture (2x2, so linear filtering at the cell's centre never mixes
-    neighbours); the mesh's vertices are unshared so every corner carries its face's UV."""
-    n = len(faces)
-    side = int(np.ceil(np.sqrt(n)))
-    cells = np.zeros((side * side, 3), np.uint8)
-    cells[:n] = (np.clip(rgb, 0.0, 1.0) * 255 + 0.5).astype(np.uint8)
-    image = np.repeat(np.repeat(cells.reshape(side, side, 3), 2, axis=0), 2, axis=1)
-    row, col = np.divmod(np.arange(n), side)
-    uv = np.column_stack([(2 * col + 1) / (2 * side), 1.0 - (2 * row + 1) / (2 * side)])  # OpenGL: v up
-    mesh = trimesh.Trimesh(vertices[faces].reshape(-1, 3), np.arange(3 * n).reshape(-1, 3), process=False)
-    mesh.visual = trimesh.visual.TextureVisuals(uv=np.repeat(uv, 3, axis=0))
-    return mesh, png_bytes(image)
 
 
 def colour_object_from_points(obj: SceneObject, points: np.ndarray, colors: np.ndarray, labels: np.ndarray,

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from realsim.appearance import face_colour_atlas
+from realsim.atlas import face_colour_atlas
 from realsim.backdrop import BackdropParams, build_cloud_backdrop
 from realsim.pipeline import convert
 from realsim.synth import SceneSpec, make_scene, write_point_cloud

@@ -36,3 +36,27 @@ def test_object_meshes_in_any_unit_and_up_axis(tmp_path: Path) -> None:
     red = next(o.name for o in scene.objects if o.label == "red_can")
     assert model.geom(f"{red}_visual").rgba[0] > 0.7 > model.geom(f"{red}_visual").rgba[2] + 0.5  # its vertex colours
     assert any("millimetres" in w for w in scene.warnings) and any("centimetres" in w for w in scene.warnings)
+
+
+def test_painted_vertices_become_a_texture(tmp_path: Path) -> None:
+    from realsim.atlas import baked_colours
+
+    box = trimesh.creation.box(extents=(0.06, 0.06, 0.1)).subdivide().subdivide()
+    top = box.vertices[:, 2] > 0
+    box.visual.vertex_colors = np.where(top[:, None], [230, 20, 20, 255], [20, 20, 230, 255]).astype(np.uint8)
+    baked = baked_colours(box)
+    assert baked is not None
+    mesh, png = baked
+    from io import BytesIO
+
+    from PIL import Image
+
+    image = np.asarray(Image.open(BytesIO(png)).convert("RGB"))
+    uv = np.asarray(mesh.visual.uv)[::3]
+    shown = image[((1 - uv[:, 1]) * image.shape[0]).astype(int), (uv[:, 0] * image.shape[1]).astype(int)]
+    high = mesh.triangles_center[:, 2] > 0.02
+    low = mesh.triangles_center[:, 2] < -0.02
+    assert (shown[high, 0] > 200).all() and (shown[low, 2] > 200).all()
+    plain = trimesh.creation.box(extents=(0.06, 0.06, 0.1))
+    plain.visual.vertex_colors = [200, 30, 30, 255]
+    assert baked_colours(plain) is None  # one colour: a material colour says it

@@ -13,6 +13,7 @@ from realsim.assets.decompose import decompose
 from realsim.assets.geometry import blend_inertia, clean_geometry, make_solid, plausible_scale, shell_inertia_unit, solid_inertia_unit
 from realsim.assets.loading import load_object_mesh, missing_references, texture_file, visual_appearance
 from realsim.assets.params import AssetParams
+from realsim.atlas import baked_colours
 from realsim.cache import DiskCache, cache_key
 from realsim.errors import InputError
 from realsim.parallel import parallel_map
@@ -163,6 +164,9 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
     visual.apply_translation(heavy["offset"])
     visual.update_faces(visual.nondegenerate_faces(height=1e-12))
     png, rgba, _ = visual_appearance(visual, texture_file(path))
+    if png is None and (baked := baked_colours(visual)) is not None:  # painted vertices: their colours as a texture
+        visual, png = baked
+        rgba = (1.0, 1.0, 1.0, 1.0)
     solid = heavy["solid"]
     open_cavity = heavy["hull_volume"] > 0 and solid.volume / heavy["hull_volume"] < OPEN_CAVITY_RATIO
     com, inertia, model = _inertia_for(solid, label, open_cavity)

@@ -22,8 +22,8 @@ from typing import Any
 import numpy as np
 
 from realsim import llm
-from realsim.appearance import png_bytes
 from realsim.assets import PreparedObject
+from realsim.atlas import png_bytes
 from realsim.cache import DiskCache
 from realsim.physics import ObjectManifest, estimate_manifest
 from realsim.physics.size_table import lookup
