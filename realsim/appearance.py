@@ -168,6 +168,27 @@ def support_top(plane: SupportPlane, cell: float, lift: float) -> trimesh.Trimes
     return trimesh.Trimesh(verts, faces, process=False)
 
 
+def top_view_texture(plane: SupportPlane, top: trimesh.Trimesh, xy: np.ndarray, rgb: np.ndarray, texel: float = 0.005,
+                     max_side: int = 1024) -> tuple[bytes, np.ndarray]:
+    """The support seen from above: a texture over its oriented rectangle in which every texel takes
+    the colour of the nearest captured support point (``xy``, ``rgb`` 0-1; what objects hid is
+    filled from around them), and the UVs of ``top``'s vertices in it."""
+    from scipy.spatial import cKDTree
+
+    size = np.asarray(plane.rect_size, float)
+    w, h = (int(np.clip(np.ceil(v / texel), 2, max_side)) for v in size)
+    c, s = np.cos(plane.rect_yaw), np.sin(plane.rect_yaw)
+    u = (np.arange(w) + 0.5) / w - 0.5
+    v = 0.5 - (np.arange(h) + 0.5) / h  # image rows run from the far (+y) edge down
+    gx, gy = np.meshgrid(u * size[0], v * size[1])
+    world = np.column_stack([plane.rect_center[0] + c * gx.ravel() - s * gy.ravel(), plane.rect_center[1] + s * gx.ravel() + c * gy.ravel()])
+    _, nearest = cKDTree(xy).query(world)
+    image = (np.clip(rgb[nearest], 0.0, 1.0) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
+    local = (np.asarray(top.vertices)[:, :2] - plane.rect_center) @ np.array([[c, -s], [s, c]])
+    uv = np.clip(local / size + 0.5, 0.0, 1.0)  # OpenGL: v up, the far edge at the top of the image
+    return png_bytes(image), uv
+
+
 def colour_object_from_points(obj: SceneObject, points: np.ndarray, colors: np.ndarray, labels: np.ndarray,
                               params: AppearanceParams, neighbours: int = 4) -> bool:
     """Colour a scanned object's visual mesh from its captured points (an unorganized capture has

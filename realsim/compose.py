@@ -25,6 +25,7 @@ from realsim.appearance import (
     support_mask,
     support_top,
     texture_object,
+    top_view_texture,
 )
 from realsim.arena import ArenaParams, add_arena
 from realsim.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
@@ -285,8 +286,9 @@ def _add_backdrop(spec: mujoco.MjSpec, backdrop: Backdrop, params: ComposeParams
 
 
 def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams, assets: dict[str, bytes]) -> dict[int, list[float]]:
-    """An unorganized capture's look: each observed support's colour (the median of its points)
-    and the backdrop of what is neither object nor support; returns the supports' colours."""
+    """An unorganized capture's look: each observed support's top as seen from above (and its
+    median colour for the box under it) and the backdrop of what is neither object nor support;
+    returns the supports' colours."""
     assert scene.points is not None and scene.colors is not None and scene.labels is not None
     points, colors = np.asarray(scene.points, float), np.asarray(scene.colors, float)
     background = scene.labels <= 0
@@ -296,8 +298,14 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
         idx = np.flatnonzero(near)
         on = idx[inside_convex_polygon(points[idx, :2], np.asarray(plane.polygon, float))]
         background[on] = False
-        if len(on):
-            colours[plane.id] = [*np.median(np.clip(colors[on], 0.0, 1.0), axis=0).tolist(), 1.0]
+        if len(on) < 3:
+            continue
+        colours[plane.id] = [*np.median(np.clip(colors[on], 0.0, 1.0), axis=0).tolist(), 1.0]
+        top = support_top(plane, params.appearance.support_cell, params.appearance.top_lift)
+        png, uv = top_view_texture(plane, top, points[on, :2], colors[on])
+        top.visual = trimesh.visual.TextureVisuals(uv=uv)
+        name = f"support{plane.id}_top"
+        add_visual_mesh(spec, spec.worldbody, f"{name}_visual", top, assets, add_baked_material(spec, name, png, assets, params.baked_emission))
     observed = [p for p in scene.planes if p.observed] or list(scene.planes)
     centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
         else np.nanmean(points, axis=0)

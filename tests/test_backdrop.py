@@ -76,6 +76,8 @@ def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path) -> None:
     backdrop = model.geom("backdrop_visual")
     assert backdrop.group[0] == 2 and backdrop.contype[0] == 0 and backdrop.conaffinity[0] == 0
     assert model.mat_texid[backdrop.matid[0]].max() >= 0
+    tops = [g for g in range(model.ngeom) if model.geom(g).name.startswith("support") and model.geom(g).name.endswith("_top_visual")]
+    assert tops and all(model.mat_texid[model.geom_matid[g]].max() >= 0 and model.geom_contype[g] == 0 for g in tops)
     visuals = [g for g in range(model.ngeom) if model.geom(g).name.startswith("obj") and model.geom(g).name.endswith("_visual")]
     assert visuals and all(model.mat_texid[model.geom_matid[g]].max() >= 0 for g in visuals)  # coloured from the points
 
@@ -98,3 +100,22 @@ def test_object_faces_take_the_colour_of_their_points() -> None:
     centres = obj.visual.triangles_center
     far_left, far_right = centres[:, 0] < -0.03, centres[:, 0] > 0.03
     assert (shown[far_left, 0] > 0.9).all() and (shown[far_right, 1] > 0.9).all()  # the unseen sides continue the seen top
+
+
+def test_support_top_is_seen_from_above() -> None:
+    from realsim.appearance import support_top, top_view_texture
+    from realsim.layout import declared_support
+
+    plane = declared_support(None)  # 1.2 x 0.8 m at 0.75 m, centred at the origin
+    rng = np.random.default_rng(3)
+    xy = rng.uniform([-0.6, -0.4], [0.6, 0.4], (20000, 2))
+    rgb = np.where(xy[:, :1] < 0, [[0.9, 0.1, 0.1]], [[0.1, 0.1, 0.9]])
+    keep = np.linalg.norm(xy - [0.3, 0.0], axis=1) > 0.1  # an object hid a disc of the blue half
+    top = support_top(plane, 0.03, 0.0005)
+    png, uv = top_view_texture(plane, top, xy[keep], rgb[keep])
+    image = np.asarray(Image.open(BytesIO(png)).convert("RGB"), float) / 255
+    assert uv.min() >= 0 and uv.max() <= 1
+    h, w = image.shape[:2]
+    assert image[:, : w // 2 - 2, 0].min() > 0.8 and image[:, w // 2 + 2:, 2].min() > 0.8  # the hidden disc filled from around it
+    left = np.asarray(top.vertices)[:, 0] < -0.1
+    assert (uv[left, 0] < 0.5).all() and (uv[~left & (np.asarray(top.vertices)[:, 0] > 0.1), 0] > 0.5).all()
