@@ -4,9 +4,12 @@ Scenes from :mod:`realsim.synth` (real YCB scans on a table, seeded layouts) are
 organized Kinect-like view, converted (no robot), and every ground-truth object is matched to the
 converted object holding most of its pixels. Per object: volume IoU of the completed solid (at
 its composed pose) with the true mesh (occupancy on a 2 mm grid), the oriented size error (sorted
-extents of the oriented bounding boxes) and whether it was found once. Run:
+extents of the oriented bounding boxes), whether it was found once, and the pixels where the
+completed solid hides something the camera saw farther away (a ray through the pixel centre hits
+the solid more than 1 cm before the captured depth: free space filled). ``--all`` covers every
+shared YCB object once per seed (three scenes of five, layouts table, counter, table). Run:
 
-    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--baseline]
+    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline]
 """
 
 from __future__ import annotations
@@ -23,9 +26,10 @@ from scipy.spatial.transform import Rotation
 
 from realsim.pcd_io import read_pcd
 from realsim.pipeline import convert
-from realsim.synth import SceneSpec, make_scene, write_organized_view
+from realsim.synth import SceneSpec, make_scene, write_organized_view, ycb_root
 
 GRID = 0.002
+FREE_SPACE_TOLERANCE = 0.01  # m: a solid this much in front of the captured depth fills seen free space
 
 
 def occupancy(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
@@ -47,25 +51,53 @@ def volume_iou(parts: list[trimesh.Trimesh], b: trimesh.Trimesh) -> float:
     return float(np.count_nonzero(ia & ib)) / union if union else 0.0
 
 
+def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray,
+                      depth: np.ndarray) -> int:
+    """Pixels whose ray meets the solid more than FREE_SPACE_TOLERANCE before the captured depth."""
+    scene = o3d.t.geometry.RaycastingScene()
+    for h in hulls:
+        v = h.vertices @ world_to_optical[:3, :3].T + world_to_optical[:3, 3]
+        scene.add_triangles(o3d.core.Tensor(v.astype(np.float32)), o3d.core.Tensor(np.asarray(h.faces, np.uint32)))
+    height, width = depth.shape
+    v, u = np.mgrid[0:height, 0:width]
+    ray = np.stack([(u - intrinsics[0, 2]) / intrinsics[0, 0], (v - intrinsics[1, 2]) / intrinsics[1, 1], np.ones(u.shape)], axis=-1)
+    rays = np.concatenate([np.zeros_like(ray), ray], axis=-1).reshape(-1, 6).astype(np.float32)
+    z = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().reshape(height, width)  # t along (x, y, 1) is the depth
+    with np.errstate(invalid="ignore"):
+        return int(np.count_nonzero(np.isfinite(z) & (z < depth - FREE_SPACE_TOLERANCE)))
+
+
 def obb_extents(mesh: trimesh.Trimesh) -> np.ndarray:
     return np.sort(np.asarray(mesh.bounding_box_oriented.primitive.extents, float))[::-1]
 
 
+CONTAINERS = {"024_bowl", "025_mug", "019_pitcher_base"}  # thin-walled: volume IoU of walls, reported apart
 BASELINE = {"complete": {"carve": False, "containers": {"enabled": False}, "mirror_max_depth_share": 1e-6}}  # extrusion and cylinders only
 
 
-def measure(seed: int, n_objects: int, root: Path, baseline: bool = False) -> list[dict]:
-    scene = make_scene(SceneSpec(layout="table", n_objects=n_objects, stacked=True, touching=True, seed=seed))
-    capture = root / f"seed{seed}"
+def all_objects(seed: int) -> list[tuple[str, tuple[str, ...]]]:
+    """Every shared YCB object once: three (layout, objects) scenes of five, shuffled by ``seed``."""
+    names = sorted(p.name for p in ycb_root().iterdir() if (p / "textured.obj").is_file())
+    names = [names[i] for i in np.random.default_rng([seed, 14]).permutation(len(names))]
+    return [(layout, tuple(names[k::3])) for k, layout in enumerate(("table", "counter", "table"))]
+
+
+def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layout: str = "table",
+            objects: tuple[str, ...] | None = None) -> list[dict]:
+    scene = make_scene(SceneSpec(layout=layout, objects=objects, n_objects=n_objects, stacked=True, touching=True, seed=seed))
+    tag = f"{layout}{seed}_{'-'.join(o[:3] for o in objects or ())}"
+    capture = root / f"seed{tag}"
     capture.mkdir(parents=True)
     form = write_organized_view(scene, capture / "view.pcd", seed=seed)
-    out = root / f"out{seed}"
+    out = root / f"out{tag}"
     convert(capture / "view.pcd", out, overrides={"robot": {"enabled": False}, **(BASELINE if baseline else {})})
     record = json.loads((out / "scene.json").read_text())
     synth_to_realsim = np.asarray(record["capture"]["input_to_world"]) @ np.linalg.inv(np.asarray(form["capture_to_world"]))
     labels = np.load(out / "labels.npy")
-    gt_ids = read_pcd(capture / "view.pcd").labels
-    gt_ids = np.where(gt_ids >= 10, gt_ids // 10, 0)
+    pcd = read_pcd(capture / "view.pcd")
+    gt_ids = np.where(pcd.labels >= 10, pcd.labels // 10, 0)
+    depth = pcd.points[:, 2].reshape(480, 640)
+    world_to_optical = np.linalg.inv(np.asarray(record["capture"]["input_to_world"]))
     rows = []
     for obj in scene.objects:
         mine = labels[gt_ids == obj.id]
@@ -88,6 +120,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False) -> li
         truth = obj.mesh()
         truth.apply_transform(synth_to_realsim)  # the conversion levels and centres the scene its own way
         rows.append({**row, "iou": volume_iou(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
+                     "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"])})
     return rows
 
@@ -96,18 +129,24 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", nargs="*", type=int, default=[0, 1, 2])
     parser.add_argument("--objects", type=int, default=5)
+    parser.add_argument("--all", action="store_true", help="every shared YCB object once per seed (3 scenes of 5)")
     parser.add_argument("--baseline", action="store_true", help="without free-space carving, hollow containers and mirroring")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        rows = [r for seed in args.seeds for r in measure(seed, args.objects, Path(tmp), args.baseline)]
-    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s}  name given")
+        runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
+        rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, Path(tmp), args.baseline, layout, objects)]
+    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s}  name given")
     for r in rows:
-        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f}  "
+        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d}  "
               f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''}")
     ious = [r["iou"] for r in rows]
     errs = [r["size_err_mm"] for r in rows if np.isfinite(r["size_err_mm"])]
+    solid = [r["iou"] for r in rows if r["name"] not in CONTAINERS]
     print(f"\n{len(rows)} objects: median volume IoU {np.median(ious):.2f} (min {np.min(ious):.2f}), median oriented size error "
           f"{np.median(errs):.1f} mm, found once {sum(r['clusters'] == 1 for r in rows)}/{len(rows)}")
+    print(f"{len(solid)} solid objects (not {', '.join(sorted(CONTAINERS))}): median IoU {np.median(solid):.2f}, min {np.min(solid):.2f}; "
+          f"pixels of seen free space covered: {sum(r.get('free_px', 0) for r in rows)} "
+          f"({sum(r.get('free_px', 0) > 0 for r in rows)} objects)")
 
 
 if __name__ == "__main__":

@@ -83,7 +83,7 @@ def _bowl_points(radius: float = 0.08, height: float = 0.055, seed: int = 0) -> 
 def test_an_open_bowl_is_completed_hollow_and_holds_a_ball() -> None:
     import mujoco
 
-    from realsim.containers import complete_open_container, round_rim
+    from realsim.completion.containers import complete_open_container, round_rim
 
     pts = _bowl_points()
     rim = round_rim(pts, 0.0, 0.055, 0.2)

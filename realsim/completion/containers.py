@@ -15,6 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
+from realsim.completion.circles import arc_coverage_deg, fit_circle
+
 
 @dataclass(frozen=True)
 class ContainerParams:
@@ -56,13 +58,11 @@ def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: 
 def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float, max_rms: float = 0.08,
               min_arc_deg: float = 240.0) -> tuple[np.ndarray, float] | None:
     """(centre, radius) of a circular rim seen from above (the top band of the points), or None."""
-    from realsim.completion import _arc_coverage_deg, fit_circle  # noqa: PLC0415 (completion imports this module)
-
     rim = points[points[:, 2] >= top_z - 0.15 * (top_z - base_z)]
     if len(rim) < 30:
         return None
     centre, radius, rms = fit_circle(rim[:, :2])
-    if radius > max_radius or rms > max_rms * radius or _arc_coverage_deg(rim[:, :2], centre) < min_arc_deg:
+    if radius > max_radius or rms > max_rms * radius or arc_coverage_deg(rim[:, :2], centre) < min_arc_deg:
         return None
     return centre, radius
 

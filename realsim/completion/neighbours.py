@@ -1,0 +1,78 @@
+"""Completed neighbours kept apart: foreign points inside a shape, overlapping shapes cut apart."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+from scipy.spatial import QhullError
+
+from realsim.completion.params import CompletionParams
+from realsim.completion.stacking import set_shape
+from realsim.scene import SceneObject
+
+
+def foreign_fraction(mesh: trimesh.Trimesh, others: np.ndarray) -> float:
+    if len(others) == 0:
+        return 0.0
+    lo, hi = mesh.bounds
+    near = others[np.all((others >= lo) & (others <= hi), axis=1)]
+    if len(near) == 0:
+        return 0.0
+    # The shapes are convex: inside means behind every face plane.
+    normals, origins = mesh.face_normals, mesh.triangles[:, 0, :]
+    inside = np.all(np.einsum("fk,nfk->nf", normals, near[:, None, :] - origins[None, :, :]) <= 0, axis=1)
+    return float(inside.sum()) / len(others)
+
+
+def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> trimesh.Trimesh | None:
+    """The part of a convex mesh where ``normal . x >= offset`` (a convex hull), or None if too little is left."""
+    v = np.asarray(mesh.vertices)
+    side = v @ normal - offset
+    edges = mesh.edges_unique
+    sa, sb = side[edges[:, 0]], side[edges[:, 1]]
+    cross = (sa * sb) < 0
+    t = sa[cross] / (sa[cross] - sb[cross])
+    points = np.vstack([v[side >= 0], v[edges[cross, 0]] + t[:, None] * (v[edges[cross, 1]] - v[edges[cross, 0]])])
+    if len(points) < 4:
+        return None
+    try:
+        out = trimesh.convex.convex_hull(points)
+    except QhullError:
+        return None
+    return out if out.volume > 1e-7 else None
+
+
+def separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],
+                         params: CompletionParams) -> None:
+    """Cut apart completed neighbours that overlap (their hidden backs grown into each other).
+
+    The cut is the vertical plane across the line between the two objects' observed centroids,
+    midway between their observed points along it; a pair whose observed points interleave along
+    that line, or that are stacked, is left as it is.
+    """
+    for i, a in enumerate(objects):
+        for b in objects[i + 1:]:
+            if a.resting_on == b.id or b.resting_on == a.id:
+                continue
+            ma, mb = done[a.id], done[b.id]
+            if np.any(ma.bounds[0] > mb.bounds[1]) or np.any(mb.bounds[0] > ma.bounds[1]):
+                continue
+            d = np.zeros(3)
+            d[:2] = observed[b.id][:, :2].mean(axis=0) - observed[a.id][:, :2].mean(axis=0)
+            if np.linalg.norm(d) < 1e-6:
+                continue
+            d /= np.linalg.norm(d)
+            if np.max(ma.vertices @ d) <= np.min(mb.vertices @ d):
+                continue
+            pa, pb = np.percentile(observed[a.id] @ d, 99), np.percentile(observed[b.id] @ d, 1)
+            if pa > pb:
+                continue
+            mid = (pa + pb) / 2
+            for obj, normal in ((a, -d), (b, d)):
+                cut = clip_convex(done[obj.id], normal, float(normal @ (d * mid)))
+                if cut is None:
+                    continue
+                lo, hi = cut.bounds
+                done[obj.id] = cut
+                set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params)
+                obj.notes.append(f"cut apart from object {(b if obj is a else a).id}, whose completed shape it overlapped")

@@ -1,0 +1,29 @@
+"""Parameters of shape completion."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from realsim.completion.containers import ContainerParams
+
+
+@dataclass(frozen=True)
+class CompletionParams:
+    """Parameters of shape completion."""
+
+    top_percentile: float = 98.0  # object top from this percentile of point heights (robust to spikes)
+    min_height: float = 0.01  # thinnest completed object (m)
+    cylinder_max_rms: float = 0.08  # circle fit residual / radius below which a footprint is round
+    cylinder_min_arc_deg: float = 100.0  # visible arc a cylinder fit needs
+    cylinder_max_radius: float = 0.2
+    cylinder_sections: int = 32
+    max_foreign_fraction: float = 0.03  # completed shape may contain this share of a neighbour's points
+    carve: bool = True  # carve completed shapes by the camera's free space (camera views only)
+    carve_tolerance: float = 0.005  # a voxel this much nearer than the captured depth at its pixel is free space (m)
+    carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
+    carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
+    containers: ContainerParams = ContainerParams()  # open round containers completed hollow
+    mirror_max_depth_share: float = 0.6  # visible depth below this share of the width: the back half is missing
+    veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
+    base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
+    min_points: int = 30

@@ -1,0 +1,82 @@
+"""What the capture camera saw: its depth image, silhouette veils and the free space in front of it.
+
+The line of sight to every observed pixel is empty space: a point nearer the camera than the captured
+depth at its pixel was seen through.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from realsim.appearance import capture_intrinsics
+from realsim.intrinsics import Intrinsics
+from realsim.scene import Scene
+
+OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space
+
+
+@dataclass(frozen=True)
+class DepthView:
+    """What the capture camera saw: per-pixel depth (m along the optical axis, NaN = nothing)."""
+
+    intrinsics: Intrinsics
+    world_to_optical: np.ndarray  # (4, 4), optical units
+    scale: float  # optical units per metre
+    depth: np.ndarray  # (H, W)
+    labels: np.ndarray | None = None  # (H, W) object id per pixel (0 support/background), if known
+
+    @classmethod
+    def of(cls, scene: Scene) -> "DepthView | None":
+        intr = capture_intrinsics(scene)
+        if intr is None:
+            return None
+        w2o = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+        scale = float(np.cbrt(abs(np.linalg.det(w2o[:3, :3]))))
+        z = (scene.points @ w2o[2, :3] + w2o[2, 3]) / scale
+        labels = scene.labels.reshape(intr.height, intr.width) if scene.labels is not None else None
+        return cls(intr, w2o, scale, z.reshape(intr.height, intr.width), labels)
+
+    def veil(self, tolerance_deg: float = 80.0, where: np.ndarray | None = None) -> np.ndarray:
+        """(H, W) mask of veil pixels: mixed depths at silhouettes, seen almost edge-on (a surface whose
+        normal, from the grid neighbours, is within ``90 - tolerance_deg`` degrees of perpendicular to the
+        ray). Only pixels in ``where`` (default all) are tested."""
+        h, w = self.depth.shape
+        idx = np.flatnonzero(where.ravel() if where is not None else np.ones(h * w, bool))
+        v, u = np.divmod(idx, w)
+        inner = (u > 0) & (u < w - 1) & (v > 0) & (v < h - 1)
+        idx, v, u = idx[inner], v[inner], u[inner]
+
+        def point(k: np.ndarray) -> np.ndarray:
+            kv, ku = np.divmod(k, w)
+            z = self.depth.ravel()[k]
+            return np.column_stack([(ku - self.intrinsics.cx) / self.intrinsics.fx * z, (kv - self.intrinsics.cy) / self.intrinsics.fy * z, z])
+
+        du = point(idx + 1) - point(idx - 1)
+        dv = point(idx + w) - point(idx - w)
+        p = point(idx)
+        n = np.cross(du, dv)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = np.abs((n * p).sum(-1)) / (np.linalg.norm(n, axis=-1) * np.linalg.norm(p, axis=-1))
+        out = np.zeros(h * w, bool)
+        out[idx] = np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
+        return out.reshape(h, w)
+
+    def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None) -> np.ndarray:
+        """Mask of world points the camera saw through: nearer than the captured depth at their pixel
+        by more than ``tolerance`` where the pixel shows object ``own`` (its own noisy surface), by
+        more than a millimetre where it shows anything else (nothing of ``own`` can be in front of that)."""
+        opt = points @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
+        pix = np.rint(self.intrinsics.project(opt)).astype(np.int64, copy=False) if len(points) else np.zeros((0, 2), np.int64)
+        h, w = self.depth.shape
+        inside = (opt[:, 2] > 0) & (pix[:, 0] >= 0) & (pix[:, 0] < w) & (pix[:, 1] >= 0) & (pix[:, 1] < h)
+        seen = np.full(len(points), np.nan)
+        seen[inside] = self.depth[pix[inside, 1], pix[inside, 0]]
+        tol = np.full(len(points), tolerance)
+        if own is not None and self.labels is not None:
+            other = np.ones(len(points), bool)
+            other[inside] = self.labels[pix[inside, 1], pix[inside, 0]] != own
+            tol[other] = OTHER_SURFACE_TOLERANCE
+        with np.errstate(invalid="ignore"):
+            return opt[:, 2] / self.scale < seen - tol
