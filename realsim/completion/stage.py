@@ -40,7 +40,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         top_z = max(float(np.percentile(pts[:, 2], params.top_percentile)), base_z + params.min_height)
         others = scene.points[(labels > 0) & ~mask]
         shape = complete_cylinder(pts, base_z, top_z, params)
-        if shape is not None and foreign_fraction(shape[0], others[:: max(1, len(others) // 20000)]) > params.maxforeign_fraction:
+        if shape is not None and foreign_fraction(shape[0], others[:: max(1, len(others) // 20000)]) > params.max_foreign_fraction:
             shape = None
         kind = "cylinder" if shape is not None else "hull"
         mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if shape is None and view is not None else None
