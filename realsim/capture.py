@@ -33,6 +33,7 @@ from realsim.errors import InputError
 from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, plausible_units, point_spacing
 from realsim.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
+from realsim.viewer.splat import is_splat_ply, read_splat_ply
 
 POINT_CLOUD_SUFFIXES = {".pcd", ".ply", ".xyz", ".pts"}
 MESH_SUFFIXES = {".obj", ".stl", ".ply", ".glb", ".gltf", ".off"}
@@ -208,8 +209,6 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         pts, cols = fuse_sequence(path)
         cloud = RawCloud(pts, cols, None, False, "rgbd", units_hint="m", up_hint="+y")
     elif suffix == ".ply" and is_splat_ply(path):
-        from realsim.viewer.splat import read_splat_ply
-
         splats = read_splat_ply(path)
         solid = splats.opacities[:, 0] >= 0.2  # faint splats are floaters, not surfaces
         cloud = RawCloud(splats.centers[solid].astype(np.float64), splats.rgbs[solid].astype(np.float64), None, False, "ply", splat=path)
@@ -238,13 +237,6 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     if finite.sum() < MIN_CAPTURE_POINTS:
         raise InputError(f"{path}: only {int(finite.sum())} finite point(s); a scene capture needs at least {MIN_CAPTURE_POINTS}")
     return cloud
-
-
-def is_splat_ply(path: Path) -> bool:
-    """True for a 3D Gaussian splat PLY (vertex properties ``f_dc_0`` and ``opacity``)."""
-    with path.open("rb") as fh:
-        head = fh.read(8192).split(b"end_header")[0]
-    return b"property float f_dc_0" in head and b"property float opacity" in head
 
 
 def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:

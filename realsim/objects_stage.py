@@ -19,8 +19,7 @@ from realsim.compose import safe_name
 from realsim.geometry import yaw_quat
 from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
 from realsim.physics import ObjectManifest
-from realsim.planes import primary_support
-from realsim.scene import Scene, SceneObject, SupportPlane
+from realsim.scene import Scene, SceneObject, SupportPlane, primary_support
 from realsim.understanding import Understanding, UnderstandingParams
 
 

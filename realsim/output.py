@@ -7,39 +7,15 @@ MuJoCo from there, and only then is the folder moved into place. A failed run le
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
-import mujoco
 import numpy as np
 
 from realsim.destination import atomic_folder
 from realsim.render import write_preview
 from realsim.scene import Scene
-from realsim.scene_format import ASSET_DIR, KEYFRAME, SCENE_FORMAT, scene_xml  # noqa: F401 (scene_xml: re-exported)
-
-
-def jsonable(value: Any, digits: int = 6) -> Any:
-    """``value`` with numpy types, paths and pydantic models made JSON-ready (floats rounded)."""
-    if isinstance(value, dict):
-        return {str(k): jsonable(v, digits) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [jsonable(v, digits) for v in value]
-    if isinstance(value, np.ndarray):
-        return jsonable(value.tolist(), digits)
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    if isinstance(value, (np.floating, float)):
-        return round(float(value), digits)
-    if isinstance(value, np.integer):
-        return int(value)
-    if isinstance(value, Path):
-        return str(value)
-    if hasattr(value, "model_dump"):
-        return jsonable(value.model_dump(), digits)
-    return value
+from realsim.scene_format import ASSET_DIR, KEYFRAME, SCENE_FORMAT, jsonable, scene_xml, verify_compiles  # noqa: F401 (scene_xml: re-exported)
 
 
 def scene_record(scene: Scene) -> dict[str, Any]:
@@ -86,16 +62,6 @@ def scene_record(scene: Scene) -> dict[str, Any]:
         "warnings": scene.warnings,
         "llm": scene.llm,
     })
-
-
-def verify_compiles(xml_path: Path) -> mujoco.MjModel:
-    """Compile a written scene from another working directory; raise if it does not load."""
-    cwd = os.getcwd()
-    try:
-        os.chdir(tempfile.gettempdir())
-        return mujoco.MjModel.from_xml_path(str(xml_path))
-    finally:
-        os.chdir(cwd)
 
 
 def write_scene(scene: Scene, dest: Path, *, force: bool = False) -> Path:

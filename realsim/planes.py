@@ -472,9 +472,3 @@ def _recentre(planes: list[SupportPlane]) -> np.ndarray:
         p.polygon = p.polygon + offset
         p.rect_center = p.rect_center + offset
     return offset
-
-
-def primary_support(scene: Scene) -> SupportPlane:
-    """The main work surface: the largest non-floor support (observed ones first), else the floor."""
-    tables = [p for p in scene.planes if p.kind != "floor"]
-    return max(tables or scene.planes, key=lambda p: (p.observed, p.inlier_count, float(np.prod(p.rect_size))))

@@ -140,3 +140,9 @@ class Scene:
     def warn(self, message: str) -> None:
         """Record a warning for the conversion report."""
         self.warnings.append(message)
+
+
+def primary_support(scene: Scene) -> SupportPlane:
+    """The main work surface: the largest non-floor support (observed ones first), else the floor."""
+    tables = [p for p in scene.planes if p.kind != "floor"]
+    return max(tables or scene.planes, key=lambda p: (p.observed, p.inlier_count, float(np.prod(p.rect_size))))

@@ -7,10 +7,13 @@ this module, never through the conversion modules.
 from __future__ import annotations
 
 import json
+import os
+import tempfile
 from pathlib import Path
 from typing import Any
 
 import mujoco
+import numpy as np
 
 from realsim.errors import InputError
 
@@ -56,3 +59,44 @@ def keyframe_id(model: mujoco.MjModel, name: str = KEYFRAME) -> int | None:
     """Id of the keyframe called ``name``, or None when the model has none."""
     key = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, name)
     return None if key < 0 else int(key)
+
+
+def free_joint_bodies(model: mujoco.MjModel) -> list[tuple[str, int, int]]:
+    """(body name, qpos address, dof address) of every free-floating body."""
+    out = []
+    for j in range(model.njnt):
+        if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+            body = model.jnt_bodyid[j]
+            out.append((model.body(body).name, int(model.jnt_qposadr[j]), int(model.jnt_dofadr[j])))
+    return out
+
+
+def jsonable(value: Any, digits: int = 6) -> Any:
+    """``value`` with numpy types, paths and pydantic models made JSON-ready (floats rounded)."""
+    if isinstance(value, dict):
+        return {str(k): jsonable(v, digits) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [jsonable(v, digits) for v in value]
+    if isinstance(value, np.ndarray):
+        return jsonable(value.tolist(), digits)
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (np.floating, float)):
+        return round(float(value), digits)
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, Path):
+        return str(value)
+    if hasattr(value, "model_dump"):
+        return jsonable(value.model_dump(), digits)
+    return value
+
+
+def verify_compiles(xml_path: Path) -> mujoco.MjModel:
+    """Compile a written scene from another working directory; raise if it does not load."""
+    cwd = os.getcwd()
+    try:
+        os.chdir(tempfile.gettempdir())
+        return mujoco.MjModel.from_xml_path(str(xml_path))
+    finally:
+        os.chdir(cwd)

@@ -20,7 +20,7 @@ from realsim.cache import DiskCache, output_key, spec_digest
 from realsim.physics.capacity import CapacityParams, measure_capacity
 from realsim.physics.divergence import check_state
 from realsim.scene import Scene
-from realsim.scene_format import HOME_KEYFRAME, KEYFRAME
+from realsim.scene_format import HOME_KEYFRAME, KEYFRAME, free_joint_bodies
 
 
 @dataclass(frozen=True)
@@ -33,16 +33,6 @@ class SettleParams:
     check_time: float = 2.0  # simulated seconds of the rest check
     max_drift: float = 0.005  # m an object may move during the check
     capacity: CapacityParams = field(default_factory=CapacityParams)  # nconmax / njmax recorded for batched engines
-
-
-def free_joint_bodies(model: mujoco.MjModel) -> list[tuple[str, int, int]]:
-    """(body name, qpos address, dof address) of every free-floating body."""
-    out = []
-    for j in range(model.njnt):
-        if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
-            body = model.jnt_bodyid[j]
-            out.append((model.body(body).name, int(model.jnt_qposadr[j]), int(model.jnt_dofadr[j])))
-    return out
 
 
 def _max_speed(data: mujoco.MjData, free: list[tuple[str, int, int]]) -> float:

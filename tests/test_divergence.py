@@ -8,7 +8,8 @@ import pytest
 
 from realsim.errors import SimulationDiverged
 from realsim.physics.divergence import check_state
-from realsim.settle import SettleParams, free_joint_bodies, simulate_to_rest
+from realsim.scene_format import free_joint_bodies
+from realsim.settle import SettleParams, simulate_to_rest
 
 
 def falling_box() -> tuple[mujoco.MjModel, mujoco.MjData]:

@@ -17,9 +17,7 @@ import numpy as np
 
 from realsim.destination import atomic_folder, check_destination
 from realsim.errors import InputError
-from realsim.output import verify_compiles
-from realsim.scene_format import ASSET_DIR, KEYFRAME, ROBOT_PREFIX, scene_xml
-from realsim.settle import free_joint_bodies
+from realsim.scene_format import ASSET_DIR, KEYFRAME, ROBOT_PREFIX, free_joint_bodies, scene_xml, verify_compiles
 
 
 @dataclass(frozen=True)

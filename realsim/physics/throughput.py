@@ -112,7 +112,7 @@ def bench_warp(model: mujoco.MjModel, data: mujoco.MjData, worlds: int, steps: i
 
 def bench_scene(folder: Path, worlds: int = 1, steps: int = 200, engine: str = "auto") -> Throughput:
     """Benchmark the scene of ``folder`` (``engine``: "auto", "warp" or "c")."""
-    from realsim.output import scene_xml
+    from realsim.scene_format import scene_xml
 
     if worlds < 1 or steps < 1:
         raise InputError("--worlds and --steps must be at least 1")

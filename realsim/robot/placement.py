@@ -20,11 +20,10 @@ import mujoco
 import numpy as np
 
 from realsim.geometry import yaw_quat
-from realsim.planes import primary_support
 from realsim.robot.grasps import frame_from
 from realsim.robot.ik import ArmIK, IKParams, mat_to_quat
 from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, RobotHandles, attach_robot
-from realsim.scene import Scene, SceneObject
+from realsim.scene import Scene, SceneObject, primary_support
 
 TOP_DOWN = np.array([0.0, 1.0, 0.0, 0.0])  # tcp z axis pointing down (w, x, y, z)
 SHOULDER_HEIGHT = 0.333  # m, joint 2 above link0

@@ -22,11 +22,11 @@ from typing import Any
 
 import numpy as np
 
-from realsim.output import jsonable
 from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.robot import ActionResult
 from realsim.runtime.sim import Sim
+from realsim.scene_format import jsonable
 
 
 def _vec(value: Any, n: int, what: str) -> np.ndarray:

@@ -85,7 +85,7 @@ def photo_backdrop(scene: Scene, params: BackdropParams = BackdropParams()) -> S
     """Copy the photo into assets/ and show it on a visual-only board behind the support."""
     from PIL import Image
 
-    from realsim.planes import primary_support
+    from realsim.scene import primary_support
 
     path = scene.capture.photo
     if not params.enabled or not path or scene.spec is None or not scene.planes:

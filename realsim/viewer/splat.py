@@ -70,6 +70,13 @@ def read_splat_ply(path: Path, transform: np.ndarray | None = None) -> Splats:
     return Splats(centers.astype(np.float32), cov.astype(np.float32), rgbs.astype(np.float32), opacities[:, None].astype(np.float32))
 
 
+def is_splat_ply(path: Path) -> bool:
+    """True for a 3D Gaussian splat PLY (vertex properties ``f_dc_0`` and ``opacity``)."""
+    with path.open("rb") as fh:
+        head = fh.read(8192).split(b"end_header")[0]
+    return b"property float f_dc_0" in head and b"property float opacity" in head
+
+
 def find_splat(scene_json: dict) -> Path | None:
     """``splat.ply`` in the capture folder recorded in scene.json (or next to the capture file)."""
     source = scene_json.get("capture", {}).get("source")
@@ -77,8 +84,6 @@ def find_splat(scene_json: dict) -> Path | None:
         return None
     src = Path(source)
     if src.is_file() and src.suffix.lower() == ".ply":
-        from realsim.capture import is_splat_ply
-
         if is_splat_ply(src):  # the capture itself is a splat: its centres were the points
             return src
     folder = src if src.is_dir() else src.parent
