@@ -66,3 +66,20 @@ def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, obse
     except QhullError:
         return mesh, fraction
     return carved, fraction
+
+
+def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, params: CompletionParams,
+                 own: int | None = None) -> tuple[list[trimesh.Trimesh], float]:
+    """Each convex piece of a shape carved by the free space (pieces left empty dropped), and the
+    volume share carved."""
+    out, before, after = [], 0.0, 0.0
+    for piece in pieces:
+        carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own)
+        before += piece.volume
+        if fraction > 0.9:
+            continue  # all but seen through
+        out.append(carved)
+        after += carved.volume
+    if not out:
+        return pieces, 0.0
+    return out, max(0.0, 1.0 - after / before) if before > 0 else 0.0

@@ -1,4 +1,9 @@
-"""The last resort: the visible hull extruded down to the base."""
+"""The last resort: the visible hull extruded down to the base, in slabs when the body is not convex.
+
+A banana or a pair of scissors lying flat is far from its convex hull. Cut along its longest
+horizontal axis into slabs, each slab's visible hull extruded down is one convex piece; the pieces
+are used when together they fill clearly less than the single hull (the body is evidently concave).
+"""
 
 from __future__ import annotations
 
@@ -23,3 +28,38 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trim
         mesh = trimesh.creation.box(bounds=np.vstack([lo, hi]))
     lo, hi = mesh.bounds
     return mesh, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, base_z])
+
+
+def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float, max_slabs: int,
+                   max_fill: float) -> list[trimesh.Trimesh] | None:
+    """Convex pieces: the points cut into slabs about ``slab`` long across their principal horizontal
+    axis, each slab's hull extruded down (neighbouring slabs share their boundary points). None when
+    the object is short, or the pieces fill more than ``max_fill`` of the single extruded hull."""
+    kept = points[points[:, 2] <= top_z]
+    if len(kept) < 60:
+        return None
+    xy = kept[:, :2] - kept[:, :2].mean(axis=0)
+    _, _, vt = np.linalg.svd(xy, full_matrices=False)
+    s = xy @ vt[0]
+    lo, hi = float(np.percentile(s, 0.5)), float(np.percentile(s, 99.5))
+    count = int(min(max_slabs, np.floor((hi - lo) / slab)))
+    if count < 2:
+        return None
+    edges = np.linspace(lo, hi, count + 1)
+    edges[0], edges[-1] = float(s.min()), float(s.max())
+    margin = 0.1 * (edges[1] - edges[0])
+    pieces = []
+    for a, b in zip(edges[:-1], edges[1:]):
+        part = kept[(s >= a - margin) & (s <= b + margin)]
+        if len(part) < 8:
+            continue
+        try:
+            pieces.append(complete_hull(part, base_z, top_z)[0])
+        except (QhullError, ValueError):
+            continue
+    if len(pieces) < 2:
+        return None
+    whole = complete_hull(kept, base_z, top_z)[0]
+    if sum(p.volume for p in pieces) > max_fill * whole.volume:
+        return None
+    return pieces

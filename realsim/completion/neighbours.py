@@ -43,13 +43,15 @@ def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> tri
 
 
 def separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],
-                         params: CompletionParams) -> None:
+                        params: CompletionParams, pieces: dict[int, list[trimesh.Trimesh]] | None = None) -> None:
     """Cut apart completed neighbours that overlap (their hidden backs grown into each other).
 
     The cut is the vertical plane across the line between the two objects' observed centroids,
     midway between their observed points along it; a pair whose observed points interleave along
-    that line, or that are stacked, is left as it is.
+    that line, or that are stacked, is left as it is. An object made of convex ``pieces`` has each
+    piece cut.
     """
+    pieces = pieces if pieces is not None else {}
     for i, a in enumerate(objects):
         for b in objects[i + 1:]:
             if a.resting_on == b.id or b.resting_on == a.id:
@@ -74,5 +76,10 @@ def separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trim
                     continue
                 lo, hi = cut.bounds
                 done[obj.id] = cut
-                set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params)
+                if obj.id in pieces:
+                    parts = [c for c in (clip_convex(p, normal, float(normal @ (d * mid))) for p in pieces[obj.id]) if c is not None]
+                    pieces[obj.id] = parts
+                    set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params, parts or None)
+                else:
+                    set_shape(obj, cut, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]]), params)
                 obj.notes.append(f"cut apart from object {(b if obj is a else a).id}, whose completed shape it overlapped")

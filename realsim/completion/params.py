@@ -17,11 +17,17 @@ class CompletionParams:
     cylinder_min_arc_deg: float = 100.0  # visible arc a cylinder fit needs
     cylinder_max_radius: float = 0.2
     cylinder_sections: int = 32
+    revolution_bands: int = 10  # height bands of a revolved profile (one convex frustum each)
+    revolution_percentile: float = 75.0  # a band's radius: this percentile of its points' distances from the axis
+    silhouette_min_share: float = 0.85  # a round body's silhouette is at least this share of its fitted diameter
     max_foreign_fraction: float = 0.03  # completed shape may contain this share of a neighbour's points
     carve: bool = True  # carve completed shapes by the camera's free space (camera views only)
     carve_tolerance: float = 0.005  # a voxel this much nearer than the captured depth at its pixel is free space (m)
     carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
+    slab: float = 0.025  # a body that is not convex is extruded in slabs about this long (m)
+    max_slabs: int = 8
+    slab_max_fill: float = 0.8  # slabs are used when they fill less than this share of the single hull
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 0.6  # visible depth below this share of the width: the back half is missing
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface

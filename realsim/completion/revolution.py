@@ -1,6 +1,15 @@
-"""Round objects: circles fitted to the visible arc of a footprint, upright cylinders."""
+"""Round objects: the visible profile revolved about a vertical axis fitted to the footprint's arc.
+
+The axis is the centre of a circle fitted to the visible side; the check that the body is round is
+the evidence itself: the fit's residual, the arc it covers, and (for a camera view) the silhouette,
+whose width across the line of sight is the body's diameter. The solid is the revolution of the
+observed outer radius per height band (a bottle keeps its neck), built as one convex frustum per
+band so the collision shape follows a profile that is not convex.
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 import trimesh
@@ -9,8 +18,21 @@ from realsim.completion.circles import arc_coverage_deg, fit_circle
 from realsim.completion.params import CompletionParams
 
 
-def complete_cylinder(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams) -> tuple[trimesh.Trimesh, np.ndarray] | None:
-    """An upright cylinder (world frame) when the footprint is a circular arc, else None."""
+@dataclass
+class Revolved:
+    """A solid of revolution (world frame): convex frustum pieces, the revolved visual, its hull."""
+
+    pieces: list[trimesh.Trimesh]
+    visual: trimesh.Trimesh
+    outer: trimesh.Trimesh
+    centre: np.ndarray  # (2,) axis position
+    radius: float  # fitted radius of the visible side
+
+
+def round_axis(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams,
+               camera_xy: np.ndarray | None = None) -> tuple[np.ndarray, float] | None:
+    """(axis centre, radius) when the visible side is a circular arc whose silhouette is as wide as
+    the circle (seen from ``camera_xy``), else None."""
     side = points[points[:, 2] < top_z - 0.25 * (top_z - base_z)]
     xy = (side if len(side) >= params.min_points else points)[:, :2]
     centre, radius, rms = fit_circle(xy)
@@ -18,6 +40,67 @@ def complete_cylinder(points: np.ndarray, base_z: float, top_z: float, params: C
         return None
     if arc_coverage_deg(xy, centre) < params.cylinder_min_arc_deg:
         return None
+    if camera_xy is not None:
+        d = centre - camera_xy
+        if np.linalg.norm(d) > 1e-6:
+            lateral = np.array([-d[1], d[0]]) / np.linalg.norm(d)
+            w = points[:, :2] @ lateral
+            if float(np.percentile(w, 99) - np.percentile(w, 1)) < params.silhouette_min_share * 2 * radius:
+                return None  # narrower across the line of sight than the circle: not round
+    return centre, radius
+
+
+def revolved_profile(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
+                     bands: int, percentile: float = 75.0) -> tuple[np.ndarray, np.ndarray]:
+    """Outer radius (z, r) at the band boundaries: a high ``percentile`` of the points' distances from
+    the axis per height band (a handle or spout, a minority of a band's points, is left out), bands without evidence interpolated, at most the fitted radius + 10 %."""
+    r = np.linalg.norm(points[:, :2] - centre, axis=1)
+    edges = np.linspace(base_z, top_z, bands + 1)
+    mids = (edges[:-1] + edges[1:]) / 2
+    radii = np.full(bands, np.nan)
+    for i in range(bands):
+        near = (points[:, 2] >= edges[i]) & (points[:, 2] < edges[i + 1] + 1e-9)
+        if near.sum() >= 10:
+            radii[i] = float(np.percentile(r[near], percentile))
+    good = np.isfinite(radii)
+    if not good.any():
+        return edges, np.full(bands + 1, radius)
+    radii = np.clip(np.interp(mids, mids[good], radii[good]), 0.15 * radius, 1.1 * radius)
+    at_edges = np.interp(edges, mids, radii)  # ends take their band's radius
+    return edges, at_edges
+
+
+def _ring(radius: float, z: float, centre: np.ndarray, sections: int) -> np.ndarray:
+    a = np.linspace(0.0, 2 * np.pi, sections, endpoint=False)
+    return np.column_stack([centre[0] + radius * np.cos(a), centre[1] + radius * np.sin(a), np.full(sections, z)])
+
+
+def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams,
+                      camera_xy: np.ndarray | None = None) -> Revolved | None:
+    """The visible profile revolved about the fitted vertical axis, or None when the body is not round."""
+    axis = round_axis(points, base_z, top_z, params, camera_xy)
+    if axis is None:
+        return None
+    centre, radius = axis
+    z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile)
+    n = params.cylinder_sections
+    pieces = [trimesh.convex.convex_hull(np.vstack([_ring(float(r[i]), float(z[i]), centre, n), _ring(float(r[i + 1]), float(z[i + 1]), centre, n)]))
+              for i in range(len(z) - 1)]
+    line = np.vstack([[0.0, base_z], np.column_stack([r, z]), [0.0, top_z]])
+    visual = trimesh.creation.revolve(line, sections=n)
+    visual.apply_translation([centre[0], centre[1], 0.0])
+    if visual.volume < 0:
+        visual.invert()
+    outer = trimesh.convex.convex_hull(np.vstack([p.vertices for p in pieces]))
+    return Revolved(pieces, visual, outer, centre, radius)
+
+
+def complete_cylinder(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams) -> tuple[trimesh.Trimesh, np.ndarray] | None:
+    """An upright cylinder (world frame) when the footprint is a circular arc, else None."""
+    axis = round_axis(points, base_z, top_z, params)
+    if axis is None:
+        return None
+    centre, radius = axis
     height = top_z - base_z
     mesh = trimesh.creation.cylinder(radius=radius, height=height, sections=params.cylinder_sections)
     mesh.apply_translation([centre[0], centre[1], base_z + height / 2])

@@ -6,25 +6,24 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.containers import OpenContainer
 from realsim.completion.params import CompletionParams
 from realsim.scene import SceneObject
 
 
 def set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, params: CompletionParams,
-               container: OpenContainer | None = None) -> None:
-    """Give ``obj`` the world-frame ``mesh`` (or ``container``'s pieces and visual) in its object
-    frame (origin at ``base_centre``)."""
+              pieces: list[trimesh.Trimesh] | None = None, visual: trimesh.Trimesh | None = None) -> None:
+    """Give ``obj`` the world-frame convex ``mesh`` (or convex ``pieces`` and their ``visual``, for a
+    shape that is not convex) in its object frame (origin at ``base_centre``)."""
     local = mesh.copy()
     local.apply_translation(-base_centre)
     obj.position = base_centre + np.array([0.0, 0.0, params.base_clearance])
     obj.size = local.extents.copy()
-    if container is None:
+    if pieces is None:
         obj.collision = [local]
         obj.visual = local
         return
-    obj.collision = [p.copy().apply_translation(-base_centre) for p in container.pieces]
-    obj.visual = container.visual.copy().apply_translation(-base_centre)
+    obj.collision = [p.copy().apply_translation(-base_centre) for p in pieces]
+    obj.visual = (visual if visual is not None else trimesh.util.concatenate(pieces)).copy().apply_translation(-base_centre)
 
 
 def flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params: CompletionParams) -> trimesh.Trimesh:

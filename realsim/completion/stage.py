@@ -5,13 +5,13 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.carving import carve_free_space
+from realsim.completion.carving import carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
-from realsim.completion.extrusion import complete_hull
+from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.params import CompletionParams
-from realsim.completion.revolution import complete_cylinder
+from realsim.completion.revolution import complete_revolved
 from realsim.completion.stacking import bottom_up, flatten_top, set_shape, top_under
 from realsim.completion.view import DepthView
 from realsim.scene import Scene
@@ -26,6 +26,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     done: dict[int, trimesh.Trimesh] = {}
     observed: dict[int, np.ndarray] = {}
     hollow: set[int] = set()
+    pieces: dict[int, list[trimesh.Trimesh]] = {}
     view = DepthView.of(scene) if params.carve else None
     veil = view.veil(params.veil_deg, labels.reshape(view.depth.shape) > 0).ravel() if view is not None else np.zeros(len(labels), bool)
     order = bottom_up(scene.objects)
@@ -39,33 +40,48 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             base_z = scene.plane(obj.support_id).height if obj.support_id is not None else float(np.min(pts[:, 2]))
         top_z = max(float(np.percentile(pts[:, 2], params.top_percentile)), base_z + params.min_height)
         others = scene.points[(labels > 0) & ~mask]
-        shape = complete_cylinder(pts, base_z, top_z, params)
-        if shape is not None and foreign_fraction(shape[0], others[:: max(1, len(others) // 20000)]) > params.max_foreign_fraction:
-            shape = None
-        kind = "cylinder" if shape is not None else "hull"
-        mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if shape is None and view is not None else None
-        if mirrored is not None:
-            kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)"
-        mesh, base_centre = shape if shape is not None else complete_hull(pts if mirrored is None else mirrored, base_z, top_z)
+        revolved = complete_revolved(pts, base_z, top_z, params, view.camera[:2] if view is not None else None)
+        if revolved is not None and foreign_fraction(revolved.outer, others[:: max(1, len(others) // 20000)]) > params.max_foreign_fraction:
+            revolved = None
+        parts: list[trimesh.Trimesh] | None = None
+        visual: trimesh.Trimesh | None = None
+        if revolved is not None:
+            kind = "solid of revolution of its visible profile"
+            mesh, parts, visual = revolved.outer, revolved.pieces, revolved.visual
+            base_centre = np.array([revolved.centre[0], revolved.centre[1], base_z])
+        else:
+            mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if view is not None else None
+            kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)" if mirrored is not None else "hull"
+            mesh, base_centre = complete_hull(pts if mirrored is None else mirrored, base_z, top_z)
+            parts = complete_slabs(pts if mirrored is None else mirrored, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill)
+            if parts is not None:
+                kind = f"{kind} in {len(parts)} slabs (not convex)"
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:
             container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers)
         if container is not None:
-            mesh = container.outer
+            mesh, parts, visual = container.outer, container.pieces, container.visual
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
             kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
-        elif view is not None:
+        elif view is not None and parts is None:
             mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
             if carved >= params.carve_min_fraction:
                 kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
+        elif view is not None and parts is not None:
+            parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
+            if carved >= params.carve_min_fraction:
+                mesh, visual = trimesh.convex.convex_hull(np.vstack([p.vertices for p in parts])), None
+                kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         done[obj.id] = mesh
         observed[obj.id] = pts
-        set_shape(obj, mesh, base_centre, params, container)
+        if parts is not None:
+            pieces[obj.id] = parts
+        set_shape(obj, mesh, base_centre, params, parts, visual)
         obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
         if scene.colors is not None:
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
-    separate_neighbours([o for o in order if o.id not in hollow], done, observed, params)
+    separate_neighbours([o for o in order if o.id not in hollow], done, observed, params, pieces)
     return scene

@@ -38,6 +38,11 @@ class DepthView:
         labels = scene.labels.reshape(intr.height, intr.width) if scene.labels is not None else None
         return cls(intr, w2o, scale, z.reshape(intr.height, intr.width), labels)
 
+    @property
+    def camera(self) -> np.ndarray:
+        """The camera centre in the world."""
+        return np.linalg.inv(self.world_to_optical)[:3, 3]
+
     def veil(self, tolerance_deg: float = 80.0, where: np.ndarray | None = None) -> np.ndarray:
         """(H, W) mask of veil pixels: mixed depths at silhouettes, seen almost edge-on (a surface whose
         normal, from the grid neighbours, is within ``90 - tolerance_deg`` degrees of perpendicular to the
