@@ -249,7 +249,7 @@ def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
         return "+y"
     if cloud.is_camera_view:
         return "-y"
-    from realsim.planes import ransac_plane
+    from realsim.geometry import ransac_plane
 
     pts = cloud.points[np.isfinite(cloud.points).all(axis=1)]
     rng = np.random.default_rng(seed)

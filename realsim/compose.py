@@ -7,7 +7,6 @@ get in ``assets/``, so the spec compiles before anything is written and the writ
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import mujoco
@@ -53,12 +52,6 @@ class ComposeParams:
     headlight_ambient: float = 0.4
     headlight_diffuse: float = 0.15
     sun_diffuse: float = 0.15
-
-
-def safe_name(text: str) -> str:
-    """An MJCF-safe identifier: lowercase letters, digits and underscores."""
-    name = re.sub(r"[^a-z0-9_]+", "_", text.lower()).strip("_")
-    return name or "object"
 
 
 def mesh_bytes(mesh: trimesh.Trimesh, file_type: str) -> bytes:

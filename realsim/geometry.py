@@ -1,5 +1,6 @@
-"""Plane geometry shared by layout, arena, robot and the generators: a heading as a quaternion,
-and convex polygons in the ground plane (inside, apart)."""
+"""Geometry shared by perception, layout, arena, robot and the generators: planes fitted to
+points (least squares, seeded RANSAC), a heading as a quaternion, and convex polygons in the
+ground plane (inside, apart)."""
 
 from __future__ import annotations
 
@@ -38,3 +39,52 @@ def polygons_apart(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
         if np.any(separated):
             return True
     return False
+
+
+def fit_plane(points: np.ndarray) -> tuple[np.ndarray, float]:
+    """Least-squares plane (unit normal with +z component >= 0, offset d of n.x + d = 0)."""
+    centroid = points.mean(axis=0)
+    centred = points - centroid
+    _, vectors = np.linalg.eigh(centred.T @ centred)  # 3x3 scatter matrix: cheap for any N
+    normal = vectors[:, 0]
+    if normal[2] < 0:
+        normal = -normal
+    return normal, float(-normal @ centroid)
+
+
+def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng: np.random.Generator,
+                 confidence: float = 0.999, batch: int = 128, score_points: int = 4000) -> tuple[np.ndarray, float, np.ndarray]:
+    """Seeded RANSAC plane: (unit normal, d, inlier indices into ``points``) with most inliers.
+
+    Hypotheses are scored in vectorized batches on a random subset of ``score_points`` points;
+    sampling stops once ``confidence`` says a better plane is unlikely (the adaptive RANSAC
+    bound), or after ``max_iterations``. The inliers of the winner are taken from all points.
+    """
+    full = points
+    if len(points) > score_points:
+        points = points[rng.choice(len(points), score_points, replace=False)]
+    n = len(points)
+    best_count, best_normal, best_d = -1, np.array([0.0, 0.0, 1.0]), 0.0
+    done, needed = 0, max_iterations
+    while done < min(needed, max_iterations):
+        k = min(batch, max_iterations - done)
+        idx = rng.integers(0, n, size=(k, 3))
+        a, b, c = points[idx[:, 0]], points[idx[:, 1]], points[idx[:, 2]]
+        normals = np.cross(b - a, c - a)
+        norms = np.linalg.norm(normals, axis=1)
+        ok = norms > 1e-12
+        if ok.any():
+            normals = normals[ok] / norms[ok, None]
+            offsets = -np.einsum("ij,ij->i", normals, a[ok])
+            counts = (np.abs(points @ normals.T + offsets) < threshold).sum(axis=0)
+            j = int(np.argmax(counts))
+            if counts[j] > best_count:
+                best_count, best_normal, best_d = int(counts[j]), normals[j], float(offsets[j])
+        done += k
+        ratio = best_count / n
+        if 0.0 < ratio < 1.0:
+            needed = int(np.ceil(np.log(1.0 - confidence) / np.log(1.0 - ratio**3)))
+        elif ratio >= 1.0:
+            break
+    inliers = np.flatnonzero(np.abs(full @ best_normal + best_d) < threshold)
+    return best_normal, best_d, inliers

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from realsim.planes import fit_plane
+from realsim.geometry import fit_plane
 
 
 def plane_error(gt_points: np.ndarray, normal: np.ndarray, height: float) -> tuple[float, float]:

@@ -15,11 +15,10 @@ import numpy as np
 
 from realsim.assets import AssetParams, PreparedObject, prepare_objects
 from realsim.cache import DiskCache
-from realsim.compose import safe_name
 from realsim.geometry import yaw_quat
 from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
-from realsim.physics import ObjectManifest
-from realsim.scene import Scene, SceneObject, SupportPlane, primary_support
+from realsim.scene import Scene, SceneObject, SupportPlane, primary_support, scene_object
+from realsim.scene_format import safe_name
 from realsim.understanding import Understanding, UnderstandingParams
 
 
@@ -43,31 +42,6 @@ def _labels(scene: Scene) -> list[str | None]:
 
 def _unique_names(labels: list[str], first_id: int) -> list[str]:
     return [f"obj{first_id + i}_{safe_name(label)}" for i, label in enumerate(labels)]
-
-
-def scene_object(prepared: PreparedObject, manifest: ObjectManifest, object_id: int, name: str) -> SceneObject:
-    """A SceneObject (object frame at the base centre) from a prepared mesh and its manifest."""
-    ixx, iyy, izz, ixy, ixz, iyz = manifest.inertia
-    return SceneObject(
-        id=object_id,
-        name=name,
-        label=prepared.label,
-        position=np.zeros(3),
-        quat=np.array([1.0, 0.0, 0.0, 0.0]),
-        size=np.asarray(prepared.size, dtype=np.float64),
-        color=np.asarray(prepared.rgba[:3], dtype=np.float64),
-        visual=prepared.visual,
-        collision=list(prepared.hulls),
-        mass=manifest.mass_kg,
-        com=np.asarray(manifest.com, dtype=np.float64),
-        inertia=np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]),
-        friction=tuple(manifest.friction),
-        solref=tuple(manifest.solref),
-        manifest=manifest,
-        source_file=prepared.source,
-        texture_png=prepared.texture_png,
-        notes=list(prepared.warnings),
-    )
 
 
 def _support_for(scene: Scene) -> SupportPlane:

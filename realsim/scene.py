@@ -8,12 +8,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import trimesh
 
 from realsim.capture_config import CaptureConfig, DeclaredSupport
+
+if TYPE_CHECKING:
+    from realsim.assets import PreparedObject
+    from realsim.physics import ObjectManifest
 
 
 @dataclass
@@ -146,3 +150,28 @@ def primary_support(scene: Scene) -> SupportPlane:
     """The main work surface: the largest non-floor support (observed ones first), else the floor."""
     tables = [p for p in scene.planes if p.kind != "floor"]
     return max(tables or scene.planes, key=lambda p: (p.observed, p.inlier_count, float(np.prod(p.rect_size))))
+
+
+def scene_object(prepared: PreparedObject, manifest: ObjectManifest, object_id: int, name: str) -> SceneObject:
+    """A SceneObject (object frame at the base centre) from a prepared mesh and its manifest."""
+    ixx, iyy, izz, ixy, ixz, iyz = manifest.inertia
+    return SceneObject(
+        id=object_id,
+        name=name,
+        label=prepared.label,
+        position=np.zeros(3),
+        quat=np.array([1.0, 0.0, 0.0, 0.0]),
+        size=np.asarray(prepared.size, dtype=np.float64),
+        color=np.asarray(prepared.rgba[:3], dtype=np.float64),
+        visual=prepared.visual,
+        collision=list(prepared.hulls),
+        mass=manifest.mass_kg,
+        com=np.asarray(manifest.com, dtype=np.float64),
+        inertia=np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]),
+        friction=tuple(manifest.friction),
+        solref=tuple(manifest.solref),
+        manifest=manifest,
+        source_file=prepared.source,
+        texture_png=prepared.texture_png,
+        notes=list(prepared.warnings),
+    )

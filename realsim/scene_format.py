@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -100,3 +101,9 @@ def verify_compiles(xml_path: Path) -> mujoco.MjModel:
         return mujoco.MjModel.from_xml_path(str(xml_path))
     finally:
         os.chdir(cwd)
+
+
+def safe_name(text: str) -> str:
+    """An MJCF-safe identifier: lowercase letters, digits and underscores."""
+    name = re.sub(r"[^a-z0-9_]+", "_", text.lower()).strip("_")
+    return name or "object"

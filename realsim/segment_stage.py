@@ -6,9 +6,9 @@ import dataclasses
 
 import numpy as np
 
-from realsim.compose import safe_name
 from realsim.resolution import working_resolution
 from realsim.scene import Scene, SceneObject
+from realsim.scene_format import safe_name
 from realsim.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 
 __all__ = ["SegmentParams", "segment_scene"]

@@ -22,16 +22,16 @@ import numpy as np
 from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
 from realsim.capture_config import DeclaredSupport
-from realsim.compose import safe_name
 from realsim.errors import InputError
 from realsim.geometry import yaw_quat
 from realsim.layout import LayoutParams, declared_support
-from realsim.objects_stage import ObjectsParams, scene_object
+from realsim.objects_stage import ObjectsParams
 from realsim.physics import estimate_manifest
 from realsim.physics.size_table import lookup
 from realsim.procedural import Generated, generate, get_backend
 from realsim.procedural.prepare import prepare_part
-from realsim.scene import Scene, SceneObject, SupportPlane
+from realsim.scene import Scene, SceneObject, SupportPlane, scene_object
+from realsim.scene_format import safe_name
 from realsim.text.arrange import Item, _NoRoom, place_children, place_roots
 from realsim.text.parser import parse_scene
 from realsim.text.schema import SUPPORT_DEFAULTS, ObjectSpec, SceneSpec, clamp
