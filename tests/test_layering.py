@@ -33,3 +33,18 @@ def test_runtime_side_imports_no_conversion_module() -> None:
                 if len(parts) > 1 and parts[1] in CONVERSION:
                     crossings.append(f"{path.relative_to(PACKAGE)} imports {module}")
     assert not crossings, crossings
+
+
+STAGE_MODULES = {  # the module behind each name in pipelines/*.yaml
+    "load": "capture.py", "planes": "planes.py", "segment": "segment_stage.py", "complete": "completion/stage.py",
+    "objects": "objects_stage.py", "compose": "compose.py", "robot": "robot_stage.py", "settle": "settle.py", "write": "output.py",
+    "text": "text/stage.py", "photo": "understanding/photo_scene.py",
+}
+NESTED_PARAMS = {("text/stage.py", "realsim.objects_stage")}  # TextParams nests ObjectsParams (the text path's objects)
+
+
+def test_no_stage_imports_another_stage() -> None:
+    modules = {"realsim." + f.removesuffix(".py").replace("/", "."): f for f in STAGE_MODULES.values()}
+    crossings = [f"{f} imports {m}" for f in STAGE_MODULES.values() for m in imports_of(PACKAGE / f)
+                 if m in modules and modules[m] != f and (f, m) not in NESTED_PARAMS]
+    assert not crossings, crossings
