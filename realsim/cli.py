@@ -136,7 +136,7 @@ def cmd_example(args: argparse.Namespace) -> int:
             write_all(scene, tmp, forms=tuple(args.forms.split(",")), cloud_points=args.points, seed=args.seed)
             what = f"{args.layout} capture ({args.forms}) with ground truth"
         else:
-            from realsim.synthetic import make_tabletop_capture
+            from realsim.synth.tabletop import make_tabletop_capture
 
             make_tabletop_capture(tmp, seed=args.seed)
             what = "tabletop capture"

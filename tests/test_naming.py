@@ -87,7 +87,7 @@ def test_with_a_key_claude_labels_the_capture_own_rgb(tmp_path, monkeypatch: pyt
     from test_understanding import RoutingServer, tool_name
     from test_understanding_convert import _photo_objects, manifest_reply
 
-    from realsim.synthetic import make_tabletop_capture
+    from realsim.synth.tabletop import make_tabletop_capture
     from realsim.understanding.photo import PHOTO_TOOL
 
     capture = make_tabletop_capture(tmp_path / "capture", seed=0)

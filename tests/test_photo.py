@@ -36,7 +36,7 @@ def photo(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, Any
     """A rendered synthetic tabletop as photo.png, alone in a folder, and a description recorded
     from its ground truth (what Claude would answer)."""
     from realsim.pcd_io import read_pcd
-    from realsim.synthetic import make_tabletop_capture
+    from realsim.synth.tabletop import make_tabletop_capture
 
     cap = make_tabletop_capture(tmp_path_factory.mktemp("synthetic") / "capture", seed=0)
     cloud = read_pcd(cap / "scene.pcd")

@@ -1,23 +1,19 @@
-"""realsim.synthetic: the bundled synthetic RGB-D tabletop capture and its ground truth."""
+"""realsim.synth.tabletop: the bundled synthetic RGB-D tabletop capture and its ground truth."""
 
 from __future__ import annotations
 
-import os
+import json
+import math
+import time
+from pathlib import Path
 
-os.environ.setdefault("MUJOCO_GL", "egl")
+import numpy as np
+import pytest
+import yaml
 
-import json  # noqa: E402
-import math  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-import yaml  # noqa: E402
-
-from realsim import synthetic  # noqa: E402
-from realsim.errors import InputError  # noqa: E402
-from realsim.pcd_io import PcdData, read_pcd  # noqa: E402
+from realsim.errors import InputError
+from realsim.pcd_io import PcdData, read_pcd
+from realsim.synth import tabletop as synthetic
 
 FILES = ("scene.pcd", "capture.yaml", "ground_truth.json")
 
@@ -154,7 +150,7 @@ def test_scene_structure(gt: dict) -> None:
     assert abs(local[0]) - box["size"][0] / 2 - can["size"][0] / 2 == pytest.approx(0, abs=1e-3)
     # every other pair of table-standing objects is apart
     from realsim.geometry import polygons_apart
-    from realsim.synthetic import _footprint
+    from realsim.synth.tabletop_layout import _footprint
 
     feet = {i: _footprint(o["shape"], o["size"], np.asarray(o["position"][:2]), o["yaw"])
             for i, o in objs.items() if o["resting_on"] is None}
@@ -177,7 +173,7 @@ def test_same_seed_same_bytes_other_seed_differs(capture: tuple[Path, float],
     again = synthetic.make_tabletop_capture(tmp_path / "again", seed=0)
     for name in FILES:
         assert (again / name).read_bytes() == (capture[0] / name).read_bytes(), name
-    assert synthetic.main([str(tmp_path / "other"), "--seed", "5"]) == 0
+    synthetic.make_tabletop_capture(tmp_path / "other", seed=5)
     other = json.loads((tmp_path / "other" / "ground_truth.json").read_text())
     assert other["seed"] == 5
     assert (tmp_path / "other" / "scene.pcd").read_bytes() != (again / "scene.pcd").read_bytes()

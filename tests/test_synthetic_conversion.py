@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from realsim.pipeline import convert
-from realsim.synthetic import make_tabletop_capture
+from realsim.synth.tabletop import make_tabletop_capture
 
 
 @pytest.fixture(scope="module")

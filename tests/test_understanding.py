@@ -403,7 +403,7 @@ def test_unreadable_photo_is_an_input_error(server: RoutingServer, tmp_path: Pat
 def test_capture_camera_projects_points_to_their_pixels() -> None:
     from realsim.capture import up_rotation
     from realsim.scene import CaptureInfo, Scene
-    from realsim.synthetic import backproject
+    from realsim.synth.tabletop import backproject
     from realsim.understanding import capture_camera
 
     h, w = 48, 64

@@ -43,7 +43,7 @@ def manifest_reply(body: dict[str, Any]) -> Reply:
 @pytest.fixture(scope="module")
 def synthetic(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The synthetic tabletop without its labels, with the RGB of the cloud as ``photo.png``."""
-    from realsim.synthetic import make_tabletop_capture
+    from realsim.synth.tabletop import make_tabletop_capture
 
     dest = make_tabletop_capture(tmp_path_factory.mktemp("synthetic") / "capture", seed=0)
     meta = yaml.safe_load((dest / "capture.yaml").read_text())

@@ -1,6 +1,7 @@
 """Ground-truth capture generator: real YCB scans on tables, counters and floors, in every capture form.
 
-A tool for tests, benches and ``realsim example --ycb``; no conversion module imports it.
+A tool for tests, benches and ``realsim example``; no conversion module imports it. The bundled
+primitive tabletop (``realsim example DEST`` without ``--layout``) is :mod:`realsim.synth.tabletop`.
 
 Build a scene (world frame: right-handed, Z up, metres, floor top at z = 0)::
 
