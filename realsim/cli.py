@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 from pathlib import Path
 from typing import Any, NoReturn
@@ -194,6 +195,20 @@ def cmd_run(args: argparse.Namespace) -> int:
                    video_fps=args.video_fps)
 
 
+def cmd_params(args: argparse.Namespace) -> int:
+    from realsim.params_doc import stage_param_docs
+    from realsim.pipeline import STAGES, load_pipeline
+    from realsim.validation import unknown_names
+
+    stages = [name for name, _ in load_pipeline(args.pipeline).stages] if args.pipeline else list(STAGES)
+    if args.stage:
+        unknown_names([args.stage], STAGES, "stage")
+        stages = [args.stage]
+    for doc in stage_param_docs(stages):
+        print(f"{doc.name:48s} {doc.type:24s} {doc.default!r:14s} {doc.doc}".rstrip())
+    return 0
+
+
 def cmd_bench_sim(args: argparse.Namespace) -> int:
     from realsim.physics.throughput import bench_scene
 
@@ -246,6 +261,11 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("-q", "--quiet", action="store_true", help="print nothing on success")
     convert.add_argument("-v", "--verbose", action="store_true", help="log each stage as it starts")
     convert.set_defaults(func=cmd_convert)
+
+    params = sub.add_parser("params", help="list every stage parameter --set can change: name, type, default, meaning")
+    params.add_argument("stage", nargs="?", help="only this stage (e.g. planes)")
+    params.add_argument("--pipeline", help="only the stages of this pipeline (scan, objects, text, photo or a YAML path)")
+    params.set_defaults(func=cmd_params)
 
     example = sub.add_parser("example", help="render the bundled synthetic tabletop capture (with ground truth)")
     example.add_argument("dest", help="folder to write the capture into (new, empty, or an earlier example with --force)")
@@ -332,6 +352,9 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("realsim: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # the reader went away (realsim params | head): nothing more to say
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error when Python flushes at exit
+        return 0
     except Exception as exc:  # an internal error: one line unless --debug
         if args.debug:
             raise

@@ -73,3 +73,19 @@ def test_bad_override(tmp_path: Path) -> None:
 
 def test_usage_error_exit_code() -> None:
     assert run_cli("convert").returncode == 2
+
+
+def test_params_lists_every_stage_parameter_with_its_meaning() -> None:
+    out = run_cli("params", "planes")
+    assert out.returncode == 0
+    line = next(x for x in out.stdout.splitlines() if x.startswith("planes.distance_threshold "))
+    assert "float" in line and "0.01" in line and "RANSAC inlier distance" in line
+    nested = run_cli("params", "--pipeline", "objects").stdout
+    assert "objects.layout.clearance" in nested and "planes." not in nested  # nested groups flattened; only that pipeline
+    bad = run_cli("params", "plane")
+    assert bad.returncode == 2 and "did you mean 'planes'" in bad.stderr
+
+
+def test_output_cut_short_by_the_reader_is_no_error() -> None:
+    proc = subprocess.run(f"{sys.executable} {REPO / 'cli.py'} params | head -1", shell=True, capture_output=True, text=True, cwd=REPO)
+    assert proc.stderr == "" and proc.stdout.count("\n") == 1
