@@ -10,11 +10,17 @@ from realsim.completion.view import DepthView
 
 
 def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
-    """The observed points plus their mirror image behind the silhouette, when the camera evidently saw
-    only the front half of a body: its visible depth (along the horizontal view direction) is short
-    of its width and its top is not seen whole (a box whose top face is seen has its depth already)."""
-    camera = np.linalg.inv(view.world_to_optical)[:3, 3]
-    d = np.append(points[:, :2].mean(axis=0) - camera[:2], 0.0)
+    """The observed points plus the mirror image of their front part behind the occluding contour.
+
+    The contour (the leftmost and rightmost points of each height band of the sides, as the camera
+    sees them) is where the line of sight grazes the body; for a body symmetric about the vertical
+    plane across the line of sight it lies in that plane, so the front is mirrored about it. Points
+    behind the plane (a box top seen whole) stay and bound the result. None when the contour is not
+    seen (too few side points), the visible depth is already ``mirror_max_depth_share`` of the width,
+    or the top is seen whole and as wide as the body (a box's top face shows its depth; a bottle's
+    cap does not).
+    """
+    d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
     if np.linalg.norm(d) < 1e-6:
         return None
     d /= np.linalg.norm(d)
@@ -22,10 +28,29 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     s, w = points @ d, points @ lateral
     depth = float(np.percentile(s, 98) - np.percentile(s, 2))
     width = float(np.percentile(w, 98) - np.percentile(w, 2))
-    if depth >= params.mirror_max_depth_share * width or _top_face_seen(points[points[:, 2] >= top_z - 0.1 * (top_z - base_z)], d, depth):
+    top = points[points[:, 2] >= top_z - 0.1 * (top_z - base_z)]
+    if top_z - base_z < params.mirror_min_height_share * width:
+        return None  # a low body lying flat: the camera above sees its top, there is little behind it
+    if depth >= params.mirror_max_depth_share * width or (_top_face_seen(top, d, depth) and np.ptp(top @ lateral) >= 0.8 * width):
+        return None  # a top face as wide as the body (a prism's cross-section) shows its depth
+    height = top_z - base_z
+    side = (points[:, 2] < top_z - 0.25 * height) & (points[:, 2] > base_z + 0.05 * height)
+    edges = np.linspace(base_z + 0.05 * height, top_z - 0.25 * height, params.mirror_bands + 1)
+    contour = []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        band = side & (points[:, 2] >= lo) & (points[:, 2] < hi)
+        if band.sum() < 10:
+            continue
+        wb, sb = w[band], s[band]
+        left, right = np.percentile(wb, 3), np.percentile(wb, 97)
+        contour.extend([float(np.median(sb[wb <= left])), float(np.median(sb[wb >= right]))])
+    if len(contour) < 4:
         return None
-    plane = float(np.percentile(s, 98))
-    return np.vstack([points, points - 2.0 * (s - plane)[:, None] * d[None, :]])
+    plane = float(np.median(contour))
+    front = points[s < plane]
+    if len(front) < 10:
+        return None
+    return np.vstack([points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]])
 
 
 def _top_face_seen(top: np.ndarray, d: np.ndarray, depth: float, cell: float = 0.005) -> bool:

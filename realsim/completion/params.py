@@ -29,7 +29,9 @@ class CompletionParams:
     max_slabs: int = 8
     slab_max_fill: float = 0.8  # slabs are used when they fill less than this share of the single hull
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
-    mirror_max_depth_share: float = 0.6  # visible depth below this share of the width: the back half is missing
+    mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
+    mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored
+    mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30

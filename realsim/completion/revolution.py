@@ -35,8 +35,8 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
     the circle (seen from ``camera_xy``), else None."""
     side = points[points[:, 2] < top_z - 0.25 * (top_z - base_z)]
     xy = (side if len(side) >= params.min_points else points)[:, :2]
-    centre, radius, rms = fit_circle(xy)
-    if radius > params.cylinder_max_radius or rms > params.cylinder_max_rms * radius:
+    centre, radius, _ = fit_circle(xy)
+    if radius > params.cylinder_max_radius or _band_rms(points, centre, base_z, top_z, params.revolution_bands) > params.cylinder_max_rms * radius:
         return None
     if arc_coverage_deg(xy, centre) < params.cylinder_min_arc_deg:
         return None
@@ -48,6 +48,18 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
             if float(np.percentile(w, 99) - np.percentile(w, 1)) < params.silhouette_min_share * 2 * radius:
                 return None  # narrower across the line of sight than the circle: not round
     return centre, radius
+
+
+def _band_rms(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: float, bands: int) -> float:
+    """RMS distance of the points from the circle about ``centre`` through their own height band (a
+    solid of revolution: each band a circle about the common axis, whatever the profile)."""
+    r = np.linalg.norm(points[:, :2] - centre, axis=1)
+    band = np.clip(((points[:, 2] - base_z) / max(top_z - base_z, 1e-6) * bands).astype(np.int64), 0, bands - 1)
+    side = points[:, 2] < top_z - 0.25 * (top_z - base_z)  # the top holds a cap or a lid (points inside the circle)
+    if side.sum() < 10:
+        return float("inf")
+    medians = np.array([np.median(r[side & (band == b)]) if np.any(side & (band == b)) else 0.0 for b in range(bands)])
+    return float(np.sqrt(np.mean((r[side] - medians[band[side]]) ** 2)))
 
 
 def revolved_profile(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
