@@ -29,43 +29,82 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
+def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None
+            ) -> tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
+    column xy centres (M, 2), each voxel's column and centre, and which voxels are free."""
+    lo, hi = mesh.bounds
+    step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
+    xy, z_bot, z_top = _columns(mesh, step)
+    if len(xy) == 0:
+        return step, xy, np.zeros(0, np.int64), np.zeros((0, 3)), np.zeros(0, bool)
+    counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
+    col = np.repeat(np.arange(len(xy)), counts)
+    k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
+    cells = np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
+    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own)
+
+
+def _column_extremes(n_columns: int, col: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest kept voxel of each column (inf / -inf where none is kept)."""
+    z_lo, z_hi = np.full(n_columns, np.inf), np.full(n_columns, -np.inf)
+    np.minimum.at(z_lo, col, z)
+    np.maximum.at(z_hi, col, z)
+    return z_lo, z_hi
+
+
 def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
                      params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
     """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
     the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
     ``carve_min_fraction`` is free."""
-    lo, hi = mesh.bounds
-    step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
-    xy, z_bot, z_top = _columns(mesh, step)
-    if len(xy) == 0:
-        return mesh, 0.0
-    counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
-    col = np.repeat(np.arange(len(xy)), counts)
-    k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
-    cells = np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
-    free = view.seen_through(cells, params.carve_tolerance, own)
-    fraction = float(free.mean())
+    step, xy, col, cells, free = _voxels(mesh, view, params, own)
+    fraction = float(free.mean()) if len(free) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return mesh, fraction
-    kept_col, kept_z = col[~free], cells[~free, 2]
-    extremes = []  # the lowest and highest kept voxel of each column bound the hull
-    for pick in (np.minimum, np.maximum):
-        z = np.full(len(xy), np.nan)
-        if pick is np.minimum:
-            z[:] = np.inf
-            np.minimum.at(z, kept_col, kept_z)
-        else:
-            z[:] = -np.inf
-            np.maximum.at(z, kept_col, kept_z)
-        good = np.isfinite(z)
-        extremes.append(np.column_stack([xy[good], z[good]]))
-    kept = np.vstack([*extremes, observed])
+    z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
+    good = np.isfinite(z_lo)  # the lowest and highest kept voxel of each column bound the hull
+    kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
     kept[kept[:, 2] < base_z + step, 2] = base_z
     try:
         carved = trimesh.convex.convex_hull(kept)
     except QhullError:
         return mesh, fraction
     return carved, fraction
+
+
+def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
+                   params: CompletionParams, own: int | None = None) -> tuple[list[trimesh.Trimesh] | None, float]:
+    """What is left of the convex ``mesh`` after carving the free space, as convex pieces: the kept
+    voxel columns grouped in square tiles of the footprint (at least ``carve_tile`` wide, at most
+    ``max_pieces`` of them), each tile the hull of its columns' voxels and the ``observed`` points
+    over it. A hull of everything kept would fill the free space again wherever the body is not
+    convex (between a pitcher and its handle). None (and the share carved) when less than
+    ``carve_min_fraction`` is free."""
+    step, xy, col, cells, free = _voxels(mesh, view, params, own)
+    fraction = float(free.mean()) if len(free) else 0.0
+    if fraction < params.carve_min_fraction or fraction > 0.9:
+        return None, fraction
+    z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
+    good = np.isfinite(z_lo)
+    xy, z_lo, z_hi = xy[good], z_lo[good], z_hi[good]  # voxel centres: the free-space tolerance is already outside them
+    z_lo[z_lo < base_z + step] = base_z
+    tile = max(params.carve_tile, float(np.sqrt(len(xy) * step * step / params.max_pieces)))
+    origin = xy.min(axis=0)
+    key = np.floor((xy - origin) / tile).astype(np.int64)
+    obs_key = np.floor((observed[:, :2] - origin) / tile).astype(np.int64) if len(observed) else np.zeros((0, 2), np.int64)
+    pieces = []
+    for k in np.unique(key, axis=0):
+        here = np.all(key == k, axis=1)
+        pts = np.vstack([np.column_stack([xy[here], z_lo[here]]), np.column_stack([xy[here], z_hi[here]]),
+                         observed[np.all(obs_key == k, axis=1)]])
+        try:
+            piece = trimesh.convex.convex_hull(pts)
+        except QhullError:
+            continue
+        if piece.volume > 1e-9:
+            pieces.append(piece)
+    return (pieces or None), fraction
 
 
 def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, params: CompletionParams,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.carving import carve_free_space, carve_pieces
+from realsim.completion.carving import carve_free_space, carve_pieces, carve_to_tiles
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.mirror import mirror_hidden_half
@@ -65,10 +65,22 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
             kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
-        elif view is not None and parts is None:
-            mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
-            if carved >= params.carve_min_fraction:
-                kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
+        elif view is not None and (parts is None or revolved is None):
+            seen = pts[pts[:, 2] <= top_z]
+            tiles, carved = carve_to_tiles(mesh, view, base_z, seen, params, own=obj.id)
+            if tiles is not None and carved >= params.tile_min_fraction:  # much seen through: the body is not convex
+                parts, visual = tiles, None
+                mesh = trimesh.convex.convex_hull(np.vstack([p.vertices for p in tiles]))
+                kind = f"{kind.split(' in ')[0]} carved by the camera's free space ({100 * carved:.0f} % of its volume) in {len(tiles)} tiles"
+            elif parts is None:
+                mesh, carved = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)
+                if carved >= params.carve_min_fraction:
+                    kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
+            else:
+                parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
+                if carved >= params.carve_min_fraction:
+                    mesh = trimesh.convex.convex_hull(np.vstack([p.vertices for p in parts]))
+                    kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         elif view is not None and parts is not None:
             parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
             if carved >= params.carve_min_fraction:
