@@ -197,7 +197,8 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 def cmd_params(args: argparse.Namespace) -> int:
     from realsim.params_doc import stage_param_docs
-    from realsim.pipeline import STAGES, load_pipeline
+    from realsim.pipeline import load_pipeline
+    from realsim.stages import STAGES
     from realsim.validation import unknown_names
 
     stages = [name for name, _ in load_pipeline(args.pipeline).stages] if args.pipeline else list(STAGES)

@@ -56,7 +56,7 @@ def param_docs(cls: type, prefix: str) -> list[ParamDoc]:
 
 def stage_param_docs(stages: list[str] | None = None) -> list[ParamDoc]:
     """The parameters of the named stages (all registered stages by default), in pipeline order."""
-    from realsim.pipeline import STAGES
+    from realsim.stages import STAGES
 
     names = stages or list(STAGES)
     return [doc for name in names for doc in param_docs(STAGES[name].params, name)]

@@ -7,7 +7,8 @@ parameter overrides::
       - load
       - planes: {distance_threshold: 0.008}
 
-Every stage is a function ``(Scene, Params) -> Scene`` registered in :data:`STAGES`.
+Every stage is a function ``(Scene, Params) -> Scene`` with its parameter dataclass, one thin
+adapter module each in :mod:`realsim.stages` (:data:`STAGES`).
 """
 
 from __future__ import annotations
@@ -15,92 +16,22 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import yaml
 from rich.console import Console
 
 from realsim import rerun
-from realsim.capture import LoadParams, is_lone_object, load_capture
+from realsim.capture import is_lone_object
 from realsim.capture_config import read_capture_config
-from realsim.completion import CompletionParams, complete_objects
-from realsim.compose import ComposeParams, compose_scene
 from realsim.destination import check_destination
 from realsim.errors import InputError
-from realsim.objects_stage import ObjectsParams, prepare_scene_objects
-from realsim.output import write_scene
-from realsim.planes import PlaneParams, detect_planes
 from realsim.resources import data_dir
 from realsim.rgbd import is_rgbd_sequence
-from realsim.robot_stage import RobotStageParams, robot_scene
 from realsim.scene import Scene
-from realsim.segment_stage import SegmentParams, segment_scene
-from realsim.settle import SettleParams, settle_scene
-from realsim.text.stage import TextParams, text_scene
+from realsim.stages import STAGES, Stage, WriteParams  # noqa: F401 (Stage, WriteParams: re-exported)
 from realsim.understanding.photo import PHOTO_SUFFIXES, find_photo
-from realsim.understanding.photo_scene import BackdropParams, PhotoParams, photo_backdrop, photo_scene
 from realsim.validation import build_params, check_seed, unknown_names
-
-
-@dataclass(frozen=True)
-class Stage:
-    """A named step: its function, its parameter dataclass, and the Scene fields it needs."""
-
-    run: Callable[[Scene, Any], Scene]
-    params: type
-    needs: tuple[str, ...] = ()  # Scene fields an earlier stage must have filled
-
-    def check(self, scene: Scene, name: str, pipeline: str) -> None:
-        """InputError when an earlier stage has not filled what this one needs."""
-        for attr in self.needs:
-            value = getattr(scene, attr)
-            if value is None or (hasattr(value, "__len__") and len(value) == 0):
-                raise InputError(f"pipeline {pipeline}: stage {name!r} needs the scene's {attr}, which no earlier stage "
-                                 f"produced; {NEEDS_HINT.get(attr, 'check the order of the stages')}")
-
-
-NEEDS_HINT = {
-    "points": "it runs on a scanned point cloud or mesh (use the scan pipeline with a scan capture)",
-    "planes": "list 'planes' (scans) or 'objects'/'text' (declared supports) before it",
-    "spec": "list 'compose' before it",
-}
-
-
-@dataclass(frozen=True)
-class WriteParams:
-    """Where the write stage puts the scene folder (set by :func:`convert`)."""
-
-    dest: Path | None = None
-    force: bool = False  # replace earlier realsim output at ``dest``
-
-
-def load_stage(scene: Scene, params: LoadParams) -> Scene:
-    """Read the capture the unread record names (``scene.capture.source``; None: a description)."""
-    return load_capture(scene.capture.source, params, seed=scene.seed)
-
-
-def write_stage(scene: Scene, params: WriteParams) -> Scene:
-    """Write the scene folder atomically (:func:`realsim.output.write_scene`)."""
-    if params.dest is None:
-        raise InputError("the write stage needs a destination: use realsim.convert(source, dest) or --output")
-    write_scene(scene, params.dest, force=params.force)
-    return scene
-
-
-STAGES: dict[str, Stage] = {
-    "load": Stage(load_stage, LoadParams),
-    "planes": Stage(detect_planes, PlaneParams, needs=("points",)),
-    "segment": Stage(segment_scene, SegmentParams, needs=("points", "planes")),
-    "complete": Stage(complete_objects, CompletionParams, needs=("planes",)),
-    "text": Stage(text_scene, TextParams),
-    "photo": Stage(photo_scene, PhotoParams),
-    "photo_backdrop": Stage(photo_backdrop, BackdropParams, needs=("spec",)),
-    "objects": Stage(prepare_scene_objects, ObjectsParams),
-    "compose": Stage(compose_scene, ComposeParams, needs=("planes",)),
-    "robot": Stage(robot_scene, RobotStageParams, needs=("spec",)),
-    "settle": Stage(settle_scene, SettleParams, needs=("spec",)),
-    "write": Stage(write_stage, WriteParams, needs=("spec",)),
-}
 
 
 @dataclass
@@ -223,7 +154,7 @@ def run_pipeline(
         if name == "write" and not write:
             break
         stage = STAGES[name]
-        stage.check(scene, name, spec.name)
+        stage.check(scene, spec.name)
         started = time.perf_counter()
         if console is not None:
             console.log(f"[bold]{name}[/bold]")

@@ -1,0 +1,6 @@
+"""``segment``: the objects standing on the supports, as point clusters (:mod:`realsim.segment`)."""
+
+from realsim.segment_stage import SegmentParams, segment_scene
+from realsim.stages.base import Stage
+
+STAGE = Stage("segment", segment_scene, SegmentParams, needs=("points", "planes"))
