@@ -272,6 +272,9 @@ def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImag
     return colours
 
 
+UNCOLOURED = 0.6  # grey of a capture without colours
+
+
 def _add_backdrop(spec: mujoco.MjSpec, backdrop: Backdrop, params: ComposeParams, assets: dict[str, bytes]) -> None:
     """The backdrop as one textured visual-only mesh in the world body."""
     material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
@@ -282,8 +285,9 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
     """An unorganized capture's look: each observed support's top as seen from above (and its
     median colour for the box under it) and the backdrop of what is neither object nor support;
     returns the supports' colours."""
-    assert scene.points is not None and scene.colors is not None and scene.labels is not None
-    points, colors = np.asarray(scene.points, float), np.asarray(scene.colors, float)
+    assert scene.points is not None and scene.labels is not None
+    points = np.asarray(scene.points, float)
+    colors = np.asarray(scene.colors, float) if scene.colors is not None else np.full(points.shape, UNCOLOURED)  # geometry only: grey
     background = scene.labels <= 0
     colours: dict[int, list[float]] = {}
     for plane in [p for p in scene.planes if p.observed]:
@@ -319,9 +323,10 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
         for obj in scene.objects:
             texture_object(obj, image, params.appearance)
         slabs = _add_captured_surfaces(spec, scene, image, params, assets)
-    elif params.appearance.enabled and scene.points is not None and scene.colors is not None and scene.labels is not None:
-        for obj in scene.objects:  # an unorganized capture: no photo to project, colours from the points
-            colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
+    elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
+        if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
+            for obj in scene.objects:
+                colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
         slabs = _add_cloud_surfaces(spec, scene, params, assets)
     add_arena(spec, scene, params.arena, slabs)
     articulations = scene.articulations  # child name -> joint (realsim.text)
