@@ -6,6 +6,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
+from realsim.completion.hull import fast_hull
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
@@ -76,30 +77,44 @@ def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, obse
 def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
                    params: CompletionParams, own: int | None = None) -> tuple[list[trimesh.Trimesh] | None, float]:
     """What is left of the convex ``mesh`` after carving the free space, as convex pieces: the kept
-    voxel columns grouped in square tiles of the footprint (at least ``carve_tile`` wide, at most
-    ``max_pieces`` of them), each tile the hull of its columns' voxels and the ``observed`` points
-    over it. A hull of everything kept would fill the free space again wherever the body is not
-    convex (between a pitcher and its handle). None (and the share carved) when less than
-    ``carve_min_fraction`` is free."""
+    voxels grouped in cubic tiles (at least ``carve_tile`` wide, about ``max_pieces`` of them; each
+    tile takes one more voxel layer of its neighbours so the pieces meet), each tile the hull of its
+    voxel centres and the ``observed`` points in it. A hull of everything kept would fill the free
+    space again wherever the body is not convex (under a pitcher's handle). None (and the share
+    carved) when less than ``carve_min_fraction`` is free."""
     step, xy, col, cells, free = _voxels(mesh, view, params, own)
     fraction = float(free.mean()) if len(free) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return None, fraction
-    z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
-    good = np.isfinite(z_lo)
-    xy, z_lo, z_hi = xy[good], z_lo[good], z_hi[good]  # voxel centres: the free-space tolerance is already outside them
-    z_lo[z_lo < base_z + step] = base_z
-    tile = max(params.carve_tile, float(np.sqrt(len(xy) * step * step / params.max_pieces)))
-    origin = xy.min(axis=0)
-    key = np.floor((xy - origin) / tile).astype(np.int64)
-    obs_key = np.floor((observed[:, :2] - origin) / tile).astype(np.int64) if len(observed) else np.zeros((0, 2), np.int64)
+    kept, kept_col = cells[~free].copy(), col[~free]
+    kept[kept[:, 2] < base_z + step, 2] = base_z
+    tile = max(params.carve_tile, float(np.cbrt(np.prod(np.ptp(kept, axis=0) + step) / params.max_pieces)))
+    origin = kept.min(axis=0) - step
+    shifts = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], float) * step
+    grid = np.vstack([np.floor((kept - shift - origin) / tile) for shift in shifts]).astype(np.int64)
+    dims = grid.max(axis=0) + 1
+    tiles = np.ravel_multi_index(grid.T, dims)
+    index = np.tile(np.arange(len(kept)), len(shifts))
+    # a tile's hull needs only the lowest and highest of its voxels in each column
+    groups, inverse = np.unique(tiles * len(xy) + kept_col[index], return_inverse=True)
+    z_lo, z_hi = np.full(len(groups), np.inf), np.full(len(groups), -np.inf)
+    np.minimum.at(z_lo, inverse, kept[index, 2])
+    np.maximum.at(z_hi, inverse, kept[index, 2])
+    group_tile, group_xy = groups // len(xy), xy[groups % len(xy)]
+    starts = np.flatnonzero(np.r_[True, group_tile[1:] != group_tile[:-1]])  # groups are sorted by tile
+    obs_grid = np.floor((observed - origin) / tile).astype(np.int64) if len(observed) else np.zeros((0, 3), np.int64)
+    obs_inside = np.all((obs_grid >= 0) & (obs_grid < dims), axis=1)
+    obs_tiles = np.full(len(observed), -1, np.int64)
+    obs_tiles[obs_inside] = np.ravel_multi_index(obs_grid[obs_inside].T, dims)
     pieces = []
-    for k in np.unique(key, axis=0):
-        here = np.all(key == k, axis=1)
-        pts = np.vstack([np.column_stack([xy[here], z_lo[here]]), np.column_stack([xy[here], z_hi[here]]),
-                         observed[np.all(obs_key == k, axis=1)]])
+    for start, end in zip(starts, np.r_[starts[1:], len(groups)]):
+        g = slice(start, end)
+        pts = np.vstack([np.column_stack([group_xy[g], z_lo[g]]), np.column_stack([group_xy[g], z_hi[g]]),
+                         observed[obs_tiles == group_tile[start]]])
+        if len(pts) < 4:
+            continue
         try:
-            piece = trimesh.convex.convex_hull(pts)
+            piece = fast_hull(pts)
         except QhullError:
             continue
         if piece.volume > 1e-9:

@@ -11,6 +11,8 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
+from realsim.completion.hull import fast_hull
+
 
 def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trimesh.Trimesh, np.ndarray]:
     """The observed points' convex hull extruded down to ``base_z`` (world frame)."""
@@ -21,7 +23,7 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trim
     top[:, 2] = np.maximum(top[:, 2], base_z + 1e-3)
     cloud = np.vstack([top, base])
     try:
-        mesh = trimesh.convex.convex_hull(cloud)
+        mesh = fast_hull(cloud)
     except QhullError:
         lo, hi = cloud.min(axis=0), cloud.max(axis=0)
         hi = np.maximum(hi, lo + 0.005)

@@ -24,8 +24,8 @@ class CompletionParams:
     carve: bool = True  # carve completed shapes by the camera's free space (camera views only)
     carve_tolerance: float = 0.005  # a voxel this much nearer than the captured depth at its pixel is free space (m)
     carve_voxels: int = 40  # voxels along an object's largest extent (clamped to 2-5 mm)
-    carve_tile: float = 0.02  # carved shapes are kept as convex tiles of the footprint at least this wide (m)
-    max_pieces: int = 16  # at most this many tiles
+    carve_tile: float = 0.02  # much carved shapes are kept as convex cubic tiles at least this wide (m)
+    max_pieces: int = 24  # about this many tiles (the bounding box cut in this many cubes)
     tile_min_fraction: float = 0.1  # a shape this much seen through is kept as tiles (a hull would refill the free space)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
     slab: float = 0.025  # a body that is not convex is extruded in slabs about this long (m)

@@ -8,6 +8,7 @@ import trimesh
 from realsim.completion.carving import carve_free_space, carve_pieces, carve_to_tiles
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_hull, complete_slabs
+from realsim.completion.hull import fast_hull
 from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.params import CompletionParams
@@ -52,40 +53,38 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         else:
             mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if view is not None else None
             kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)" if mirrored is not None else "hull"
-            mesh, base_centre = complete_hull(pts if mirrored is None else mirrored, base_z, top_z)
-            parts = complete_slabs(pts if mirrored is None else mirrored, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill)
-            if parts is not None:
-                kind = f"{kind} in {len(parts)} slabs (not convex)"
+            body = pts if mirrored is None else mirrored
+            mesh, base_centre = complete_hull(body, base_z, top_z)
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:
             container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers)
+        carved = 0.0
         if container is not None:
             mesh, parts, visual = container.outer, container.pieces, container.visual
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
             kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
-        elif view is not None and (parts is None or revolved is None):
+        elif revolved is None:
             seen = pts[pts[:, 2] <= top_z]
-            tiles, carved = carve_to_tiles(mesh, view, base_z, seen, params, own=obj.id)
+            tiles, carved = carve_to_tiles(mesh, view, base_z, seen, params, own=obj.id) if view is not None else (None, 0.0)
             if tiles is not None and carved >= params.tile_min_fraction:  # much seen through: the body is not convex
-                parts, visual = tiles, None
-                mesh = trimesh.convex.convex_hull(np.vstack([p.vertices for p in tiles]))
-                kind = f"{kind.split(' in ')[0]} carved by the camera's free space ({100 * carved:.0f} % of its volume) in {len(tiles)} tiles"
-            elif parts is None:
+                parts = tiles
+                kind = f"{kind}, {len(tiles)} convex tiles of what the camera's free space leaves"
+            elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill)) is not None:
+                kind = f"{kind} in {len(parts)} slabs (not convex)"
+                if view is not None:
+                    parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
+            elif view is not None:
                 mesh, carved = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)
-                if carved >= params.carve_min_fraction:
-                    kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
-            else:
-                parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
-                if carved >= params.carve_min_fraction:
-                    mesh = trimesh.convex.convex_hull(np.vstack([p.vertices for p in parts]))
-                    kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
-        elif view is not None and parts is not None:
+        elif view is not None:
             parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
             if carved >= params.carve_min_fraction:
-                mesh, visual = trimesh.convex.convex_hull(np.vstack([p.vertices for p in parts])), None
-                kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
+                visual = None
+        if carved >= params.carve_min_fraction and container is None:
+            kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
+        if parts is not None and container is None:
+            mesh = fast_hull(np.vstack([p.vertices for p in parts]))
         done[obj.id] = mesh
         observed[obj.id] = pts
         if parts is not None:
