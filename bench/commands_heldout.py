@@ -1,0 +1,105 @@
+"""A held-out set of command sentences for ``bench_commands.py --set heldout``.
+
+Written after the rule planner and its 153-sentence suite, without reading the planner's
+grammar, in the voices of different people (polite, terse, chatty, verbless, "X goes in Y"),
+over the same scenes; each sentence carries its own expected goal in the suite's goal words.
+The figure *before* any planner change was recorded with these sentences as first written.
+"""
+
+from __future__ import annotations
+
+# (scene, sentence, expected goal)
+HELDOUT: list[tuple[str, str, str]] = [
+    # --- kitchen: cracker box, soup can, mug, bowl, banana
+    ("kitchen", "could you grab the can and drop it into the bowl", "in soup_can bowl"),
+    ("kitchen", "the banana goes in the bowl", "in banana bowl"),
+    ("kitchen", "mug in the bowl please", "in mug bowl"),
+    ("kitchen", "I'd like the soup can next to the cracker box", "next soup_can cracker_box"),
+    ("kitchen", "pop the banana on the left side of the bowl", "left banana bowl"),
+    ("kitchen", "hey, can you pick up that banana and hold it", "lift banana"),
+    ("kitchen", "put back the can", "at soup_can"),
+    ("kitchen", "get the mug and then set it down right beside the cracker box", "next mug cracker_box"),
+    ("kitchen", "move the cup so it sits in front of the bowl", "front mug bowl"),
+    ("kitchen", "scoot the cracker box over to the right a few centimeters", "moved cracker_box right 0.05"),
+    ("kitchen", "place the tomato soup in the bowl and the banana next to the mug", "in soup_can bowl; next banana mug"),
+    ("kitchen", "first lift the mug, then put it back where it was", "at mug"),
+    ("kitchen", "grab the yellow thing", "lift banana"),
+    ("kitchen", "put the biggest object next to the bowl", "next cracker_box bowl"),
+    ("kitchen", "the cup should go behind the bowl", "behind mug bowl"),
+    ("kitchen", "pick up the plate", "refuse"),
+    ("kitchen", "put the thing in the bowl", "refuse"),
+    ("kitchen", "take the banana, put it in the bowl, and go back home", "in banana bowl; home"),
+    ("kitchen", "shove the soup can toward the robot by 5 cm", "moved soup_can back 0.05"),
+    # --- pantry: mustard bottle, potted meat can, foam brick, rubik's cube, marker
+    ("pantry", "grab the yellow bottle", "lift mustard_bottle"),
+    ("pantry", "put the spam next to the cube", "next potted_meat_can rubiks_cube"),
+    ("pantry", "could you place the brick onto the meat can", "on foam_brick potted_meat_can"),
+    ("pantry", "move the marker to the right of the mustard bottle", "right marker mustard_bottle"),
+    ("pantry", "the rubik's cube goes behind the mustard", "behind rubiks_cube mustard_bottle"),
+    ("pantry", "pick up the shortest thing", "lift marker"),
+    ("pantry", "put the foam brick and the cube next to the can", "next foam_brick potted_meat_can; next rubiks_cube potted_meat_can"),
+    ("pantry", "slide the brick towards you 6 cm", "moved foam_brick back 0.06"),
+    ("pantry", "put the bowl on the cube", "refuse"),
+    ("pantry", "hand me the marker", "lift marker"),
+    # --- mug and bowl
+    ("mugbowl", "stick the mug inside the bowl", "in mug bowl"),
+    ("mugbowl", "mug goes to the left of the bowl", "left mug bowl"),
+    ("mugbowl", "lift the mug, then put it back", "at mug"),
+    ("mugbowl", "pick up the mug and set it down to the right of the bowl, then head home", "right mug bowl; home"),
+    ("mugbowl", "pick up the mug, put it down, then pick it up again", "lift mug"),
+    ("mugbowl", "move the bowl away from you 5 cm", "moved bowl forward 0.05"),
+    ("mugbowl", "put the bowl in front of the mug", "front bowl mug"),
+    ("mugbowl", "could you please put the smaller one in the bigger one", "in mug bowl"),
+    # --- fruit and cans: banana, strawberry, soup can, potted meat can, bowl, rubik's cube
+    ("fruitcans", "put every fruit in the bowl", "in banana bowl; in strawberry bowl"),
+    ("fruitcans", "put both cans in the bowl", "in soup_can bowl; in potted_meat_can bowl"),
+    ("fruitcans", "the strawberry goes on the cube", "on strawberry rubiks_cube"),
+    ("fruitcans", "take the shorter can and put it next to the bowl", "next potted_meat_can bowl"),
+    ("fruitcans", "grab the can that's on the right", "lift can@right"),
+    ("fruitcans", "put the rightmost can next to the banana", "next can@right banana"),
+    ("fruitcans", "drop the small red fruit into the bowl", "in strawberry bowl"),
+    ("fruitcans", "get the fruit", "refuse"),
+    ("fruitcans", "put the cube in the bowl and then the banana too", "in rubiks_cube bowl; in banana bowl"),
+    ("fruitcans", "put away the strawberry in the bowl", "in strawberry bowl"),
+    # --- text scene: mug, bowl, two soda cans, cereal box
+    ("textkitchen", "put the second can from the right in the bowl", "in soda_can@left bowl"),
+    ("textkitchen", "move the can that's on the left next to the mug", "next soda_can@left mug"),
+    ("textkitchen", "grab the soda", "refuse"),
+    ("textkitchen", "pick up the left can, put it down, then grab the other one", "at soda_can@left; lift soda_can@right"),
+    ("textkitchen", "put the box behind the bowl", "behind cereal_box bowl"),
+    ("textkitchen", "the mug goes right between the bowl and the box", "between mug bowl cereal_box"),
+    ("textkitchen", "pick up the cup and put it down next to the right soda can", "next mug soda_can@right"),
+    ("textkitchen", "put both soda cans next to the cereal box", "next soda_can@left cereal_box; next soda_can@right cereal_box"),
+    # --- text scene: red, blue, green cubes and a plate
+    ("textblocks", "the red cube goes on the plate", "on cube@red plate"),
+    ("textblocks", "put the second block from the right on the plate", "on cube@blue plate"),
+    ("textblocks", "stack the green one on top of the blue one", "on cube@green cube@blue"),
+    ("textblocks", "put the rightmost block on the plate", "on cube@right plate"),
+    ("textblocks", "put every cube except the red one on the plate", "on cube@blue plate; on cube@green plate"),
+    ("textblocks", "grab the block in the middle", "lift cube@blue"),
+    ("textblocks", "move the green cube next to the plate", "next cube@green plate"),
+    ("textblocks", "put the red and green blocks on the plate", "on cube@red plate; on cube@green plate"),
+    ("textblocks", "put the purple cube on the plate", "refuse"),
+    ("textblocks", "push the blue block away from you a bit", "moved cube@blue forward 0.05"),
+    ("textblocks", "put the block on the plate", "refuse"),
+    ("textblocks", "take the blue cube and put it on the plate, then put the red one on it", "on cube@blue plate; on cube@red cube@blue"),
+    # --- more voices over the YCB and text scenes
+    ("kitchen", "okay so I need the banana moved over next to the soup can", "next banana soup_can"),
+    ("kitchen", "can the mug go in the bowl?", "in mug bowl"),
+    ("mugbowl", "put it in the bowl", "refuse"),
+    ("pantry", "could you push the marker forward by ten centimeters", "moved marker forward 0.10"),
+    ("textblocks", "put the cubes on the plate one by one", "on cube@red plate; on cube@blue plate; on cube@green plate"),
+    ("textkitchen", "I want the cereal box moved 5 cm to the left", "moved cereal_box left 0.05"),
+    # --- converted scans (objects named by colour and shape from the capture)
+    ("scan45", "pick up the red box", "lift red_cracker_box"),
+    ("scan45", "push the white box 5 cm to the left", "moved white_box left 0.05"),
+    ("scan45", "grab the red one", "refuse"),
+    ("scan45", "put the red object next to the white box", "next red_object white_box"),
+    ("scan55", "could you pick up the blue box", "lift blue_box"),
+    ("scan55", "move the orange thing a little to the right", "moved orange_object right 0.05"),
+    ("scan55", "put the green object next to the red box", "next green_object red_box"),
+    ("scan55", "grab the box", "refuse"),
+    ("scan55", "pick up the purple thing", "refuse"),
+    ("scan55", "push the grey one forward 4 cm", "moved grey_object forward 0.04"),
+    ("scan55", "the blue box goes next to the grey thing", "next blue_box grey_object"),
+]
