@@ -6,7 +6,7 @@ import numpy as np
 import trimesh
 
 from realsim.completion import CompletionParams, DepthView
-from realsim.completion.carving import carve_pieces
+from realsim.completion.carving import carve_pieces, carve_to_tiles
 from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.revolution import complete_revolved
 from realsim.intrinsics import Intrinsics
@@ -118,3 +118,23 @@ def test_pieces_grown_into_seen_free_space_are_carved_back() -> None:
     assert np.isclose(carved[0].bounds[0][0], -0.05, atol=0.003) and carved[1].bounds[1][0] < 0.06  # the seen floor is empty again
     pts = np.vstack([c.sample(5000, seed=0) for c in carved])
     assert view.seen_through(pts, 0.006).mean() < 0.02
+
+
+def test_a_body_with_a_gap_is_kept_as_tiles_that_leave_the_gap_empty() -> None:
+    # two 4 x 8 x 10 cm blocks 4 cm apart (a handle beside a body), 0.9 m below a camera looking down:
+    # their hull bridges the gap, where the camera saw the floor
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
+    x, y = (u - INTR.cx) / INTR.fx * 0.9, -(v - INTR.cy) / INTR.fy * 0.9
+    on_body = (np.abs(np.abs(x) - 0.04) <= 0.02) & (np.abs(y) <= 0.04)
+    view = DepthView(INTR, np.diag([1.0, -1.0, -1.0, 1.0]), 1.0, np.where(on_body, 0.9, 1.0), np.where(on_body, 1, 0))
+    hull = trimesh.creation.box(bounds=[[-0.06, -0.04, -1.0], [0.06, 0.04, -0.9]])
+    top = np.column_stack([x[on_body], y[on_body], np.full(on_body.sum(), -0.9)])
+    pieces, share = carve_to_tiles(hull, view, -1.0, top, CompletionParams(), own=1)
+    assert pieces is not None and 0.25 < share < 0.45
+    gap = np.column_stack([np.zeros(9), np.linspace(-0.03, 0.03, 9), np.full(9, -0.95)])
+    assert not _inside(pieces, gap).any()
+
+    def truth(p: np.ndarray) -> np.ndarray:
+        return (np.abs(np.abs(p[:, 0]) - 0.04) <= 0.02) & (np.abs(p[:, 1]) <= 0.04) & (p[:, 2] >= -1.0) & (p[:, 2] <= -0.9)
+
+    assert _iou(pieces, truth, np.array([-0.07, -0.05, -1.0]), np.array([0.07, 0.05, -0.9])) >= 0.8
