@@ -39,9 +39,9 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from realsim.errors import InputError, RealsimError  # noqa: E402
 from commands_heldout import HELDOUT  # noqa: E402
 
+from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
 
 DATA = REPO.parent / "shared" / "data"

@@ -21,6 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import relations
+from realsim.planner.attributes import colors_of, extreme_by_size, nth, pts, relation_holds
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import (
     BIG,
@@ -29,7 +30,6 @@ from realsim.planner.vocab import (
     KINDS,
     NUMBERS,
     ORDINALS,
-    SIZE_AXIS,
     SMALL,
     SYNONYMS,
     is_plural,
@@ -235,7 +235,7 @@ class Resolver:
                     except InputError:
                         continue
                     text = m.group(1)
-                    cands = [o for o in cands if any(o.name != r.name and _relation_holds(rel, o, r, self) for r in refs)]
+                    cands = [o for o in cands if any(o.name != r.name and relation_holds(rel, o, r, self.forward, self.left) for r in refs)]
                     break
         # positional locators: "on the left", "in the back", "closest to you", "in the middle"
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
@@ -294,23 +294,25 @@ class Resolver:
         if want:
             scored = [(o, s + (0.3 if s > 0 and want in o.affordances else 0.0)) for o, s in scored]
         scored = [(o, s) for o, s in scored if s > 0]
+        if colors:  # a colour decides before the noun's score does ("the blue one" is not the plate)
+            if not any(colors_of(o) for o, _ in scored):
+                raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o, _ in scored)}; "
+                                 "name it another way")
+            named = max((s for _, s in scored), default=0.0) >= 1.5  # the noun names some object outright
+            scored = [(o, s) for o, s in scored if set(colors) <= colors_of(o) and (s >= 1.5 or not named)]
+            if not scored:
+                raise InputError(f"no {' '.join(colors)} object matches {phrase.strip()!r}; {self.listing()}")
         if not scored:
             raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
         best = max(s for _, s in scored)
         floor = min(best, 1.7) - 1e-9 if (plural or order or ordinal is not None or sizes or colors) else best - 1e-9
         found = [o for o, s in scored if s >= floor]
-        # colour
-        if colors:
-            known = [o for o in found if self.color_of(o) is not None]
-            if not known:
-                raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o in found)}; "
-                                 "name it another way")
-            found = [o for o in found if self.color_of(o) in colors]
-            if not found:
-                raise InputError(f"no {' '.join(colors)} object matches {phrase.strip()!r}; {self.listing()}")
+        exact = [o for o in found if norm(o.label) == " ".join(words)]
+        if len(found) > 1 and not plural and len(exact) == 1 and order is None and not sizes:
+            found = exact  # the scene's own name for it, word for word ("the red object" beside a red box)
         # size and position
         if sizes and len(found) > 1:
-            found = [_extreme_by_size(found, sizes[-1])]
+            found = [extreme_by_size(found, sizes[-1])]
         if order is not None and len(found) > 1:
             found = self._ordered(found, order, ordinal, phrase)
         elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:
@@ -330,7 +332,7 @@ class Resolver:
         if kind == "near":
             ref = arg
             assert isinstance(ref, ObjectInfo)
-            return [min(found, key=lambda o: relations.xy_gap(_pts(o), _pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
+            return [min(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
         if kind == "middle":
             ys = sorted(found, key=lambda o: self.robot_xy(o)[1])
             if len(ys) % 2 == 0:
@@ -350,7 +352,7 @@ class Resolver:
         ranked = sorted(objs, key=lambda o: -self.robot_xy(o)[1])
         out = []
         for i, o in enumerate(ranked):
-            where = "leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{_nth(i + 1)} from the left"
+            where = "leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{nth(i + 1)} from the left"
             out.append(f"{o.name} ({' '.join(w for w in (self.color_of(o), o.label) if w)}, {where})")
         return out
 
@@ -367,7 +369,7 @@ def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> l
         if len(same) > 1:
             ranked = sorted(same, key=lambda x: -res.robot_xy(x)[1])
             i = ranked.index(o)
-            words.append("leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{_nth(i + 1)} from the left")
+            words.append("leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{nth(i + 1)} from the left")
             words.append(f"{'largest' if o is max(same, key=lambda x: float(np.prod(x.size))) else 'smallest' if o is min(same, key=lambda x: float(np.prod(x.size))) else 'middle-sized'}"
                          f" of {len(same)} {o.label}s")
         f, l = res.robot_xy(o)
@@ -387,38 +389,3 @@ def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> l
             line += f" [{', '.join(o.affordances)}]"
         lines.append(line)
     return lines
-
-
-def _nth(k: int) -> str:
-    return {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth"}.get(k, f"{k}th")
-
-
-def _pts(o: ObjectInfo) -> np.ndarray:
-    return relations.box_points(o.position, o.size)
-
-
-def _volume(o: ObjectInfo, word: str) -> float:
-    axis = SIZE_AXIS.get(word)
-    if axis == 2:
-        return float(o.size[2])
-    if axis == -1:
-        return float(max(o.size))
-    return float(np.prod(o.size))
-
-
-def _extreme_by_size(objs: list[ObjectInfo], word: str) -> ObjectInfo:
-    big = word in BIG
-    ranked = sorted(objs, key=lambda o: _volume(o, word), reverse=big)
-    return ranked[0]
-
-
-def _relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, resolver: Resolver) -> bool:
-    a, b = _pts(o), _pts(ref)
-    if rel == "next":
-        return relations.xy_gap(a, b) <= 0.12
-    if rel == "on":
-        return relations.on(a, b, tolerance=0.03).ok
-    if rel == "in":
-        return relations.inside(a, b).ok or (relations.xy_gap(a, b) == 0.0 and a[:, 2].min() < b[:, 2].max())
-    d = {"left": resolver.left, "right": -resolver.left, "behind": resolver.forward, "front": -resolver.forward}[rel]
-    return relations.side_of(a, b, d, max_gap=0.3).ok

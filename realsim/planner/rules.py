@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
+from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import Call, ObjectInfo, Plan, program_text
 from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES, norm
@@ -32,40 +33,6 @@ HELP = (
     "set ANTHROPIC_API_KEY to use Claude for free-form commands"
 )
 
-FILLERS = (
-    r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
-    r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
-    r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
-    r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
-    r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
-    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets",
-)
-GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
-           "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
-           "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
-           "getting": "get", "returning": "return", "placing it": "place it"}
-TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
-        "collect", "hand me", "give me", "pass me", "bring me", "retrieve")
-PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
-       "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest")
-PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
-ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
-                                                  "come", "head", "pull open", "pull out", "push in"))))
-PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|carefully|gently|again|too))*"
-
-RELATIONS: tuple[tuple[str, str], ...] = (
-    ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
-    ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
-    ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
-    ("behind", "behind"), ("in between", "between"), ("between", "between"),
-    ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
-    ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
-    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
-    ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
-    ("toward", "to"), ("towards", "to"), ("to", "to"),
-)
-SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
 
 
 @dataclass
@@ -98,40 +65,6 @@ class RulePlanner:
         return Plan(program=program_text(calls, command), goals=goals, planner=self.name, calls=calls)
 
 
-def clean(command: str) -> str:
-    """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
-    text = command.lower().replace("’", "'")
-    text = re.sub(r"[!?]+", ".", text)
-    text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
-    text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
-    for filler in FILLERS:
-        text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
-    for g, v in GERUNDS.items():
-        text = re.sub(rf"\b{g}\b", v, text)
-    text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
-    return " ".join(text.split())
-
-
-def split_command(command: str) -> list[str]:
-    """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
-    a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
-    text = clean(command)
-    text = re.sub(r"\b(?:and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
-    parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
-    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
-    clauses: list[str] = []
-    verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
-    rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
-    for part in filter(None, parts):
-        if clauses and not verb_re.match(part):
-            verb = verb_re.match(clauses[-1])
-            if verb and verb.group(0) in PUT and rel_re.search(f" {clauses[-1]} ") and rel_re.search(f" {part} "):
-                clauses.append(f"{verb.group(0)} {part}")  # "put the can in the bowl and the mug on the box"
-            else:
-                clauses[-1] = f"{clauses[-1]} and {part}"
-        else:
-            clauses.append(part)
-    return clauses
 
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
@@ -193,6 +126,8 @@ def _clause(clause: str, p: _Parser) -> _Step:
     if m and (m.group(1) in ("open", "close", "shut") or re.search(r"drawer|door|cabinet|lid", m.group(2))):
         return _articulate(m.group(1), m.group(2), p)
     verb, rest = _verb(c)
+    if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
+        verb, rest = _verb(rephrase(c))
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
     if verb in PUSH and _is_push(rest):
@@ -265,8 +200,8 @@ def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
     last_error: InputError | None = None
     for start, end, kind in _find_relation(rest):
         obj_phrase, target_phrase = rest[:start].strip(), rest[end:].strip()
-        if not obj_phrase or not target_phrase:
-            continue
+        if not obj_phrase or not target_phrase or _starts_with_relation(target_phrase):
+            continue  # "move the banana over next to the can": "over" is a particle here
         try:
             return _relation(obj_phrase, kind, target_phrase, p, verb)
         except InputError as exc:
@@ -274,6 +209,10 @@ def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
     if last_error is not None:
         raise last_error
     return None
+
+
+def _starts_with_relation(text: str) -> bool:
+    return any(s == 0 for s, _, _ in _find_relation(text))
 
 
 def _relation_tail(rest: str) -> bool:

@@ -46,6 +46,12 @@ KINDS: dict[str, tuple[str, ...]] = {
     "container": ("bowl", "mug", "cup", "basket", "bin", "box", "pot", "jar", "pitcher", "glass", "tray", "bucket"),
     "drink": ("can", "bottle", "cup", "mug", "glass"),
 }
+# the colours a kind of object usually has, for "the yellow fruit" when the capture gives no colour
+TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
+    "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),
+    "apple": ("red", "green"), "lime": ("green",), "pear": ("green", "yellow"), "orange": ("orange",), "plum": ("purple",),
+    "mustard": ("yellow",), "ketchup": ("red",), "carrot": ("orange",),
+}
 GENERIC = ("thing", "object", "item", "stuff", "one", "piece")
 
 DIRECTION_WORDS: dict[str, str] = {

@@ -1,0 +1,64 @@
+"""What an object looks like in words and in space, for reading noun phrases: its colours (the
+scene's own naming, the capture's colour, and the colours its kind usually has), its extent for
+size words, ordinal names, and whether a locator relation ("the can next to the bowl") holds.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.planner import relations
+from realsim.planner.types import ObjectInfo
+from realsim.planner.vocab import BIG, COLOR_WORDS, SIZE_AXIS, TYPICAL_COLORS, name_words, norm
+
+
+def colors_of(o: ObjectInfo) -> set[str]:
+    """Every colour word ``o`` may be called by: the colour words in its label or name, else its
+    measured ``color`` and the usual colours of its kind ("banana": yellow, :data:`TYPICAL_COLORS`)."""
+    out = {COLOR_WORDS[w] for w in norm(o.label).split() + norm(o.name).split() if w in COLOR_WORDS}
+    if out:  # the scene's own naming (itself read from the capture) decides
+        return out
+    if o.color:
+        out.add(COLOR_WORDS.get(o.color.lower(), o.color.lower()))
+    for w in name_words(o.label):
+        out.update(TYPICAL_COLORS.get(w, ()))
+    return out
+
+
+def nth(k: int) -> str:
+    """"second" for 2."""
+    return {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth"}.get(k, f"{k}th")
+
+
+def pts(o: ObjectInfo) -> np.ndarray:
+    """The corners of ``o``'s box."""
+    return relations.box_points(o.position, o.size)
+
+
+def _volume(o: ObjectInfo, word: str) -> float:
+    axis = SIZE_AXIS.get(word)
+    if axis == 2:
+        return float(o.size[2])
+    if axis == -1:
+        return float(max(o.size))
+    return float(np.prod(o.size))
+
+
+def extreme_by_size(objs: list[ObjectInfo], word: str) -> ObjectInfo:
+    """The biggest (or smallest) of ``objs`` in the sense of ``word`` (tall: height; long: extent; else volume)."""
+    big = word in BIG
+    ranked = sorted(objs, key=lambda o: _volume(o, word), reverse=big)
+    return ranked[0]
+
+
+def relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, forward: np.ndarray, left: np.ndarray) -> bool:
+    """Whether ``o`` is ``rel`` (next, on, in, left, right, behind, front) of ``ref``; directions in the robot's frame."""
+    a, b = pts(o), pts(ref)
+    if rel == "next":
+        return relations.xy_gap(a, b) <= 0.12
+    if rel == "on":
+        return relations.on(a, b, tolerance=0.03).ok
+    if rel == "in":
+        return relations.inside(a, b).ok or (relations.xy_gap(a, b) == 0.0 and a[:, 2].min() < b[:, 2].max())
+    d = {"left": left, "right": -left, "behind": forward, "front": -forward}[rel]
+    return relations.side_of(a, b, d, max_gap=0.3).ok

@@ -1,0 +1,129 @@
+"""How people phrase a command, before any object is looked up: filler and polite words,
+verbs and their particles, relation words, clauses, and the non-imperative forms people use
+("the banana goes in the bowl", "I'd like the can next to the box", "mug in the bowl please",
+"I need the box moved 5 cm left"), each rewritten into the imperative the planner reads.
+"""
+
+from __future__ import annotations
+
+import re
+
+FILLERS = (
+    r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
+    r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
+    r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
+    r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
+    r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
+    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets",
+)
+GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
+           "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
+           "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
+           "getting": "get", "returning": "return", "placing it": "place it"}
+TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
+        "collect", "hand me", "give me", "pass me", "bring me", "retrieve")
+PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
+       "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
+       "move", "shift", "slide", "drag", "stand", "rest")
+PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
+ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
+                                                  "come", "head", "pull open", "pull out", "push in"))))
+PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|carefully|gently|again|too))*"
+
+RELATIONS: tuple[tuple[str, str], ...] = (
+    ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
+    ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
+    ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
+    ("behind", "behind"), ("in between", "between"), ("between", "between"),
+    ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
+    ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
+    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
+    ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
+    ("toward", "to"), ("towards", "to"), ("to", "to"),
+)
+SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
+
+
+def clean(command: str) -> str:
+    """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
+    text = command.lower().replace("’", "'")
+    text = re.sub(r"[!?]+", ".", text)
+    text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
+    text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
+    text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
+    text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
+    text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
+    # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
+    text = re.sub(r"(?<!the )(?<!far )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
+    for filler in FILLERS:
+        text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
+    for g, v in GERUNDS.items():
+        text = re.sub(rf"\b{g}\b", v, text)
+    text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
+    return " ".join(text.split())
+
+
+def split_command(command: str) -> list[str]:
+    """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
+    a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
+    text = clean(command)
+    text = re.sub(r"\b(?:and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
+    parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
+    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
+    clauses: list[str] = []
+    verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+    rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
+    for part in filter(None, parts):
+        if clauses and not verb_re.match(part):
+            verb = verb_re.match(clauses[-1])
+            rel = rel_re.search(f" {clauses[-1]} ")
+            if verb and verb.group(0) in PUT and rel and rel_re.search(f" {part} "):
+                clauses.append(f"{verb.group(0)} {part}")  # "put the can in the bowl and the mug on the box"
+            elif verb and verb.group(0) in PUT and rel and re.search(r"\s(?:too|as well|also)$", part):
+                # "put the cube in the bowl and then the banana too": the same verb and place
+                obj = re.sub(r"\s(?:too|as well|also)$", "", part)
+                clauses.append(f"{verb.group(0)} {obj} {clauses[-1][rel.start():].strip()}")
+            else:
+                clauses[-1] = f"{clauses[-1]} and {part}"
+        else:
+            clauses.append(part)
+    return clauses
+
+
+# "I'd like the can next to the box", "I need the box moved 5 cm left" (after clean(): "i like ...")
+_DESIRE = re.compile(r"^i (?:would |d )?(?:like|want|need|wish)(?: you to| to have| to see)?\s+(.+)$")
+_PARTICIPLE = re.compile(r"^(.+?)\s+(?:moved|put|placed|pushed|pulled|slid|shifted|set|taken|brought|stacked|dropped|"
+                         r"nudged|shoved|scooted|dragged|carried|lifted|picked up|sitting|standing|lying)\b\s*(.*)$")
+# "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
+_MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
+_GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)"
+                   r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
+
+
+def _relation_start(text: str) -> bool:
+    """Whether ``text`` opens with a relation word ("in the bowl", "to the left of the box")."""
+    words = sorted((w for w, _ in RELATIONS if w not in ("by", "over")), key=len, reverse=True)
+    return bool(re.match(rf"(?:{'|'.join(re.escape(w) for w in words)})\b", text))
+
+
+def rephrase(clause: str) -> str:
+    """The imperative a clause without a leading verb means, or the clause unchanged: a wish
+    ("i like X next to Y" -> "put X next to Y"; "i need X moved 5 cm left" -> "move X 5 cm left"),
+    a statement of where a thing goes ("X goes/should go/belongs in Y" -> "put X in Y"), or a bare
+    object and place ("mug in the bowl" -> "put mug in the bowl")."""
+    c = clause.strip()
+    m = _DESIRE.match(c)
+    if m:
+        rest = m.group(1)
+        p = _PARTICIPLE.match(rest)
+        if p and p.group(2):
+            return f"move {p.group(1)} {p.group(2)}"
+        return f"put {rest}"
+    m = _GOES.match(c)
+    if m and _relation_start(m.group(2)):
+        return f"put {m.group(1)} {m.group(2)}"
+    words = c.split()
+    for i in range(1, len(words)):
+        if _relation_start(" ".join(words[i:])):
+            return f"put {c}"
+    return c
