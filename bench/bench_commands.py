@@ -39,7 +39,7 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from commands_heldout import HELDOUT  # noqa: E402
+from commands_heldout import HELDOUT, HELDOUT2  # noqa: E402
 
 from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
@@ -460,8 +460,8 @@ def bench_sim(args: argparse.Namespace) -> int:
 
 
 def _suite(args: argparse.Namespace) -> list[tuple[str, str, str]]:
-    """The sentences ``--set`` chooses: the suite, the held-out set, or both."""
-    return {"suite": SUITE, "heldout": HELDOUT, "all": SUITE + HELDOUT}[args.set]
+    """The sentences ``--set`` chooses: the suite, a held-out batch, or all."""
+    return {"suite": SUITE, "heldout": HELDOUT, "heldout2": HELDOUT2, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
 
 
 def bench_plans(args: argparse.Namespace) -> int:
@@ -544,8 +544,8 @@ def main() -> int:
     ap.add_argument("--scene", help="--sim: only this scene")
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "all"],
-                    help="--plans/--sim: the suite, the held-out sentences (bench/commands_heldout.py), or both")
+    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "all"],
+                    help="--plans/--sim: the suite, a held-out batch (bench/commands_heldout.py), or all")
     args = ap.parse_args()
     if args.plans:
         return bench_plans(args)
