@@ -28,7 +28,7 @@ PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack
 PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
-PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|carefully|gently|again|too))*"
+PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
 
 RELATIONS: tuple[tuple[str, str], ...] = (
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
@@ -79,8 +79,8 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             if verb and verb.group(0) in PUT and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{verb.group(0)} {part}")  # "put the can in the bowl and the mug on the box"
-            elif verb and verb.group(0) in PUT and rel and re.search(r"\s(?:too|as well|also)$", part):
-                # "put the cube in the bowl and then the banana too": the same verb and place
+            elif verb and verb.group(0) in PUT and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
+                # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
                 clauses.append(f"{verb.group(0)} {obj} {clauses[-1][rel.start():].strip()}")
             else:

@@ -174,7 +174,7 @@ class Resolver:
             if any(s in all_words or s in " ".join(" ".join(n) for n in self._words[o.name]) for s in SYNONYMS.get(head, ())):
                 best = max(best, 1.5)
             elif head in KINDS and head in self.kinds_of(o):
-                best = max(best, 1.5)
+                best = max(best, 1.4)  # a member of the kind, below a synonym ("dish": the bowl before the mug)
         return best
 
     # --- the phrase -------------------------------------------------------------------------

@@ -1,0 +1,78 @@
+"""How people phrase commands: statements, wishes, bare places, gapping, colours by kind."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pytest
+from test_planner_rules import CLUTTER
+
+from realsim.errors import InputError
+from realsim.planner import ObjectInfo, RulePlanner, check
+from realsim.planner.phrasing import rephrase, split_command
+
+
+@pytest.mark.parametrize(("clause", "imperative"), [
+    ("the banana goes in the bowl", "put the banana in the bowl"),
+    ("can the mug go in the bowl", "put the mug in the bowl"),
+    ("the cup should go behind the bowl", "put the cup behind the bowl"),
+    ("i like the can next to the box", "put the can next to the box"),
+    ("i need the banana moved over next to the can", "move the banana over next to the can"),
+    ("i want the box moved 5 cm to the left", "move the box 5 cm to the left"),
+    ("mug in the bowl", "put mug in the bowl"),
+    ("dance with the mug", "dance with the mug"),
+])
+def test_rephrase_gives_the_imperative(clause: str, imperative: str) -> None:
+    assert rephrase(clause) == imperative
+
+
+def test_gapping_repeats_the_verb_and_the_place() -> None:
+    assert split_command("put the cube in the bowl and then the banana too") == ["put the cube in the bowl", "put the banana in the bowl"]
+    assert split_command("throw the banana in the bowl then the strawberry") == ["throw the banana in the bowl", "throw the strawberry in the bowl"]
+    assert split_command("put the mug between the bowl and the box") == ["put the mug between the bowl and the box"]
+
+
+PEOPLE: list[tuple[str, list[str]]] = [
+    ("the banana goes in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("I'd like the green cube next to the bowl", ["place_beside('obj5_cube', 'obj6_bowl', 'next')"]),
+    ("okay so I need the blue cube moved 5 cm to the left", ["push('obj4_cube', 'left', 0.05)"]),
+    ("strawberry in the bowl please", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("get the banana and then set it down right beside the bowl", ["grasp('obj7_banana')", "place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("move the banana so it sits in front of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),
+    ("stack the green one on top of the blue one", ["place_on('obj5_cube', 'obj4_cube')"]),
+    ("put the cubes in the bowl one by one", ["place_in('obj3_cube', 'obj6_bowl')", "place_in('obj4_cube', 'obj6_bowl')", "place_in('obj5_cube', 'obj6_bowl')"]),
+    ("take the banana out and put it to the left of the bowl", ["grasp('obj7_banana')", "place_beside('obj7_banana', 'obj6_bowl', 'left')"]),
+    ("put the strawberry in the bowl then the banana", ["place_in('obj8_strawberry', 'obj6_bowl')", "place_in('obj7_banana', 'obj6_bowl')"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), PEOPLE, ids=[p[0][:40] for p in PEOPLE])
+def test_statements_wishes_and_particles(sentence: str, lines: list[str]) -> None:
+    plan = RulePlanner().plan(sentence, CLUTTER)
+    assert [c.text() for c in plan.calls] == lines
+    check(plan.program)
+
+
+def test_colours_of_a_kind_when_the_capture_gives_none() -> None:
+    """A banana is yellow and a strawberry red even with no measured colour; no other colour matches."""
+    plain = [replace(o, color=None) if o.label in ("banana", "strawberry") else o for o in CLUTTER]
+    assert [c.text() for c in RulePlanner().plan("grab the yellow fruit", plain).calls] == ["grasp('obj7_banana')"]
+    assert [c.text() for c in RulePlanner().plan("drop the small red fruit in the bowl", plain).calls] == ["place_in('obj8_strawberry', 'obj6_bowl')"]
+    with pytest.raises(InputError, match="no purple object"):
+        RulePlanner().plan("grab the purple fruit", plain)
+
+
+def test_a_colour_never_picks_another_noun() -> None:
+    """'the blue bowl' with a white bowl and a blue cube is refused, not the cube."""
+    with pytest.raises(InputError):
+        RulePlanner().plan("grab the blue bowl", CLUTTER)
+
+
+def test_the_scenes_own_name_wins() -> None:
+    scan = [ObjectInfo("obj1_red_object", "red_object", (), (0.4, 0.2, 0.05), (0.1, 0.1, 0.12)),
+            ObjectInfo("obj2_red_cracker_box", "red_cracker_box", (), (0.4, -0.2, 0.08), (0.13, 0.24, 0.15)),
+            ObjectInfo("obj3_white_box", "white_box", (), (0.6, 0.0, 0.03), (0.2, 0.2, 0.05))]
+    plan = RulePlanner().plan("put the red object next to the white box", scan)
+    assert [c.text() for c in plan.calls] == ["place_beside('obj1_red_object', 'obj3_white_box', 'next')"]
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("grab the red one", scan)
