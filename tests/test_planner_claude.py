@@ -14,7 +14,7 @@ from test_planner_rules import OBJECTS  # noqa: E402
 
 from realsim import llm  # noqa: E402
 from realsim.planner import ClaudePlanner, Inside, PlanningError, RulePlanner, make_planner  # noqa: E402
-from realsim.planner.claude import extract_code, load_prompt  # noqa: E402
+from realsim.planner.claude import extract_code, system_prompt  # noqa: E402
 
 GOOD = "Here is the program:\n```python\nplace_in(\"obj1_mug\", \"obj2_bowl\")\n```\nDone."
 BAD = "```python\nimport os\nplace_in(\"obj1_mug\", \"obj2_bowl\")\n```"
@@ -40,7 +40,7 @@ def test_good_reply(server: MessagesServer) -> None:
     assert plan.planner == "claude"
     assert (plan.usage.calls, plan.usage.input_tokens, plan.usage.output_tokens) == (1, 1500, 40)
     req = server.requests[0]
-    version, system = load_prompt("planner_system.md")
+    version, system = system_prompt()
     assert req["system"] == system and version.startswith("planner-system-")
     user = req["messages"][0]["content"]
     assert "obj1_mug: red mug (also: cup, coffee mug)" in user and "at (0.500, 0.100, 0.050) m" in user
@@ -53,7 +53,8 @@ def test_good_reply(server: MessagesServer) -> None:
 def test_system_prompt_documents_every_primitive() -> None:
     from realsim.planner.sandbox import PRIMITIVES
 
-    _, system = load_prompt("planner_system.md")
+    _, system = system_prompt()
+    assert "{primitives}" not in system
     for name in PRIMITIVES:
         assert f"`{name}(" in system, name
     assert "metres" in system and "(w, x, y, z)" in system

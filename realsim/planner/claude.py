@@ -1,7 +1,7 @@
 """Planner with Claude: a versioned system prompt, the live scene, one repair round.
 
-The system prompt (``prompts/planner_system.md``) documents every primitive with units and
-frames; the scene's objects are appended to the user message at call time. The reply's
+The system prompt (``prompts/planner_system.md``, its primitive list filled in from
+:mod:`realsim.planner.primitives`) documents every primitive with units and frames; the scene's objects are appended to the user message at call time. The reply's
 ```python block is validated with :func:`realsim.planner.sandbox.check`; when that fails, the
 errors go back to Claude once (``prompts/planner_repair.md``). Goals come from the rule parser
 when it reads the command, else there are none ("goal unknown").
@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from realsim import llm
 from realsim.errors import InputError, RealsimError
-from realsim.planner import rules, sandbox
+from realsim.planner import primitives, rules, sandbox
 from realsim.planner.goals import Goal
 from realsim.planner.reference import scene_vocabulary
 from realsim.planner.types import ObjectInfo, Plan
@@ -22,6 +22,12 @@ from realsim.resources import load_prompt
 
 SYSTEM_PROMPT = "planner_system.md"
 REPAIR_PROMPT = "planner_repair.md"
+
+
+def system_prompt() -> tuple[str, str]:
+    """(version, text) of the planner's system prompt with the registry's primitive list filled in."""
+    version, text = load_prompt(SYSTEM_PROMPT)
+    return version, text.replace(primitives.PLACEHOLDER, primitives.prompt_block())
 
 
 class PlanningError(RealsimError):
@@ -63,7 +69,7 @@ class ClaudePlanner:
     def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
         if not command.strip():
             raise InputError("the command is empty; say what the robot should do")
-        version, system = load_prompt(SYSTEM_PROMPT)
+        version, system = system_prompt()
         usage = llm.Usage()
         messages: list[dict[str, str]] = [
             {"role": "user", "content": f"{scene_text(scene_objects, robot_yaw)}\n\nCommand: {command.strip()}"}

@@ -1,6 +1,7 @@
 """The functions a command program calls, bound to a :class:`Sim`'s robot.
 
-These follow the planner's contract (``prompts/planner_system.md``), which differs from the raw
+Which functions exist comes from the registry (:mod:`realsim.planner.primitives`). They follow
+the planner's contract (``prompts/planner_system.md``), which differs from the raw
 :class:`Robot` methods in a few conveniences:
 
 - ``place``/``place_on``/``place_in``/``place_beside``/``place_between``/``place_down`` grasp the
@@ -22,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from realsim.planner import primitives
 from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.robot import ActionResult
@@ -51,14 +53,8 @@ class ProgramAPI:
         return self.sim.robot
 
     def functions(self) -> dict[str, Callable[..., Any]]:
-        return {
-            "go_home": self.go_home, "move_ee_to": self.move_ee_to, "open_gripper": self.open_gripper,
-            "close_gripper": self.close_gripper, "grasp": self.grasp, "place": self.place,
-            "place_on": self.place_on, "place_in": self.place_in, "place_beside": self.place_beside,
-            "place_between": self.place_between, "place_down": self.place_down, "push": self.push,
-            "open_drawer": self.open_drawer, "close_drawer": self.close_drawer,
-            "object_pose": self.object_pose, "object_names": self.object_names,
-        }
+        """The program's functions, one per entry of the primitive registry."""
+        return primitives.bind(self)
 
     def _record(self, res: ActionResult, call: str) -> ActionResult:
         self.actions.append({

@@ -1,0 +1,52 @@
+"""The primitive registry is the one list: the sandbox, the runtime, the Robot and the planner prompt agree with it."""
+
+from __future__ import annotations
+
+import inspect
+import re
+
+from realsim.planner import primitives, sandbox
+from realsim.planner.claude import system_prompt
+from realsim.robot import Robot
+from realsim.runtime.primitives import ProgramAPI
+
+
+def test_sandbox_allows_exactly_the_registry() -> None:
+    assert sandbox.PRIMITIVES == primitives.NAMES
+    assert len(set(primitives.NAMES)) == len(primitives.NAMES)
+    for name in primitives.NAMES:
+        sandbox.check(f"{name}()")  # a call to any registered primitive passes the static check
+    rejected = False
+    try:
+        sandbox.check("teleport()")
+    except sandbox.SandboxViolation:
+        rejected = True
+    assert rejected
+
+
+def test_runtime_binds_every_primitive_with_its_signature() -> None:
+    api = ProgramAPI.__new__(ProgramAPI)  # no Sim needed to bind
+    funcs = api.functions()
+    assert list(funcs) == list(primitives.NAMES)
+    for p in primitives.PRIMITIVES:
+        params = [q for q in inspect.signature(getattr(ProgramAPI, p.api_method)).parameters.values() if q.name != "self"]
+        shown = "(" + ", ".join(q.name if q.default is inspect.Parameter.empty else f"{q.name}={q.default!r}" for q in params) + ")"
+        if p.name != "place_beside":  # side is optional at run time ("next"), named in the prompt
+            assert shown == p.signature, (p.name, shown)
+        else:
+            assert [q.name for q in params] == ["obj", "ref", "side"]
+
+
+def test_robot_provides_every_primitive() -> None:
+    for p in primitives.PRIMITIVES:
+        assert callable(getattr(Robot, p.robot_method, None)), p.robot_method
+
+
+def test_prompt_signature_block_comes_from_the_registry() -> None:
+    _, text = system_prompt()
+    block = primitives.prompt_block()
+    assert block in text and "{primitives}" not in text
+    listed = re.findall(r"`([a-z_]+)\(", block)
+    assert listed == list(primitives.NAMES)
+    for p in primitives.PRIMITIVES:
+        assert p.call() in text
