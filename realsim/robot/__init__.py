@@ -1,14 +1,23 @@
-"""The Franka Panda: model attachment, base placement, IK, grasping and motion primitives."""
+"""The Franka Panda: model attachment, base placement, IK, grasping and motion primitives.
+
+Layers: :mod:`~realsim.robot.arm` (handles, stepping, time budget), :mod:`~realsim.robot.queries`
+(world queries), :mod:`~realsim.robot.motion` (lines, transits, collision checks), the skill
+families in :mod:`realsim.robot.skills`, composed into :class:`Robot`; numbers in
+:mod:`~realsim.robot.params`.
+"""
 
 from realsim.robot.grasps import GraspCandidate, grasp_candidates
 from realsim.robot.ik import ArmIK, IKParams, IKResult
 from realsim.robot.model import GripperParams, RobotHandles, attach_robot, menagerie_panda_dir
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
+from realsim.robot.params import ArmParams, ArticulationParams, MotionParams, PickParams, PlaceParams, PushParams, RobotParams
 from realsim.robot.placement import PlacementParams, add_robot, choose_robot_pose
-from realsim.robot.robot import ActionResult, Robot, RobotParams
+from realsim.robot.result import ActionResult, BudgetExceeded, PlanFailure
+from realsim.robot.robot import Robot
 
 __all__ = [
-    "ActionResult", "ArmIK", "EpsilonGreedy", "GraspCandidate", "GraspParams", "GripperParams", "IKParams", "IKResult",
-    "PlacementParams", "Robot", "RobotHandles", "RobotParams", "add_robot", "attach_robot", "choose_robot_pose",
+    "ActionResult", "ArmIK", "ArmParams", "ArticulationParams", "BudgetExceeded", "EpsilonGreedy", "GraspCandidate",
+    "GraspParams", "GripperParams", "IKParams", "IKResult", "MotionParams", "PickParams", "PlaceParams", "PlacementParams",
+    "PlanFailure", "PushParams", "Robot", "RobotHandles", "RobotParams", "add_robot", "attach_robot", "choose_robot_pose",
     "grasp_candidates", "menagerie_panda_dir",
 ]

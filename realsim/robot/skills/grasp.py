@@ -1,0 +1,157 @@
+"""Grasp and pick: pinch candidates that fit the hand and hold against gravity, reachable
+approaches, and attempts retried with epsilon-greedy grasp parameters."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, grasp_candidates, narrowest_width, rotate_about, twist_check
+from realsim.robot.ik import IKResult
+from realsim.robot.model import GRIPPER_OPEN_CTRL, HOME_ARM
+from realsim.robot.motion import Motion
+from realsim.robot.optimizer import EpsilonGreedy, GraspParams
+from realsim.robot.result import ActionResult, PlanFailure
+
+SUCCESS = 1.0  # reward of an attempt that holds the object lifted
+
+__all__ = ["GraspSkill"]
+
+
+class GraspSkill(Motion):
+    """graspability and grasp (pick and lift)."""
+
+    def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
+        """Pinches that fit the hand and whose lever arm the grip can hold against gravity."""
+        return [c for c in self._fitting_candidates(obj, height_offset) if self._holds(obj, c)[0]]
+
+    def _fitting_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
+        """Pinches of ``obj`` that fit the hand, from its surface points above its support."""
+        pts = self.object_points(obj)
+        surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) + self.params.pick.support_probe, exclude=obj)
+        return grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=height_offset,
+                                normals=self.object_normals(obj))
+
+    def _holds(self, obj: str, cand: GraspCandidate) -> tuple[bool, float, float]:
+        """Statics of ``cand`` on ``obj``: its mass and centre of mass from the model (attached parts
+        included), friction of its geoms, the gripper's force limit."""
+        b = self._body(obj)
+        mujoco.mj_comPos(self.model, self.data)
+        geoms = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in self._subtree(b)]
+        friction = float(min(self.model.geom_friction[g][0] for g in geoms)) if geoms else self.params.arm.default_friction
+        force = float(abs(self.model.actuator_forcerange[self.grip_act]).max()) or self.params.arm.default_grip_force
+        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), friction, force)
+
+    def _prefer_yaw(self) -> float:
+        """Yaw of the hand's closing axis at home: pinches near it are preferred."""
+        _, r = self.ik.fk(np.array(HOME_ARM))
+        return float(np.arctan2(r[1, 1], r[0, 1]))
+
+    def graspability(self, obj: str) -> tuple[bool, str]:
+        """Whether the hand can hold ``obj`` at all (some cross-section within the opening)."""
+        if self._grasp_candidates(obj):
+            return True, ""
+        fitting = self._fitting_candidates(obj)
+        if fitting:
+            torques = [self._holds(obj, c) for c in fitting]
+            _, need, can = min(torques, key=lambda t: t[1])
+            return False, (f"{obj} fits the hand only where its weight twists out of the pinch: {need:.2f} N m about the "
+                           f"fingers at the best of {len(fitting)} pinches, the grip holds {can:.2f} N m")
+        w = narrowest_width(self.object_points(obj))
+        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim the hand can pinch (handles are not used): the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
+
+    def grasp(self, obj: str, max_attempts: int | None = None, max_sim_time: float | None = None) -> ActionResult:
+        """Grasp and lift ``obj``; failed attempts retry with epsilon-greedy grasp parameters."""
+        attempts = max_attempts or self.params.grasp_attempts
+        opt = EpsilonGreedy(seed=self.seed)
+        log: list[dict[str, Any]] = []
+        pk = self.params.pick
+
+        def body() -> ActionResult:
+            ok, why = self.graspability(obj)
+            if not ok:
+                return ActionResult("grasp", False, f"not graspable: {why}", values={"graspable": False})
+            for attempt in range(1, attempts + 1):
+                gp = opt.propose()
+                z0 = float(self.object_points(obj)[:, 2].min())
+                try:
+                    reward, info = self._attempt(obj, gp, opt)
+                except PlanFailure as exc:
+                    reward, info = pk.error_reward, {"error": str(exc)}
+                opt.update(gp, reward)
+                log.append({"attempt": attempt, "params": gp.__dict__, "reward": reward, **info})
+                if reward >= SUCCESS:
+                    self.held = obj
+                    return ActionResult("grasp", True, "", attempts=attempt, values={"graspable": True, "lifted": info.get("lifted"), "kind": info.get("kind"), "log": log})
+                # reset for the next attempt: open, back up, home
+                self._gripper(GRIPPER_OPEN_CTRL)
+                pos, _ = self.tcp_pose()
+                try:
+                    self._straight(pos + np.array([0, 0, pk.retry_lift]))
+                except PlanFailure:
+                    pass
+                self._follow([np.array(HOME_ARM)])
+                if float(self.object_points(obj)[:, 2].min()) < z0 - pk.fell_drop:
+                    return ActionResult("grasp", False, f"{obj} fell off its support", attempts=attempt, values={"log": log})
+            last = log[-1] if log else {}
+            return ActionResult("grasp", False, f"no grasp held after {attempts} attempts (last: {last.get('error') or last.get('failure', '')})", attempts=attempts, values={"graspable": True, "log": log})
+        return self._run("grasp", body, max_sim_time or self.params.max_sim_time * pk.budget_factor)
+
+    def _attempt(self, obj: str, gp: GraspParams, opt: EpsilonGreedy) -> tuple[float, dict[str, Any]]:
+        """One grasp: the reachable candidates ranked, approach, close, lift; (reward, what happened)."""
+        pk = self.params.pick
+        cands = self._grasp_candidates(obj, gp.height_offset)
+        reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
+        q_home = np.array(HOME_ARM)
+        for c in cands:
+            rot = rotate_about(c.rot[:, 1], gp.tilt) @ c.rot
+            rot = rotate_about(rot[:, 2], gp.yaw_offset) @ rot
+            for flip in (False, True):  # the hand is symmetric: closing axis +y or -y
+                r = rot @ np.diag([-1, -1, 1]) if flip else rot
+                pre = c.pos - r[:, 2] * self.params.pregrasp
+                res_pre = self._ik(pre, r, q_home)
+                if not res_pre.converged:
+                    continue
+                res = self._ik(c.pos, r, res_pre.q)
+                if not res.converged:
+                    continue
+                try:  # the final approach must be a straight line without a joint flip
+                    self._line(pre, c.pos, r, r, res_pre.q)
+                except PlanFailure:
+                    continue
+                reachable.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + pk.manipulability_weight * res.manipulability), res_pre.q, res))
+                break
+            if len(reachable) >= pk.max_reachable:
+                break
+        if not reachable:
+            raise PlanFailure(f"none of {len(cands)} grasp candidates is reachable")
+        reachable.sort(key=lambda x: -x[0].score)
+        opt.n_candidates = len(reachable)
+        first = min(gp.candidate, len(reachable) - 1)
+        self._gripper(GRIPPER_OPEN_CTRL)
+        for k, (cand, _, _) in enumerate(reachable[first:] + reachable[:first]):
+            try:  # a path that cannot be planned moves nothing: try the next candidate
+                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None)
+                self._straight(cand.pos, cand.rot)
+                break
+            except PlanFailure:
+                if k == len(reachable) - 1:
+                    raise
+        self._gripper(0.0)
+        touching = self._contacts_with(obj)
+        z_before = float(self.object_points(obj)[:, 2].min())
+        pos, _ = self.tcp_pose()
+        try:
+            self._straight(pos + np.array([0, 0, self.params.lift]))
+        except PlanFailure:
+            self._straight(pos + np.array([0, 0, self.params.lift / 2]))
+        self._wait(pk.lift_wait)
+        lifted = float(self.object_points(obj)[:, 2].min()) - z_before
+        held = self.holding(obj)
+        info: dict[str, Any] = {"kind": cand.kind, "width": cand.width, "lifted": lifted, "contacts_at_close": len(touching)}
+        if held and lifted >= self.params.lifted_min:
+            return SUCCESS, info
+        info["failure"] = f"fingers touching {len(self._contacts_with(obj))}/2, lifted {lifted * 1000:.0f} mm"
+        return pk.contact_reward * len(touching) / 2 + pk.lift_reward * max(0.0, min(lifted / self.params.lift, 1.0)), info

@@ -1,0 +1,145 @@
+"""The place primitives: at a point, on, in (a body or a marked zone), beside, between, down."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from realsim.planner import relations
+from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
+from realsim.robot.placing import cavity_centre, footprint_radius, spots, top_area
+from realsim.robot.queries import box_centre
+from realsim.robot.result import ActionResult
+from realsim.robot.skills.release import Keepout, Release
+
+__all__ = ["PlaceSkills"]
+
+_SIDE_WORDS = {"left": "left of", "right": "right of", "front": "in front of", "behind": "behind"}
+
+
+def _on_table(touching: set[str]) -> relations.Relation:
+    ok = relations.WORLD in touching and relations.ROBOT not in touching
+    return relations.Relation(ok, "touching " + (", ".join(sorted(touching)) or "nothing"))
+
+
+class PlaceSkills(Release):
+    """place, place_on, place_in, place_beside, place_between, place_down."""
+
+    def place(self, obj: str, pos: ArrayLike, tolerance: float | None = None, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` down with its centre at ``pos`` (xy; z is found below it) and release
+        (``tolerance``: how far from ``pos`` counts, default ``params.place.tolerance``)."""
+        tol = self.params.place.tolerance if tolerance is None else tolerance
+
+        def body() -> ActionResult:
+            target = np.asarray(pos, float)
+            r = footprint_radius(self.object_points(obj))
+            near = spots(target[:2], min(tol, r), self.base_pos[:2], self.release.ring)
+            return self._place(obj, near, target[2], "place", lambda: self._near(obj, target[:2], tol),
+                               Keepout(self._others(obj), soft=True))
+        return self._run("place", body, max_sim_time)
+
+    def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on top of body ``target`` (spots within its top face, clear of what
+        already lies there)."""
+        def body() -> ActionResult:
+            tp = self.object_points(target)
+            centre, r_in = top_area(tp)
+            near = spots(centre, r_in, self.base_pos[:2], self.release.ring)
+            return self._place(obj, near, np.nan, "place_on", lambda: relations.on(
+                self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target),
+                Keepout(self._others(obj, {target}, above=float(tp[:, 2].max()) - self.params.place.on_top_margin), soft=True))
+        return self._run("place_on", body, max_sim_time)
+
+    def place_in(self, obj: str, container: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` into ``container``: a body (bin, bowl, mug: spots within its
+        opening, clear of what already lies in it) or a marked zone (a geom or site)."""
+        def body() -> ActionResult:
+            r = footprint_radius(self.object_points(obj))
+            zone = self._zone(container)
+            if zone is not None:
+                c, half, _ = zone
+                near = spots(c, float(max(0.0, half.min() - r)), self.base_pos[:2], self.release.ring)
+                return self._place(obj, near, np.nan, "place_in", lambda: self._in_zone(obj, zone), Keepout(self._others(obj), soft=True))
+            cp = self.object_points(container)
+            centre, r_in = cavity_centre(cp)
+            near = spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring)
+            return self._place(obj, near, np.nan, "place_in", lambda: relations.inside(
+                self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container),
+                Keepout(self._others(obj, {container}, above=float(cp[:, 2].min()) + self.params.place.in_bottom_margin), soft=True))
+        return self._run("place_in", body, max_sim_time)
+
+    def place_beside(self, obj: str, ref: str, side: str = "next", gap: float | None = None,
+                     max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on the table beside ``ref``: ``side`` is "next" (any free side) or
+        "left", "right", "front", "behind" as seen from the robot; the object's footprint at
+        release must clear every other object (``gap``: default ``params.place.beside_gap``)."""
+        pl = self.params.place
+        gap_ = pl.beside_gap if gap is None else gap
+        if side != "next" and side not in SIDES:
+            return ActionResult("place_beside", False, f"unknown side {side!r}: use next, left, right, front or behind")
+
+        def body() -> ActionResult:
+            o, r = self.object_points(obj), self.object_points(ref)
+            rc, oc = box_centre(r), box_centre(o)
+            if side == "next":
+                dirs = [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]
+                lats: tuple[float, ...] = (0.0,)
+            else:
+                dirs = [np.array(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw))]
+                lats = pl.beside_lateral
+            cands: list[tuple[float, float, np.ndarray]] = []
+            for d in dirs:
+                perp = np.array([-d[1], d[0]])
+                reach = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max()) + gap_
+                for extra in pl.beside_extra:
+                    for lat in lats:
+                        xy = rc + d * (reach + extra) + perp * lat
+                        cands.append((extra + abs(lat), float(np.linalg.norm(xy - self.base_pos[:2])) if side == "next" else 0.0, xy))
+            cands.sort(key=lambda t: (t[0], t[1]))
+            level = float(r[:, 2].min())
+            near = [xy for _, _, xy in cands if abs(self.geometry.surface_below(xy, level + pl.level_probe, exclude=obj) - level) < pl.level_tol]
+            if not near:
+                return ActionResult("place_beside", False, f"no spot {'next to' if side == 'next' else _SIDE_WORDS[side]} {ref} "
+                                    "on its surface (table edge)")
+            side_d = None if side == "next" else direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw)
+
+            def judge() -> relations.Relation:
+                o_now, r_now, touching = self.object_points(obj), self.object_points(ref), self.geometry.touching(obj)
+                return relations.next_to(o_now, r_now, touching) if side_d is None else relations.side_of(o_now, r_now, side_d, touching)
+            return self._place(obj, near, np.nan, "place_beside", judge, Keepout(self._others(obj)))
+        return self._run("place_beside", body, max_sim_time)
+
+    def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` on the table between objects ``a`` and ``b``."""
+        pl = self.params.place
+
+        def body() -> ActionResult:
+            pa, pb = self.object_points(a), self.object_points(b)
+            ca, cb = box_centre(pa), box_centre(pb)
+            u = (cb - ca) / max(float(np.linalg.norm(cb - ca)), 1e-9)
+            perp = np.array([-u[1], u[0]])
+            t = (float(((pa[:, :2] - ca) @ u).max()) + float(((pb[:, :2] - ca) @ u).min())) / 2
+            a_edge, b_edge = float(((pa[:, :2] - ca) @ u).max()), float(((pb[:, :2] - ca) @ u).min())
+            along = [t] + [t + f * (b_edge - a_edge) for f in pl.between_along]
+            cands = [ca + u * tt + perp * lat for lat in pl.between_lateral for tt in along]
+            return self._place(obj, cands, np.nan, "place_between", lambda: relations.between(
+                self.object_points(obj), pa, pb, self.geometry.touching(obj)), Keepout(self._others(obj), margin=pl.between_margin))
+        return self._run("place_between", body, max_sim_time)
+
+    def place_down(self, obj: str, max_sim_time: float | None = None) -> ActionResult:
+        """Put the held ``obj`` down on the table (the static surface) at the free spot nearest
+        the hand."""
+        pl = self.params.place
+
+        def body() -> ActionResult:
+            o = self.object_points(obj)
+            start = box_centre(o)
+            cands = [start + rr * np.array([np.cos(a), np.sin(a)]) for rr in np.arange(0.0, pl.down_radius + pl.down_step / 3, pl.down_step)
+                     for a in np.linspace(0, 2 * np.pi, max(1, int(round(rr / pl.down_step)) * 6), endpoint=False)]
+            top = float(o[:, 2].max())
+            near = [xy for xy in cands if self.geometry.surface_below(xy, top, exclude=obj)
+                    <= self.geometry.surface_below(xy, top, exclude=obj, static_only=True) + pl.table_tol]
+            if not near:
+                return ActionResult("place_down", False, f"no free table surface within {pl.down_radius * 100:.0f} cm of {obj}")
+            return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)), Keepout(self._others(obj)))
+        return self._run("place_down", body, max_sim_time)

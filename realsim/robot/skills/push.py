@@ -1,0 +1,104 @@
+"""Push: the closed hand, tilted so the fingertips lead, shoves an object along the table.
+
+The stroke is planned and checked first (only the hand may touch the pushed object, which is
+carried along with what rides on it), and a push that would shove the object into another is
+refused.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.spatial import cKDTree
+
+from realsim.planner import relations
+from realsim.robot.grasps import frame_from, rotate_about
+from realsim.robot.motion import Motion
+from realsim.robot.queries import box_centre, box_centre_3d
+from realsim.robot.result import ActionResult, PlanFailure
+
+__all__ = ["PushSkill"]
+
+
+class PushSkill(Motion):
+    """push."""
+
+    def push(self, obj: str, direction: ArrayLike, distance: float, max_sim_time: float | None = None) -> ActionResult:
+        """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers."""
+        d = np.array([*np.asarray(direction, float)[:2], 0.0])
+        d /= np.linalg.norm(d)
+        pp = self.params.push
+
+        def body() -> ActionResult:
+            pts = self.object_points(obj)
+            start_pos = box_centre_3d(pts)
+            bottom = float(pts[:, 2].min())
+            height = float(pts[:, 2].max()) - bottom
+            centre = np.array([*pts[:, :2].mean(axis=0), bottom + min(pp.contact_height, height / 2) + pp.contact_lift])
+            back = float(((pts - centre) @ d).min())
+            contact = centre + d * (back - pp.standoff)
+            closing = np.array([-d[1], d[0], 0.0])
+            # the closed hand is symmetric: of the two yaws, try the one nearer the current first
+            _, now_rot = self.tcp_pose()
+            # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
+            tilt = rotate_about(np.array([d[1], -d[0], 0.0]), pp.tilt)
+            upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
+            upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
+            rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
+            # the object's footprint swept along the push must not run into another object
+            foot = pts[:: max(1, len(pts) // pp.footprint_samples), :2]
+            # what rests in or on the object (touching it, centred over its footprint) rides along: not in the way
+            lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+            riding = {n for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}
+                      if np.all((box_centre(self.object_points(n)) >= lo) & (box_centre(self.object_points(n)) <= hi))}
+            others = self._others(obj, skip=riding, above=bottom + pp.ride_margin)
+            if len(others):
+                tree = cKDTree(others)
+                for k in np.linspace(0.0, distance, max(2, int(distance / pp.sweep_step) + 1)):
+                    gap, idx = tree.query(foot + k * d[:2])
+                    if gap.min() < pp.touch_gap and k < distance - pp.nudge:  # a last-centimetre touch nudges, no more
+                        hit = self._owner_of_xy(obj, others[idx[int(np.argmin(gap))]], bottom)
+                        return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove {hit} "
+                                            f"(after {k * 100:.0f} cm)", values={"moved": 0.0})
+            self._gripper(0.0)
+            end = contact + d * (distance + pp.standoff)
+            last: PlanFailure | None = None
+            for rot in rots:
+                try:  # the stroke is planned and checked first: only the hand may touch the pushed object
+                    q_c = self._ik(contact, rot, np.array(self.ik.home))
+                    if not q_c.converged:
+                        raise PlanFailure(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
+                    self._check_stroke({obj, *riding}, self._line(contact, end, rot, rot, q_c.q), contact, d)
+                    self._transit(contact, rot, skip=None)
+                    break
+                except PlanFailure as exc:
+                    last = exc
+            else:
+                raise last or PlanFailure("no push pose")
+            self._straight(end, rot)
+            pos, _ = self.tcp_pose()
+            up = np.array([0, 0, pp.retreat_up])
+            for retreat in (pos - d * pp.retreat_back + up, pos + up, pos - d * pp.retreat_back):
+                try:  # back off the object; the push itself is judged by how far the object moved
+                    self._straight(retreat, rot)
+                    break
+                except PlanFailure:
+                    continue
+            self._wait(pp.rest_wait)
+            end_pos = box_centre_3d(self.object_points(obj))
+            moved = float((end_pos - start_pos) @ d)
+            verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
+            return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
+        return self._run("push", body, max_sim_time)
+
+    def _check_stroke(self, pushed: set[str], path: list[np.ndarray], contact: np.ndarray, d: np.ndarray, gap: float | None = None) -> None:
+        """Raise PlanFailure when a link other than the hand would touch the ``pushed`` objects (the
+        object and what rides in or on it, carried along once the fingers reach it) or the arm
+        any other object, along the push ``path``."""
+        gap = self.params.push.standoff if gap is None else gap
+        for q in path:
+            advanced = float((self.ik.fk(q)[0] - contact) @ d)
+            shift = d * max(0.0, advanced - gap)
+            hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, {n: shift for n in pushed})
+            if hits:
+                raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))} while pushing")
