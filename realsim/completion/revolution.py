@@ -1,10 +1,11 @@
 """Round objects: the visible profile revolved about a vertical axis fitted to the footprint's arc.
 
 The axis is the centre of a circle fitted to the visible side; the check that the body is round is
-the evidence itself: the fit's residual, the arc it covers, and (for a camera view) the silhouette,
-whose width across the line of sight is the body's diameter. The solid is the revolution of the
-observed outer radius per height band (a bottle keeps its neck), built as one convex frustum per
-band so the collision shape follows a profile that is not convex.
+the evidence itself: each height band a circle about that axis, the arc it covers, and (for a
+camera view) the silhouette, whose width across the line of sight is the body's diameter (neither
+narrower nor wider). A straight side is the fitted cylinder; otherwise the solid is the revolution
+of the observed outer radius per height band (a bottle keeps its neck), built as one convex
+frustum per band so the collision shape follows a profile that is not convex.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ class Revolved:
     outer: trimesh.Trimesh
     centre: np.ndarray  # (2,) axis position
     radius: float  # fitted radius of the visible side
+    straight: bool = False  # the profile is straight: one cylinder of the fitted radius
 
 
 def round_axis(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams,
@@ -45,8 +47,9 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
         if np.linalg.norm(d) > 1e-6:
             lateral = np.array([-d[1], d[0]]) / np.linalg.norm(d)
             w = points[:, :2] @ lateral
-            if float(np.percentile(w, 99) - np.percentile(w, 1)) < params.silhouette_min_share * 2 * radius:
-                return None  # narrower across the line of sight than the circle: not round
+            share = float(np.percentile(w, 99) - np.percentile(w, 1)) / (2 * radius)
+            if not params.silhouette_min_share <= share <= 1 / params.silhouette_min_share:
+                return None  # narrower or wider across the line of sight than the circle: not round
     return centre, radius
 
 
@@ -96,6 +99,11 @@ def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: C
     centre, radius = axis
     z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile)
     n = params.cylinder_sections
+    if float(np.ptp(r[1:-1])) <= params.straight_profile_share * radius:  # a straight side: the fitted cylinder
+        height = top_z - base_z
+        cylinder = trimesh.creation.cylinder(radius=radius, height=height, sections=n)
+        cylinder.apply_translation([centre[0], centre[1], base_z + height / 2])
+        return Revolved([cylinder], cylinder, cylinder, centre, radius, straight=True)
     pieces = [trimesh.convex.convex_hull(np.vstack([_ring(float(r[i]), float(z[i]), centre, n), _ring(float(r[i + 1]), float(z[i + 1]), centre, n)]))
               for i in range(len(z) - 1)]
     line = np.vstack([[0.0, base_z], np.column_stack([r, z]), [0.0, top_z]])

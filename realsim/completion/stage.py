@@ -46,7 +46,10 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             revolved = None
         parts: list[trimesh.Trimesh] | None = None
         visual: trimesh.Trimesh | None = None
-        if revolved is not None:
+        if revolved is not None and revolved.straight:
+            kind = "cylinder"
+            mesh, base_centre = revolved.outer, np.array([revolved.centre[0], revolved.centre[1], base_z])
+        elif revolved is not None:
             kind = "solid of revolution of its visible profile"
             mesh, parts, visual = revolved.outer, revolved.pieces, revolved.visual
             base_centre = np.array([revolved.centre[0], revolved.centre[1], base_z])
@@ -65,11 +68,15 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
             kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
+        elif revolved is not None and revolved.straight:
+            if view is not None:
+                mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
         elif revolved is None:
             seen = pts[pts[:, 2] <= top_z]
             tiles, carved = carve_to_tiles(mesh, view, base_z, seen, params, own=obj.id) if view is not None else (None, 0.0)
             if tiles is not None and carved >= params.tile_min_fraction:  # much seen through: the body is not convex
                 parts = tiles
+                visual = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)[0]  # one closed surface to paint
                 kind = f"{kind}, {len(tiles)} convex tiles of what the camera's free space leaves"
             elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill)) is not None:
                 kind = f"{kind} in {len(parts)} slabs (not convex)"
@@ -79,8 +86,8 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
                 mesh, carved = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)
         elif view is not None:
             parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
-            if carved >= params.carve_min_fraction:
-                visual = None
+            if carved >= params.carve_min_fraction:  # the revolved surface no longer matches: paint the carved hull
+                visual = fast_hull(np.vstack([p.vertices for p in parts]))
         if carved >= params.carve_min_fraction and container is None:
             kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         if parts is not None and container is None:
