@@ -76,3 +76,26 @@ def test_the_scenes_own_name_wins() -> None:
     assert [c.text() for c in plan.calls] == ["place_beside('obj1_red_object', 'obj3_white_box', 'next')"]
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("grab the red one", scan)
+
+
+REFERENCES: list[tuple[str, list[str]]] = [
+    ("grab the biggest cube and put it next to the smallest one", ["grasp('obj4_cube')", "place_beside('obj4_cube', 'obj5_cube', 'next')"]),
+    ("place the green cube beside the red one", ["place_beside('obj5_cube', 'obj3_cube', 'next')"]),
+    ("put the banana in the bowl. put the strawberry in there too", ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("hand the banana over", ["grasp('obj7_banana')"]),
+    ("pick up whichever fruit is closest to you", ["grasp('obj8_strawberry')"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), REFERENCES, ids=[p[0][:40] for p in REFERENCES])
+def test_one_there_and_relative_clauses(sentence: str, lines: list[str]) -> None:
+    """'one' stands for the moved object's noun, 'there' for the last place."""
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+
+
+@pytest.mark.parametrize("sentence", ["grab the can further away from you", "pick up whichever can is closer to you",
+                                      "put it in there"])
+def test_level_extremes_and_empty_references_are_refused(sentence: str) -> None:
+    """Two cans level along the asked direction: neither is 'the closer one'."""
+    with pytest.raises(InputError, match="ambiguous|does not refer"):
+        RulePlanner().plan(sentence, CLUTTER)

@@ -53,6 +53,7 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is )?behind", "behind"),
     (r"(?:that is |thats |which is )?in front of", "front"),
 )
+TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
 # robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
 EXTREMES: dict[str, tuple[int, float]] = {
     "leftmost": (1, 1.0), "left most": (1, 1.0), "left": (1, 1.0), "rightmost": (1, -1.0), "right most": (1, -1.0), "right": (1, -1.0),
@@ -72,6 +73,7 @@ class Context:
     """What earlier clauses referred to ("it", "them", "the other one")."""
 
     last: list[ObjectInfo] = field(default_factory=list)
+    place: ObjectInfo | None = None  # the last target ("put the can in there too")
 
     def set(self, objs: list[ObjectInfo]) -> None:
         if objs:
@@ -219,6 +221,7 @@ class Resolver:
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
                        allow_plural: bool, loose: bool = False) -> list[ObjectInfo]:
         cands = [o for o in self.objects if o.name not in exclude]
+        text = re.sub(r"^(?:whichever|whatever|which ever|the one of the|one of the) (.+?) (?:is|are|that is|that are) ", r"\1 ", text)
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:closest|nearest) to (?!me$|you$|the robot$)(.+)", text)
@@ -238,8 +241,8 @@ class Resolver:
                     cands = [o for o in cands if any(o.name != r.name and relation_holds(rel, o, r, self.forward, self.left) for r in refs)]
                     break
         # positional locators: "on the left", "in the back", "closest to you", "in the middle"
-        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
-                         r"|(closest|nearest) to (?:me|you|the robot)|(farthest|furthest) from (?:me|you|the robot))", text)
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
+                         r"|(closest|nearest|closer|nearer) to (?:me|you|the robot)|(farthest|furthest|farther|further)(?: away)? from (?:me|you|the robot))", text)
         if m:
             text = m.group(1)
             word = m.group(3) or ("nearest" if m.group(4) else "farthest")
@@ -345,7 +348,11 @@ class Resolver:
             return [ranked[-1]]
         if k > len(ranked):
             raise InputError(f"there is no {phrase.strip()!r}: only {len(ranked)} such objects")
-        return [ranked[k - 1]]
+        pick = ranked[k - 1]
+        ties = [o for o in ranked if o is not pick and abs(self.robot_xy(o)[axis] - self.robot_xy(pick)[axis]) < TIE]
+        if ties:  # level with another along that direction: which one is meant is not clear
+            raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish([pick, *ties]))} are level; say which one")
+        return [pick]
 
     def _distinguish(self, objs: list[ObjectInfo]) -> list[str]:
         """Each candidate with its colour, size and position word among the others."""

@@ -23,7 +23,7 @@ from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, Dra
 from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import Call, ObjectInfo, Plan, program_text
-from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES, norm
+from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, NUMBERS, UNITS, VAGUE_DISTANCES, name_words, norm, singular
 
 DEFAULT_PUSH = 0.10  # m, when no distance is given
 HELP = (
@@ -125,6 +125,7 @@ def _clause(clause: str, p: _Parser) -> _Step:
     m = re.fullmatch(r"(pull open|pull out|open|close|shut|push in|push closed|push shut) (.+?)(?: all the way| fully| completely| halfway)?", c)
     if m and (m.group(1) in ("open", "close", "shut") or re.search(r"drawer|door|cabinet|lid", m.group(2))):
         return _articulate(m.group(1), m.group(2), p)
+    c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
         verb, rest = _verb(rephrase(c))
@@ -242,8 +243,13 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
         return _Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
                      [Between(o.name, a.name, b.name) for o in objs], tuple(o.name for o in objs))
     want = {"in": "container", "on": "support"}.get(kind)
-    targets = p.resolver.resolve(target_phrase, Context(p.ctx.last), want=want, allow_plural=False)
-    target = targets[0]
+    if target_phrase in ("there", "that place", "the same place", "the same spot"):
+        if p.ctx.place is None:
+            raise InputError(f"'{target_phrase}' does not refer to any place yet; name it; {p.resolver.listing()}")
+        target = p.ctx.place
+    else:
+        target = _target(target_phrase, obj_phrase, p, want)
+    p.ctx.place = target
     objs = _objs(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
     if len(objs) > 1:
         objs = [o for o in objs if o.name != target.name]
@@ -267,6 +273,30 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
             calls.append(Call("place_beside", (o.name, target.name, kind)))
             goals.append(SideOf(o.name, target.name, kind))
     return _Step(calls, goals, tuple(o.name for o in objs))
+
+
+def _target(target_phrase: str, obj_phrase: str, p: _Parser, want: str | None) -> ObjectInfo:
+    """The one object ``target_phrase`` names; "one" stands for the moved object's noun ("put the
+    green cube beside the red one": the red cube), else for any object."""
+    ctx = Context(p.ctx.last, p.ctx.place)
+    head = _head_noun(obj_phrase, p)
+    if head and re.search(r"\bone$", target_phrase) and not re.search(r"\bother one$", target_phrase):
+        try:
+            return p.resolver.resolve(re.sub(r"\bone$", head, target_phrase), ctx, want=want, allow_plural=False)[0]
+        except InputError:
+            pass
+    return p.resolver.resolve(target_phrase, ctx, want=want, allow_plural=False)[0]
+
+
+def _head_noun(phrase: str, p: _Parser) -> str | None:
+    """The noun a phrase ends with ("the green cube": cube; "it": the last object's label)."""
+    words = re.sub(rf"{PARTICLES}$", "", " " + norm(phrase)).split()
+    if not words:
+        return None
+    if words[-1] in ("it", "them", "this", "that") and p.ctx.last:
+        return name_words(p.ctx.last[0].label)[-1] if name_words(p.ctx.last[0].label) else None
+    word = singular(words[-1])
+    return None if word in (*GENERIC, "one", "ones", "it", "them") or word.isdigit() else word
 
 
 def _articulate(verb: str, phrase: str, p: _Parser) -> _Step:
