@@ -17,7 +17,7 @@ goal does not move that moved more than 2 cm), then the totals.
 
 Goal words: ``lift X``, ``in X Y``, ``on X Y``, ``next X Y``, ``left|right|front|behind X Y``,
 ``between X Y Z``, ``moved X left|right|forward|back D``, ``table X``, ``at X`` (back where it
-started), ``home``, ``refuse``; several joined by ``;``. An object key is the end of a body name
+started), ``swapped X Y`` (each where the other started), ``home``, ``refuse``; several joined by ``;``. An object key is the end of a body name
 (``soup_can``) with an optional ``@left``/``@right``/``@front``/``@back`` choosing among several
 by their start positions in the robot's frame.
 """
@@ -209,6 +209,9 @@ SUITE: list[tuple[str, str, str]] = [
     ("textblocks", "could you move the green cube a little closer to you", "moved cube@green back 0.05"),
     ("textblocks", "set the red block down behind the blue block", "behind cube@red cube@blue"),
     ("textblocks", "put the red and the blue cube on the plate", "on cube@red plate; on cube@blue plate"),
+    ("textblocks", "swap the red cube and the green cube", "swapped cube@red cube@green"),
+    ("textblocks", "could you switch where the blue block and the plate are", "swapped cube@blue plate"),
+    ("fruitcans", "swap the positions of the strawberry and the cube", "swapped strawberry rubiks_cube"),
     # --- a converted real scan (mOSD test45): cans, boxes and white objects named by colour and shape
     ("scan45", "pick up the red cracker box", "lift red_cracker_box"),
     ("scan45", "grab the small white thing", "lift small_white_object"),
@@ -356,6 +359,10 @@ def expected_goals(spec: str, sim):
             goals.append(Moved(names[0], DIRECTIONS[keys[1]], float(keys[2])))
         elif kind == "table":
             goals.append(OnTable(names[0]))
+        elif kind == "swapped":  # each where the other started
+            movers.add(names[1])
+            pa, pb = sim.object_pose(names[0])[0], sim.object_pose(names[1])[0]
+            goals += [Placed(names[0], (float(pb[0]), float(pb[1]))), Placed(names[1], (float(pa[0]), float(pa[1])))]
         elif kind == "at":
             p = sim.object_pose(names[0])[0]
             goals.append(Placed(names[0], (float(p[0]), float(p[1]))))

@@ -99,3 +99,14 @@ def test_level_extremes_and_empty_references_are_refused(sentence: str) -> None:
     """Two cans level along the asked direction: neither is 'the closer one'."""
     with pytest.raises(InputError, match="ambiguous|does not refer"):
         RulePlanner().plan(sentence, CLUTTER)
+
+
+def test_swap_moves_one_aside_first() -> None:
+    from realsim.planner import Placed
+
+    plan = RulePlanner().plan("could you switch the positions of the red cube and the green cube", CLUTTER)
+    assert [c.text() for c in plan.calls] == ["place_beside('obj3_cube', 'obj5_cube', 'right')", "place('obj5_cube', [0.55, 0.25, 0.03])",
+                                             "place('obj3_cube', [0.55, -0.15, 0.025])"]
+    assert plan.goals == [Placed("obj3_cube", (0.55, -0.15)), Placed("obj5_cube", (0.55, 0.25))]
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("swap the can and the bowl", CLUTTER)

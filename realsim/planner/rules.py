@@ -21,9 +21,10 @@ from dataclasses import dataclass, field
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
+from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import Call, ObjectInfo, Plan, program_text
-from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, NUMBERS, UNITS, VAGUE_DISTANCES, name_words, norm, singular
+from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, name_words, norm, singular
 
 DEFAULT_PUSH = 0.10  # m, when no distance is given
 HELP = (
@@ -125,13 +126,16 @@ def _clause(clause: str, p: _Parser) -> _Step:
     m = re.fullmatch(r"(pull open|pull out|open|close|shut|push in|push closed|push shut) (.+?)(?: all the way| fully| completely| halfway)?", c)
     if m and (m.group(1) in ("open", "close", "shut") or re.search(r"drawer|door|cabinet|lid", m.group(2))):
         return _articulate(m.group(1), m.group(2), p)
+    m = _SWAP.fullmatch(c)
+    if m:
+        return _swap(m.group(1), m.group(2), p)
     c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
         verb, rest = _verb(rephrase(c))
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
-    if verb in PUSH and _is_push(rest):
+    if verb in PUSH and is_push(rest):
         return _push(rest, p, clause)
     if verb in ("hand me", "give me", "pass me", "bring me"):
         return _take(rest, p)
@@ -318,56 +322,14 @@ def _articulate(verb: str, phrase: str, p: _Parser) -> _Step:
 
 
 # ----------------------------------------------------------------------------------------------
-# pushes
-
-_DIR_ALT = "|".join(re.escape(w) for w in sorted(DIRECTION_WORDS, key=len, reverse=True))
-_NUM_ALT = "|".join(re.escape(w) for w in sorted(NUMBERS, key=len, reverse=True)) + "|half"
-_UNIT_ALT = r"cm|mm|m|in|inch|inches|inche|ft|foot|feet|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?"
-_TAIL = re.compile(rf"\b(?:by|about|around|roughly|some|approximately|like|to the|to|toward|towards|over to the|over|{_DIR_ALT}|{_NUM_ALT}|"
-                   + "|".join(re.escape(v) for v in VAGUE_DISTANCES) + r")\b|(?<![a-z])\.?\d")
-
-
-_NOT_OBJECT = re.compile(r"\b(?:by|about|around|roughly|approximately|toward|towards|to the|over to)\b|(?<![a-z])\.?\d|"
-                         + "|".join(rf"\b{re.escape(v)}\b" for v in VAGUE_DISTANCES))
-
-
-def _has_direction(text: str) -> bool:
-    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", text))
-
-
-def _is_push(rest: str) -> bool:
-    """A direction word outside any object relation ("push the mug left", not "put it left of the box")."""
-    if re.search(r"\b(?:left|right) (?:of|side of)\b|\bin front of\b|\bbehind\b|\bnext to\b|\bbeside\b|\bbetween\b|\b(?:in|into|onto|inside|on top of)\b", rest):
-        return False
-    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", rest)) or _distance(rest) is not None
-
-
-def _distance(text: str) -> float | None:
-    for phrase, value in sorted(VAGUE_DISTANCES.items(), key=lambda kv: -len(kv[0])):
-        if re.search(rf"\b{re.escape(phrase)}\b", text):
-            return value
-    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|{_NUM_ALT}|a)\s*(?:and a half\s*)?({_UNIT_ALT})\b", text)
-    if not m:
-        return None
-    raw, unit = m.group(1), m.group(2)
-    value = {"a": 1.0, "half": 0.5}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
-    if "and a half" in m.group(0):
-        value += 0.5
-    unit = unit[:-1] if unit.endswith("s") and unit not in ("s",) else unit
-    scale = UNITS.get(unit) or next((s for k, s in UNITS.items() if len(k) > 2 and unit.startswith(k)), None)
-    if scale is None:
-        return None
-    dist = float(value) * scale
-    if not 0.0 < dist <= 1.0:
-        raise InputError(f"push distance {dist:.3f} m is out of range (0 to 1 m)")
-    return dist
+# pushes (the words: realsim.planner.pushes) and swaps
 
 
 def _push(rest: str, p: _Parser, clause: str) -> _Step:
     objs, tail, first_error = None, "", None
-    for cut in [*_TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
+    for cut in [*TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
         obj_phrase = rest[: cut.start()].strip() if cut else rest
-        if not obj_phrase or _NOT_OBJECT.search(obj_phrase) or (cut is not None and not _has_direction(rest[cut.start():])):
+        if not obj_phrase or NOT_OBJECT.search(obj_phrase) or (cut is not None and not has_direction(rest[cut.start():])):
             continue
         try:
             objs = _objs(obj_phrase, p)
@@ -385,8 +347,25 @@ def _push(rest: str, p: _Parser, clause: str) -> _Step:
             break
     if direction is None:
         raise InputError(f"which way? say left, right, forward or back in {clause!r}")
-    dist = _distance(tail) or DEFAULT_PUSH
+    dist = distance(tail) or DEFAULT_PUSH
     p.ctx.set(objs)
     return _Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
                  [Moved(o.name, DIRECTIONS[direction], round(dist, 3)) for o in objs], tuple(o.name for o in objs))
 
+
+
+_SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|locations) of| where| places of)?"
+                   r" (.+?) and (.+?)(?: (?:are|is|around|over|places|positions|spots|sit))*")
+
+
+def _swap(a_phrase: str, b_phrase: str, p: _Parser) -> _Step:
+    """Each object where the other was: the first steps aside (beyond the second, away from its
+    own spot), the second goes to the first's spot, then the first to the second's."""
+    a = p.resolver.resolve(a_phrase, p.ctx, allow_plural=False)[0]
+    b = p.resolver.resolve(b_phrase, Context(p.ctx.last), exclude=[a.name], allow_plural=False)[0]
+    (af, al), (bf, bl) = p.resolver.robot_xy(a), p.resolver.robot_xy(b)
+    side = ("left" if bl > al else "right") if abs(bl - al) >= abs(bf - af) else ("behind" if bf > af else "front")
+    pa, pb = [round(v, 3) for v in a.position], [round(v, 3) for v in b.position]
+    p.ctx.set([a, b])
+    return _Step([Call("place_beside", (a.name, b.name, side)), Call("place", (b.name, pa)), Call("place", (a.name, pb))],
+                 [Placed(a.name, (pb[0], pb[1])), Placed(b.name, (pa[0], pa[1]))], (a.name, b.name))

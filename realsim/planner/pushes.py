@@ -1,0 +1,53 @@
+"""Pushes in words: whether a clause is a push ("push the mug left", not "put it left of the
+box"), which way, and how far ("5 cm", "two inches", "a bit")."""
+
+from __future__ import annotations
+
+import re
+
+from realsim.errors import InputError
+from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES
+
+_DIR_ALT = "|".join(re.escape(w) for w in sorted(DIRECTION_WORDS, key=len, reverse=True))
+_NUM_ALT = "|".join(re.escape(w) for w in sorted(NUMBERS, key=len, reverse=True)) + "|half"
+_UNIT_ALT = r"cm|mm|m|in|inch|inches|inche|ft|foot|feet|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?"
+TAIL = re.compile(rf"\b(?:by|about|around|roughly|some|approximately|like|to the|to|toward|towards|over to the|over|{_DIR_ALT}|{_NUM_ALT}|"
+                   + "|".join(re.escape(v) for v in VAGUE_DISTANCES) + r")\b|(?<![a-z])\.?\d")
+
+
+NOT_OBJECT = re.compile(r"\b(?:by|about|around|roughly|approximately|toward|towards|to the|over to)\b|(?<![a-z])\.?\d|"
+                         + "|".join(rf"\b{re.escape(v)}\b" for v in VAGUE_DISTANCES))
+
+
+def has_direction(text: str) -> bool:
+    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", text))
+
+
+def is_push(rest: str) -> bool:
+    """A direction word outside any object relation ("push the mug left", not "put it left of the box")."""
+    if re.search(r"\b(?:left|right) (?:of|side of)\b|\bin front of\b|\bbehind\b|\bnext to\b|\bbeside\b|\bbetween\b|\b(?:in|into|onto|inside|on top of)\b", rest):
+        return False
+    return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", rest)) or distance(rest) is not None
+
+
+def distance(text: str) -> float | None:
+    for phrase, value in sorted(VAGUE_DISTANCES.items(), key=lambda kv: -len(kv[0])):
+        if re.search(rf"\b{re.escape(phrase)}\b", text):
+            return value
+    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|{_NUM_ALT}|a)\s*(?:and a half\s*)?({_UNIT_ALT})\b", text)
+    if not m:
+        return None
+    raw, unit = m.group(1), m.group(2)
+    value = {"a": 1.0, "half": 0.5}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
+    if "and a half" in m.group(0):
+        value += 0.5
+    unit = unit[:-1] if unit.endswith("s") and unit not in ("s",) else unit
+    scale = UNITS.get(unit) or next((s for k, s in UNITS.items() if len(k) > 2 and unit.startswith(k)), None)
+    if scale is None:
+        return None
+    dist = float(value) * scale
+    if not 0.0 < dist <= 1.0:
+        raise InputError(f"push distance {dist:.3f} m is out of range (0 to 1 m)")
+    return dist
+
+
