@@ -83,6 +83,11 @@ REFERENCES: list[tuple[str, list[str]]] = [
     ("place the green cube beside the red one", ["place_beside('obj5_cube', 'obj3_cube', 'next')"]),
     ("put the banana in the bowl. put the strawberry in there too", ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
     ("hand the banana over", ["grasp('obj7_banana')"]),
+    ("put the green cube to the left side of the bowl", ["place_beside('obj5_cube', 'obj6_bowl', 'left')"]),
+    ("pick up the cube that is red", ["grasp('obj3_cube')"]),
+    ("grab the can on your left", ["grasp('obj1_soda_can')"]),
+    ("move the bowl closer to the banana", ["place_beside('obj6_bowl', 'obj7_banana', 'next')"]),
+    ("move the bowl closer to you", ["push('obj6_bowl', 'back', 0.1)"]),
     ("pick up whichever fruit is closest to you", ["grasp('obj8_strawberry')"]),
 ]
 

@@ -32,7 +32,9 @@ PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too
 
 RELATIONS: tuple[tuple[str, str], ...] = (
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
-    ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
+    ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
+    ("to the right hand side of", "right"), ("to the right side of", "right"), ("on the right hand side of", "right"),
+    ("closer to", "next"), ("nearer to", "next"), ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
     ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
     ("behind", "behind"), ("in between", "between"), ("between", "between"),
     ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
@@ -50,6 +52,7 @@ def clean(command: str) -> str:
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
+    text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)

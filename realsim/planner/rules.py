@@ -205,7 +205,8 @@ def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
     last_error: InputError | None = None
     for start, end, kind in _find_relation(rest):
         obj_phrase, target_phrase = rest[:start].strip(), rest[end:].strip()
-        if not obj_phrase or not target_phrase or _starts_with_relation(target_phrase):
+        if (not obj_phrase or not target_phrase or _starts_with_relation(target_phrase)
+                or (kind == "to" and re.search(r"\b(?:left|right|front|back|side|top|edge)\b.*\bof\b", target_phrase))):
             continue  # "move the banana over next to the can": "over" is a particle here
         try:
             return _relation(obj_phrase, kind, target_phrase, p, verb)
