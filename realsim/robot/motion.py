@@ -33,7 +33,7 @@ class Motion(WorldQueries):
         path, q = [], q_init
         for k in range(1, n + 1):
             f = k / n
-            ang = np.linalg.norm(axis_angle)
+            ang = float(np.linalg.norm(axis_angle))
             r = rot_start @ (rotate_about(axis_angle, f * ang) if ang > 1e-9 else np.eye(3))
             res = self._ik(start + f * (end - start), r, q)
             if not res.converged:
@@ -110,8 +110,9 @@ class Motion(WorldQueries):
         """Raise PlanFailure when the arm would touch an object along ``path`` from ``start`` (default:
         the commanded joints), at waypoints and midpoints; the held object is carried, not hit."""
         rel = None
-        if self.held:  # the held object moves with the hand: checked against the others like a link
-            b = self._body(self.held)
+        held = self.held
+        if held:  # the held object moves with the hand: checked against the others like a link
+            b = self._body(held)
             tcp, rot = self.tcp_pose()
             rel = (rot.T @ (self.data.xpos[b] - tcp), rot.T @ self.data.xmat[b].reshape(3, 3))
         q_prev = self.data.ctrl[self.act].copy() if start is None else np.asarray(start, float)
@@ -119,9 +120,9 @@ class Motion(WorldQueries):
             for f in (0.5, 1.0):
                 qf = q_prev + f * (q - q_prev)
                 carried = None
-                if rel is not None:
+                if held and rel is not None:
                     p_w, r_w = self.ik.fk(qf)
-                    carried = {self.held: (r_w @ rel[0] + p_w, mat_to_quat(r_w @ rel[1]))}
+                    carried = {held: (r_w @ rel[0] + p_w, mat_to_quat(r_w @ rel[1]))}
                 hits = self.geometry.robot_hits(self.qadr, qf, ignore, hand_may_touch, self.hand_bodies, carried=carried)
                 if hits:
                     raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))}")

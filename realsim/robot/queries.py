@@ -12,12 +12,14 @@ __all__ = ["WorldQueries", "box_centre", "box_centre_3d"]
 
 def box_centre(pts: np.ndarray) -> np.ndarray:
     """xy centre of the points' bounding box."""
-    return (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
+    centre: np.ndarray = (pts[:, :2].min(axis=0) + pts[:, :2].max(axis=0)) / 2
+    return centre
 
 
 def box_centre_3d(pts: np.ndarray) -> np.ndarray:
     """Centre of the points' bounding box: where goals measure an object."""
-    return (pts.min(axis=0) + pts.max(axis=0)) / 2
+    centre: np.ndarray = (pts.min(axis=0) + pts.max(axis=0)) / 2
+    return centre
 
 
 class WorldQueries(Arm):

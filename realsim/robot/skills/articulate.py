@@ -8,6 +8,7 @@ import numpy as np
 from realsim.robot.grasps import frame_from, rotate_about
 from realsim.robot.model import GRIPPER_OPEN_CTRL
 from realsim.robot.motion import Motion
+from realsim.robot.queries import box_centre_3d
 from realsim.robot.result import ActionResult, PlanFailure
 
 __all__ = ["ArticulationSkills"]
@@ -36,16 +37,15 @@ class ArticulationSkills(Motion):
         m = self.model
         for i in range(m.nsite):
             if m.site_bodyid[i] == b and "handle" in m.site(i).name:
-                return self.data.site_xpos[i].copy()
+                return np.array(self.data.site_xpos[i])
         for g in range(m.ngeom):
             if m.geom_bodyid[g] == b and "handle" in m.geom(g).name:
-                return self.data.geom_xpos[g].copy()
+                return np.array(self.data.geom_xpos[g])
         if pull is None:
-            return self.data.xpos[b].copy()
+            return np.array(self.data.xpos[b])
         pts = self._world_points(b)
         along = pts @ pull
-        front = pts[along > along.max() - self.params.articulation.handle_face]
-        return (front.min(axis=0) + front.max(axis=0)) / 2
+        return box_centre_3d(pts[along > along.max() - self.params.articulation.handle_face])
 
     def _articulate(self, name: str, obj: str, amount: float | None, opening: bool) -> ActionResult:
         """Grip ``obj``'s handle, move its joint to the open (by ``amount``) or closed end, let go, judge."""

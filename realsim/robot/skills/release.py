@@ -116,7 +116,8 @@ class Release(Motion):
 
         def turn_offset(yaw: float) -> np.ndarray:  # the object's centre relative to the tcp, turned
             c, s_ = np.cos(yaw), np.sin(yaw)
-            return offset @ np.array([[c, s_], [-s_, c]])
+            turned: np.ndarray = offset @ np.array([[c, s_], [-s_, c]])
+            return turned
 
         def fits(pose: tuple[np.ndarray, float, float]) -> bool:
             xy, yaw, _ = pose
@@ -127,4 +128,5 @@ class Release(Motion):
         clear = [pose for pose in poses if fits(pose)]
         if not clear and not keepout.soft:
             raise PlanFailure(f"no release pose leaves {keepout.margin * 1000:.0f} mm to the other objects ({len(poses)} tried)")
-        return (clear or poses)[: self.release.max_poses]
+        kept: list[tuple[np.ndarray, float, float]] = (clear or poses)[: self.release.max_poses]
+        return kept
