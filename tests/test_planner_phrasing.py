@@ -88,6 +88,10 @@ REFERENCES: list[tuple[str, list[str]]] = [
     ("grab the can on your left", ["grasp('obj1_soda_can')"]),
     ("move the bowl closer to the banana", ["place_beside('obj6_bowl', 'obj7_banana', 'next')"]),
     ("move the bowl closer to you", ["push('obj6_bowl', 'back', 0.1)"]),
+    ("stack the cubes", ["place_on('obj3_cube', 'obj4_cube')", "place_on('obj5_cube', 'obj3_cube')"]),
+    ("return the strawberry to where it was", ["place('obj8_strawberry', [0.25, 0.3, 0.02])"]),
+    ("pick up the strawberry and give it to me", ["grasp('obj8_strawberry')", "grasp('obj8_strawberry')"]),
+    ("put the cube nearest the bowl into the bowl", ["place_in('obj4_cube', 'obj6_bowl')"]),
     ("pick up whichever fruit is closest to you", ["grasp('obj8_strawberry')"]),
 ]
 

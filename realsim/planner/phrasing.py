@@ -26,7 +26,7 @@ PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
        "move", "shift", "slide", "drag", "stand", "rest")
 PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
-ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
+ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
 

@@ -23,21 +23,7 @@ from realsim.errors import InputError
 from realsim.planner import relations
 from realsim.planner.attributes import colors_of, extreme_by_size, nth, pts, relation_holds
 from realsim.planner.types import ObjectInfo
-from realsim.planner.vocab import (
-    BIG,
-    COLOR_WORDS,
-    GENERIC,
-    KINDS,
-    NUMBERS,
-    ORDINALS,
-    SMALL,
-    SYNONYMS,
-    is_plural,
-    name_words,
-    norm,
-    record,
-    singular,
-)
+from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
 DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those"}
 SINGULAR_PRONOUNS = {"it", "this", "that", "this one", "that one", "the same one", "same one", "the same", "same", "itself",
@@ -227,7 +213,7 @@ class Resolver:
         text = re.sub(r"^(?:whichever|whatever|which ever|the one of the|one of the) (.+?) (?:is|are|that is|that are) ", r"\1 ", text)
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
-        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:closest|nearest) to (?!me$|you$|the robot$)(.+)", text)
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:closest|nearest)(?: to)? (?!(?:to )?(?:me|you|the robot)$)(.+)", text)
         if m:
             ref = self.resolve(m.group(2), Context(), allow_plural=False)[0]
             text, order = m.group(1), ("near", ref)
@@ -300,7 +286,7 @@ class Resolver:
         if want:
             scored = [(o, s + (0.3 if s > 0 and want in o.affordances else 0.0)) for o, s in scored]
         scored = [(o, s) for o, s in scored if s > 0]
-        if colors:  # a colour decides before the noun's score does ("the blue one" is not the plate)
+        if colors and scored:  # a colour decides before the noun's score does ("the blue one" is not the plate)
             if not any(colors_of(o) for o, _ in scored):
                 raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o, _ in scored)}; "
                                  "name it another way")

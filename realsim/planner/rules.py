@@ -194,6 +194,15 @@ def _find_relation(rest: str) -> list[tuple[int, int, str]]:
 
 def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
+    rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where it (?:was|came from|belongs|started)|its (?:original |old |starting )?(?:place|spot|position))$",
+                  " back", rest)
+    if verb == "stack" and not _find_relation(rest):  # "stack the cubes": a tower, the biggest at the bottom
+        objs = sorted(_objs(rest, p), key=lambda o: -float(o.size[0] * o.size[1] * o.size[2]))
+        if len(objs) < 2:
+            raise InputError(f"stack {rest!r} on what? name a second object; {p.resolver.listing()}")
+        p.ctx.set(objs)
+        return _Step([Call("place_on", (o.name, below.name)) for below, o in zip(objs, objs[1:])],
+                     [On(o.name, below.name) for below, o in zip(objs, objs[1:])], tuple(o.name for o in objs[1:]))
     m = re.fullmatch(r"(.+?)\s+(back|down)(?: where it (?:was|came from|belongs)| in its (?:place|spot)| on its spot)?", rest)
     if verb in ("put back", "put down", "set down", "lay down") and not _find_relation(rest):
         m = re.fullmatch(r"(.+)", rest)
