@@ -6,6 +6,7 @@ import dataclasses
 
 import numpy as np
 
+from realsim.geometry import inside_convex_polygon
 from realsim.resolution import working_resolution
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import safe_name
@@ -48,6 +49,22 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
     )
 
 
+def _noise(scene: Scene, params: SegmentParams) -> float:
+    """The capture's depth noise (m): robust spread of the points on its largest observed support."""
+    observed = [p for p in scene.planes if p.observed]
+    if not observed or scene.points is None:
+        return 0.0
+    plane = max(observed, key=lambda p: p.inlier_count)
+    pts = scene.points[::max(1, len(scene.points) // 200_000)]
+    with np.errstate(invalid="ignore"):
+        near = np.abs(pts[:, 2] - plane.height) < params.min_height
+    near &= inside_convex_polygon(np.nan_to_num(pts[:, :2]), plane.polygon, 0.0)
+    r = pts[near, 2] - plane.height
+    if len(r) < 20:
+        return 0.0
+    return float(1.4826 * np.median(np.abs(r - np.median(r))))
+
+
 def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarray, SegmentResult]:
     """Segment the points above the supports on a voxel grid at the capture's working resolution,
     then give every input point its voxel's label: the cost depends on the scene, not on how
@@ -71,7 +88,7 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
     result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
-    result = filter_by_size(centres, result, scene.planes, params)
+    result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * _noise(scene, params)))
     labels[fg] = result.labels[inverse]
     return labels, result
 

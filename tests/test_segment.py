@@ -230,3 +230,49 @@ def test_no_objects() -> None:
     result = segment_objects(points, None, [_table()], None)
     assert np.all(result.labels == 0)
     assert result.support_of == {} and result.resting_on == {}
+
+
+def _labelled(*clusters: np.ndarray) -> tuple[np.ndarray, SegmentResult]:
+    points = np.concatenate(clusters)
+    labels = np.concatenate([np.full(len(c), k, dtype=np.int32) for k, c in enumerate(clusters, start=1)])
+    return points, SegmentResult(labels, {k: 1 for k in range(1, len(clusters) + 1)}, {k: None for k in range(1, len(clusters) + 1)})
+
+
+def test_lying_cylinder_stands_on_the_table_floating_speck_does_not() -> None:
+    """A bottle lying on its side has few points near the table (its 2nd height percentile is
+    over 1.5 cm up) yet stands on it; a cluster whose lowest points are 5 cm up rests on nothing."""
+    from realsim.object_relations import filter_by_size
+
+    rng = np.random.default_rng(0)
+    ang, x = rng.uniform(0, 2 * np.pi, 4000), rng.uniform(-0.1, 0.1, 4000)
+    r = 0.035
+    lying = np.stack([x, r * np.cos(ang), TABLE_Z + r + r * np.sin(ang)], axis=1)
+    low = lying[:, 2] < TABLE_Z + 0.015  # grazing underside: seldom seen, and not above 8 mm
+    lying = np.concatenate([lying[~low], lying[low & (lying[:, 2] > TABLE_Z + 0.008)][:10]])
+    assert np.percentile(lying[:, 2] - TABLE_Z, 2) > SegmentParams().stack_min_height
+    floating = rng.uniform([0.2, 0.0, TABLE_Z + 0.05], [0.25, 0.05, TABLE_Z + 0.1], (500, 3))
+    points, result = _labelled(lying, floating)
+    out = filter_by_size(points, result, [_table()], SegmentParams())
+    assert np.all(out.labels[: len(lying)] == 1)
+    assert np.all(out.labels[len(lying):] == -1)
+
+
+def test_upright_sheet_is_structure_in_clouds_seen_from_around() -> None:
+    """A 30 x 30 cm vertical sheet (a piece of a wall, 2 mm noise) is structure, not an object;
+    a 6 cm cube seen from around is kept."""
+    from realsim.object_relations import filter_by_size
+
+    rng = np.random.default_rng(1)
+    sheet = np.stack([rng.normal(0.3, 0.002, 3000), rng.uniform(-0.15, 0.15, 3000), rng.uniform(TABLE_Z + 0.01, TABLE_Z + 0.3, 3000)], axis=1)
+    cube = rng.uniform(-0.03, 0.03, (3000, 3))
+    face = rng.integers(0, 5, 3000)  # four sides and the top
+    cube[np.arange(3000), np.where(face < 4, face % 2, 2)] = np.where(face % 2 == 0, 0.03, -0.03) * np.where(face == 4, -1, 1)
+    cube[face == 4, 2] = 0.03
+    cube += [-0.2, 0.0, TABLE_Z + 0.03]
+    cube = cube[cube[:, 2] > TABLE_Z + 0.008]
+    points, result = _labelled(sheet, cube)
+    kept = filter_by_size(points, result, [_table()], SegmentParams())
+    assert set(np.unique(kept.labels)) == {1, 2}  # without max_sheet (a single view) both stay
+    out = filter_by_size(points, result, [_table()], SegmentParams(), max_sheet=0.012)
+    assert np.all(out.labels[: len(sheet)] == 0)
+    assert np.all(out.labels[len(sheet):] == 1)

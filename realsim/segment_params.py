@@ -1,0 +1,60 @@
+"""Parameters and result of the object segmentation (:mod:`realsim.segment`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["SegmentParams", "SegmentResult"]
+
+
+@dataclass(frozen=True)
+class SegmentParams:
+    """Thresholds of the segmentation (lengths in metres, angles in degrees)."""
+
+    # foreground
+    min_height: float = 0.008  # points closer than this above their support belong to it
+    max_height: float = 1.0  # points higher than this above every support are background
+    polygon_margin: float = 0.02  # points beyond a support polygon by more than this are background
+    structure_margin: float = 0.03  # points this close under a higher support's polygon are its furniture
+    use_assumed_planes: bool = False  # also segment above supports that were not observed
+    # neighbourhoods and normals
+    normal_window: int = 5  # grid window (pixels) averaging tangent normals, organized clouds
+    normal_neighbors: int = 20  # neighbours of the covariance normals, unorganized clouds
+    knn_neighbors: int = 8  # neighbours linked per point, unorganized clouds
+    # links between neighbouring points (fragments)
+    jump_distance: float = 0.008  # neighbours farther apart than this are across a depth jump
+    # supervoxels (SLIC on position, normal and colour)
+    supervoxel_pixels: int = 10  # seed spacing in the image grid (organized clouds)
+    supervoxel_size: float = 0.02  # seed spacing and position scale (m)
+    supervoxel_normal_scale: float = 0.5  # normal distance (1 - cos^2) scale
+    supervoxel_color_scale: float = 0.15  # colour distance (RGB in [0, 1]) scale
+    supervoxel_iterations: int = 4
+    min_fragment_points: int = 8  # smaller supervoxel parts are absorbed by their best neighbour
+    # merging supervoxels (LCCP)
+    convex_tolerance: float = 40.0  # connections this close to flat count as convex
+    orientation_radius: float = 0.06  # unorganized clouds: segment normals point away from the centre of what lies this close
+    min_contact_links: int = 6  # fewer links between two fragments are not a contact
+    color_edge: float | None = None  # segments whose mean RGB differ more do not join directly (None: off;
+    # on textured real objects any useful threshold splits objects, see bench)
+    max_concave_fraction: float = 0.5  # regions whose border is more concave than this stay apart
+    # objects
+    absorb_points: int = 600  # smaller segments touching another segment join it
+    min_object_points: int = 200  # smaller isolated clusters are noise (-1)
+    stack_min_height: float = 0.015  # an object whose base is this high rests on another one
+    # sizes of objects (unorganized clouds): larger clusters are structure (walls, furniture sides),
+    # smaller ones and floating ones (resting on nothing) are noise
+    min_object_size: float = 0.02  # m, largest extent
+    absorb_area: float = 0.005  # m^2: unorganized clouds, smaller segments touching another join it
+    min_object_area: float = 0.0015  # m^2: unorganized clouds, smaller isolated clusters are noise
+    max_object_size: float = 0.8  # m, largest extent
+
+
+@dataclass
+class SegmentResult:
+    """Per-point labels (0 support/background, -1 noise, k > 0 object k) and support relations."""
+
+    labels: np.ndarray
+    support_of: dict[int, int] = field(default_factory=dict)
+    resting_on: dict[int, int | None] = field(default_factory=dict)
