@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import trimesh
 from scipy.spatial import QhullError
@@ -54,24 +56,48 @@ def _column_extremes(n_columns: int, col: np.ndarray, z: np.ndarray) -> tuple[np
     return z_lo, z_hi
 
 
-def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
-                     params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
-    """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
-    the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
-    ``carve_min_fraction`` is free."""
-    step, xy, col, cells, free = _voxels(mesh, view, params, own)
-    fraction = float(free.mean()) if len(free) else 0.0
+@dataclass
+class Carving:
+    """A convex shape carved by the free space: the share of its voxels seen through, the hull of what
+    is left (the shape itself when too little is free), and that as convex tiles (when much is free)."""
+
+    fraction: float
+    hull: trimesh.Trimesh
+    tiles: list[trimesh.Trimesh] | None = None
+
+
+def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray, params: CompletionParams,
+          own: int | None = None, tiles: bool = True) -> Carving:
+    """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when at least
+    ``tile_min_fraction`` is seen through (the body is evidently not convex) and ``tiles``, its
+    tiles (see :func:`carve_to_tiles`)."""
+    voxels = _voxels(mesh, view, params, own)
+    fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
-        return mesh, fraction
+        return Carving(fraction, mesh)
+    pieces = _tiles(voxels, base_z, observed, params) if tiles and fraction >= params.tile_min_fraction else None
+    return Carving(fraction, _carved_hull(mesh, voxels, base_z, observed), pieces)
+
+
+def _carved_hull(mesh: trimesh.Trimesh, voxels: tuple, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:
+    step, xy, col, cells, free = voxels
     z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
     good = np.isfinite(z_lo)  # the lowest and highest kept voxel of each column bound the hull
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
     kept[kept[:, 2] < base_z + step, 2] = base_z
     try:
-        carved = trimesh.convex.convex_hull(kept)
+        return fast_hull(kept)
     except QhullError:
-        return mesh, fraction
-    return carved, fraction
+        return mesh
+
+
+def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
+                     params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
+    """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
+    the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
+    ``carve_min_fraction`` is free."""
+    result = carve(mesh, view, base_z, observed, params, own, tiles=False)
+    return result.hull, result.fraction
 
 
 def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
@@ -82,10 +108,15 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
     voxel centres and the ``observed`` points in it. A hull of everything kept would fill the free
     space again wherever the body is not convex (under a pitcher's handle). None (and the share
     carved) when less than ``carve_min_fraction`` is free."""
-    step, xy, col, cells, free = _voxels(mesh, view, params, own)
-    fraction = float(free.mean()) if len(free) else 0.0
+    voxels = _voxels(mesh, view, params, own)
+    fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return None, fraction
+    return _tiles(voxels, base_z, observed, params), fraction
+
+
+def _tiles(voxels: tuple, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
+    step, xy, col, cells, free = voxels
     kept, kept_col = cells[~free].copy(), col[~free]
     kept[kept[:, 2] < base_z + step, 2] = base_z
     tile = max(params.carve_tile, float(np.cbrt(np.prod(np.ptp(kept, axis=0) + step) / params.max_pieces)))
@@ -119,7 +150,7 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
             continue
         if piece.volume > 1e-9:
             pieces.append(piece)
-    return (pieces or None), fraction
+    return pieces or None
 
 
 def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, params: CompletionParams,

@@ -33,17 +33,22 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trim
 
 
 def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float, max_slabs: int,
-                   max_fill: float) -> list[trimesh.Trimesh] | None:
+                   max_fill: float, whole: trimesh.Trimesh | None = None, min_elongation: float = 2.0) -> list[trimesh.Trimesh] | None:
     """Convex pieces: the points cut into slabs about ``slab`` long across their principal horizontal
     axis, each slab's hull extruded down (neighbouring slabs share their boundary points). None when
-    the object is short, or the pieces fill more than ``max_fill`` of the single extruded hull."""
+    the object is short or not ``min_elongation`` times longer than wide, or the pieces fill more than ``max_fill`` of the single extruded hull
+    (``whole``, when already made)."""
     kept = points[points[:, 2] <= top_z]
     if len(kept) < 60:
         return None
+    _, first = np.unique(np.floor(kept / 0.003).astype(np.int64), axis=0, return_index=True)
+    kept = kept[np.sort(first)]  # one point per 3 mm cell: the hulls need no more
     xy = kept[:, :2] - kept[:, :2].mean(axis=0)
     _, _, vt = np.linalg.svd(xy, full_matrices=False)
-    s = xy @ vt[0]
+    s, t = xy @ vt[0], xy @ vt[1]
     lo, hi = float(np.percentile(s, 0.5)), float(np.percentile(s, 99.5))
+    if hi - lo < min_elongation * float(np.percentile(t, 99.5) - np.percentile(t, 0.5)):
+        return None  # a compact footprint: bends along a length need a long body
     count = int(min(max_slabs, np.floor((hi - lo) / slab)))
     if count < 2:
         return None
@@ -61,7 +66,7 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
             continue
     if len(pieces) < 2:
         return None
-    whole = complete_hull(kept, base_z, top_z)[0]
+    whole = whole if whole is not None else complete_hull(kept, base_z, top_z)[0]
     if sum(p.volume for p in pieces) > max_fill * whole.volume:
         return None
     return pieces

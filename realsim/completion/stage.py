@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.carving import carve_free_space, carve_pieces, carve_to_tiles
+from realsim.completion.carving import carve, carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.hull import fast_hull
@@ -73,17 +73,17 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
                 mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
         elif revolved is None:
             seen = pts[pts[:, 2] <= top_z]
-            tiles, carved = carve_to_tiles(mesh, view, base_z, seen, params, own=obj.id) if view is not None else (None, 0.0)
-            if tiles is not None and carved >= params.tile_min_fraction:  # much seen through: the body is not convex
-                parts = tiles
-                visual = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)[0]  # one closed surface to paint
-                kind = f"{kind}, {len(tiles)} convex tiles of what the camera's free space leaves"
-            elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill)) is not None:
+            carving = carve(mesh, view, base_z, seen, params, own=obj.id) if view is not None else None
+            carved = carving.fraction if carving is not None else 0.0
+            if carving is not None and carving.tiles is not None:  # much seen through: the body is not convex
+                parts, visual = carving.tiles, carving.hull  # one closed surface to paint
+                kind = f"{kind}, {len(parts)} convex tiles of what the camera's free space leaves"
+            elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill, mesh)) is not None:
                 kind = f"{kind} in {len(parts)} slabs (not convex)"
                 if view is not None:
                     parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
-            elif view is not None:
-                mesh, carved = carve_free_space(mesh, view, base_z, seen, params, own=obj.id)
+            elif carving is not None:
+                mesh = carving.hull
         elif view is not None:
             parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
             if carved >= params.carve_min_fraction:  # the revolved surface no longer matches: paint the carved hull
