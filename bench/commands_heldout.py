@@ -153,3 +153,30 @@ HELDOUT2: list[tuple[str, str, str]] = [
     ("scan45", "move the white box a bit closer to you", "moved white_box back 0.05"),
     ("scan45", "put the red object in front of the white box", "front red_object white_box"),
 ]
+
+# A third batch, written after the last planner change and measured once, with no change after it.
+HELDOUT3: list[tuple[str, str, str]] = [
+    ("kitchen", "hey robot, toss the banana into the bowl", "in banana bowl"),
+    ("kitchen", "put the mug right next to the banana please", "next mug banana"),
+    ("kitchen", "could you grab the tomato soup for me and put it down on the right of the bowl", "right soup_can bowl"),
+    ("kitchen", "the cracker box needs to be moved 5 cm forward", "moved cracker_box forward 0.05"),
+    ("kitchen", "pick up the red can", "lift soup_can"),
+    ("pantry", "please set the rubik's cube on the foam brick", "on rubiks_cube foam_brick"),
+    ("pantry", "yellow bottle next to the marker", "next mustard_bottle marker"),
+    ("pantry", "nudge the spam a little bit to the left", "moved potted_meat_can left 0.04"),
+    ("pantry", "grab whatever is tallest", "lift mustard_bottle"),
+    ("mugbowl", "take the coffee cup and put it in the bowl, thanks", "in mug bowl"),
+    ("mugbowl", "move the mug to the front of the bowl", "front mug bowl"),
+    ("mugbowl", "drop the mug in the bowl, then push the bowl 5 cm to the left", "in mug bowl; moved bowl left 0.05"),
+    ("fruitcans", "put the red fruit in the bowl", "in strawberry bowl"),
+    ("fruitcans", "put the fruits in the bowl", "in banana bowl; in strawberry bowl"),
+    ("fruitcans", "place the tomato soup can on top of the rubik's cube", "on soup_can rubiks_cube"),
+    ("fruitcans", "pick up the yellow can", "refuse"),
+    ("textkitchen", "put the mug behind the cereal box", "behind mug cereal_box"),
+    ("textkitchen", "grab the right-hand can", "lift soda_can@right"),
+    ("textkitchen", "put both of the cans next to the bowl", "next soda_can@left bowl; next soda_can@right bowl"),
+    ("textblocks", "put the blue cube on the plate and the green cube on the blue cube", "on cube@blue plate; on cube@green cube@blue"),
+    ("textblocks", "move the plate 5 cm toward you", "moved plate back 0.05"),
+    ("textblocks", "can you stack the red cube onto the green one", "on cube@red cube@green"),
+    ("textblocks", "pick up the cube on the right end", "lift cube@right"),
+]
