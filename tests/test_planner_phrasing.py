@@ -20,6 +20,7 @@ from realsim.planner.phrasing import rephrase, split_command
     ("i need the banana moved over next to the can", "move the banana over next to the can"),
     ("i want the box moved 5 cm to the left", "move the box 5 cm to the left"),
     ("mug in the bowl", "put mug in the bowl"),
+    ("the box needs to be moved 5 cm forward", "move the box 5 cm forward"),
     ("dance with the mug", "dance with the mug"),
 ])
 def test_rephrase_gives_the_imperative(clause: str, imperative: str) -> None:
@@ -92,6 +93,8 @@ REFERENCES: list[tuple[str, list[str]]] = [
     ("return the strawberry to where it was", ["place('obj8_strawberry', [0.25, 0.3, 0.02])"]),
     ("pick up the strawberry and give it to me", ["grasp('obj8_strawberry')", "grasp('obj8_strawberry')"]),
     ("put the cube nearest the bowl into the bowl", ["place_in('obj4_cube', 'obj6_bowl')"]),
+    ("grab whatever is biggest", ["grasp('obj6_bowl')"]),
+    ("move the banana to the front of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),
     ("pick up whichever fruit is closest to you", ["grasp('obj8_strawberry')"]),
 ]
 

@@ -32,7 +32,7 @@ PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too
 
 RELATIONS: tuple[tuple[str, str], ...] = (
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
-    ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
+    ("to the front of", "front"), ("at the front of", "front"), ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
     ("to the right hand side of", "right"), ("to the right side of", "right"), ("on the right hand side of", "right"),
     ("closer to", "next"), ("nearer to", "next"), ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
     ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
@@ -122,6 +122,9 @@ def rephrase(clause: str) -> str:
         if p and p.group(2):
             return f"move {p.group(1)} {p.group(2)}"
         return f"put {rest}"
+    m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
+    if m:  # "the box needs to be moved 5 cm forward"
+        return f"move {m.group(1)} {m.group(2)}"
     m = _GOES.match(c)
     if m and _relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"

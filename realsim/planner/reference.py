@@ -207,6 +207,7 @@ class Resolver:
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
                        allow_plural: bool, loose: bool = False) -> list[ObjectInfo]:
         cands = [o for o in self.objects if o.name not in exclude]
+        text = re.sub(r"^(?:whichever|whatever)(?: one| thing)? (?:is|s) (?:the )?(\w+est|\w+most)$", r"\1 thing", text)  # "whatever is tallest"
         m = re.fullmatch(r"(.+?) (?:that is|that s|thats|which is|that are|which are|is|are) ((?:\w+ )?\w+)", text)
         if m and all(w in COLOR_WORDS or w in BIG or w in SMALL for w in m.group(2).split()):
             text = f"{m.group(2)} {m.group(1)}"  # "the cube that is red": the red cube
