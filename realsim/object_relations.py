@@ -85,14 +85,15 @@ def _is_sheet(points: np.ndarray, max_thickness: float) -> bool:
 
 
 def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[SupportPlane], params: SegmentParams,
-                   max_sheet: float | None = None) -> SegmentResult:
+                   max_sheet: float | None = None, structure_only: bool = False) -> SegmentResult:
     """Keep the objects a capture can hold: clusters wider or taller than ``max_object_size`` are
     structure (0), ones smaller than ``min_object_size`` or floating above their support with
     nothing under them are noise (-1). The rest are renumbered 1..K in their order.
 
     With ``max_sheet`` (m; for captures that saw objects from around, never a single view), an
     upright sheet no thicker than that (a piece of a wall or a cabinet side) is structure too: an
-    object standing on a support shows its sides and top, so its points have depth."""
+    object standing on a support shows its sides and top, so its points have depth. With
+    ``structure_only`` (a single camera view, where bases are hidden) only structure is removed."""
     labels = result.labels
     k = int(labels.max(initial=0))
     if k == 0:
@@ -109,6 +110,8 @@ def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[Suppo
             fate[o] = 0
         elif max_sheet is not None and _is_sheet(pts, max_sheet):
             fate[o] = 0
+        elif structure_only:
+            fate[o] = 1
         elif extent < params.min_object_size or (base > params.stack_min_height and result.resting_on.get(o) is None):
             fate[o] = -1
         else:

@@ -102,6 +102,8 @@ def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scen
         return scene
     if scene.grid_shape is not None and scene.grid_shape[0] * scene.grid_shape[1] == len(scene.points):
         result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=scene.seed)
+        # a wall in view is structure; small or floating clusters stay (a single view hides bases)
+        result = filter_by_size(scene.points, result, scene.planes, params, structure_only=True)
         scene.labels = result.labels.astype(np.int32)
     else:
         scene.labels, result = _segment_unorganized(scene, params)
