@@ -86,7 +86,7 @@ def _carved_hull(mesh: trimesh.Trimesh, voxels: tuple, base_z: float, observed: 
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
     kept[kept[:, 2] < base_z + step, 2] = base_z
     try:
-        return fast_hull(kept)
+        return trimesh.convex.convex_hull(kept)  # trimesh's triangulation: the painted surface of a carved hull
     except QhullError:
         return mesh
 

@@ -14,8 +14,9 @@ from scipy.spatial import QhullError
 from realsim.completion.hull import fast_hull
 
 
-def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trimesh.Trimesh, np.ndarray]:
-    """The observed points' convex hull extruded down to ``base_z`` (world frame)."""
+def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False) -> tuple[trimesh.Trimesh, np.ndarray]:
+    """The observed points' convex hull extruded down to ``base_z`` (world frame); ``fast``: straight
+    from Qhull (collision pieces), else trimesh's triangulation (a surface that gets painted)."""
     kept = points[points[:, 2] <= top_z]
     base = kept.copy()
     base[:, 2] = base_z
@@ -23,7 +24,7 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float) -> tuple[trim
     top[:, 2] = np.maximum(top[:, 2], base_z + 1e-3)
     cloud = np.vstack([top, base])
     try:
-        mesh = fast_hull(cloud)
+        mesh = fast_hull(cloud) if fast else trimesh.convex.convex_hull(cloud)
     except QhullError:
         lo, hi = cloud.min(axis=0), cloud.max(axis=0)
         hi = np.maximum(hi, lo + 0.005)
@@ -61,7 +62,7 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
         if len(part) < 8:
             continue
         try:
-            pieces.append(complete_hull(part, base_z, top_z)[0])
+            pieces.append(complete_hull(part, base_z, top_z, fast=True)[0])
         except (QhullError, ValueError):
             continue
     if len(pieces) < 2:
