@@ -276,3 +276,17 @@ def test_upright_sheet_is_structure_in_clouds_seen_from_around() -> None:
     out = filter_by_size(points, result, [_table()], SegmentParams(), max_sheet=0.012)
     assert np.all(out.labels[: len(sheet)] == 0)
     assert np.all(out.labels[len(sheet):] == 1)
+
+
+def test_single_view_keeps_hidden_bases_drops_walls() -> None:
+    """In one camera view (structure_only) a cluster whose base is hidden stays an object and a
+    cluster larger than any object (a wall in view) becomes structure."""
+    from realsim.object_relations import filter_by_size
+
+    rng = np.random.default_rng(2)
+    hidden_base = rng.uniform([0.0, 0.0, TABLE_Z + 0.04], [0.06, 0.06, TABLE_Z + 0.1], (500, 3))
+    wall = rng.uniform([-0.45, 0.4, TABLE_Z + 0.01], [0.45, 0.41, TABLE_Z + 0.9], (5000, 3))
+    points, result = _labelled(hidden_base, wall)
+    out = filter_by_size(points, result, [_table()], SegmentParams(), structure_only=True)
+    assert np.all(out.labels[: len(hidden_base)] == 1)
+    assert np.all(out.labels[len(hidden_base):] == 0)
