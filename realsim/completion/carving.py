@@ -12,6 +12,8 @@ from realsim.completion.hull import fast_hull
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
+Voxels = tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # step, column xy, voxel column, centre, free
+
 
 def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Vertical voxel columns inside the convex ``mesh``: xy centres (M, 2) and their z range.
@@ -32,8 +34,7 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
-def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None
-            ) -> tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
     column xy centres (M, 2), each voxel's column and centre, and which voxels are free."""
     lo, hi = mesh.bounds
@@ -79,14 +80,15 @@ def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.nd
     return Carving(fraction, _carved_hull(mesh, voxels, base_z, observed), pieces)
 
 
-def _carved_hull(mesh: trimesh.Trimesh, voxels: tuple, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:
+def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:
     step, xy, col, cells, free = voxels
     z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
     good = np.isfinite(z_lo)  # the lowest and highest kept voxel of each column bound the hull
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
     kept[kept[:, 2] < base_z + step, 2] = base_z
     try:
-        return trimesh.convex.convex_hull(kept)  # trimesh's triangulation: the painted surface of a carved hull
+        hull: trimesh.Trimesh = trimesh.convex.convex_hull(kept)  # trimesh's triangulation: the painted surface
+        return hull
     except QhullError:
         return mesh
 
@@ -115,7 +117,7 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
     return _tiles(voxels, base_z, observed, params), fraction
 
 
-def _tiles(voxels: tuple, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
+def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
     step, xy, col, cells, free = voxels
     kept, kept_col = cells[~free].copy(), col[~free]
     kept[kept[:, 2] < base_z + step, 2] = base_z

@@ -3,6 +3,8 @@ and the object frame of a completed shape."""
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 import trimesh
 
@@ -22,8 +24,15 @@ def set_shape(obj: SceneObject, mesh: trimesh.Trimesh, base_centre: np.ndarray, 
         obj.collision = [local]
         obj.visual = local
         return
-    obj.collision = [p.copy().apply_translation(-base_centre) for p in pieces]
-    obj.visual = (visual if visual is not None else trimesh.util.concatenate(pieces)).copy().apply_translation(-base_centre)
+    obj.collision = [_moved(p, -base_centre) for p in pieces]
+    obj.visual = _moved(visual if visual is not None else cast(trimesh.Trimesh, trimesh.util.concatenate(pieces)), -base_centre)
+
+
+def _moved(mesh: trimesh.Trimesh, offset: np.ndarray) -> trimesh.Trimesh:
+    """A copy of ``mesh`` translated by ``offset``."""
+    moved = mesh.copy()
+    moved.apply_translation(offset)
+    return moved
 
 
 def flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params: CompletionParams) -> trimesh.Trimesh:
@@ -35,7 +44,7 @@ def flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params:
     """
     verts = mesh.vertices.copy()
     verts[:, 2] = np.minimum(verts[:, 2], top_z - params.base_clearance)  # the upper object drops onto it
-    flat = trimesh.convex.convex_hull(verts)
+    flat: trimesh.Trimesh = trimesh.convex.convex_hull(verts)
     set_shape(under, flat, under.position - np.array([0.0, 0.0, params.base_clearance]), params)
     return flat
 

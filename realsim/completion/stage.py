@@ -22,7 +22,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     """Give every scan object a closed collision/visual shape resting on what it stands on."""
     if scene.labels is None or not scene.objects:
         return scene
-    labels = scene.labels
+    labels, points = scene.labels, scene.points
+    if points is None:
+        return scene
     by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
     observed: dict[int, np.ndarray] = {}
@@ -33,14 +35,14 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     order = bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id
-        pts = scene.points[mask & ~veil] if (mask & ~veil).sum() >= params.min_points else scene.points[mask]
+        pts = points[mask & ~veil] if (mask & ~veil).sum() >= params.min_points else points[mask]
         if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow:
             base_z = top_under(done[obj.resting_on], pts)
             done[obj.resting_on] = flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
         else:
             base_z = scene.plane(obj.support_id).height if obj.support_id is not None else float(np.min(pts[:, 2]))
         top_z = max(float(np.percentile(pts[:, 2], params.top_percentile)), base_z + params.min_height)
-        others = scene.points[(labels > 0) & ~mask]
+        others = points[(labels > 0) & ~mask]
         revolved = complete_revolved(pts, base_z, top_z, params, view.camera[:2] if view is not None else None)
         if revolved is not None and foreign_fraction(revolved.outer, others[:: max(1, len(others) // 20000)]) > params.max_foreign_fraction:
             revolved = None
@@ -63,7 +65,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         if rim is not None:
             container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers)
         carved = 0.0
-        if container is not None:
+        if container is not None and rim is not None:
             mesh, parts, visual = container.outer, container.pieces, container.visual
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
@@ -84,7 +86,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
                     parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
             elif carving is not None:
                 mesh = carving.hull
-        elif view is not None:
+        elif view is not None and parts is not None:
             parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
             if carved >= params.carve_min_fraction:  # the revolved surface no longer matches: paint the carved hull
                 visual = fast_hull(np.vstack([p.vertices for p in parts]))

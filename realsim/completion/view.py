@@ -84,4 +84,4 @@ class DepthView:
             other[inside] = self.labels[pix[inside, 1], pix[inside, 0]] != own
             tol[other] = OTHER_SURFACE_TOLERANCE
         with np.errstate(invalid="ignore"):
-            return opt[:, 2] / self.scale < seen - tol
+            return np.asarray(opt[:, 2] / self.scale < seen - tol)
