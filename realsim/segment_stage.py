@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
 from realsim.resolution import working_resolution
@@ -49,6 +50,9 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
     )
 
 
+MIN_OBJECT_HEIGHT = 0.002  # m: the lowest an object's point can be above its support (noiseless meshes)
+
+
 def _noise(scene: Scene, params: SegmentParams) -> float:
     """The capture's depth noise (m): robust spread of the points on its largest observed support."""
     observed = [p for p in scene.planes if p.observed]
@@ -88,9 +92,29 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
     result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
-    result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * _noise(scene, params)))
+    noise = _noise(scene, params)
+    result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
+    _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance)
     return labels, result
+
+
+def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centres: np.ndarray, centre_labels: np.ndarray,
+                    params: SegmentParams, noise: float, reach: float) -> None:
+    """Give the points between the support's noise (4 sigma, never under 2 mm) and ``min_height``
+    to the object within ``reach`` of them: the foot of each object, once the objects are found
+    (the objects are never joined through it)."""
+    low = max(4 * noise, MIN_OBJECT_HEIGHT)
+    obj = centre_labels > 0
+    if low >= params.min_height or not obj.any():
+        return
+    lower, _ = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=low))
+    band = np.flatnonzero((lower >= 0) & (support < 0))
+    if len(band) == 0:
+        return
+    dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
+    near = np.isfinite(dist)
+    labels[band[near]] = centre_labels[obj][nn[near]]
 
 
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
