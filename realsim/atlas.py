@@ -49,3 +49,18 @@ def baked_colours(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, bytes] | None
     if float(rgb.std(axis=0).max()) < 0.03:
         return None
     return face_colour_atlas(np.asarray(mesh.vertices), np.asarray(mesh.faces), rgb)
+
+
+def surface_colour(mesh: trimesh.Trimesh, png: bytes) -> np.ndarray | None:
+    """The mean colour (RGB 0-1) a textured mesh shows: its texture sampled at each face's UV
+    centroid, weighted by face area; None without per-vertex UVs."""
+    uv = getattr(mesh.visual, "uv", None)
+    if uv is None or len(uv) != len(mesh.vertices) or len(mesh.faces) == 0:
+        return None
+    with Image.open(io.BytesIO(png)) as im:
+        image = np.asarray(im.convert("RGB"), float) / 255.0
+    h, w = image.shape[:2]
+    centre = np.asarray(uv, float)[mesh.faces].mean(axis=1) % 1.0  # textures repeat
+    shown = image[((1.0 - centre[:, 1]) * (h - 1)).round().astype(int), (centre[:, 0] * (w - 1)).round().astype(int)]
+    area = np.asarray(mesh.area_faces)
+    return (shown * area[:, None]).sum(axis=0) / max(float(area.sum()), 1e-12)

@@ -7,8 +7,9 @@ import pytest
 import trimesh
 
 from conftest import MOSD
+from realsim.colours import colour_words
 from realsim.pipeline import convert
-from realsim.understanding.naming import Name, colour_words, distinct, offline_name, shape_word, white_balance
+from realsim.understanding.naming import Name, distinct, offline_name, shape_word, white_balance
 from realsim.understanding.shape_label import is_cylinder, is_prism
 
 NO_ROBOT = {"robot": {"enabled": False}}

@@ -60,3 +60,23 @@ def test_painted_vertices_become_a_texture(tmp_path: Path) -> None:
     plain = trimesh.creation.box(extents=(0.06, 0.06, 0.1))
     plain.visual.vertex_colors = [200, 30, 30, 255]
     assert baked_colours(plain) is None  # one colour: a material colour says it
+
+
+def test_a_textured_object_is_named_by_its_texture_colour() -> None:
+    from io import BytesIO
+
+    from PIL import Image
+
+    from realsim.atlas import surface_colour
+    from realsim.planner.vocab import color_name
+
+    mesh = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
+    texture = np.zeros((8, 8, 3), np.uint8)
+    texture[:, :] = (200, 170, 20)  # banana yellow ...
+    texture[:, :1] = (20, 20, 200)  # ... with a thin blue stripe no face samples
+    buf = BytesIO()
+    Image.fromarray(texture).save(buf, format="PNG")
+    mesh.visual = trimesh.visual.TextureVisuals(uv=np.full((len(mesh.vertices), 2), 0.6))
+    rgb = surface_colour(mesh, buf.getvalue())
+    assert rgb is not None and color_name(rgb) == "yellow"
+    assert color_name((0.77, 0.65, 0.07)) == "yellow" and color_name((0.4, 0.4, 0.4)) == "gray" and color_name(None) is None

@@ -13,7 +13,7 @@ from realsim.assets.decompose import decompose
 from realsim.assets.geometry import blend_inertia, clean_geometry, make_solid, plausible_scale, shell_inertia_unit, solid_inertia_unit
 from realsim.assets.loading import load_object_mesh, missing_references, texture_file, visual_appearance
 from realsim.assets.params import AssetParams
-from realsim.atlas import baked_colours
+from realsim.atlas import baked_colours, surface_colour
 from realsim.cache import DiskCache, cache_key
 from realsim.errors import InputError
 from realsim.parallel import parallel_map
@@ -47,6 +47,7 @@ class PreparedObject:
     inertia_model: str = "solid"  # "solid" | "shell" | "shell+contents"
     decomposition: dict = field(default_factory=dict)
     category: str | None = None
+    color: np.ndarray | None = None  # (3,) RGB the object shows (its texture's mean), for names and the planner
 
     @property
     def open_container(self) -> bool:
@@ -167,6 +168,7 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
     if png is None and (baked := baked_colours(visual)) is not None:  # painted vertices: their colours as a texture
         visual, png = baked
         rgba = (1.0, 1.0, 1.0, 1.0)
+    shown = surface_colour(visual, png) if png is not None else None  # a textured object's colour is its texture's
     solid = heavy["solid"]
     open_cavity = heavy["hull_volume"] > 0 and solid.volume / heavy["hull_volume"] < OPEN_CAVITY_RATIO
     com, inertia, model = _inertia_for(solid, label, open_cavity)
@@ -178,6 +180,7 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
         visual=visual,
         texture_png=png,
         rgba=rgba,
+        color=shown if shown is not None else np.asarray(rgba[:3], float),
         hulls=heavy["hulls"],
         volume=float(solid.volume),
         size=np.asarray(solid.extents, float),

@@ -6,7 +6,6 @@ the same words). Everything here is data or a pure function of text and numbers.
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Sequence
 from functools import lru_cache
@@ -106,14 +105,11 @@ def name_words(text: str) -> list[str]:
 
 
 def color_name(rgb: Sequence[float] | None) -> str | None:
-    """The nearest colour word for an RGB triple (0-1), or None; greys by lightness."""
-    if rgb is None or len(rgb) < 3:
-        return None
-    r, g, b = (float(v) for v in rgb[:3])
-    hi, lo = max(r, g, b), min(r, g, b)
-    if hi - lo < 0.12:
-        return "white" if hi > 0.8 else "black" if hi < 0.2 else "gray"
-    return min(COLORS, key=lambda c: math.dist(COLORS[c], (r, g, b)) if c not in ("white", "black", "gray") else math.inf)
+    """The colour word for an RGB triple (0-1) in the planner's vocabulary (``gray`` for grey), or None."""
+    from realsim.colours import colour_name
+
+    word = colour_name(rgb)
+    return None if word is None else COLOR_WORDS.get(word, word)
 
 
 @lru_cache(maxsize=512)

@@ -19,11 +19,9 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
+from realsim.colours import colour_words
 from realsim.understanding.shape_label import ranked_labels
 
-# Hue bins (degrees) of the chromatic colour words; achromatic words come from value alone.
-HUES = ((15, "red"), (40, "orange"), (70, "yellow"), (165, "green"), (255, "blue"), (290, "purple"), (345, "pink"), (361, "red"))
-CHROMA_MIN = 0.22  # saturation below which a pixel is white / grey / black
 CATEGORY_MAX_DISTANCE = 0.1  # a size-table fit this close (RMS log extent ratio) ...
 CATEGORY_MARGIN = 0.1  # ... and this much closer than the runner-up is unambiguous
 SHAPE_ADJECTIVES = frozenset({"tall", "flat"})
@@ -49,27 +47,6 @@ def white_balance(colors: np.ndarray) -> np.ndarray:
     if ok.sum() < 10:
         return c
     return np.clip(c / np.maximum(np.percentile(c[ok], 99, axis=0), 1e-3), 0, 1)
-
-
-def colour_words(rgb: np.ndarray) -> np.ndarray:
-    """A colour word per pixel ((N, 3) balanced RGB in [0, 1])."""
-    rgb = np.nan_to_num(np.asarray(rgb, float))
-    mx, mn = rgb.max(axis=1), rgb.min(axis=1)
-    sat = (mx - mn) / np.maximum(mx, 1e-6)
-    r, g, b = rgb.T
-    delta = np.maximum(mx - mn, 1e-6)
-    hue = np.where(mx == r, ((g - b) / delta) % 6, np.where(mx == g, (b - r) / delta + 2, (r - g) / delta + 4)) * 60.0
-    words = np.empty(len(rgb), dtype=object)
-    edges = np.array([h for h, _ in HUES])
-    names = np.array([n for _, n in HUES], dtype=object)
-    words[:] = names[np.searchsorted(edges, hue, side="right").clip(0, len(names) - 1)]
-    brown = (hue >= 10) & (hue < 45) & (mx < 0.55) & (sat >= CHROMA_MIN)
-    words[brown] = "brown"
-    grey = sat < CHROMA_MIN
-    words[grey & (mx >= 0.62)] = "white"
-    words[grey & (mx < 0.62)] = "grey"
-    words[mx < 0.18] = "black"
-    return words
 
 
 def dominant_colours(rgb: np.ndarray) -> list[tuple[str, float]]:
