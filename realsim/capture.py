@@ -30,7 +30,7 @@ import numpy as np
 
 from realsim.capture_config import CaptureConfig, read_capture_config
 from realsim.errors import InputError
-from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, plausible_units, point_spacing
+from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
 from realsim.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 from realsim.viewer.splat import is_splat_ply, read_splat_ply
@@ -239,32 +239,6 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     return cloud
 
 
-def detect_up(cloud: RawCloud, fmt_hint: str, seed: int) -> str:
-    """Guess the input's up axis.
-
-    Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
-    axis closest to the dominant plane's normal, signed so most points lie above that plane.
-    """
-    if fmt_hint in ("glb", "gltf"):
-        return "+y"
-    if cloud.is_camera_view:
-        return "-y"
-    from realsim.geometry import ransac_plane
-
-    pts = cloud.points[np.isfinite(cloud.points).all(axis=1)]
-    rng = np.random.default_rng(seed)
-    if len(pts) > 50_000:
-        pts = pts[rng.choice(len(pts), 50_000, replace=False)]
-    extent = float(np.max(np.ptp(pts, axis=0)))
-    normal, offset, _ = ransac_plane(pts, max(extent * 0.01, 1e-6), 500, rng)  # the project's one (seeded) RANSAC
-    axis = int(np.argmax(np.abs(normal)))
-    signed = normal.copy()
-    side = pts @ normal + offset
-    if np.median(side) < 0:
-        signed = -signed
-    return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]
-
-
 def _find_environment(folder: Path) -> Path | None:
     candidates = sorted(p for p in folder.glob("scene.*") if p.suffix.lower() in POINT_CLOUD_SUFFIXES | MESH_SUFFIXES)
     return candidates[0] if candidates else None
@@ -379,7 +353,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         kind = "pointcloud" if cloud.fmt in ("pcd", "xyz", "pts", "rgbd") or (cloud.fmt == "ply" and cloud.mesh is None) else "mesh"
         units, up = units or cloud.units_hint, up or cloud.up_hint
         if up is None:
-            up, up_detected = detect_up(cloud, cloud.fmt, seed), True
+            up, up_detected = detect_up(cloud.points, cloud.is_camera_view, cloud.fmt, seed), True
         if units is None:
             units, units_reason = plausible_units(cloud.points, up_rotation(up)[2])
             units_detected = True

@@ -5,6 +5,8 @@ ground plane (inside, apart)."""
 from __future__ import annotations
 
 import numpy as np
+import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 
 def yaw_quat(yaw: float) -> np.ndarray:
@@ -88,3 +90,41 @@ def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng:
             break
     inliers = np.flatnonzero(np.abs(full @ best_normal + best_d) < threshold)
     return best_normal, best_d, inliers
+
+
+def rotation_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The minimal rotation matrix taking unit vector ``a`` to unit vector ``b``."""
+    a = a / np.linalg.norm(a)
+    b = b / np.linalg.norm(b)
+    v = np.cross(a, b)
+    c = float(a @ b)
+    if np.linalg.norm(v) < 1e-12:
+        if c > 0:
+            return np.eye(3)
+        axis = np.cross(a, [1.0, 0.0, 0.0])
+        if np.linalg.norm(axis) < 1e-6:
+            axis = np.cross(a, [0.0, 1.0, 0.0])
+        axis /= np.linalg.norm(axis)
+        return 2.0 * np.outer(axis, axis) - np.eye(3)
+    vx = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + vx + vx @ vx * (1.0 / (1.0 + c))
+
+
+def polygon_and_rectangle(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Convex hull (counter-clockwise) and minimal oriented rectangle (centre, size, yaw) of xy."""
+    try:
+        hull = ConvexHull(xy)
+    except (QhullError, ValueError):
+        raise ValueError("degenerate region: fewer than three non-collinear points") from None
+    polygon = xy[hull.vertices]
+    to_rect, extents = trimesh.bounds.oriented_bounds_2D(polygon)
+    from_rect = np.linalg.inv(to_rect)
+    center = from_rect[:2, 2]
+    yaw = float(np.arctan2(from_rect[1, 0], from_rect[0, 0]))
+    size = np.asarray(extents, dtype=np.float64)
+    # Canonical yaw in (-pi/2, pi/2] so equal rectangles read the same.
+    if yaw > np.pi / 2:
+        yaw -= np.pi
+    elif yaw <= -np.pi / 2:
+        yaw += np.pi
+    return polygon, center, size, yaw

@@ -14,8 +14,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.capture_config import DeclaredSupport
 from realsim.errors import InputError
-from realsim.geometry import inside_convex_polygon, polygons_apart
-from realsim.planes import polygon_and_rectangle
+from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, polygons_apart
 from realsim.scene import SupportPlane
 
 

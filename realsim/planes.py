@@ -11,12 +11,11 @@ import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
-import trimesh
 from scipy import ndimage
-from scipy.spatial import ConvexHull, QhullError, cKDTree
+from scipy.spatial import cKDTree
 
 from realsim.errors import InputError
-from realsim.geometry import fit_plane, inside_convex_polygon, ransac_plane
+from realsim.geometry import fit_plane, inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
 from realsim.resolution import working_resolution
 from realsim.scene import Scene, SupportPlane
 
@@ -108,24 +107,6 @@ def refine_plane(points: np.ndarray, normal: np.ndarray, d: float, band: float, 
     return normal, d, mask
 
 
-def rotation_between(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """The minimal rotation matrix taking unit vector ``a`` to unit vector ``b``."""
-    a = a / np.linalg.norm(a)
-    b = b / np.linalg.norm(b)
-    v = np.cross(a, b)
-    c = float(a @ b)
-    if np.linalg.norm(v) < 1e-12:
-        if c > 0:
-            return np.eye(3)
-        axis = np.cross(a, [1.0, 0.0, 0.0])
-        if np.linalg.norm(axis) < 1e-6:
-            axis = np.cross(a, [0.0, 1.0, 0.0])
-        axis /= np.linalg.norm(axis)
-        return 2.0 * np.outer(axis, axis) - np.eye(3)
-    vx = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
-    return np.eye(3) + vx + vx @ vx * (1.0 / (1.0 + c))
-
-
 def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
     """Connected regions of points on an xy grid covering at least ``min_area``; index arrays."""
     lo = xy.min(axis=0)
@@ -142,26 +123,6 @@ def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
     np.add.at(cells, labels[unique_cells[:, 0], unique_cells[:, 1]], 1)
     big = [k for k in range(1, count + 1) if cells[k] * cell * cell >= min_area and occupied[k] >= 3]
     return [np.flatnonzero(point_labels == k) for k in big]
-
-
-def polygon_and_rectangle(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-    """Convex hull (counter-clockwise) and minimal oriented rectangle (centre, size, yaw) of xy."""
-    try:
-        hull = ConvexHull(xy)
-    except (QhullError, ValueError):
-        raise ValueError("degenerate region: fewer than three non-collinear points") from None
-    polygon = xy[hull.vertices]
-    to_rect, extents = trimesh.bounds.oriented_bounds_2D(polygon)
-    from_rect = np.linalg.inv(to_rect)
-    center = from_rect[:2, 2]
-    yaw = float(np.arctan2(from_rect[1, 0], from_rect[0, 0]))
-    size = np.asarray(extents, dtype=np.float64)
-    # Canonical yaw in (-pi/2, pi/2] so equal rectangles read the same.
-    if yaw > np.pi / 2:
-        yaw -= np.pi
-    elif yaw <= -np.pi / 2:
-        yaw += np.pi
-    return polygon, center, size, yaw
 
 
 def _transform(points: np.ndarray, rotation: np.ndarray, translation: np.ndarray) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""A capture's own scale: point spacing, working resolution and plausible units.
+"""A capture's own scale and frame: point spacing, working resolution, plausible units, up axis.
 
 Every length the detection uses is in metres and derived from the capture itself, so the same
 scene sampled at 50k or 10 M points, or written in m, cm or mm, gives the same result.
@@ -112,3 +112,28 @@ def check_scale(points_m: np.ndarray, given: str) -> None:
     if extent > PLAUSIBLE_EXTENT[1] * 10:  # tiny scenes are allowed when asked for; huge ones would run for minutes
         raise InputError(f"in {given} the capture is {extent:.3g} m across, which is not a plausible scene; "
                          "check --units (m, cm or mm) or rescale the capture")
+
+
+def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -> str:
+    """Guess the input's up axis.
+
+    Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
+    axis closest to the dominant plane's normal, signed so most points lie above that plane.
+    """
+    if fmt_hint in ("glb", "gltf"):
+        return "+y"
+    if camera_view:
+        return "-y"
+    from realsim.geometry import ransac_plane
+
+    pts = points[np.isfinite(points).all(axis=1)]
+    rng = np.random.default_rng(seed)
+    if len(pts) > 50_000:
+        pts = pts[rng.choice(len(pts), 50_000, replace=False)]
+    extent = float(np.max(np.ptp(pts, axis=0)))
+    normal, offset, _ = ransac_plane(pts, max(extent * 0.01, 1e-6), 500, rng)  # the project's one (seeded) RANSAC
+    axis = int(np.argmax(np.abs(normal)))
+    signed = normal.copy()
+    if np.median(pts @ normal + offset) < 0:
+        signed = -signed
+    return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]

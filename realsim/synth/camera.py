@@ -11,7 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from realsim.synth.scene import SynthScene, _raycaster
+from realsim.synth.meshes import raycaster as make_raycaster
+from realsim.synth.scene import SynthScene
 
 
 @dataclass(frozen=True)
@@ -86,7 +87,7 @@ def render(scene: SynthScene, cam: Camera, max_range: float = 3.0, raycaster=Non
     """Ray-cast the scene from ``cam``: noiseless depth along the optical axis, shaded colour."""
     import open3d as o3d
 
-    rc = raycaster or _raycaster(scene)
+    rc = raycaster or make_raycaster(scene.mesh)
     u, v = np.meshgrid(np.arange(cam.width), np.arange(cam.height))
     dirs_cam = np.stack([(u - cam.cx) / cam.fx, (v - cam.cy) / cam.fy, np.ones_like(u, dtype=float)], axis=-1).reshape(-1, 3)
     rot = cam.pose[:3, :3]

@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from realsim.synth.camera import backproject, kinect_noise, kinect_view, orbit, render
-from realsim.synth.scene import SynthScene, _raycaster
+from realsim.synth.meshes import raycaster
+from realsim.synth.scene import SynthScene
 
 UNIT_SCALE = {"m": 1.0, "cm": 100.0, "mm": 1000.0}  # capture units per metre
 # world (Z up) -> capture axes, for each supported up axis of the written file
@@ -64,7 +65,7 @@ def write_rgbd_sequence(scene: SynthScene, folder: Path, frames: int = 30, seed:
     # capture (ARKit) world: Y up, origin at the first camera
     to_cap = world_to_capture("m", "+y")
     to_cap[:3, 3] = -to_cap[:3, :3] @ cams[0].pose[:3, 3]
-    rc = _raycaster(scene)
+    rc = raycaster(scene.mesh)
     arkit_from_optical = np.diag([1.0, -1.0, -1.0])
     rows = ["timestamp, frame, x, y, z, qx, qy, qz, qw"]
     from scipy.spatial.transform import Rotation
@@ -99,7 +100,7 @@ def visible_faces(scene: SynthScene, seed: int = 0, views: int = 24) -> np.ndarr
         ang = 2 * np.pi * i / views + rng.uniform(0, 0.2)
         r = [0.9, 1.4, 2.0][i % 3]
         eyes.append(centre + [r * np.cos(ang), r * np.sin(ang), [0.5, 0.9, 0.2][i % 3]])
-    rc = _raycaster(scene)
+    rc = raycaster(scene.mesh)
     c = scene.mesh.triangles_center
     n = scene.mesh.face_normals
     seen = np.zeros(len(c), dtype=bool)

@@ -9,7 +9,6 @@ one merged triangle mesh whose faces carry what they belong to (``face_object``:
 
 from __future__ import annotations
 
-import functools
 import math
 import os
 from dataclasses import dataclass, field
@@ -19,6 +18,8 @@ import numpy as np
 import trimesh
 
 from realsim.errors import InputError
+from realsim.geometry import polygons_apart
+from realsim.synth.meshes import box_mesh, load_ycb, raycaster
 
 # per-face part codes (the mOSD label convention for points: 1..9 furniture, objects 10 * id)
 PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
@@ -36,7 +37,6 @@ _PALETTE = np.array([
     [0.95, 0.50, 0.10], [0.10, 0.70, 0.75], [0.80, 0.30, 0.55], [0.45, 0.30, 0.20], [0.30, 0.30, 0.35],
     [0.90, 0.90, 0.85], [0.55, 0.75, 0.15],
 ])
-_TESSELLATION = 0.03  # support boxes are split into triangles no longer than this (m)
 _CLEARANCE = 0.03  # gap between objects that are not meant to touch (m)
 _CONTACT_GAP = 0.0005  # gap left between touching or stacked objects (m)
 _STACK_BASE = "003_cracker_box"  # in drawn subsets with a stack: lying flat, it holds any small object
@@ -90,7 +90,7 @@ class GtObject:
 
     def mesh(self) -> trimesh.Trimesh:
         """The object's surface in the world frame."""
-        m = _load_ycb(str(self.mesh_file)).copy()
+        m = load_ycb(str(self.mesh_file)).copy()
         m.apply_transform(self.pose)
         return m
 
@@ -119,7 +119,7 @@ class SynthScene:
         that face is within ``max_distance`` (used to score any capture form, e.g. a fused mesh)."""
         import open3d as o3d
 
-        rc = _raycaster(self)
+        rc = raycaster(self.mesh)
         pts = o3d.core.Tensor(np.ascontiguousarray(points, dtype=np.float32))
         res = rc.compute_closest_points(pts)
         prim = res["primitive_ids"].numpy().astype(np.int64)
@@ -127,32 +127,8 @@ class SynthScene:
         return np.where(near, self.face_object[prim], 0).astype(np.int32)
 
 
-@functools.lru_cache(maxsize=32)
-def _load_ycb(path: str) -> trimesh.Trimesh:
-    try:
-        mesh = trimesh.load(path, force="mesh", process=False)
-    except Exception as exc:  # trimesh raises many types
-        raise InputError(f"{path}: cannot read the YCB mesh ({exc})") from None
-    return trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=False)
-
-
-def _raycaster(scene: SynthScene):  # noqa: ANN202 - open3d type
-    import open3d as o3d
-
-    rc = o3d.t.geometry.RaycastingScene()
-    rc.add_triangles(o3d.core.Tensor(scene.mesh.vertices.astype(np.float32)), o3d.core.Tensor(scene.mesh.faces.astype(np.uint32)))
-    return rc
-
-
 # ---------------------------------------------------------------------------------------------
 # furniture
-
-
-def _box(extents: tuple[float, float, float], center: tuple[float, float, float]) -> trimesh.Trimesh:
-    box = trimesh.creation.box(extents=extents)
-    box.apply_translation(center)
-    v, f = trimesh.remesh.subdivide_to_size(box.vertices, box.faces, _TESSELLATION)
-    return trimesh.Trimesh(v, f, process=False)
 
 
 def _box_parts(box: trimesh.Trimesh, top_z: float | None, top_part: int, other_part: int) -> np.ndarray:
@@ -167,31 +143,31 @@ def _box_parts(box: trimesh.Trimesh, top_z: float | None, top_part: int, other_p
 def _furniture(spec: SceneSpec, rng: np.random.Generator) -> tuple[list[GtSupport], list[tuple[trimesh.Trimesh, np.ndarray, np.ndarray]]]:
     fx, fy = spec.floor_size
     slab = 0.05
-    floor = _box((fx, fy, slab), (0.0, 0.0, -slab / 2))
+    floor = box_mesh((fx, fy, slab), (0.0, 0.0, -slab / 2))
     supports = [GtSupport("floor", "floor", 0.0, (0.0, 0.0), (fx, fy), 0.0, slab)]
     parts = [(floor, _box_parts(floor, 0.0, PART_FLOOR, PART_BACKGROUND), np.array([0.55, 0.52, 0.48]))]
     wood = np.array([0.72, 0.58, 0.42])
     if spec.layout == "table":
         h = round(float(rng.uniform(0.70, 0.78)), 4)
         sx, sy, t = round(float(rng.uniform(1.0, 1.3)), 3), round(float(rng.uniform(0.7, 0.9)), 3), 0.04
-        top = _box((sx, sy, t), (0.0, 0.0, h - t / 2))
+        top = box_mesh((sx, sy, t), (0.0, 0.0, h - t / 2))
         parts.append((top, _box_parts(top, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), wood))
         for ix in (-1, 1):
             for iy in (-1, 1):
-                leg = _box((0.05, 0.05, h - t), (ix * (sx / 2 - 0.06), iy * (sy / 2 - 0.06), (h - t) / 2))
+                leg = box_mesh((0.05, 0.05, h - t), (ix * (sx / 2 - 0.06), iy * (sy / 2 - 0.06), (h - t) / 2))
                 parts.append((leg, _box_parts(leg, None, 0, PART_SUPPORT_OTHER), wood * 0.7))
         supports.append(GtSupport("table", "table", h, (0.0, 0.0), (sx, sy), 0.0, t))
     elif spec.layout == "counter":
         h = round(float(rng.uniform(0.86, 0.94)), 4)
         sx, sy = round(float(rng.uniform(1.4, 1.8)), 3), round(float(rng.uniform(0.55, 0.65)), 3)
-        body = _box((sx, sy, h), (0.0, 0.0, h / 2))
+        body = box_mesh((sx, sy, h), (0.0, 0.0, h / 2))
         parts.append((body, _box_parts(body, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), np.array([0.85, 0.85, 0.82])))
         supports.append(GtSupport("counter", "table", h, (0.0, 0.0), (sx, sy), 0.0, h))
     elif spec.layout != "floor":
         raise InputError(f"unknown layout {spec.layout!r}: use one of {', '.join(LAYOUTS)}")
     if spec.wall if spec.wall is not None else spec.layout == "counter":
         back = supports[-1].size[1] / 2 + 0.02 if spec.layout != "floor" else fy / 2 - 0.1
-        wall = _box((fx, 0.1, 1.6), (0.0, back + 0.05, 0.8))
+        wall = box_mesh((fx, 0.1, 1.6), (0.0, back + 0.05, 0.8))
         parts.append((wall, _box_parts(wall, None, 0, PART_BACKGROUND), np.array([0.88, 0.86, 0.80])))
     return supports, parts
 
@@ -204,18 +180,6 @@ def _hull2d(points: np.ndarray) -> np.ndarray:
     from scipy.spatial import ConvexHull
 
     return points[ConvexHull(points).vertices]
-
-
-def _clear(a: np.ndarray, b: np.ndarray, gap: float) -> bool:
-    """Convex polygons a, b separated by at least ``gap`` along some edge normal (SAT)."""
-    for poly in (a, b):
-        edges = np.roll(poly, -1, axis=0) - poly
-        normals = np.stack([edges[:, 1], -edges[:, 0]], axis=1)
-        normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
-        pa, pb = a @ normals.T, b @ normals.T
-        if np.any(np.maximum(pb.min(axis=0) - pa.max(axis=0), pa.min(axis=0) - pb.max(axis=0)) >= gap):
-            return True
-    return False
 
 
 def _lying(mesh: trimesh.Trimesh) -> np.ndarray:
@@ -299,7 +263,7 @@ def _region(spec: SceneSpec, support: GtSupport) -> tuple[np.ndarray, np.ndarray
 def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furniture: list[trimesh.Trimesh],
                    rng: np.random.Generator) -> list[GtObject] | None:
     root = ycb_root()
-    meshes = {n: _load_ycb(str(root / n / "textured.obj")) for n in names}
+    meshes = {n: load_ycb(str(root / n / "textured.obj")) for n in names}
     base_rot = {n: np.eye(4) for n in names}
     order = list(names)
     lo, hi = _region(spec, support)
@@ -364,7 +328,7 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
                 if not (np.all(poly >= lo) and np.all(poly <= hi)):
                     continue
                 others = [f for f, o in zip(footprints, placed) if not touching or o.id not in touching]
-                if not all(_clear(poly, q, _CLEARANCE) for q in others):
+                if not all(polygons_apart(poly, q, _CLEARANCE) for q in others):
                     continue
                 pose[2, 3] += _CONTACT_GAP
             ok = True
