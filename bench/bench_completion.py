@@ -24,7 +24,7 @@ import open3d as o3d
 import trimesh
 from scipy.spatial.transform import Rotation
 
-from realsim.pcd_io import read_pcd
+from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import convert
 from realsim.synth import SceneSpec, make_scene, write_organized_view, ycb_root
 

@@ -22,8 +22,8 @@ import numpy as np
 from PIL import Image
 
 from realsim.fidelity import capture_rgbd, compare, render_rgbd
-from realsim.intrinsics import fit_intrinsics
-from realsim.pcd_io import read_pcd
+from realsim.perception.intrinsics import fit_intrinsics
+from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import convert
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "pcl_scenes" / "mOSD"

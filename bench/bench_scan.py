@@ -24,7 +24,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_segmentation import open3d_baseline  # noqa: E402
 
 from realsim.metrics import matched_iou, mosd_object_ids, plane_error  # noqa: E402
-from realsim.pcd_io import read_pcd  # noqa: E402
+from realsim.perception.pcd_io import read_pcd  # noqa: E402
 from realsim.pipeline import convert  # noqa: E402
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "pcl_scenes"

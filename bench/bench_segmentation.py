@@ -23,10 +23,10 @@ from scipy.spatial import Delaunay, cKDTree
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from realsim.capture import load_capture  # noqa: E402
 from realsim.metrics import matched_iou, mosd_object_ids  # noqa: E402
-from realsim.planes import detect_planes  # noqa: E402
-from realsim.segment import SegmentParams, segment_objects  # noqa: E402
+from realsim.perception.capture import load_capture  # noqa: E402
+from realsim.perception.planes import detect_planes  # noqa: E402
+from realsim.perception.segment import SegmentParams, segment_objects  # noqa: E402
 
 MOSD = REPO.parent / "shared" / "data" / "pcl_scenes" / "mOSD"
 SCENES = ("test0", "test31", "test45", "test55")
@@ -115,7 +115,7 @@ def main() -> None:
         t0 = time.perf_counter()
         labels = open3d_baseline(camera)
         base[name] = score(labels, gt, time.perf_counter() - t0)
-    print_table("realsim.segment (supervoxels + convexity merging)", ours)
+    print_table("realsim.perception.segment (supervoxels + convexity merging)", ours)
     print_table("Open3D baseline (RANSAC plane + DBSCAN eps 8 mm)", base)
 
 

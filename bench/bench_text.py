@@ -26,9 +26,9 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from realsim.composition.settle import rest_check
 from realsim.physics.size_table import lookup
 from realsim.pipeline import convert, run_pipeline
-from realsim.settle import rest_check
 
 # (description, expected): counts {label: n}; on {label: support kind or label}; stacked {label: n};
 # inside [(label, container)]; rel [(a, relation, b)]

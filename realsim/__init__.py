@@ -29,9 +29,9 @@ _EXPORTS: dict[str, str] = {
     "convert": "realsim.pipeline",
     "run_pipeline": "realsim.pipeline",
     "plan_pipeline": "realsim.pipeline",
-    "load_capture": "realsim.capture",
-    "LoadParams": "realsim.capture",
-    "CaptureConfig": "realsim.capture_config",
+    "load_capture": "realsim.perception.capture",
+    "LoadParams": "realsim.perception.capture",
+    "CaptureConfig": "realsim.perception.capture_config",
     "Scene": "realsim.scene",
     "SceneObject": "realsim.scene",
     "SupportPlane": "realsim.scene",
@@ -72,11 +72,11 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # for type checkers and IDEs: the same names, eagerly
-    from realsim.capture import LoadParams, load_capture
-    from realsim.capture_config import CaptureConfig
     from realsim.errors import InputError, RealsimError, SimulationDiverged, TaskFailed
     from realsim.export import export_mjcf, export_objects, export_usd
     from realsim.output import write_scene
+    from realsim.perception.capture import LoadParams, load_capture
+    from realsim.perception.capture_config import CaptureConfig
     from realsim.pipeline import convert, plan_pipeline, run_pipeline
     from realsim.render import render_scene
     from realsim.runtime import RunRecord, Sim, run_command, run_program, write_log

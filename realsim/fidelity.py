@@ -16,7 +16,7 @@ import mujoco
 import numpy as np
 from scipy.ndimage import gaussian_filter
 
-from realsim.intrinsics import Intrinsics
+from realsim.perception.intrinsics import Intrinsics
 
 ROBOT_PREFIX = "panda/"
 

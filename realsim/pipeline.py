@@ -22,12 +22,12 @@ import yaml
 from rich.console import Console
 
 from realsim import rerun
-from realsim.capture import is_lone_object
-from realsim.capture_config import read_capture_config
 from realsim.destination import check_destination
 from realsim.errors import InputError
+from realsim.perception.capture import is_lone_object
+from realsim.perception.capture_config import read_capture_config
+from realsim.perception.rgbd import is_rgbd_sequence
 from realsim.resources import data_dir
-from realsim.rgbd import is_rgbd_sequence
 from realsim.scene import Scene
 from realsim.stages import STAGES, Stage, WriteParams  # noqa: F401 (Stage, WriteParams: re-exported)
 from realsim.understanding.photo import PHOTO_SUFFIXES, find_photo

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import trimesh
 
-from realsim.capture_config import CaptureConfig, DeclaredSupport
+from realsim.perception.capture_config import CaptureConfig, DeclaredSupport
 
 if TYPE_CHECKING:
     from realsim.assets import PreparedObject
@@ -38,7 +38,7 @@ class CaptureInfo:
     camera_view: bool = False  # an organized view from one camera (its grid is a photo)
     splat: Path | None = None  # the Gaussian splat PLY the points came from, kept for the viewer
     photo: Path | None = None  # the photo of a photo-only capture
-    fitted_intrinsics: Any = None  # realsim.intrinsics.Intrinsics fitted from the grid, once
+    fitted_intrinsics: Any = None  # realsim.perception.intrinsics.Intrinsics fitted from the grid, once
 
 
 @dataclass

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from realsim.atlas import face_colour_atlas
-from realsim.backdrop import BackdropParams, build_cloud_backdrop
+from realsim.composition.atlas import face_colour_atlas
+from realsim.composition.backdrop import BackdropParams, build_cloud_backdrop
 from realsim.pipeline import convert
 from realsim.synth import SceneSpec, make_scene, write_point_cloud
 from realsim.synth.scene import ycb_root
@@ -85,7 +85,7 @@ def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path) -> None:
 def test_object_faces_take_the_colour_of_their_points() -> None:
     import trimesh
 
-    from realsim.appearance import AppearanceParams, colour_object_from_points
+    from realsim.composition.appearance import AppearanceParams, colour_object_from_points
     from realsim.scene import SceneObject
 
     box = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
@@ -103,8 +103,8 @@ def test_object_faces_take_the_colour_of_their_points() -> None:
 
 
 def test_support_top_is_seen_from_above() -> None:
-    from realsim.appearance import support_top, top_view_texture
-    from realsim.layout import declared_support
+    from realsim.composition.appearance import support_top, top_view_texture
+    from realsim.composition.layout import declared_support
 
     plane = declared_support(None)  # 1.2 x 0.8 m at 0.75 m, centred at the origin
     rng = np.random.default_rng(3)

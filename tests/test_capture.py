@@ -9,9 +9,9 @@ import pytest
 import trimesh
 
 from conftest import MOSD
-from realsim.capture import LoadParams, load_capture, up_rotation
 from realsim.errors import InputError
-from realsim.pcd_io import read_pcd
+from realsim.perception.capture import LoadParams, load_capture, up_rotation
+from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import run_pipeline
 
 

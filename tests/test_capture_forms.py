@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 import trimesh
 
-from realsim.capture import load_capture
 from realsim.errors import InputError
+from realsim.perception.capture import load_capture
+from realsim.perception.resolution import plausible_units
 from realsim.pipeline import run_pipeline
-from realsim.resolution import plausible_units
 from realsim.synth import SceneSpec, make_scene, sample_cloud, write_mesh, write_point_cloud, write_rgbd_sequence
 from realsim.synth.scene import ycb_root
 
@@ -107,7 +107,7 @@ def test_splat_ply_is_read_as_its_centres(gt, tmp_path: Path) -> None:
 def test_usd_stage_units_and_up(gt, tmp_path: Path) -> None:
     from pxr import Gf, Usd, UsdGeom, Vt
 
-    from realsim.usd_mesh import read_usd_mesh
+    from realsim.perception.usd_mesh import read_usd_mesh
 
     stage = Usd.Stage.CreateNew(str(tmp_path / "room.usda"))
     UsdGeom.SetStageMetersPerUnit(stage, 0.01)

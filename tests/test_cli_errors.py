@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from conftest import REPO
-from realsim.pcd_io import write_pcd
+from realsim.perception.pcd_io import write_pcd
 
 
 def run_cli(*args: str) -> subprocess.CompletedProcess:

@@ -6,7 +6,7 @@ import numpy as np
 import trimesh
 
 from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex, mirror_hidden_half
-from realsim.intrinsics import Intrinsics
+from realsim.perception.intrinsics import Intrinsics
 
 INTR = Intrinsics(fx=200.0, fy=200.0, cx=79.5, cy=59.5, width=160, height=120)
 

@@ -9,7 +9,7 @@ from realsim.completion import CompletionParams, DepthView
 from realsim.completion.carving import carve_pieces, carve_to_tiles
 from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.revolution import complete_revolved
-from realsim.intrinsics import Intrinsics
+from realsim.perception.intrinsics import Intrinsics
 
 GRID = 0.002
 

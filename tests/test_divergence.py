@@ -6,10 +6,10 @@ import mujoco
 import numpy as np
 import pytest
 
+from realsim.composition.settle import SettleParams, simulate_to_rest
 from realsim.errors import SimulationDiverged
 from realsim.physics.divergence import check_state
 from realsim.scene_format import free_joint_bodies
-from realsim.settle import SettleParams, simulate_to_rest
 
 
 def falling_box() -> tuple[mujoco.MjModel, mujoco.MjData]:

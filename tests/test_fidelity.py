@@ -17,8 +17,8 @@ import pytest
 
 from conftest import MOSD
 from realsim.fidelity import capture_rgbd, compare, render_rgbd
-from realsim.intrinsics import Intrinsics, fit_intrinsics
-from realsim.pcd_io import read_pcd
+from realsim.perception.intrinsics import Intrinsics, fit_intrinsics
+from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import convert
 
 NO_ROBOT = {"robot": {"enabled": False}}

@@ -22,10 +22,10 @@ from hypothesis import strategies as st
 
 from conftest import MOSD
 from realsim import cli
-from realsim.capture import load_capture
-from realsim.capture_config import parse_capture_config, read_capture_config
 from realsim.errors import InputError
-from realsim.pcd_io import write_pcd
+from realsim.perception.capture import load_capture
+from realsim.perception.capture_config import parse_capture_config, read_capture_config
+from realsim.perception.pcd_io import write_pcd
 from realsim.pipeline import load_pipeline
 
 FUZZ = settings(max_examples=200, deadline=None, derandomize=True, database=None,

@@ -8,9 +8,7 @@ from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "realsim"
 RUNTIME_SIDE = ("runtime", "viewer", "export", "planner", "robot")
-CONVERSION = ("capture", "planes", "segment", "segment_stage", "completion", "compose", "objects_stage", "layout", "settle", "text",
-              "understanding", "pipeline", "robot_stage", "appearance", "backdrop", "arena", "synth", "synthetic", "rgbd", "pcd_io",
-              "output", "assets")
+CONVERSION = ("perception", "composition", "completion", "text", "understanding", "pipeline", "stages", "synth", "output", "assets")
 
 
 def imports_of(path: Path) -> set[str]:
@@ -39,11 +37,11 @@ def _stage_modules() -> dict[str, str]:
     """Stage name -> the module whose function it runs (the algorithm behind each thin adapter)."""
     from realsim.stages import STAGES
 
-    behind = {"realsim.stages.load": "realsim.capture", "realsim.stages.write": "realsim.output"}  # adapters with a little glue
+    behind = {"realsim.stages.load": "realsim.perception.capture", "realsim.stages.write": "realsim.output"}  # adapters with a little glue
     return {name: behind.get(stage.run.__module__, stage.run.__module__) for name, stage in STAGES.items()}
 
 
-NESTED_PARAMS = {("realsim.text.stage", "realsim.objects_stage")}  # TextParams nests ObjectsParams (the text path's objects)
+NESTED_PARAMS = {("realsim.text.stage", "realsim.composition.objects")}  # TextParams nests ObjectsParams (the text path's objects)
 
 
 def _file(module: str) -> Path:

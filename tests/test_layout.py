@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from realsim.capture_config import DeclaredSupport
+from realsim.composition.layout import LayoutParams, declared_support, place_on_support, reach_anchor
 from realsim.geometry import polygons_apart
-from realsim.layout import LayoutParams, declared_support, place_on_support, reach_anchor
+from realsim.perception.capture_config import DeclaredSupport
 
 SQUARE = np.array([[-0.04, -0.04], [0.04, -0.04], [0.04, 0.04], [-0.04, 0.04]])
 

@@ -9,8 +9,8 @@ import pytest
 import trimesh
 
 from conftest import YCB
-from realsim.capture import is_lone_object
 from realsim.errors import InputError
+from realsim.perception.capture import is_lone_object
 from realsim.pipeline import convert, pipeline_for
 
 

@@ -39,7 +39,7 @@ def test_object_meshes_in_any_unit_and_up_axis(tmp_path: Path) -> None:
 
 
 def test_painted_vertices_become_a_texture(tmp_path: Path) -> None:
-    from realsim.atlas import baked_colours
+    from realsim.composition.atlas import baked_colours
 
     box = trimesh.creation.box(extents=(0.06, 0.06, 0.1)).subdivide().subdivide()
     top = box.vertices[:, 2] > 0
@@ -67,7 +67,7 @@ def test_a_textured_object_is_named_by_its_texture_colour() -> None:
 
     from PIL import Image
 
-    from realsim.atlas import surface_colour
+    from realsim.composition.atlas import surface_colour
     from realsim.planner.vocab import color_name
 
     mesh = trimesh.creation.box(extents=(0.1, 0.1, 0.1))

@@ -1,4 +1,4 @@
-"""realsim.pcd_io: real PCL captures, round trips in every encoding, and bad input."""
+"""realsim.perception.pcd_io: real PCL captures, round trips in every encoding, and bad input."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from realsim.errors import InputError
-from realsim.pcd_io import ENCODINGS, PcdData, read_pcd, write_pcd
+from realsim.perception.pcd_io import ENCODINGS, PcdData, read_pcd, write_pcd
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "pcl_scenes"
 REAL_FILES = sorted(DATA.glob("*.pcd")) + sorted((DATA / "mOSD").glob("*.pcd"))

@@ -17,11 +17,11 @@ sys.path.insert(0, str(Path(__file__).parent))
 from anthropic_server import MessagesServer, tool_use  # noqa: E402
 
 from realsim import llm  # noqa: E402
-from realsim.capture import load_capture  # noqa: E402
 from realsim.cli import main  # noqa: E402
+from realsim.composition.settle import rest_check  # noqa: E402
+from realsim.perception.capture import load_capture  # noqa: E402
 from realsim.pipeline import convert, pipeline_for  # noqa: E402
 from realsim.runtime import Sim, run_command  # noqa: E402
-from realsim.settle import rest_check  # noqa: E402
 from realsim.text.claude import SCENE_TOOL  # noqa: E402
 from realsim.text.schema import ObjectSpec  # noqa: E402
 from realsim.text.stage import display_label  # noqa: E402
@@ -35,7 +35,7 @@ NAMES = {"mug": ("coffee mug", "mug"), "can": ("soup can", "can"), "cereal_box":
 def photo(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, Any]]:
     """A rendered synthetic tabletop as photo.png, alone in a folder, and a description recorded
     from its ground truth (what Claude would answer)."""
-    from realsim.pcd_io import read_pcd
+    from realsim.perception.pcd_io import read_pcd
     from realsim.synth.tabletop import make_tabletop_capture
 
     cap = make_tabletop_capture(tmp_path_factory.mktemp("synthetic") / "capture", seed=0)

@@ -9,14 +9,14 @@ import numpy as np
 import pytest
 import trimesh
 
-from realsim.compose import compose_scene
+from realsim.composition.compose import compose_scene
+from realsim.composition.settle import settle_scene
 from realsim.errors import InputError
 from realsim.output import write_scene
 from realsim.robot import Robot, add_robot, choose_robot_pose
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.model import BASE_FOOTPRINT, HOME_ARM, menagerie_panda_dir
 from realsim.scene import CaptureInfo, Scene, SceneObject, SupportPlane
-from realsim.settle import settle_scene
 
 TABLE_Z = 0.75
 TOP_DOWN = np.array([0.0, 1.0, 0.0, 0.0])

@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 from conftest import MOSD, PCL
+from realsim.composition.settle import rest_check
 from realsim.metrics import matched_iou, mosd_object_ids, plane_error
-from realsim.pcd_io import read_pcd
+from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import convert
-from realsim.settle import rest_check
 
 SCENES = ["test0", "test31", "test45", "test55"]
 

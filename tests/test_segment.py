@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from realsim.metrics import matched_iou
+from realsim.perception.segment import SegmentParams, SegmentResult, segment_objects
 from realsim.scene import SupportPlane
-from realsim.segment import SegmentParams, SegmentResult, segment_objects
 
 DATA = Path(__file__).resolve().parents[1].parent / "shared" / "data"
 MOSD = DATA / "pcl_scenes" / "mOSD"
@@ -29,8 +29,8 @@ def mosd_results() -> dict[str, tuple[SegmentResult, np.ndarray, float]]:
         pytest.skip(f"real data not found at {MOSD}")
     import time
 
-    from realsim.capture import load_capture
-    from realsim.planes import detect_planes
+    from realsim.perception.capture import load_capture
+    from realsim.perception.planes import detect_planes
 
     out = {}
     for name in SCENES:
@@ -241,7 +241,7 @@ def _labelled(*clusters: np.ndarray) -> tuple[np.ndarray, SegmentResult]:
 def test_lying_cylinder_stands_on_the_table_floating_speck_does_not() -> None:
     """A bottle lying on its side has few points near the table (its 2nd height percentile is
     over 1.5 cm up) yet stands on it; a cluster whose lowest points are 5 cm up rests on nothing."""
-    from realsim.object_relations import filter_by_size
+    from realsim.perception.object_relations import filter_by_size
 
     rng = np.random.default_rng(0)
     ang, x = rng.uniform(0, 2 * np.pi, 4000), rng.uniform(-0.1, 0.1, 4000)
@@ -260,7 +260,7 @@ def test_lying_cylinder_stands_on_the_table_floating_speck_does_not() -> None:
 def test_upright_sheet_is_structure_in_clouds_seen_from_around() -> None:
     """A 30 x 30 cm vertical sheet (a piece of a wall, 2 mm noise) is structure, not an object;
     a 6 cm cube seen from around is kept."""
-    from realsim.object_relations import filter_by_size
+    from realsim.perception.object_relations import filter_by_size
 
     rng = np.random.default_rng(1)
     sheet = np.stack([rng.normal(0.3, 0.002, 3000), rng.uniform(-0.15, 0.15, 3000), rng.uniform(TABLE_Z + 0.01, TABLE_Z + 0.3, 3000)], axis=1)
@@ -281,7 +281,7 @@ def test_upright_sheet_is_structure_in_clouds_seen_from_around() -> None:
 def test_single_view_keeps_hidden_bases_drops_walls() -> None:
     """In one camera view (structure_only) a cluster whose base is hidden stays an object and a
     cluster larger than any object (a wall in view) becomes structure."""
-    from realsim.object_relations import filter_by_size
+    from realsim.perception.object_relations import filter_by_size
 
     rng = np.random.default_rng(2)
     hidden_base = rng.uniform([0.0, 0.0, TABLE_Z + 0.04], [0.06, 0.06, TABLE_Z + 0.1], (500, 3))

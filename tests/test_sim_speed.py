@@ -18,8 +18,8 @@ import trimesh
 from conftest import YCB
 from realsim import cli
 from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
+from realsim.composition.settle import rest_check
 from realsim.physics.throughput import bench_scene, warp_available
-from realsim.settle import rest_check
 
 
 @pytest.fixture(scope="module")

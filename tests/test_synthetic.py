@@ -12,7 +12,7 @@ import pytest
 import yaml
 
 from realsim.errors import InputError
-from realsim.pcd_io import PcdData, read_pcd
+from realsim.perception.pcd_io import PcdData, read_pcd
 from realsim.synth import tabletop as synthetic
 
 FILES = ("scene.pcd", "capture.yaml", "ground_truth.json")

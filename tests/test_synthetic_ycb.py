@@ -89,7 +89,7 @@ def test_write_all_forms(scene, tmp_path: Path) -> None:
     assert [f["form"] for f in gt["forms"]] == ["organized_view", "rgbd_sequence", "point_cloud", "mesh"]
     assert len(list((dest / "sequence" / "depth").glob("*.png"))) == 3
     assert (dest / "sequence" / "odometry.csv").read_text().count("\n") == 4
-    from realsim.pcd_io import read_pcd
+    from realsim.perception.pcd_io import read_pcd
 
     view = read_pcd(dest / "view.pcd")
     assert view.grid_shape == (480, 640)

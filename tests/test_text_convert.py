@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from realsim.cli import main
+from realsim.composition.settle import rest_check
 from realsim.pipeline import pipeline_for, run_pipeline
 from realsim.procedural import size_range
 from realsim.runtime import Sim, run_command
-from realsim.settle import rest_check
 
 NO_ROBOT = {"robot": {"enabled": False}}
 

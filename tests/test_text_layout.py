@@ -6,10 +6,10 @@ import mujoco
 import numpy as np
 import pytest
 
-from realsim.layout import hull_pieces, rest_height
+from realsim.composition.layout import hull_pieces, rest_height
+from realsim.composition.settle import rest_check
 from realsim.pipeline import run_pipeline
 from realsim.procedural import generate
-from realsim.settle import rest_check
 
 NO_ROBOT = {"robot": {"enabled": False}}
 

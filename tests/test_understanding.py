@@ -25,7 +25,7 @@ from anthropic_server import MessagesServer, Reply, error, tool_use  # noqa: E40
 
 from realsim import llm  # noqa: E402
 from realsim.cache import DiskCache  # noqa: E402
-from realsim.capture_config import CameraIntrinsics, CaptureConfig  # noqa: E402
+from realsim.perception.capture_config import CameraIntrinsics, CaptureConfig  # noqa: E402
 from realsim.physics import estimate_manifest  # noqa: E402
 from realsim.understanding import (  # noqa: E402
     CallLog,
@@ -401,7 +401,7 @@ def test_unreadable_photo_is_an_input_error(server: RoutingServer, tmp_path: Pat
 
 
 def test_capture_camera_projects_points_to_their_pixels() -> None:
-    from realsim.capture import up_rotation
+    from realsim.perception.capture import up_rotation
     from realsim.scene import CaptureInfo, Scene
     from realsim.synth.tabletop import backproject
     from realsim.understanding import capture_camera
@@ -427,7 +427,7 @@ def test_capture_camera_projects_points_to_their_pixels() -> None:
 
 
 def test_objects_stage_with_only_a_photo_places_primitives(server: RoutingServer, tmp_path: Path) -> None:
-    from realsim.objects_stage import ObjectsParams, prepare_scene_objects
+    from realsim.composition.objects import ObjectsParams, prepare_scene_objects
 
     def route(body: dict[str, Any]) -> Reply:
         return tool_use(PHOTO_TOOL, PHOTO_REPLY) if tool_name(body) == PHOTO_TOOL else _manifest_router()(body)

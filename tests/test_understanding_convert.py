@@ -22,7 +22,7 @@ from test_understanding import RECORD_CAN, VALUES_CAN, RoutingServer, tool_name,
 from conftest import DATA, REPO, YCB  # noqa: E402
 from realsim.assets import prepare_object  # noqa: E402
 from realsim.cache import DiskCache  # noqa: E402
-from realsim.pcd_io import read_pcd  # noqa: E402
+from realsim.perception.pcd_io import read_pcd  # noqa: E402
 from realsim.physics import estimate_manifest  # noqa: E402
 from realsim.pipeline import convert  # noqa: E402
 from realsim.understanding.manifest_claude import RECORD_TOOL, VALUES_TOOL  # noqa: E402

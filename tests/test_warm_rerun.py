@@ -47,7 +47,7 @@ def test_warm_rerun_reuses_everything(capture: Path, tmp_path: Path, monkeypatch
 
     # stage caches alone (whole-conversion reuse off): no pose search, no settling, no render
     monkeypatch.setenv("REALSIM_REUSE", "0")
-    for target in ("realsim.robot_stage.add_robot", "realsim.settle._settle", "realsim.render.render_scene"):
+    for target in ("realsim.composition.robot_mount.add_robot", "realsim.composition.settle._settle", "realsim.render.render_scene"):
         _forbid(monkeypatch, target)
     assert cli.main(["convert", str(capture), "-o", str(tmp_path / "staged"), "--seed", "2", "-q"]) == 0
     staged = _files(tmp_path / "staged")

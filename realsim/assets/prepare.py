@@ -13,8 +13,8 @@ from realsim.assets.decompose import decompose
 from realsim.assets.geometry import blend_inertia, clean_geometry, make_solid, plausible_scale, shell_inertia_unit, solid_inertia_unit
 from realsim.assets.loading import load_object_mesh, missing_references, texture_file, visual_appearance
 from realsim.assets.params import AssetParams
-from realsim.atlas import baked_colours, surface_colour
 from realsim.cache import DiskCache, cache_key
+from realsim.composition.atlas import baked_colours, surface_colour
 from realsim.errors import InputError
 from realsim.parallel import parallel_map
 from realsim.physics.size_table import lookup

@@ -10,8 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from realsim.appearance import capture_intrinsics
-from realsim.intrinsics import Intrinsics
+from realsim.composition.appearance import capture_intrinsics
+from realsim.perception.intrinsics import Intrinsics
 from realsim.scene import Scene
 
 OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space

@@ -2,7 +2,7 @@
 
 An organized cloud is a photo with depth. Every visual mesh built from it (scanned objects, the
 top of each observed support, the backdrop) is textured by projecting its vertices into that
-photo with the fitted intrinsics (:mod:`realsim.intrinsics`): the UV of a vertex is the pixel it
+photo with the fitted intrinsics (:mod:`realsim.perception.intrinsics`): the UV of a vertex is the pixel it
 is seen at. A layer's texture is the photo cropped to where its vertices land, with the pixels
 that do not belong to the layer (other objects, the table behind, nothing) filled with the
 nearest pixel that does; so the unseen side of an object takes the colour of the seen side in
@@ -19,9 +19,9 @@ import trimesh
 from scipy.ndimage import distance_transform_edt
 from scipy.spatial.transform import Rotation
 
-from realsim.atlas import face_colour_atlas, png_bytes
+from realsim.composition.atlas import face_colour_atlas, png_bytes
 from realsim.geometry import inside_convex_polygon
-from realsim.intrinsics import Intrinsics, fit_intrinsics
+from realsim.perception.intrinsics import Intrinsics, fit_intrinsics
 from realsim.scene import Scene, SceneObject, SupportPlane
 
 

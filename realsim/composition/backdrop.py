@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from realsim.appearance import CaptureImage, projected_texture
-from realsim.atlas import face_colour_atlas
+from realsim.composition.appearance import CaptureImage, projected_texture
+from realsim.composition.atlas import face_colour_atlas
 
 
 @dataclass(frozen=True)

@@ -14,7 +14,7 @@ import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
 
-from realsim.appearance import (
+from realsim.composition.appearance import (
     AppearanceParams,
     CaptureImage,
     capture_image,
@@ -26,8 +26,8 @@ from realsim.appearance import (
     texture_object,
     top_view_texture,
 )
-from realsim.arena import ArenaParams, add_arena
-from realsim.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
+from realsim.composition.arena import ArenaParams, add_arena
+from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP

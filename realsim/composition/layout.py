@@ -12,9 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
-from realsim.capture_config import DeclaredSupport
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, polygons_apart
+from realsim.perception.capture_config import DeclaredSupport
 from realsim.scene import SupportPlane
 
 

@@ -15,8 +15,8 @@ import numpy as np
 
 from realsim.assets import AssetParams, PreparedObject, prepare_objects
 from realsim.cache import DiskCache
+from realsim.composition.layout import LayoutParams, declared_support, footprint, place_on_support
 from realsim.geometry import yaw_quat
-from realsim.layout import LayoutParams, declared_support, footprint, place_on_support
 from realsim.scene import Scene, SceneObject, SupportPlane, primary_support, scene_object
 from realsim.scene_format import safe_name
 from realsim.understanding import Understanding, UnderstandingParams

@@ -28,10 +28,10 @@ from typing import Any
 
 import numpy as np
 
-from realsim.capture_config import CaptureConfig, read_capture_config
 from realsim.errors import InputError
-from realsim.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
-from realsim.rgbd import is_rgbd_sequence
+from realsim.perception.capture_config import CaptureConfig, read_capture_config
+from realsim.perception.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
+from realsim.perception.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 from realsim.viewer.splat import is_splat_ply, read_splat_ply
 
@@ -96,7 +96,7 @@ def up_rotation(up: str) -> np.ndarray:
 def _read_point_file(path: Path) -> RawCloud:
     suffix = path.suffix.lower()
     if suffix == ".pcd":
-        from realsim.pcd_io import read_pcd
+        from realsim.perception.pcd_io import read_pcd
 
         data = read_pcd(path)
         is_camera = data.grid_shape is not None and data.grid_shape[0] > 1
@@ -204,7 +204,7 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         raise InputError(f"{path}: the file is empty")
     suffix = path.suffix.lower()
     if path.is_dir():
-        from realsim.rgbd import fuse_sequence
+        from realsim.perception.rgbd import fuse_sequence
 
         pts, cols = fuse_sequence(path)
         cloud = RawCloud(pts, cols, None, False, "rgbd", units_hint="m", up_hint="+y")
@@ -219,7 +219,7 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     elif suffix in MESH_SUFFIXES:
         cloud = _load_mesh_points(path, params.mesh_pilot_points, seed)
     elif suffix in USD_SUFFIXES:
-        from realsim.usd_mesh import read_usd_mesh
+        from realsim.perception.usd_mesh import read_usd_mesh
 
         mesh, units_hint, up_hint = read_usd_mesh(path)
         pts, cols, _ = sample_mesh(mesh, params.mesh_pilot_points, seed, path)

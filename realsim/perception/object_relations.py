@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
+from realsim.perception.segment_params import SegmentParams, SegmentResult
+from realsim.perception.supervoxels import smallest_eigenvectors
 from realsim.scene import SupportPlane
-from realsim.segment_params import SegmentParams, SegmentResult
-from realsim.supervoxels import smallest_eigenvectors
 
 __all__ = ["base_height", "filter_by_size", "sheet_thickness", "support_relations"]
 

@@ -24,7 +24,7 @@ import lzf
 import numpy as np
 
 from realsim.errors import InputError
-from realsim.pcd_write import DEFAULT_VIEWPOINT, ENCODINGS, write_pcd  # noqa: F401 (the writer: re-exported)
+from realsim.perception.pcd_write import DEFAULT_VIEWPOINT, ENCODINGS, write_pcd  # noqa: F401 (the writer: re-exported)
 
 __all__ = ["PcdData", "read_pcd", "write_pcd", "ENCODINGS"]
 

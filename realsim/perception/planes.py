@@ -16,7 +16,7 @@ from scipy.spatial import cKDTree
 
 from realsim.errors import InputError
 from realsim.geometry import fit_plane, inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
-from realsim.resolution import working_resolution
+from realsim.perception.resolution import working_resolution
 from realsim.scene import Scene, SupportPlane
 
 

@@ -20,10 +20,10 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
-from realsim.object_relations import filter_by_size, support_relations
+from realsim.perception.object_relations import filter_by_size, support_relations
+from realsim.perception.segment_params import SegmentParams, SegmentResult
+from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 from realsim.scene import SupportPlane
-from realsim.segment_params import SegmentParams, SegmentResult
-from realsim.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 
 __all__ = ["SegmentParams", "SegmentResult", "assign_supports", "filter_by_size", "segment_objects"]
 

@@ -1,4 +1,4 @@
-"""Parameters and result of the object segmentation (:mod:`realsim.segment`)."""
+"""Parameters and result of the object segmentation (:mod:`realsim.perception.segment`)."""
 
 from __future__ import annotations
 

@@ -8,10 +8,10 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
-from realsim.resolution import working_resolution
+from realsim.perception.resolution import working_resolution
+from realsim.perception.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import safe_name
-from realsim.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 
 __all__ = ["SegmentParams", "segment_scene"]
 

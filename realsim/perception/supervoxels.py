@@ -11,7 +11,7 @@ import numpy as np
 from scipy import ndimage
 from scipy.spatial import cKDTree
 
-from realsim.segment_params import SegmentParams
+from realsim.perception.segment_params import SegmentParams
 
 __all__ = ["cloud_supervoxels", "grid_links", "grid_normals", "grid_supervoxels", "knn_links", "knn_normals", "smallest_eigenvectors"]
 

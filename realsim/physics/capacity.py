@@ -53,7 +53,7 @@ def measure_capacity(model: mujoco.MjModel, initial: tuple[np.ndarray, np.ndarra
     """Peak contacts and constraint rows while objects land and while the robot moves, and the
     capacity to record: ``{"nconmax", "njmax", "measured": {...}, "headroom", ...}``. ``initial`` is
     the settled state (qpos, ctrl); None reads keyframe ``initial``. Run it with sleeping off
-    (:func:`realsim.settle.awake`): batched engines compute every contact."""
+    (:func:`realsim.composition.settle.awake`): batched engines compute every contact."""
     peaks = {"ncon": 0, "nefc": 0}
 
     def run(key: str, seconds: float, scripted: bool) -> None:

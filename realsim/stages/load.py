@@ -1,9 +1,9 @@
 """``load``: read the capture the unread record names into points, colours and a world frame
-(:mod:`realsim.capture`: units, up axis, the typed capture.yaml)."""
+(:mod:`realsim.perception.capture`: units, up axis, the typed capture.yaml)."""
 
 from __future__ import annotations
 
-from realsim.capture import LoadParams, load_capture
+from realsim.perception.capture import LoadParams, load_capture
 from realsim.scene import Scene
 from realsim.stages.base import Stage
 

@@ -1,7 +1,7 @@
 """``objects``: every object made physics-ready (hulls or primitives, visual mesh, manifest) and
-placed (:mod:`realsim.objects_stage`, :mod:`realsim.assets`, :mod:`realsim.understanding`)."""
+placed (:mod:`realsim.composition.objects`, :mod:`realsim.assets`, :mod:`realsim.understanding`)."""
 
-from realsim.objects_stage import ObjectsParams, prepare_scene_objects
+from realsim.composition.objects import ObjectsParams, prepare_scene_objects
 from realsim.stages.base import Stage
 
 STAGE = Stage("objects", prepare_scene_objects, ObjectsParams)

@@ -1,7 +1,7 @@
 """``settle``: simulate to rest and write the keyframe in which everything already rests
-(:mod:`realsim.settle`)."""
+(:mod:`realsim.composition.settle`)."""
 
-from realsim.settle import SettleParams, settle_scene
+from realsim.composition.settle import SettleParams, settle_scene
 from realsim.stages.base import Stage
 
 STAGE = Stage("settle", settle_scene, SettleParams, needs=("spec",))

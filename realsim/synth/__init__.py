@@ -23,7 +23,7 @@ Write capture forms (each returns its ``ground_truth.json`` entry with ``capture
     write_all(scene, dest, forms=("view", "sequence", "cloud", "mesh"), cloud_points=200_000, frames=30)
     # dest/view.pcd          organized 640x480 Kinect-like view, optical frame (+y down), mOSD label field
     # dest/sequence/         RGB-D sweep, Stray Scanner layout (rgb/, depth/ uint16 mm, camera_matrix.csv,
-    #                        odometry.csv with ARKit poses, Y up); realsim.rgbd reads it
+    #                        odometry.csv with ARKit poses, Y up); realsim.perception.rgbd reads it
     # dest/cloud.ply         unorganized cloud of the visible surfaces, 2 mm noise, Z up, metres
     #                        (+ cloud_labels.npy: object id per point)
     # dest/mesh.glb          the merged mesh, glTF Y-up millimetres, vertex colours

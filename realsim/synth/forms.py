@@ -38,7 +38,7 @@ def _apply(t: np.ndarray, pts: np.ndarray) -> np.ndarray:
 def write_organized_view(scene: SynthScene, path: Path, seed: int = 0, width: int = 640, height: int = 480) -> dict[str, Any]:
     """A Kinect-like organized PCD in the camera optical frame (metres, +y down) with the mOSD
     ``label`` field (1 support top, 2 other furniture, 3 floor, 4 background, 10 * id objects)."""
-    from realsim.pcd_io import write_pcd
+    from realsim.perception.pcd_io import write_pcd
 
     rng = np.random.default_rng([seed, 11])
     cam = kinect_view(scene, rng, width, height)
@@ -53,7 +53,7 @@ def write_organized_view(scene: SynthScene, path: Path, seed: int = 0, width: in
 
 def write_rgbd_sequence(scene: SynthScene, folder: Path, frames: int = 30, seed: int = 0, width: int = 640,
                         height: int = 480) -> dict[str, Any]:
-    """A hand-held RGB-D sweep in the Stray Scanner layout (see ``realsim.rgbd``): ``rgb/NNNNNN.png``,
+    """A hand-held RGB-D sweep in the Stray Scanner layout (see ``realsim.perception.rgbd``): ``rgb/NNNNNN.png``,
     ``depth/NNNNNN.png`` (uint16 mm, 0 = none), ``camera_matrix.csv``, ``odometry.csv`` (ARKit
     camera poses in a gravity-aligned Y-up world whose origin is the first camera)."""
     from PIL import Image

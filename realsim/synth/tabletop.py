@@ -41,7 +41,7 @@ import mujoco
 import numpy as np
 
 from realsim.errors import InputError, RealsimError
-from realsim.pcd_io import write_pcd
+from realsim.perception.pcd_io import write_pcd
 from realsim.synth.tabletop_layout import (
     LABEL_FLOOR,
     LABEL_NONE,

@@ -4,7 +4,7 @@ Objects that stand on a support are placed first (by seeded rejection sampling, 
 apart by a gripper's clearance, those in a row as one unit, and each relation to an already
 placed object as a region to sample in: left of, right of, behind, in front of, next to; an
 object whose relation cannot be met is placed anywhere, with a warning). Then, parents before
-children, objects on or in another object are lowered onto it (:func:`realsim.layout.rest_height`,
+children, objects on or in another object are lowered onto it (:func:`realsim.composition.layout.rest_height`,
 exact on the convex pieces): stacked instances centred on the one below, contents at the lowest
 free spot inside the container's cavity (its floor, then on each other), objects "on" a thing
 at the lowest free spot on its top.
@@ -18,8 +18,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from realsim.composition.layout import LayoutParams, footprint, hull_pieces, reach_anchor, rest_contact, vertical_extent
 from realsim.geometry import inside_convex_polygon, polygons_apart
-from realsim.layout import LayoutParams, footprint, hull_pieces, reach_anchor, rest_contact, vertical_extent
 from realsim.scene import SupportPlane
 
 NEAR = 0.12  # m: "next to" means footprints at most this far apart

@@ -8,7 +8,7 @@ exact convex pieces, no decomposition), given an offline manifest, and arranged
 floor around), objects on their support, stacks, contents and objects on objects lowered onto
 what they rest on. Articulated objects (drawer cabinet, hinged box, laptop) keep their child
 part in ``scene.articulations``; grasp sites (handle, rim, lid, ...) go to ``scene.object_sites``
-for :func:`realsim.compose.compose_scene`.
+for :func:`realsim.composition.compose.compose_scene`.
 """
 
 from __future__ import annotations
@@ -21,11 +21,11 @@ import numpy as np
 
 from realsim.assets import prepare_objects
 from realsim.cache import DiskCache, cache_root
-from realsim.capture_config import DeclaredSupport
+from realsim.composition.layout import LayoutParams, declared_support
+from realsim.composition.objects import ObjectsParams
 from realsim.errors import InputError
 from realsim.geometry import yaw_quat
-from realsim.layout import LayoutParams, declared_support
-from realsim.objects_stage import ObjectsParams
+from realsim.perception.capture_config import DeclaredSupport
 from realsim.physics import estimate_manifest
 from realsim.physics.size_table import lookup
 from realsim.procedural import Generated, generate, get_backend

@@ -23,8 +23,8 @@ import numpy as np
 
 from realsim import llm
 from realsim.assets import PreparedObject
-from realsim.atlas import png_bytes
 from realsim.cache import DiskCache
+from realsim.composition.atlas import png_bytes
 from realsim.physics import ObjectManifest, estimate_manifest
 from realsim.physics.size_table import lookup
 from realsim.scene import Scene, SceneObject
