@@ -412,15 +412,15 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
 
 
 def _run_sentence(sim, sentence: str, planner: str, seed: int):
-    """Plan with the robot's heading and the capture's colours (what ``Sim.object_infos`` leaves
-    out today), then run the program through the same sandbox and primitives as ``realsim run``."""
+    """Plan with the robot's heading and the capture's colours, then run the plan (the rule
+    planner's typed calls, Claude's source) through the same sandbox and primitives as ``realsim run``."""
     from realsim.planner import make_planner
     from realsim.planner.vocab import with_colors
     from realsim.runtime import run_program
 
     sim.reset()
     plan = make_planner(planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
-    return run_program(sim, plan.program, seed=seed, name=plan.planner)
+    return run_program(sim, plan.calls if plan.calls is not None else plan.program, seed=seed, name=plan.planner)
 
 
 def _acted_object(call: str) -> str:
@@ -498,7 +498,8 @@ def bench_plans(args: argparse.Namespace) -> int:
             continue
         try:
             plan = make_planner(args.planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
-            acted = set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program))
+            acted = (set(plan.calls.acted_on()) if plan.calls is not None
+                     else set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program)))
             ok, got = spec != "refuse" and acted == movers, ", ".join(sorted(acted)) or "nothing"
         except InputError as exc:
             ok, got = spec == "refuse", f"refused: {exc}"
@@ -528,7 +529,7 @@ def bench_language(args: argparse.Namespace) -> int:
                 print(f"  [{planner.name}] {command!r}: {exc}")
                 continue
             t1 = time.perf_counter()
-            report = run(plan.program, Recorder())
+            report = run(plan.calls if plan.calls is not None else plan.program, Recorder())
             t_run += time.perf_counter() - t1
             t_plan += t1 - t0
             ok += report.ok

@@ -14,8 +14,9 @@ from realsim.runtime.primitives import ProgramAPI
 def test_sandbox_allows_exactly_the_registry() -> None:
     assert sandbox.PRIMITIVES == primitives.NAMES
     assert len(set(primitives.NAMES)) == len(primitives.NAMES)
-    for name in primitives.NAMES:
-        sandbox.check(f"{name}()")  # a call to any registered primitive passes the static check
+    sample = {"object": "'obj1_mug'", "point": "[0.4, 0.0, 0.3]", "quat": "None", "side": "'left'", "direction": "'left'", "distance": "0.05"}
+    for p in primitives.PRIMITIVES:  # a call to any registered primitive with its parameters passes the static check
+        sandbox.check(f"{p.name}({', '.join(sample[q.kind] for q in p.params)})")
     rejected = False
     try:
         sandbox.check("teleport()")

@@ -7,7 +7,8 @@ the objects it acts on (see :mod:`realsim.planner.reference`: pronouns, colours,
 ordinals, locators, quantities), and a relation to a target (in, on, onto, next to, left of,
 right of, behind, in front of, between, on the table) or a push direction and distance.
 Quantities ("all the cans", "both blocks", "the mug and the can") become one call per object.
-The planner emits :class:`Call` objects; the program text the sandbox runs is made from them.
+The planner emits a typed :class:`Program` of :class:`Call` objects, which runs through the
+registry's bindings; its rendered text is for display and logs.
 Anything it cannot read, or any reference that is unknown or ambiguous, raises
 :class:`InputError` naming the candidates: nothing is done to a wrong object.
 """
@@ -21,9 +22,10 @@ from dataclasses import dataclass, field
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
+from realsim.planner.program import Call, Program
 from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
 from realsim.planner.reference import Context, Resolver
-from realsim.planner.types import Call, ObjectInfo, Plan, program_text
+from realsim.planner.types import ObjectInfo, Plan
 from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, name_words, norm, singular
 
 DEFAULT_PUSH = 0.10  # m, when no distance is given
@@ -63,7 +65,8 @@ class RulePlanner:
 
     def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
         calls, goals = parse_calls(command, scene_objects, robot_yaw)
-        return Plan(program=program_text(calls, command), goals=goals, planner=self.name, calls=calls)
+        program = Program(tuple(calls), command)
+        return Plan(program=program.source(), goals=goals, planner=self.name, calls=program)
 
 
 
@@ -79,12 +82,6 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
     return [c for s in steps for c in s.calls], _final_goals(steps)
-
-
-def parse(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[str, list[Goal]]:
-    """Program text and goals for ``command`` (see :func:`parse_calls`)."""
-    calls, goals = parse_calls(command, objects, robot_yaw)
-    return program_text(calls, command), goals
 
 
 def _final_goals(steps: list[_Step]) -> list[Goal]:

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from realsim.llm import Usage
+from realsim.planner.program import Call, Program
+
+__all__ = ["AFFORDANCES", "Call", "ObjectInfo", "Plan", "Planner", "Program"]
 
 if TYPE_CHECKING:
     from realsim.planner.goals import Goal
@@ -43,37 +46,13 @@ class ObjectInfo:
         return " ".join(words)
 
 
-@dataclass(frozen=True)
-class Call:
-    """One primitive call: its name and arguments (strings, numbers, lists of numbers)."""
-
-    name: str
-    args: tuple[Any, ...] = ()
-
-    def text(self) -> str:
-        return f"{self.name}({', '.join(_literal(a) for a in self.args)})"
-
-
-def _literal(value: Any) -> str:
-    if isinstance(value, float):
-        return repr(round(value, 4))
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_literal(v) for v in value) + "]"
-    return repr(value)
-
-
-def program_text(calls: list[Call], comment: str = "") -> str:
-    """The program that makes ``calls`` in order (what the sandbox runs)."""
-    head = [f"# {' '.join(comment.split())}"] if comment.strip() else []
-    return "\n".join(head + [c.text() for c in calls]) + "\n"
-
-
 @dataclass
 class Plan:
     """A program over the primitives, the goals to check afterwards, who planned it, what it cost.
 
-    ``calls`` holds the primitive calls when the planner emits them directly (the rule planner);
-    ``program`` is then their text. Claude writes ``program`` itself (``calls`` is None).
+    ``calls`` is the typed program when the planner emits calls (the rule planner): that is what
+    runs, and ``program`` is only its rendered text for display and logs. Claude writes source
+    (``program``, run in the sandbox; ``calls`` is None).
     """
 
     program: str
@@ -81,7 +60,7 @@ class Plan:
     planner: str = "rules"
     usage: Usage = field(default_factory=Usage)
     notes: list[str] = field(default_factory=list)
-    calls: list[Call] | None = None
+    calls: Program | None = None
 
 
 class Planner(Protocol):

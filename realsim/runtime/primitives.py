@@ -144,8 +144,9 @@ class ProgramAPI:
 
     def place_beside(self, obj: str, ref: str, side: str = "next") -> ActionResult:
         obj, ref = self._obj(obj), self._obj(ref)
-        if not isinstance(side, str) or side.strip().lower() not in ("next", "left", "right", "front", "behind"):
-            raise ValueError(f"side {side!r}: use 'next', 'left', 'right', 'front' or 'behind'")
+        problem = primitives.value_problem("side", side)
+        if problem is not None:
+            raise ValueError(problem)
         fail = self._ensure_held(obj, "place_beside")
         if fail is not None:
             return fail
@@ -170,7 +171,7 @@ class ProgramAPI:
         obj = self._obj(obj)
         if isinstance(direction, str):
             key = direction.strip().lower()
-            key = {"backward": "back", "backwards": "back", "forwards": "forward"}.get(key, key)
+            key = primitives.DIRECTION_ALIASES.get(key, key)
             if key not in DIRECTIONS:
                 raise ValueError(f"direction {direction!r}: use left, right, forward, back or [dx, dy]")
             d = np.array(direction_in_world(DIRECTIONS[key], self.sim.robot_yaw()), float)
@@ -179,8 +180,8 @@ class ProgramAPI:
             if np.linalg.norm(d) < 1e-9:
                 raise ValueError("direction must not be zero")
         dist = float(distance)
-        if not 0.0 < dist <= 1.0:
-            raise ValueError(f"push distance {dist} m is out of range (0 to 1 m)")
+        if not 0.0 < dist <= primitives.MAX_PUSH:
+            raise ValueError(f"push distance {dist} m is out of range (0 to {primitives.MAX_PUSH:g} m)")
         if self.robot.held:
             return self._record(ActionResult("push", False, f"the hand holds {self.robot.held}; place it first"), f"push({obj!r})")
         return self._record(self.robot.push(obj, d, dist), f"push({obj!r}, {direction!r}, {dist:.3f})")

@@ -1,8 +1,10 @@
 """Run a sentence or a program in a loaded scene: plan -> check -> run -> goals -> verdict.
 
-Both planners (rules, Claude) and a user's own program go through one path:
-:func:`realsim.planner.sandbox.check`, then :func:`realsim.planner.sandbox.run` with the
-primitives of :class:`ProgramAPI`, then the plan's goals evaluated on the simulation. Every run
+Both planners (rules, Claude) and a user's own program go through one path: a static check
+(:func:`realsim.planner.sandbox.check` for source, :func:`~realsim.planner.sandbox.check_calls`
+for the rule planner's typed calls, both against the primitive registry), then
+:func:`realsim.planner.sandbox.run` with the primitives of :class:`ProgramAPI`, then the plan's
+goals evaluated on the simulation. Every run
 starts from keyframe "initial" and leaves the scene folder untouched; the :class:`RunRecord`
 holds everything that happened and is written as a JSON log.
 """
@@ -21,6 +23,7 @@ from realsim import llm
 from realsim.errors import InputError
 from realsim.planner import make_planner, sandbox
 from realsim.planner.goals import Goal, GoalResult, evaluate_all, prepare_all, verdict
+from realsim.planner.program import Program
 from realsim.planner.types import Plan
 from realsim.planner.vocab import with_colors
 from realsim.runtime.primitives import ProgramAPI, _jsonable
@@ -108,9 +111,13 @@ def _call_dict(call: sandbox.PrimitiveCall) -> dict[str, Any]:
 
 def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, video: str | Path | None,
              on_call: Any = None, video_fps: float = 30.0) -> RunRecord:
-    """Reset, check, run ``plan.program``, evaluate ``plan.goals``; fills ``record``."""
+    """Reset, check, run the plan (its typed calls, else its source), evaluate ``plan.goals``; fills ``record``."""
     t0 = time.perf_counter()
-    sandbox.check(plan.program, limits=limits)  # nothing moves when this raises
+    program: str | Program = plan.calls if plan.calls is not None else plan.program
+    if isinstance(program, Program):  # nothing moves when a check raises
+        sandbox.check_calls(program, sim.object_names(), limits=limits)
+    else:
+        sandbox.check(program, limits=limits)
     sim.reset()
     api = ProgramAPI(sim)
     record.objects_before = sim.state()
@@ -127,7 +134,7 @@ def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, vi
     if on_call is not None:
         funcs = {k: _notify(k, f, on_call) for k, f in funcs.items()}
     try:
-        report = sandbox.run(plan.program, funcs, limits=limits)
+        report = sandbox.run(program, funcs, limits=limits, objects=sim.object_names())
     finally:
         if recorder is not None:
             recorder.close()
@@ -195,10 +202,11 @@ def run_command(sim: Sim, text: str, planner: str = "auto", seed: int | None = N
     return record
 
 
-def run_program(sim: Sim, source: str, seed: int | None = None, *, limits: sandbox.Limits = sandbox.Limits(),
+def run_program(sim: Sim, source: str | Program, seed: int | None = None, *, limits: sandbox.Limits = sandbox.Limits(),
                 video: str | Path | None = None, on_call: Any = None, name: str = "program",
                 video_fps: float = 30.0) -> RunRecord:
-    """Run a user's own program (same primitives, same sandbox) from keyframe "initial".
+    """Run a user's own program (same primitives, same sandbox) from keyframe "initial";
+    ``source`` is program text or a typed :class:`Program` of calls.
 
     Raises :class:`SandboxViolation` (an :class:`InputError` naming the line) before anything
     moves when the program breaks a rule. There are no goals: the verdict is "goal unknown" and
@@ -206,8 +214,9 @@ def run_program(sim: Sim, source: str, seed: int | None = None, *, limits: sandb
     t0 = time.perf_counter()
     if seed is not None:
         sim.seed = seed
-    plan = Plan(program=source, goals=[], planner=name)
-    record = RunRecord(scene=str(sim.folder), command=None, planner=name, program=source, seed=sim.seed)
+    text = source.source() if isinstance(source, Program) else source
+    plan = Plan(program=text, goals=[], planner=name, calls=source if isinstance(source, Program) else None)
+    record = RunRecord(scene=str(sim.folder), command=None, planner=name, program=text, seed=sim.seed)
     _execute(sim, plan, record, limits, video, on_call, video_fps)
     record.wall_time["total"] = round(time.perf_counter() - t0, 3)
     return record

@@ -14,22 +14,28 @@ an iteration cap per ``while`` loop, and size caps on integers, strings and list
 arithmetic operation is routed through a size-checking helper, so ``[0] * 10**9`` never
 allocates). The :class:`ExecutionReport` lists each primitive call with its arguments, result
 and line, and stops at the first error with a one-line message.
+
+A typed program (:class:`realsim.planner.program.Program`, what the rule planner emits) is
+checked by :func:`check_calls` against the registry's signatures and the scene's objects, and
+:func:`run` makes its calls through the same runner, budgets and report, without source text.
 """
 
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from realsim.planner.primitives import NAMES as PRIMITIVES
+from realsim.planner.program import Program
+from realsim.planner.sandbox.calls import check_calls
 from realsim.planner.sandbox.checker import check
 from realsim.planner.sandbox.limits import ALLOWED_ATTRIBUTES, FILENAME, FORBIDDEN_NAMES, SAFE_BUILTIN_NAMES, Limits, SandboxViolation
 from realsim.planner.sandbox.runner import ExecutionReport, PrimitiveCall, Rewriter, Runner
 
 __all__ = [
     "ALLOWED_ATTRIBUTES", "FILENAME", "FORBIDDEN_NAMES", "PRIMITIVES", "SAFE_BUILTIN_NAMES", "ExecutionReport", "Limits",
-    "PrimitiveCall", "SandboxViolation", "check", "primitives_of", "run",
+    "PrimitiveCall", "SandboxViolation", "check", "check_calls", "primitives_of", "run",
 ]
 
 
@@ -40,17 +46,26 @@ def primitives_of(robot: Any, names: Iterable[str] = PRIMITIVES) -> dict[str, Ca
     return {n: getattr(robot, n) for n in names if callable(getattr(robot, n, None))}
 
 
-def run(source: str, robot: Any, *, limits: Limits = Limits()) -> ExecutionReport:
-    """Check ``source`` (raises :class:`SandboxViolation`) and run it against ``robot``'s
-    primitives (an object with primitive methods, or a name -> function mapping)."""
+def run(program: str | Program, robot: Any, *, limits: Limits = Limits(), objects: Sequence[str] | None = None) -> ExecutionReport:
+    """Check ``program`` (raises :class:`SandboxViolation`) and run it against ``robot``'s
+    primitives (an object with primitive methods, or a name -> function mapping). ``program`` is
+    source text (Claude's, a user's) or a typed :class:`Program` (the rule planner's); ``objects``
+    (the scene's names) lets a typed program's object arguments be checked before anything runs."""
     funcs = primitives_of(robot)
-    tree = check(source, limits=limits)
-    missing = sorted(
+    if isinstance(program, Program):
+        check_calls(program, objects, limits=limits)
+        missing = [f"line {program.line_of(i)}: primitive {c.name}() is not provided by this robot"
+                   for i, c in enumerate(program) if c.name not in funcs]
+        if missing:
+            raise SandboxViolation(missing)
+        return Runner(funcs, limits).run_calls((program.line_of(i), c.name, c.args) for i, c in enumerate(program))
+    tree = check(program, limits=limits)
+    missing_names = sorted(
         {n.func.id for n in ast.walk(tree) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and n.func.id in PRIMITIVES}
         - set(funcs)
     )
-    if missing:
-        raise SandboxViolation([f"line {_first_use(tree, name)}: primitive {name}() is not provided by this robot" for name in missing])
+    if missing_names:
+        raise SandboxViolation([f"line {_first_use(tree, name)}: primitive {name}() is not provided by this robot" for name in missing_names])
     tree = ast.fix_missing_locations(Rewriter().visit(tree))
     code = compile(tree, FILENAME, "exec")
     return Runner(funcs, limits).run(code)

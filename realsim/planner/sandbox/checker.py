@@ -6,7 +6,7 @@ import ast
 import sys
 from collections.abc import Iterable
 
-from realsim.planner.primitives import NAMES
+from realsim.planner.primitives import BY_NAME, NAMES, value_problem
 from realsim.planner.sandbox.limits import ALLOWED_ATTRIBUTES, FILENAME, FORBIDDEN_NAMES, SAFE_BUILTIN_NAMES, Limits, SandboxViolation
 
 __all__ = ["check"]
@@ -132,6 +132,29 @@ class _Checker(ast.NodeVisitor):
             self.visit(arg)
         if isinstance(func, ast.Name) and func.id == "range":
             self._check_range(node)
+        if isinstance(func, ast.Name) and func.id in BY_NAME and func.id in self.callables:
+            self._check_signature(node, func.id)
+
+    def _check_signature(self, node: ast.Call, name: str) -> None:
+        """A primitive call against the registry's signature; literal arguments against their kinds."""
+        prim = BY_NAME[name]
+        if any(isinstance(a, ast.Starred) for a in node.args) or any(kw.arg is None for kw in node.keywords):
+            return  # reported as unpacking
+        problem = prim.arity_problem(len(node.args), [kw.arg for kw in node.keywords if kw.arg is not None])
+        if problem is not None:
+            self.bad(node, problem)
+            return
+        by_name = {p.name: p for p in prim.params}
+        given = [(p, a) for p, a in zip(prim.params, node.args)] + [(by_name[kw.arg], kw.value) for kw in node.keywords if kw.arg]
+        for param, arg in given:
+            if isinstance(arg, (ast.Constant, ast.List, ast.Tuple, ast.UnaryOp)):
+                try:
+                    value = ast.literal_eval(arg)
+                except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+                    continue
+                problem = value_problem(param.kind, value)
+                if problem is not None:
+                    self.bad(node, f"{name}() {param.name}: {problem}")
 
     def _check_range(self, node: ast.Call) -> None:
         values = [_const_int(a) for a in node.args]

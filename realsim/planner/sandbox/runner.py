@@ -96,9 +96,12 @@ class Runner:
         self.primitive_time = 0.0
         self.while_counts: dict[int, int] = {}
         self.allocated = 0
+        self.line: int | None = None  # the current call's line when running a typed program
 
     # helpers injected into the program's globals -----------------------------------------
     def _line(self) -> int:
+        if self.line is not None:
+            return self.line
         frame: FrameType | None = sys._getframe(1)
         while frame is not None and frame.f_code.co_filename != FILENAME:
             frame = frame.f_back
@@ -228,6 +231,21 @@ class Runner:
                 raise _Stop(f"line {line}: {name!r} holds {len(value)} elements (at most {lim.max_len})")
             if isinstance(value, int) and value.bit_length() > lim.max_int_bits:
                 raise _Stop(f"line {line}: {name!r} is too large an integer (at most {lim.max_int_bits} bits)")
+
+    def run_calls(self, calls: Iterable[tuple[int, str, tuple[Any, ...]]]) -> ExecutionReport:
+        """Make ``(line, name, args)`` calls in order through the same wrapped primitives, budgets
+        and report as a source program (a typed program has no loops or arithmetic to trace)."""
+        self.start = time.monotonic()
+        try:
+            for line, name, args in calls:
+                self.line = line
+                self.wrap(name, self.funcs[name])(*args)
+        except _Stop as stop:
+            self.report.error = str(stop)
+        finally:
+            self.line = None
+            self.report.seconds = time.monotonic() - self.start
+        return self.report
 
     def run(self, code: Any) -> ExecutionReport:
         builtins_ns: dict[str, Any] = {
