@@ -9,6 +9,9 @@ The public API (imported lazily, so ``import realsim`` stays fast)::
     record = realsim.run_command(sim, "put the mug in the bowl")       # a sentence, in the sandbox
     print(record.verdict)
 
+Stage parameters are dataclasses (``realsim.SegmentParams``, ``realsim.SettleParams``, ...):
+``realsim.convert(src, dst, overrides={"settle": realsim.SettleParams(max_time=5.0)})``.
+
 Errors meant for the user derive from :class:`RealsimError` (:class:`InputError`: bad input,
 :class:`TaskFailed`: a goal not met).
 """
@@ -36,6 +39,16 @@ _EXPORTS: dict[str, str] = {
     "SceneObject": "realsim.scene",
     "SupportPlane": "realsim.scene",
     "write_scene": "realsim.output",
+    # stage parameters (``overrides={"segment": SegmentParams(...)}``; ``realsim params`` lists them)
+    "PlaneParams": "realsim.perception.planes",
+    "SegmentParams": "realsim.perception.segment_scene",
+    "CompletionParams": "realsim.completion",
+    "ObjectsParams": "realsim.composition.objects",
+    "TextParams": "realsim.text.stage",
+    "ComposeParams": "realsim.composition.compose",
+    "RobotStageParams": "realsim.composition.robot_mount",
+    "SettleParams": "realsim.composition.settle",
+    "RobotParams": "realsim.robot.params",
     # the runtime
     "Sim": "realsim.runtime",
     "RunRecord": "realsim.runtime",
@@ -72,12 +85,21 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # for type checkers and IDEs: the same names, eagerly
+    from realsim.completion import CompletionParams
+    from realsim.composition.compose import ComposeParams
+    from realsim.composition.objects import ObjectsParams
+    from realsim.composition.robot_mount import RobotStageParams
+    from realsim.composition.settle import SettleParams
     from realsim.errors import InputError, RealsimError, SimulationDiverged, TaskFailed
     from realsim.export import export_mjcf, export_objects, export_usd
     from realsim.output import write_scene
     from realsim.perception.capture import LoadParams, load_capture
     from realsim.perception.capture_config import CaptureConfig
+    from realsim.perception.planes import PlaneParams
+    from realsim.perception.segment_scene import SegmentParams
     from realsim.pipeline import convert, plan_pipeline, run_pipeline
     from realsim.render import render_scene
+    from realsim.robot.params import RobotParams
     from realsim.runtime import RunRecord, Sim, run_command, run_program, write_log
     from realsim.scene import Scene, SceneObject, SupportPlane
+    from realsim.text.stage import TextParams

@@ -21,7 +21,7 @@ from realsim.scene_format import ASSET_DIR, KEYFRAME, SCENE_FORMAT, jsonable, sc
 def scene_record(scene: Scene) -> dict[str, Any]:
     """The scene.json content: capture, transform, planes, objects, settling and timings."""
     cap = scene.capture
-    return jsonable({
+    record: dict[str, Any] = jsonable({
         "format": SCENE_FORMAT,
         "capture": {
             "source": str(cap.source),
@@ -62,6 +62,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
         "warnings": scene.warnings,
         "llm": scene.llm,
     })
+    return record
 
 
 def write_scene(scene: Scene, dest: Path, *, force: bool = False) -> Path:

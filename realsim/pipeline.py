@@ -14,7 +14,7 @@ adapter module each in :mod:`realsim.stages` (:data:`STAGES`).
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field, is_dataclass
 from pathlib import Path
 from typing import Any
 
@@ -32,6 +32,16 @@ from realsim.scene import Scene
 from realsim.stages import STAGES, Stage, WriteParams  # noqa: F401 (Stage, WriteParams: re-exported)
 from realsim.understanding.photo import PHOTO_SUFFIXES, find_photo
 from realsim.validation import build_params, check_seed, unknown_names
+
+Overrides = dict[str, Any]
+"""Stage name -> ``{parameter: value}`` or that stage's parameter dataclass."""
+
+
+def as_mapping(value: Any) -> Any:
+    """A parameter dataclass as the mapping of its fields (nested ones too); anything else unchanged."""
+    if is_dataclass(value) and not isinstance(value, type):
+        return asdict(value)
+    return value
 
 
 @dataclass
@@ -107,12 +117,15 @@ def plan_pipeline(
     *,
     pipeline: str | Path | None = None,
     seed: int = 0,
-    overrides: dict[str, dict[str, Any]] | None = None,
+    overrides: Overrides | None = None,
 ) -> tuple[PipelineSpec, list[tuple[str, Any]]]:
     """Check everything the user gave before any work: the seed, the pipeline, every stage's
     parameters, and that the capture exists with a valid ``capture.yaml``. Returns the pipeline
-    and each stage's validated parameters."""
-    overrides = overrides or {}
+    and each stage's validated parameters.
+
+    ``overrides`` maps stage names to ``{parameter: value}`` or to the stage's parameter
+    dataclass itself (``{"segment": SegmentParams(min_object_size=0.02)}``)."""
+    overrides = {k: as_mapping(v) for k, v in (overrides or {}).items()} if isinstance(overrides, dict) else overrides
     check_seed(seed)
     if not isinstance(overrides, dict) or not all(isinstance(v, dict) for v in overrides.values()):
         raise InputError("overrides must map stage names to {parameter: value} mappings")
@@ -135,7 +148,7 @@ def run_pipeline(
     *,
     pipeline: str | Path | None = None,
     seed: int = 0,
-    overrides: dict[str, dict[str, Any]] | None = None,
+    overrides: Overrides | None = None,
     console: Console | None = None,
     write: bool = False,
 ) -> Scene:
@@ -164,17 +177,23 @@ def run_pipeline(
     return scene
 
 
-def convert(source: Path | str | None, dest: Path | str, *, text: str | None = None, force: bool = False,
-            check_only: bool = False, **kwargs: Any) -> Scene | None:
+def convert(source: Path | str | None, dest: Path | str, *, text: str | None = None, pipeline: str | Path | None = None,
+            seed: int = 0, overrides: Overrides | None = None, force: bool = False, check_only: bool = False,
+            console: Console | None = None) -> Scene | None:
     """Convert a capture (a file or folder; None with ``text``) into a scene folder at ``dest``.
 
     ``text`` describes a scene instead ("a table with a mug and a bowl"). ``dest`` is checked
     before any work (:func:`realsim.destination.check_destination`): a new path, an empty
     folder, or earlier realsim output replaced only with ``force``; the folder is written
-    atomically. Other keywords go to :func:`run_pipeline` (``seed``, ``pipeline``,
-    ``overrides={"stage": {"param": value}}``). With ``check_only`` everything is validated and
-    nothing is run or written (returns None).
+    atomically. ``pipeline`` names one (default: chosen from the capture), ``seed`` seeds every
+    random choice, ``overrides`` sets stage parameters (see :func:`plan_pipeline`), ``console``
+    shows progress. With ``check_only`` everything is validated and nothing is run or written
+    (returns None). A rerun with unchanged inputs restores the stored output.
     """
+    overrides = {k: as_mapping(v) for k, v in (overrides or {}).items()}
+    kwargs: dict[str, Any] = {"pipeline": pipeline, "seed": seed, "overrides": overrides}
+    if console is not None:
+        kwargs["console"] = console
     if text is not None:
         if not text.strip():
             raise InputError('the description is empty: describe the scene, e.g. "a table with a mug and two soda cans"')
@@ -183,8 +202,8 @@ def convert(source: Path | str | None, dest: Path | str, *, text: str | None = N
         kwargs["overrides"] = overrides
     started = time.perf_counter()
     photo = ((kwargs.get("overrides") or {}).get("objects", {}).get("understanding", {}) or {}).get("photo")
-    dest = check_destination(dest, inputs=[source, Path(photo) if photo else None], force=force)
     source = Path(source) if source is not None else None
+    dest = check_destination(dest, inputs=[source, Path(photo) if photo else None], force=force)
     if check_only:
         plan_pipeline(source, **{k: v for k, v in kwargs.items() if k != "console"})
         return None

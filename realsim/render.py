@@ -45,7 +45,8 @@ def render_image(model: mujoco.MjModel, data: mujoco.MjData | None = None, *, ca
             renderer.update_scene(data, camera=camera)
         else:
             renderer.update_scene(data, camera=overview_camera(model))
-        return renderer.render().copy()
+        image: np.ndarray = renderer.render().copy()
+        return image
 
 
 def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:

@@ -17,14 +17,15 @@ import shutil
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
 
 from realsim.destination import build_folder, check_destination, check_file_destination, publish
 from realsim.errors import InputError
-from realsim.export.mjcf import ROBOT_PREFIX, _resolve, load_spec, object_bodies
-from realsim.scene_format import KEYFRAME, VISUAL_GROUP
+from realsim.export.mjcf import _resolve, load_spec, object_bodies
+from realsim.scene_format import KEYFRAME, ROBOT_PREFIX, VISUAL_GROUP
 
 ROBOT_NOTE = (
     "The Franka Panda of the MJCF scene is not exported: its actuated joints and mimic-driven gripper "
@@ -45,7 +46,7 @@ class UsdExport:
     warnings: list[str] = field(default_factory=list)
 
 
-def _pxr():
+def _pxr() -> Any:
     try:
         from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics, UsdShade, Vt  # noqa: F401
     except ImportError:  # pragma: no cover - a declared dependency
@@ -61,7 +62,7 @@ def usd_name(name: str) -> str:
     return out if not out[0].isdigit() else f"_{out}"
 
 
-def _set_pose(xformable, pos: np.ndarray, quat_wxyz: np.ndarray, scale: np.ndarray | None = None) -> None:
+def _set_pose(xformable: Any, pos: np.ndarray, quat_wxyz: np.ndarray, scale: np.ndarray | None = None) -> None:
     from pxr import Gf, UsdGeom
 
     xformable.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, pos)))
@@ -74,14 +75,14 @@ def _set_pose(xformable, pos: np.ndarray, quat_wxyz: np.ndarray, scale: np.ndarr
 class _Writer:
     """Stateful helper: one stage, one compiled model, a cache of materials."""
 
-    def __init__(self, stage, model: mujoco.MjModel, spec: mujoco.MjSpec, src_dir: Path, tex_dir: Path, tex_rel: str):
+    def __init__(self, stage: Any, model: mujoco.MjModel, spec: mujoco.MjSpec, src_dir: Path, tex_dir: Path, tex_rel: str) -> None:
         self.stage, self.model, self.spec, self.src_dir = stage, model, spec, src_dir
         self.tex_dir, self.tex_rel = tex_dir, tex_rel
-        self.materials: dict[tuple, object] = {}
+        self.materials: dict[tuple[Any, ...], Any] = {}
         self.textures: list[str] = []
 
     # --- geometry ----------------------------------------------------------------------------
-    def geom(self, path: str, g: int, collider: bool):
+    def geom(self, path: str, g: int, collider: bool) -> Any:
         """A prim for geom ``g`` at ``path`` in its body's frame, or None for unsupported types."""
         from pxr import Gf, UsdGeom, UsdPhysics, Vt
 
@@ -163,7 +164,7 @@ class _Writer:
             self.textures.append(name)
         return f"./{self.tex_rel}/{name}"
 
-    def bind_material(self, prim, g: int) -> None:
+    def bind_material(self, prim: Any, g: int) -> None:
         from pxr import Gf, Sdf, UsdShade
 
         m = self.model
@@ -199,7 +200,7 @@ class _Writer:
         UsdShade.MaterialBindingAPI.Apply(prim.GetPrim()).Bind(material)
 
 
-def _sdf():
+def _sdf() -> Any:
     from pxr import Sdf
 
     return Sdf
@@ -295,7 +296,7 @@ def export_usd(source: Path, dest: Path | str, robot_prefix: str = ROBOT_PREFIX,
             bodies.append(path)
         # --- the robot: left out, with a note ----------------------------------------------------
         layer = stage.GetRootLayer()
-        custom = {"realsim:source": str(src_dir.resolve() / "scene.xml"), "realsim:keyframe": KEYFRAME}
+        custom: dict[str, Any] = {"realsim:source": str(src_dir.resolve() / "scene.xml"), "realsim:keyframe": KEYFRAME}
         doc = "realsim scene: Z-up, metres, kilograms; poses from MJCF keyframe 'initial'."
         if robot_bodies:
             try:

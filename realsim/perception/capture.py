@@ -222,8 +222,8 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         from realsim.perception.usd_mesh import read_usd_mesh
 
         mesh, units_hint, up_hint = read_usd_mesh(path)
-        pts, cols, _ = sample_mesh(mesh, params.mesh_pilot_points, seed, path)
-        cloud = RawCloud(pts, cols, None, False, "usd", mesh=mesh, units_hint=units_hint, up_hint=up_hint)
+        usd_points, usd_colours, _ = sample_mesh(mesh, params.mesh_pilot_points, seed, path)
+        cloud = RawCloud(usd_points, usd_colours, None, False, "usd", mesh=mesh, units_hint=units_hint, up_hint=up_hint)
     else:
         raise InputError(
             f"{path}: unsupported capture format {suffix or '(no extension)'!r}; "
