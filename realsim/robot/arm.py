@@ -98,7 +98,7 @@ class Arm:
             if np.abs(self.data.qvel[self.dadr]).max() < self.params.settle_speed:
                 break
 
-    def _follow(self, path: list[np.ndarray]) -> None:
+    def _follow(self, path: list[np.ndarray], settle: bool = True) -> None:
         """Track a joint path (first point = current command) with a smooth time scaling."""
         q_cmd = self.data.ctrl[self.act].copy()
         pts = np.vstack([q_cmd] + list(path))
@@ -118,6 +118,14 @@ class Arm:
             if t >= 1.0:
                 break
             self._step()
+        if settle:
+            self._settle()
+
+    def _follow_corners(self, corners: list[np.ndarray]) -> None:
+        """Track a joint polyline through its ``corners`` (a planned transit): a quintic time scaling
+        per segment, at rest at every corner, so the arm stays on the checked straight segments."""
+        for q in corners:
+            self._follow([q], settle=False)
         self._settle()
 
     def _gripper(self, ctrl: float) -> None:

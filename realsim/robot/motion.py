@@ -1,17 +1,24 @@
-"""Motion: IK waypoints along straight lines, transits that lift before they traverse, and the
-kinematic collision checks every planned path passes before it runs."""
+"""Motion: IK waypoints along straight lines, transits that lift before they traverse (or, when
+no such path is clear, a sampling-based plan in joint space), and the kinematic collision checks
+every planned path passes before it runs. Where a plain IK posture would touch an object, the
+collision-aware IK (:mod:`realsim.robot.collision_ik`) looks for one that does not."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import functools
+from collections.abc import Callable, Iterable
 
 import mujoco
 import numpy as np
 
+from realsim.robot.collision_ik import CollisionIK
 from realsim.robot.grasps import rotate_about
 from realsim.robot.ik import IKResult, mat_to_quat
 from realsim.robot.queries import WorldQueries
 from realsim.robot.result import PlanFailure
+from realsim.robot.transit import plan_joint_path
+
+Solve = Callable[[np.ndarray, np.ndarray, np.ndarray], IKResult]
 
 __all__ = ["Motion"]
 
@@ -23,8 +30,39 @@ class Motion(WorldQueries):
         """IK for the tcp at (``pos``, rotation ``rot``) starting from ``q_init``."""
         return self.ik.solve(pos, mat_to_quat(rot), q_init=q_init)
 
-    def _line(self, start: np.ndarray, end: np.ndarray, rot_start: np.ndarray, rot_end: np.ndarray, q_init: np.ndarray) -> list[np.ndarray]:
-        """IK waypoints along a straight tcp line (orientation interpolated); raises PlanFailure."""
+    @functools.cached_property
+    def avoid_ik(self) -> CollisionIK:
+        """The collision-aware IK on this scene (built on first use)."""
+        return CollisionIK(self.model, self.geometry, self.qadr, self.dadr, self.hand_bodies, self.ik.home, self.ik.params)
+
+    def _shifted_state(self, shifted: dict[str, np.ndarray] | None) -> np.ndarray:
+        """The live qpos with objects displaced by xyz offsets (where a pushed object will be)."""
+        qpos: np.ndarray = self.data.qpos.copy()
+        for name, offset in (shifted or {}).items():
+            adr = self.model.jnt_qposadr[self.model.body_jntadr[self._body(name)]]
+            qpos[adr:adr + 3] += offset
+        return qpos
+
+    def _ik_clear(self, pos: np.ndarray, rot: np.ndarray, q_init: np.ndarray, ignore: Iterable[str] = (),
+                  hand_may_touch: Iterable[str] = (), shifted: dict[str, np.ndarray] | None = None) -> IKResult:
+        """IK whose posture touches no object it must not: the plain answer when it is clear, else the
+        collision-aware one from ``q_init``; the plain one when neither is clear."""
+        res = self._ik(pos, rot, q_init)
+        hits = self.geometry.robot_hits
+        if res.converged and not hits(self.qadr, res.q, ignore, hand_may_touch, self.hand_bodies, shifted):
+            return res
+        qpos = self._shifted_state(shifted)
+        alt = self.avoid_ik.solve(qpos, pos, rot, q_init, ignore, hand_may_touch)
+        if alt.converged and not hits(self.qadr, alt.q, ignore, hand_may_touch, self.hand_bodies, shifted):
+            alt.manipulability = self.ik.manipulability(alt.q)
+            return alt
+        return res
+
+    def _line(self, start: np.ndarray, end: np.ndarray, rot_start: np.ndarray, rot_end: np.ndarray, q_init: np.ndarray,
+              solve: Solve | None = None) -> list[np.ndarray]:
+        """IK waypoints along a straight tcp line (orientation interpolated; ``solve``: the IK, default
+        the plain one); raises PlanFailure."""
+        solve = solve or self._ik
         n = max(1, int(np.ceil(np.linalg.norm(end - start) / self.params.cart_step)))
         rel = rot_start.T @ rot_end
         quat = mat_to_quat(rel)
@@ -35,7 +73,7 @@ class Motion(WorldQueries):
             f = k / n
             ang = float(np.linalg.norm(axis_angle))
             r = rot_start @ (rotate_about(axis_angle, f * ang) if ang > 1e-9 else np.eye(3))
-            res = self._ik(start + f * (end - start), r, q)
+            res = solve(start + f * (end - start), r, q)
             if not res.converged:
                 raise PlanFailure(f"target {np.round(start + f * (end - start), 3).tolist()} unreachable ({res.reason})")
             if np.abs(res.q - q).max() > self.params.motion.max_joint_jump:
@@ -52,11 +90,14 @@ class Motion(WorldQueries):
         cmd_pos, cmd_rot = self.ik.fk(q)  # plan from the commanded pose, not the sagging one
         self._follow(self._line(cmd_pos, end, cmd_rot, rot_end, q))
 
-    def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False) -> None:
-        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked).
+    def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False,
+                 q_goal: np.ndarray | None = None) -> None:
+        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked); when no
+        such path is clear, a sampling-based plan in joint space (:meth:`_plan_transit`).
 
         With ``turn_late`` (a sideways hand for a handle, out of reach up high) the hand may keep
         its orientation across and turn while descending, or swing across in joint space at height.
+        ``q_goal``: the arm posture to end in (one already checked for what follows).
         """
         mp = self.params.motion
         q0 = self.data.ctrl[self.act].copy()
@@ -93,37 +134,71 @@ class Motion(WorldQueries):
         if turn_late:
             plans += [lambda z: across(z, cmd_rot), swing]
         last: PlanFailure | None = None
+        ignore = {skip} if skip else set()
         for plan in plans:
             for z in heights:
                 try:
-                    path = plan(z)
-                    self._check_clear(path, ignore={skip} if skip else set())
+                    path = plan(z) + ([np.asarray(q_goal, float)] if q_goal is not None else [])
+                    self._check_clear(path, ignore=ignore)
                 except PlanFailure as exc:
                     last = exc
                     continue
                 self._follow(path)
                 return
-        raise last or PlanFailure("no safe path")
+        try:
+            self._plan_transit(end, rot_end, ignore, q_goal)
+        except PlanFailure as exc:
+            raise PlanFailure(f"{last or 'no safe path'}; {exc}") from None
+
+    @functools.cached_property
+    def _far_links(self) -> set[int]:
+        """The arm's bodies from link 3 on: they never need to touch the table."""
+        names = [self.prefix + f"link{i}" for i in range(3, 8)]
+        return {self.model.body(n).id for n in names if mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, n) >= 0}
+
+    def _plan_transit(self, end: np.ndarray, rot_end: np.ndarray, ignore: set[str], q_goal: np.ndarray | None = None) -> None:
+        """Move to the tcp pose (``end``, ``rot_end``) along a sampling-based joint-space path on which
+        no link, nor the held object, touches an object (``ignore`` aside) and the forearm and wrist
+        stay off the table; raises PlanFailure."""
+        q0 = self.data.ctrl[self.act].copy()
+        if q_goal is None:
+            goal = self._ik_clear(end, rot_end, q0, ignore)
+            if not goal.converged:
+                raise PlanFailure(f"target {np.round(end, 3).tolist()} unreachable ({goal.reason})")
+            q_goal = goal.q
+        carry = self._carry()
+        corners = plan_joint_path(q0, q_goal, self.ik.lower, self.ik.upper, lambda q: not self._touches(q, ignore, carry=carry, world=True),
+                                  seed=self.seed)
+        self._follow_corners(corners)
+
+    def _carry(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """The held object's pose in the tcp frame (position, rotation), None when nothing is held."""
+        if not self.held:
+            return None
+        b = self._body(self.held)
+        tcp, rot = self.tcp_pose()
+        return rot.T @ (self.data.xpos[b] - tcp), rot.T @ self.data.xmat[b].reshape(3, 3)
+
+    def _touches(self, q: np.ndarray, ignore: Iterable[str] = (), hand_may_touch: Iterable[str] = (),
+                 carry: tuple[np.ndarray, np.ndarray] | None = None, world: bool = False) -> set[str]:
+        """What the arm at joints ``q`` (carrying the held object at ``carry``) would touch; with
+        ``world`` the forearm and wrist touching the table count too."""
+        carried = None
+        if self.held and carry is not None:
+            p_w, r_w = self.ik.fk(q)
+            carried = {self.held: (r_w @ carry[0] + p_w, mat_to_quat(r_w @ carry[1]))}
+        return self.geometry.robot_hits(self.qadr, q, ignore, hand_may_touch, self.hand_bodies, carried=carried,
+                                        world_bodies=self._far_links if world else ())
 
     def _check_clear(self, path: list[np.ndarray], ignore: set[str] | frozenset[str] = frozenset(), hand_may_touch: set[str] | frozenset[str] = frozenset(),
                      start: np.ndarray | None = None) -> None:
         """Raise PlanFailure when the arm would touch an object along ``path`` from ``start`` (default:
         the commanded joints), at waypoints and midpoints; the held object is carried, not hit."""
-        rel = None
-        held = self.held
-        if held:  # the held object moves with the hand: checked against the others like a link
-            b = self._body(held)
-            tcp, rot = self.tcp_pose()
-            rel = (rot.T @ (self.data.xpos[b] - tcp), rot.T @ self.data.xmat[b].reshape(3, 3))
+        carry = self._carry()
         q_prev = self.data.ctrl[self.act].copy() if start is None else np.asarray(start, float)
         for q in path:
             for f in (0.5, 1.0):
-                qf = q_prev + f * (q - q_prev)
-                carried = None
-                if held and rel is not None:
-                    p_w, r_w = self.ik.fk(qf)
-                    carried = {held: (r_w @ rel[0] + p_w, mat_to_quat(r_w @ rel[1]))}
-                hits = self.geometry.robot_hits(self.qadr, qf, ignore, hand_may_touch, self.hand_bodies, carried=carried)
+                hits = self._touches(q_prev + f * (q - q_prev), ignore, hand_may_touch, carry)
                 if hits:
                     raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))}")
             q_prev = q

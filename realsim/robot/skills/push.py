@@ -13,7 +13,7 @@ from scipy.spatial import cKDTree
 
 from realsim.planner import relations
 from realsim.robot.grasps import frame_from, rotate_about
-from realsim.robot.motion import Motion
+from realsim.robot.motion import Motion, Solve
 from realsim.robot.queries import box_centre, box_centre_3d
 from realsim.robot.result import ActionResult, PlanFailure
 
@@ -41,10 +41,10 @@ class PushSkill(Motion):
             # the closed hand is symmetric: of the two yaws, try the one nearer the current first
             _, now_rot = self.tcp_pose()
             # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
-            tilt = rotate_about(np.array([d[1], -d[0], 0.0]), pp.tilt)
             upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
             upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
-            rots = [tilt @ r for r in upright] + upright  # upright when the tilted hand cannot reach
+            leaning = [[rotate_about(np.array([d[1], -d[0], 0.0]), t) @ r for r in upright] for t in (pp.tilt, 0.0, *pp.steep_tilts)]
+            rots = [r for group in leaning for r in group]  # upright when the tilted hand cannot reach, steeper past a tall face
             # the object's footprint swept along the push must not run into another object
             foot = pts[:: max(1, len(pts) // pp.footprint_samples), :2]
             # what rests in or on the object (touching it, centred over its footprint) rides along: not in the way
@@ -62,25 +62,29 @@ class PushSkill(Motion):
                                             f"(after {k * 100:.0f} cm)", values={"moved": 0.0})
             self._gripper(0.0)
             end = contact + d * (distance + pp.standoff)
+            pushed = {obj, *riding}
             last: PlanFailure | None = None
             for rot in rots:
                 try:  # the stroke is planned and checked first: only the hand may touch the pushed object
-                    q_c = self._ik(contact, rot, np.array(self.ik.home))
+                    q_c = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
                     if not q_c.converged:
                         raise PlanFailure(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
-                    self._check_stroke({obj, *riding}, self._line(contact, end, rot, rot, q_c.q), contact, d)
-                    self._transit(contact, rot, skip=None)
+                    stroke = self._line(contact, end, rot, rot, q_c.q, solve=self._stroke_solve(pushed, contact, d))
+                    self._check_stroke(pushed, stroke, contact, d)
+                    self._transit(contact, rot, skip=None, q_goal=q_c.q)
                     break
                 except PlanFailure as exc:
                     last = exc
             else:
                 raise last or PlanFailure("no push pose")
-            self._straight(end, rot)
+            self._follow(stroke)  # the checked stroke itself, forearm clear of the pushed object
             pos, _ = self.tcp_pose()
             up = np.array([0, 0, pp.retreat_up])
+            q_now = self.data.ctrl[self.act].copy()
+            cmd_pos, _ = self.ik.fk(q_now)
             for retreat in (pos - d * pp.retreat_back + up, pos + up, pos - d * pp.retreat_back):
                 try:  # back off the object; the push itself is judged by how far the object moved
-                    self._straight(retreat, rot)
+                    self._follow(self._line(cmd_pos, retreat, rot, rot, q_now, solve=lambda p, r, q: self._ik_clear(p, r, q, (), pushed)))
                     break
                 except PlanFailure:
                     continue
@@ -91,14 +95,20 @@ class PushSkill(Motion):
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
 
-    def _check_stroke(self, pushed: set[str], path: list[np.ndarray], contact: np.ndarray, d: np.ndarray, gap: float | None = None) -> None:
+    def _pushed_by(self, pushed: set[str], tcp: np.ndarray, contact: np.ndarray, d: np.ndarray) -> dict[str, np.ndarray]:
+        """Where the ``pushed`` objects are (xyz offsets) once the tcp, from ``contact``, is at ``tcp``."""
+        shift = d * max(0.0, float((tcp - contact) @ d) - self.params.push.standoff)
+        return {n: shift for n in pushed}
+
+    def _stroke_solve(self, pushed: set[str], contact: np.ndarray, d: np.ndarray) -> Solve:
+        """IK along a push stroke: no link but the hand touches the pushed objects where they will be."""
+        return lambda pos, rot, q: self._ik_clear(pos, rot, q, (), pushed, self._pushed_by(pushed, pos, contact, d))
+
+    def _check_stroke(self, pushed: set[str], path: list[np.ndarray], contact: np.ndarray, d: np.ndarray) -> None:
         """Raise PlanFailure when a link other than the hand would touch the ``pushed`` objects (the
         object and what rides in or on it, carried along once the fingers reach it) or the arm
         any other object, along the push ``path``."""
-        gap = self.params.push.standoff if gap is None else gap
         for q in path:
-            advanced = float((self.ik.fk(q)[0] - contact) @ d)
-            shift = d * max(0.0, advanced - gap)
-            hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, {n: shift for n in pushed})
+            hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, self._pushed_by(pushed, self.ik.fk(q)[0], contact, d))
             if hits:
                 raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))} while pushing")
