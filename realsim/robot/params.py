@@ -83,6 +83,7 @@ class PushParams:
     """The pushing hand and the stroke."""
 
     tilt: float = 0.4  # rad the hand leans back when pushing (fingertips lead)
+    steep_tilts: tuple[float, ...] = (0.8, 1.1)  # rad also tried, after the upright hand: the wrist clears a tall object's face
     nudge: float = 0.015  # m a pushed object may travel in contact with another (it nudges it that far at most)
     contact_height: float = 0.03  # m above the bottom (at most half the height) the fingers push
     contact_lift: float = 0.005  # m added to it

@@ -129,13 +129,14 @@ class SceneGeometry:
 
     def robot_hits(self, qadr: np.ndarray, q_arm: np.ndarray, ignore: Iterable[str] = (), hand_may_touch: Iterable[str] = (),
                    hand_bodies: Iterable[int] = (), shifted: dict[str, np.ndarray] | None = None,
-                   carried: dict[str, tuple[np.ndarray, np.ndarray]] | None = None) -> set[str]:
+                   carried: dict[str, tuple[np.ndarray, np.ndarray]] | None = None, world_bodies: Iterable[int] = ()) -> set[str]:
         """Objects the robot would touch with its arm at joints ``q_arm`` (everything else as now):
         a kinematic check on a scratch copy of the state, nothing moves. ``ignore``: objects that
         may touch any link (the held one); ``hand_may_touch``: objects only the hand and fingers
         (``hand_bodies``) may touch (what is being pushed); ``shifted``: objects displaced by an xyz
         offset (where a pushed object will be by then); ``carried``: objects moved with the hand to
-        a world (position, quaternion) and checked like a link (the held object)."""
+        a world (position, quaternion) and checked like a link (the held object); ``world_bodies``:
+        robot bodies whose contact with static geometry counts too (reported as "world")."""
         d = self._scratch_data()
         d.qpos[:] = self.data.qpos
         d.qpos[qadr] = q_arm
@@ -149,7 +150,7 @@ class SceneGeometry:
             arm |= set(self.subtree(self.body(name)))
         mujoco.mj_kinematics(self.model, d)
         mujoco.mj_collision(self.model, d)
-        ignore, hand_ok, hand = set(ignore) - set(carried or {}), set(hand_may_touch), set(hand_bodies)
+        ignore, hand_ok, hand, to_world = set(ignore) - set(carried or {}), set(hand_may_touch), set(hand_bodies), set(world_bodies)
         out: set[str] = set()
         for i in range(d.ncon):
             c = d.contact[i]
@@ -159,7 +160,7 @@ class SceneGeometry:
             for rb, ob in ((b1, b2), (b2, b1)):
                 if rb in arm and ob not in arm:
                     owner = self.owner(ob)
-                    if owner == WORLD or owner in ignore or (owner in hand_ok and rb in hand):
+                    if (owner == WORLD and rb not in to_world) or owner in ignore or (owner in hand_ok and rb in hand):
                         continue
                     out.add(owner)
         return out
