@@ -15,7 +15,7 @@ and the gripper's range from the compiled scene (with the names scene.json recor
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
@@ -50,9 +50,9 @@ class GripperParams:
     max_force: float = 70.0  # N (Franka Hand: 70 N continuous)
 
 
-@dataclass
-class RobotHandles:
-    """Names of the attached robot's elements in the composed model."""
+@dataclass(frozen=True)
+class RobotNames:
+    """The names of the robot's elements in a composed or compiled scene."""
 
     prefix: str
     base_body: str
@@ -63,24 +63,23 @@ class RobotHandles:
     finger_joints: tuple[str, ...]
     arm_actuators: tuple[str, ...]
     gripper_actuator: str
-    base_pose: tuple[float, float, float]  # x, y, yaw
-    base_z: float  # z of link0 (top of the pedestal)
-    pedestal_height: float
+
+
+@dataclass(frozen=True)
+class RobotHandles(RobotNames):
+    """The attached robot in the composed model: its names, where it stands, its mesh assets."""
+
+    base_pose: tuple[float, float, float] = (0.0, 0.0, 0.0)  # x, y, yaw
+    base_z: float = 0.0  # z of link0 (top of the pedestal)
+    pedestal_height: float = 0.0
     home_key: str = "home"
     assets: dict[str, bytes] = field(default_factory=dict, repr=False)
 
     def record(self) -> dict[str, Any]:
         """What scene.json records about the robot: the names the runtime looks up in scene.xml."""
+        names = {f.name: getattr(self, f.name) for f in fields(RobotNames)}
         return {
-            "prefix": self.prefix,
-            "base_body": self.base_body,
-            "tcp_site": self.tcp_site,
-            "hand_body": self.hand_body,
-            "finger_bodies": list(self.finger_bodies),
-            "arm_joints": list(self.arm_joints),
-            "finger_joints": list(self.finger_joints),
-            "arm_actuators": list(self.arm_actuators),
-            "gripper_actuator": self.gripper_actuator,
+            **{k: list(v) if isinstance(v, tuple) else v for k, v in names.items()},
             "home_key": self.home_key,
             "home_arm": list(HOME_ARM),
             "gripper_open_ctrl": GRIPPER_OPEN_CTRL,
@@ -89,22 +88,13 @@ class RobotHandles:
 
 
 @dataclass(frozen=True)
-class RobotDescription:
+class RobotDescription(RobotNames):
     """The robot of a compiled scene, read from the scene alone (never from the Menagerie)."""
 
-    prefix: str
-    base_body: str
-    tcp_site: str
-    hand_body: str
-    finger_bodies: tuple[str, str]
-    arm_joints: tuple[str, ...]
-    finger_joints: tuple[str, ...]
-    arm_actuators: tuple[str, ...]
-    gripper_actuator: str
-    home_arm: tuple[float, ...]  # from keyframe ``home_key``
-    arm_limits: tuple[tuple[float, float], ...]  # joint ranges (rad)
-    gripper_open_ctrl: float  # upper end of the gripper actuator's ctrlrange
-    gripper_max_opening: float  # m between the fingers, from the finger joints' ranges
+    home_arm: tuple[float, ...] = ()  # from keyframe ``home_key``
+    arm_limits: tuple[tuple[float, float], ...] = ()  # joint ranges (rad)
+    gripper_open_ctrl: float = 0.0  # upper end of the gripper actuator's ctrlrange
+    gripper_max_opening: float = 0.0  # m between the fingers, from the finger joints' ranges
 
 
 def menagerie_panda_dir() -> Path:
