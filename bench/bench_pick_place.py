@@ -26,8 +26,9 @@ os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 
 from realsim.assets import prepare_object  # noqa: E402
 from realsim.composition.compose import compose_scene  # noqa: E402
+from realsim.composition.robot_placement import add_robot  # noqa: E402
 from realsim.composition.settle import settle_scene  # noqa: E402
-from realsim.robot import Robot, add_robot  # noqa: E402
+from realsim.robot import Robot  # noqa: E402
 from realsim.scene import CaptureInfo, Scene, SceneObject, SupportPlane  # noqa: E402
 
 YCB = REPO.parent / "shared" / "data" / "ycb_google16k"

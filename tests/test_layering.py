@@ -64,3 +64,14 @@ def test_every_adapter_is_thin() -> None:
             continue
         imported = imports_of(path) - allowed
         assert len({m.split(".")[1] for m in imported}) == 1, (path.name, imported)
+
+
+def test_runtime_side_loads_no_conversion_module() -> None:
+    """Transitively too: importing the runtime, viewer and export leaves every conversion module unloaded."""
+    import subprocess
+    import sys
+
+    probe = ("import sys, realsim.runtime, realsim.viewer, realsim.export; "
+             f"print(sorted(m for m in sys.modules if m.startswith('realsim.') and m.split('.')[1] in {CONVERSION!r}))")
+    loaded = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout.strip()
+    assert loaded == "[]", loaded

@@ -10,10 +10,11 @@ import pytest
 import trimesh
 
 from realsim.composition.compose import compose_scene
+from realsim.composition.robot_placement import add_robot, choose_robot_pose
 from realsim.composition.settle import settle_scene
 from realsim.errors import InputError
 from realsim.output import write_scene
-from realsim.robot import Robot, add_robot, choose_robot_pose
+from realsim.robot import Robot
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.model import BASE_FOOTPRINT, HOME_ARM, menagerie_panda_dir
 from realsim.scene import CaptureInfo, Scene, SceneObject, SupportPlane

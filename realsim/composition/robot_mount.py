@@ -11,10 +11,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from realsim.cache import DiskCache, output_key, spec_digest
+from realsim.composition.robot_placement import MAX_REACH, PlacementParams, add_robot, pedestal_height
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon
 from realsim.robot.model import attach_robot
-from realsim.robot.placement import MAX_REACH, PlacementParams, add_robot, pedestal_height
 from realsim.scene import Scene
 
 BASE_RADIUS = 0.12  # m, the Panda's base footprint around link0

@@ -11,13 +11,12 @@ from realsim.robot.ik import ArmIK, IKParams, IKResult
 from realsim.robot.model import GripperParams, RobotHandles, attach_robot, menagerie_panda_dir
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
 from realsim.robot.params import ArmParams, ArticulationParams, MotionParams, PickParams, PlaceParams, PushParams, RobotParams
-from realsim.robot.placement import PlacementParams, add_robot, choose_robot_pose
 from realsim.robot.result import ActionResult, BudgetExceeded, PlanFailure
 from realsim.robot.robot import Robot
 
 __all__ = [
     "ActionResult", "ArmIK", "ArmParams", "ArticulationParams", "BudgetExceeded", "EpsilonGreedy", "GraspCandidate",
-    "GraspParams", "GripperParams", "IKParams", "IKResult", "MotionParams", "PickParams", "PlaceParams", "PlacementParams",
-    "PlanFailure", "PushParams", "Robot", "RobotHandles", "RobotParams", "add_robot", "attach_robot", "choose_robot_pose",
+    "GraspParams", "GripperParams", "IKParams", "IKResult", "MotionParams", "PickParams", "PlaceParams",
+    "PlanFailure", "PushParams", "Robot", "RobotHandles", "RobotParams", "attach_robot",
     "grasp_candidates", "menagerie_panda_dir",
 ]
