@@ -83,6 +83,7 @@ def bounded(kind: type, low: float, high: float):
 
 
 def cmd_convert(args: argparse.Namespace) -> int:
+    """``realsim convert``: a capture (or --text, a photo) into a scene folder."""
     from realsim.text.photo_input import check_photo_offline
 
     check_photo_offline(args.source, args.text)  # a photo alone without a key fails before the heavy imports
@@ -125,6 +126,7 @@ def cmd_convert(args: argparse.Namespace) -> int:
 
 
 def cmd_example(args: argparse.Namespace) -> int:
+    """``realsim example``: write the bundled example capture to a new folder."""
     from realsim.destination import atomic_folder, check_destination
 
     dest = check_destination(args.dest, force=args.force)
@@ -146,6 +148,7 @@ def cmd_example(args: argparse.Namespace) -> int:
 
 
 def cmd_export(args: argparse.Namespace) -> int:
+    """``realsim export``: a scene folder as an MJCF folder, per-object MJCF or USD."""
     from realsim.errors import InputError
     from realsim.export import export_mjcf, export_objects, export_usd
 
@@ -166,6 +169,7 @@ def cmd_export(args: argparse.Namespace) -> int:
 
 
 def cmd_view(args: argparse.Namespace) -> int:
+    """``realsim view``: serve the scene in the browser viewer."""
     from realsim.viewer import serve
 
     serve(Path(args.scene), host=args.host, port=args.port, splat=Path(args.splat) if args.splat else None,
@@ -174,6 +178,7 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
+    """``realsim render``: a PNG of the scene from a camera, at keyframe ``initial``."""
     from realsim.destination import check_file_destination
     from realsim.render import render_scene
 
@@ -184,6 +189,7 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    """``realsim run``: a sentence or a program, run in the sandbox and checked in simulation."""
     from realsim.destination import check_file_destination
     from realsim.runtime.console import run_cli
 
@@ -196,6 +202,7 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_params(args: argparse.Namespace) -> int:
+    """``realsim params``: every stage parameter with its type, default and meaning."""
     from realsim.params_doc import stage_param_docs
     from realsim.pipeline import load_pipeline
     from realsim.stages import STAGES
@@ -211,6 +218,7 @@ def cmd_params(args: argparse.Namespace) -> int:
 
 
 def cmd_bench_sim(args: argparse.Namespace) -> int:
+    """``realsim bench-sim``: steps per second of a scene (MuJoCo Warp when installed, else the C engine)."""
     from realsim.physics.throughput import bench_scene
 
     result = bench_scene(Path(args.scene), worlds=args.worlds, steps=args.steps, engine=args.engine)
@@ -222,6 +230,7 @@ def cmd_bench_sim(args: argparse.Namespace) -> int:
 
 
 def cmd_batch(args: argparse.Namespace) -> int:
+    """``realsim batch``: many captures into many scene folders on Ray."""
     from realsim.batch import print_summary, run_batch
 
     overrides = _parse_set(args.set)
@@ -241,6 +250,7 @@ class OneLineParser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of every subcommand (one-line errors, exit code 2)."""
     parser = OneLineParser(prog="realsim", description="Turn a captured real scene into a settled MuJoCo simulation.")
     parser.add_argument("--debug", action="store_true", help="show tracebacks of internal errors")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)

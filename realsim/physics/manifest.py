@@ -48,6 +48,7 @@ class ObjectManifest(BaseModel):
 
 
 def size_class(largest: float) -> str:
+    """A size word for an object's largest extent in metres: tiny, small, medium, large or huge."""
     for limit, name in ((0.03, "tiny"), (0.12, "small"), (0.4, "medium"), (1.2, "large")):
         if largest < limit:
             return name

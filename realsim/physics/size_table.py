@@ -25,6 +25,8 @@ FORMS = ("solid", "closed_container", "open_container", "hollow")
 
 @dataclass(frozen=True)
 class Material:
+    """A material of the size table: density, MuJoCo friction, restitution and where they come from."""
+
     name: str
     density: float  # kg/m^3
     friction: tuple[float, float, float]  # MuJoCo (sliding, torsional, rolling)
@@ -34,6 +36,8 @@ class Material:
 
 @dataclass(frozen=True)
 class ObjectCategory:
+    """One kind of object in the size table: extents, mass range, material, form (solid, shell, container) and aliases."""
+
     name: str
     size: tuple[float, float, float]  # min / typical / max of the largest extent (m)
     dims: tuple[float, ...]  # typical extents, largest first (m)
@@ -81,6 +85,7 @@ def _singular_word(word: str) -> str:
 
 
 def singular(text: str) -> str:
+    """The singular of each word of an object name ("soda cans" -> "soda can")."""
     return " ".join(_singular_word(w) for w in text.split())
 
 

@@ -15,20 +15,25 @@ __all__ = ["bowl", "box", "can", "jar", "mug", "to_trimesh"]
 
 
 def mug(height: float, diameter: float) -> Manifold:
+    """A mug solid of the given height and body diameter (m)."""
     return f.mug_hd(height, diameter).solid
 
 
 def bowl(height: float, diameter: float) -> Manifold:
+    """A bowl solid of the given height and rim diameter (m)."""
     return f.bowl_hd(height, diameter).solid
 
 
 def can(height: float, diameter: float) -> Manifold:
+    """A can solid of the given height and diameter (m)."""
     return f.can((height, diameter, diameter)).solid
 
 
 def jar(height: float, diameter: float) -> Manifold:
+    """A jar solid of the given height and diameter (m)."""
     return f.jar((height, diameter, diameter)).solid
 
 
 def box(x: float, y: float, z: float) -> Manifold:
+    """A box solid of the given extents (m)."""
     return f.box_((x, y, z)).solid

@@ -34,6 +34,7 @@ def register_backend(name: str, factory: Callable[[], TextTo3D]) -> None:
 
 
 def available_backends() -> list[str]:
+    """The names of the registered text-to-3D backends."""
     return sorted(_REGISTRY)
 
 

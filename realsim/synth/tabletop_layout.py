@@ -88,6 +88,8 @@ class CameraPose:
 
 @dataclass(frozen=True)
 class TabletopLayout:
+    """A generated tabletop: the table, the objects and their true poses (the ground truth of a synthetic capture)."""
+
     seed: int
     table_height: float
     table_size: tuple[float, float]

@@ -86,6 +86,8 @@ VALUES_SCHEMA: dict[str, Any] = {
 
 
 class Part(BaseModel):
+    """One part of an object as Claude describes it: its name and the joint that moves it."""
+
     model_config = ConfigDict(extra="ignore")
     name: str = Field(default="part", max_length=200)
     joint: Literal["none", "hinge", "slide", "fixed"] = "none"

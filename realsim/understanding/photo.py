@@ -109,6 +109,8 @@ class PhotoObject(BaseModel):
 
 @dataclass
 class PhotoResult:
+    """What a photo shows: its objects, and notes on what could not be used."""
+
     objects: list[PhotoObject]
     notes: list[str]
 

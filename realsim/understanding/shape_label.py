@@ -21,6 +21,8 @@ MAX_DISTANCE = 0.35  # log-extent RMS distance beyond which no label is given (a
 
 @dataclass(frozen=True)
 class ShapeLabel:
+    """The size-table label whose extents best match a shape, how far off it is, and the shape word."""
+
     label: str
     distance: float  # RMS of log extent ratios
     shape: str  # "cylinder" | "box"
@@ -40,6 +42,7 @@ BOX_FILL = 0.9  # solid volume / oriented bounding box volume of a rectangular p
 
 
 def is_round(cat: ObjectCategory) -> bool:
+    """Whether a category is round in plan (two of its typical extents alike) and not listed as boxy."""
     if cat.name in BOXY:
         return False
     d = sorted(cat.dims, reverse=True)
