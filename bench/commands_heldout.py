@@ -94,9 +94,9 @@ HELDOUT: list[tuple[str, str, str]] = [
     ("scan45", "pick up the red box", "lift red_cracker_box"),
     ("scan45", "push the white box 5 cm to the left", "moved white_box left 0.05"),
     ("scan45", "grab the red one", "refuse"),
-    ("scan45", "put the red object next to the white box", "next red_object white_box"),
+    ("scan45", "put the red object next to the white box", "refuse"),  # two red objects now: the red can and the red cracker box
     ("scan55", "could you pick up the blue box", "lift blue_box"),
-    ("scan55", "move the orange thing a little to the right", "moved orange_object right 0.05"),
+    ("scan55", "move the orange thing a little to the right", "moved orange_cylinder right 0.05"),
     ("scan55", "put the green object next to the red box", "next green_object red_box"),
     ("scan55", "grab the box", "refuse"),
     ("scan55", "pick up the purple thing", "refuse"),
@@ -147,11 +147,11 @@ HELDOUT2: list[tuple[str, str, str]] = [
     ("textblocks", "stack the red block on the blue one, then go home", "on cube@red cube@blue; home"),
     ("textblocks", "put the green thing on the plate", "on cube@green plate"),
     ("textblocks", "grab the orange cube", "refuse"),
-    ("scan55", "pick up the orange object", "lift orange_object"),
+    ("scan55", "pick up the orange object", "lift orange_cylinder"),
     ("scan55", "put the red box next to the blue box", "next red_box blue_box"),
     ("scan55", "grab the white one", "refuse"),
     ("scan45", "move the white box a bit closer to you", "moved white_box back 0.05"),
-    ("scan45", "put the red object in front of the white box", "front red_object white_box"),
+    ("scan45", "put the red object in front of the white box", "refuse"),  # the red can or the red cracker box?
 ]
 
 # A third batch, written after the last planner change and measured once, with no change after it.

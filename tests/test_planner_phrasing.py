@@ -122,3 +122,30 @@ def test_swap_moves_one_aside_first() -> None:
     assert plan.goals == [Placed("obj3_cube", (0.55, -0.15)), Placed("obj5_cube", (0.55, 0.25))]
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("swap the can and the bowl", CLUTTER)
+
+
+ASIDES: list[tuple[str, list[str]]] = [
+    # a topic named first, then a pronoun for it
+    ("that banana, could you set it down next to the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("the green cube, push it 3 cm to the right", ["push('obj5_cube', 'right', 0.03)"]),
+    # the robot addressed by name
+    ("Panda, stack the red cube on the blue cube", ["place_on('obj3_cube', 'obj4_cube')"]),
+    ("drop the strawberry in the bowl, robot", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    # constraints it always keeps (nothing else is to move)
+    ("put the banana behind the bowl without knocking anything over", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    ("don't touch the other objects, just lift the strawberry", ["grasp('obj8_strawberry')"]),
+    # asking to be given a thing
+    ("may I have the strawberry", ["grasp('obj8_strawberry')"]),
+    ("I'd like the blue cube please", ["grasp('obj4_cube')"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), ASIDES, ids=[p[0][:40] for p in ASIDES])
+def test_topics_vocatives_constraints_and_requests(sentence: str, lines: list[str]) -> None:
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+
+
+def test_a_topic_is_not_taken_from_a_list_or_a_place() -> None:
+    """Only a bare noun phrase before a clause with 'it' is its topic: lists and places stay as they were."""
+    assert split_command("the mug, the can and the banana go in the bowl") == ["the mug and the can and the banana go in the bowl"]
+    assert split_command("put the mug in the bowl, then push it left") == ["put the mug in the bowl", "push it left"]

@@ -16,6 +16,13 @@ FILLERS = (
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets",
 )
+# addressing the robot ("robot, ...", "..., panda") is not part of the command
+_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
+# constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
+_THINGS = r"(?:anything|everything|something|(?:any of )?the other (?:thing|object|item)s?|other (?:thing|object|item)s?)"
+_CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
+                         r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
+                         rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -50,8 +57,10 @@ def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
     text = re.sub(r"[!?]+", ".", text)
+    text = _VOCATIVE.sub(" ", text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
+    text = _CONSTRAINT.sub(" ", text)
     text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
@@ -75,6 +84,11 @@ def split_command(command: str) -> list[str]:
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+    for i in range(len(parts) - 1):  # "the bowl, push it forward": the named thing is what "it" means
+        np = re.sub(r"^(?:as for|about|and) ", "", parts[i])
+        if (re.match(r"(?:the|that|this|these|those) ", np) and not verb_re.match(np) and not _has_relation(np)
+                and verb_re.match(parts[i + 1]) and re.search(r"\b(?:it|them)\b", parts[i + 1])):
+            parts[i + 1], parts[i] = re.sub(r"\b(?:it|them)\b", np, parts[i + 1], count=1), ""
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part):
@@ -97,10 +111,17 @@ def split_command(command: str) -> list[str]:
 _DESIRE = re.compile(r"^i (?:would |d )?(?:like|want|need|wish)(?: you to| to have| to see)?\s+(.+)$")
 _PARTICIPLE = re.compile(r"^(.+?)\s+(?:moved|put|placed|pushed|pulled|slid|shifted|set|taken|brought|stacked|dropped|"
                          r"nudged|shoved|scooted|dragged|carried|lifted|picked up|sitting|standing|lying)\b\s*(.*)$")
+_ASK = re.compile(r"^(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)\s+(.+)$")
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
 _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)"
                    r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
+
+
+def _has_relation(text: str) -> bool:
+    """Whether a relation word opens ``text`` or any of its word tails ("mug in the bowl")."""
+    words = text.split()
+    return any(_relation_start(" ".join(words[i:])) for i in range(len(words)))
 
 
 def _relation_start(text: str) -> bool:
@@ -115,21 +136,20 @@ def rephrase(clause: str) -> str:
     a statement of where a thing goes ("X goes/should go/belongs in Y" -> "put X in Y"), or a bare
     object and place ("mug in the bowl" -> "put mug in the bowl")."""
     c = clause.strip()
+    m = _ASK.match(c)
+    if m:  # "can i have the banana": a request to be handed it
+        return f"hand me {m.group(1)}"
     m = _DESIRE.match(c)
     if m:
         rest = m.group(1)
         p = _PARTICIPLE.match(rest)
         if p and p.group(2):
             return f"move {p.group(1)} {p.group(2)}"
-        return f"put {rest}"
+        return f"put {rest}" if _has_relation(rest) else f"hand me {rest}"  # "i want the banana": give it to me
     m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
     if m:  # "the box needs to be moved 5 cm forward"
         return f"move {m.group(1)} {m.group(2)}"
     m = _GOES.match(c)
     if m and _relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"
-    words = c.split()
-    for i in range(1, len(words)):
-        if _relation_start(" ".join(words[i:])):
-            return f"put {c}"
-    return c
+    return f"put {c}" if _has_relation(" ".join(c.split()[1:])) else c
