@@ -149,3 +149,16 @@ def test_a_topic_is_not_taken_from_a_list_or_a_place() -> None:
     """Only a bare noun phrase before a clause with 'it' is its topic: lists and places stay as they were."""
     assert split_command("the mug, the can and the banana go in the bowl") == ["the mug and the can and the banana go in the bowl"]
     assert split_command("put the mug in the bowl, then push it left") == ["put the mug in the bowl", "push it left"]
+
+
+def test_where_a_thing_is_now_names_it_never_the_place() -> None:
+    """"out of the bowl", "off the plate": the object in or on it; none there is refused, the bowl is never taken."""
+    inside = [replace(o, position=(0.30, 0.0, 0.04)) if o.label == "strawberry" else o for o in CLUTTER]
+    assert [c.text() for c in RulePlanner().plan("take the strawberry out of the bowl", inside).calls] == ["grasp('obj8_strawberry')"]
+    with pytest.raises(InputError, match="no object matches"):
+        RulePlanner().plan("take the strawberry out of the bowl", CLUTTER)
+
+
+def test_both_joins_a_list() -> None:
+    plan = RulePlanner().plan("please place both the banana and the strawberry in the bowl", CLUTTER)
+    assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]

@@ -84,11 +84,11 @@ def split_command(command: str) -> list[str]:
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
-    for i in range(len(parts) - 1):  # "the bowl, push it forward": the named thing is what "it" means
-        np = re.sub(r"^(?:as for|about|and) ", "", parts[i])
-        if (re.match(r"(?:the|that|this|these|those) ", np) and not verb_re.match(np) and not _has_relation(np)
-                and verb_re.match(parts[i + 1]) and re.search(r"\b(?:it|them)\b", parts[i + 1])):
-            parts[i + 1], parts[i] = re.sub(r"\b(?:it|them)\b", np, parts[i + 1], count=1), ""
+    topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
+    if (re.match(r"(?:the|that|this|these|those) ", topic) and not verb_re.match(topic) and not _has_relation(topic)
+            and verb_re.match(parts[1]) and re.search(r"\b(?:it|them)\b", parts[1])):
+        # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
+        parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part):

@@ -38,6 +38,7 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
     (r"(?:that is |thats |which is )?behind", "behind"),
     (r"(?:that is |thats |which is )?in front of", "front"),
+    (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
 )
 TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
 # robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
@@ -190,6 +191,7 @@ class Resolver:
                 raise InputError(f"'the other one' does not refer to anything yet; {self.listing()}")
             taken = {o.name for o in ctx.last}
             return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False)
+        text = re.sub(r"^both (?:of )?(?=.+\s+and\s+)", "", text)  # "both the banana and the strawberry": a list
         parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
         if len(parts) > 1 and allow_plural:
             out: list[ObjectInfo] = []
@@ -228,7 +230,9 @@ class Resolver:
                     except InputError:
                         continue
                     text = m.group(1)
-                    cands = [o for o in cands if any(o.name != r.name and relation_holds(rel, o, r, self.forward, self.left) for r in refs)]
+                    rels = ("in", "on") if rel == "from" else (rel,)
+                    cands = [o for o in cands if any(o.name != r.name and relation_holds(k, o, r, self.forward, self.left)
+                                                     for r in refs for k in rels)]
                     break
         # positional locators: "on the left", "in the back", "closest to you", "in the middle"
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
