@@ -137,6 +137,8 @@ ASIDES: list[tuple[str, list[str]]] = [
     # asking to be given a thing
     ("may I have the strawberry", ["grasp('obj8_strawberry')"]),
     ("I'd like the blue cube please", ["grasp('obj4_cube')"]),
+    ("I'd like the can closest to the bowl", ["grasp('obj2_soda_can')"]),  # a locator, not a place
+    ("I need the banana over by the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),  # a wish with a place
 ]
 
 

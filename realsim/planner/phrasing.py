@@ -111,6 +111,7 @@ def split_command(command: str) -> list[str]:
 _DESIRE = re.compile(r"^i (?:would |d )?(?:like|want|need|wish)(?: you to| to have| to see)?\s+(.+)$")
 _PARTICIPLE = re.compile(r"^(.+?)\s+(?:moved|put|placed|pushed|pulled|slid|shifted|set|taken|brought|stacked|dropped|"
                          r"nudged|shoved|scooted|dragged|carried|lifted|picked up|sitting|standing|lying)\b\s*(.*)$")
+_PLACE_WORD = re.compile(r"\s(?:" + "|".join(re.escape(w) for w, k in RELATIONS if k != "to") + r")\s")
 _ASK = re.compile(r"^(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)\s+(.+)$")
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
@@ -145,7 +146,9 @@ def rephrase(clause: str) -> str:
         p = _PARTICIPLE.match(rest)
         if p and p.group(2):
             return f"move {p.group(1)} {p.group(2)}"
-        return f"put {rest}" if _has_relation(rest) else f"hand me {rest}"  # "i want the banana": give it to me
+        # "i want the mug by the bowl": put it there; "i want the banana": give it to me
+        placed = _PLACE_WORD.search(f" {rest} ")
+        return f"put {rest}" if placed else f"hand me {rest}"
     m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
     if m:  # "the box needs to be moved 5 cm forward"
         return f"move {m.group(1)} {m.group(2)}"
