@@ -164,3 +164,27 @@ def test_where_a_thing_is_now_names_it_never_the_place() -> None:
 def test_both_joins_a_list() -> None:
     plan = RulePlanner().plan("please place both the banana and the strawberry in the bowl", CLUTTER)
     assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]
+
+
+ARRANGEMENTS: list[tuple[str, list[str]]] = [
+    # in the order things are to happen
+    ("drop the banana into the bowl after you pick up the strawberry", ["grasp('obj8_strawberry')", "place_in('obj7_banana', 'obj6_bowl')"]),
+    ("before you push the red cube left, lift the banana", ["grasp('obj7_banana')", "push('obj3_cube', 'left', 0.1)"]),
+    ("put the strawberry in the bowl before you go home", ["place_in('obj8_strawberry', 'obj6_bowl')", "go_home()"]),
+    ("push the bowl left once you have picked up the green cube", ["grasp('obj5_cube')", "push('obj6_bowl', 'left', 0.1)"]),
+    # several objects relative to each other
+    ("set the cans down next to each other", ["place_beside('obj2_soda_can', 'obj1_soda_can', 'next')"]),
+    ("put the cubes on top of one another", ["place_on('obj3_cube', 'obj4_cube')", "place_on('obj5_cube', 'obj3_cube')"]),
+    # sides named from the robot or from where the object is
+    ("put the red cube on the far side of the bowl", ["place_beside('obj3_cube', 'obj6_bowl', 'behind')"]),
+    ("move the banana to the other side of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),  # it is behind now
+    ("slide the strawberry towards the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),  # a way, not into it
+    # a lift has one height; put back where it was found
+    ("raise the blue cube by 5 cm", ["grasp('obj4_cube')"]),
+    ("grab the banana, then put it back where you found it", ["grasp('obj7_banana')", "place('obj7_banana', [0.65, 0.0, 0.02])"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), ARRANGEMENTS, ids=[p[0][:40] for p in ARRANGEMENTS])
+def test_order_each_other_sides_and_heights(sentence: str, lines: list[str]) -> None:
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines

@@ -38,6 +38,8 @@ ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("op
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
 
 RELATIONS: tuple[tuple[str, str], ...] = (
+    ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
+    ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
     ("to the front of", "front"), ("at the front of", "front"), ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
     ("to the right hand side of", "right"), ("to the right side of", "right"), ("on the right hand side of", "right"),
@@ -48,7 +50,7 @@ RELATIONS: tuple[tuple[str, str], ...] = (
     ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
     ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
     ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
-    ("toward", "to"), ("towards", "to"), ("to", "to"),
+    ("toward", "next"), ("towards", "next"), ("to", "to"),  # toward a thing is a way, not into it
 )
 SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
 
@@ -78,8 +80,8 @@ def clean(command: str) -> str:
 def split_command(command: str) -> list[str]:
     """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
     a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
-    text = clean(command)
-    text = re.sub(r"\b(?:and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
+    text = _in_order(clean(command))
+    text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
     parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
@@ -105,6 +107,29 @@ def split_command(command: str) -> list[str]:
         else:
             clauses.append(part)
     return clauses
+
+
+_PAST = {"picked": "pick", "grabbed": "grab", "taken": "take", "took": "take", "lifted": "lift", "moved": "move", "pushed": "push",
+         "placed": "place", "dropped": "drop", "opened": "open", "closed": "close", "gotten": "get", "got": "get"}
+
+
+def _in_order(text: str) -> str:
+    """Clauses in the order they are to happen: "do A after you (have) done B" and "before you do
+    A, do B" -> "B, A"; "do A before you do B" -> "A, B"."""
+    verbs = "|".join(re.escape(v) for v in sorted([*ALL_VERBS, *_PAST], key=len, reverse=True))
+    you = r"(?:you |i )?(?:have |ve )?"
+    m = re.fullmatch(rf"before {you}((?:{verbs})\b.+?), (.+)", text)
+    if m:
+        first, then = m.group(2), m.group(1)
+    elif m := re.fullmatch(rf"(.+?),? (?:after|once|as soon as) {you}((?:{verbs})\b.+)", text):
+        first, then = m.group(2), m.group(1)
+    elif m := re.fullmatch(rf"(.+?),? before {you}((?:{verbs})\b.+)", text):
+        first, then = m.group(1), m.group(2)
+    else:
+        return text
+    first = re.sub(r"^\w+", lambda w: _PAST.get(w.group(0), w.group(0)), first)
+    then = re.sub(r"^\w+", lambda w: _PAST.get(w.group(0), w.group(0)), then)
+    return f"{first}, {then}"
 
 
 # "I'd like the can next to the box", "I need the box moved 5 cm left" (after clean(): "i like ...")

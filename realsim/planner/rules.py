@@ -17,14 +17,14 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
-from realsim.planner.reference import Context, Resolver
+from realsim.planner.reference import Context
+from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, other_side, swap
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, name_words, norm, singular
 
@@ -36,26 +36,6 @@ HELP = (
     "set ANTHROPIC_API_KEY to use Claude for free-form commands"
 )
 
-
-
-@dataclass
-class _Step:
-    calls: list[Call]
-    goals: list[Goal]
-    objects: tuple[str, ...] = ()  # objects whose state the step changes
-    moves_robot: bool = True
-    pending: str = ""  # a plural "take" that a later "put them ..." carries out, else this error
-
-
-@dataclass
-class _Parser:
-    objects: Sequence[ObjectInfo]
-    robot_yaw: float = 0.0
-    ctx: Context = field(default_factory=Context)
-
-    def __post_init__(self) -> None:
-        self.resolver = Resolver(self.objects, self.robot_yaw)
-        self.by_name = {o.name: o for o in self.objects}
 
 
 class RulePlanner:
@@ -76,7 +56,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
-    p = _Parser(objects, robot_yaw)
+    p = Parser(objects, robot_yaw)
     steps = [_clause(c, p) for c in clauses]
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
@@ -84,7 +64,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     return [c for s in steps for c in s.calls], _final_goals(steps)
 
 
-def _final_goals(steps: list[_Step]) -> list[Goal]:
+def _final_goals(steps: list[Step]) -> list[Goal]:
     """Goals not undone by later steps (a lifted mug later placed; home, then the arm moved again)."""
     goals: list[Goal] = []
     for i, step in enumerate(steps):
@@ -109,23 +89,23 @@ def _disturbed(goal: Goal, later_objects: set[str]) -> bool:
 # clauses
 
 
-def _clause(clause: str, p: _Parser) -> _Step:
+def _clause(clause: str, p: Parser) -> Step:
     c = " ".join(clause.split())
     if re.fullmatch(r"(?:(?:go|return|move|come|head|get)(?: back)?(?: to)?(?: (?:the|your))? (?:home|start|starting|rest|resting|initial|ready)"
                     r"(?: position| pose| posture| point| spot)?|reset(?: yourself| the arm| arm)?|home|go back|return|retract(?: the arm)?"
                     r"|(?:go|move|return|come) home)", c):
-        return _Step([Call("go_home")], [AtHome()])
+        return Step([Call("go_home")], [AtHome()])
     m = re.fullmatch(r"(open|close|shut) (?:the |your )?(?:gripper|hand|fingers|claw)|release(?: it| that| the object)?|let (?:it )?go(?: of it)?|drop it|let go of (.+)", c)
     if m:
         if c.startswith(("release", "let", "drop")) or m.group(1) == "open":
-            return _Step([Call("open_gripper")], [], moves_robot=False)
-        return _Step([Call("close_gripper")], [], moves_robot=False)
+            return Step([Call("open_gripper")], [], moves_robot=False)
+        return Step([Call("close_gripper")], [], moves_robot=False)
     m = re.fullmatch(r"(pull open|pull out|open|close|shut|push in|push closed|push shut) (.+?)(?: all the way| fully| completely| halfway)?", c)
     if m and (m.group(1) in ("open", "close", "shut") or re.search(r"drawer|door|cabinet|lid", m.group(2))):
         return _articulate(m.group(1), m.group(2), p)
-    m = _SWAP.fullmatch(c)
+    m = SWAP.fullmatch(c)
     if m:
-        return _swap(m.group(1), m.group(2), p)
+        return swap(m.group(1), m.group(2), p)
     c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
@@ -160,23 +140,26 @@ def _verb(c: str) -> tuple[str | None, str]:
     return None, c
 
 
-def _objs(phrase: str, p: _Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list:
+def _objs(phrase: str, p: Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list:
     phrase = re.sub(rf"{PARTICLES}$", "", " " + phrase).strip()
     phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
     objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
     return objs
 
 
-def _take(rest: str, p: _Parser) -> _Step:
+def _take(rest: str, p: Parser) -> Step:
     rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it)$", "", rest)
+    # "lift the cube 5 cm": a lift has one height (about 10 cm); the number does not name the object
+    rest = re.sub(r"\s+(?:up )?(?:by )?(?:about |around )?\d+(?:\.\d+)? ?(?:cm|mm|centimet(?:er|re)s?|millimet(?:er|re)s?|inch(?:es)?)"
+                  r"(?: up| high| off the table| into the air| in the air)?$", "", rest)
     objs = _objs(rest, p)
     if len(objs) > 1:  # "take the banana and the strawberry and put them in the bowl": the put carries them
         p.ctx.set(objs)
-        return _Step([], [], (), moves_robot=False,
+        return Step([], [], (), moves_robot=False,
                      pending=f"the hand holds one object at a time: {', '.join(o.name for o in objs)}; say what to do with each")
     o = objs[0]
     p.ctx.set(objs)
-    return _Step([Call("grasp", (o.name,))], [Lifted(o.name)], (o.name,))
+    return Step([Call("grasp", (o.name,))], [Lifted(o.name)], (o.name,))
 
 
 def _find_relation(rest: str) -> list[tuple[int, int, str]]:
@@ -189,24 +172,23 @@ def _find_relation(rest: str) -> list[tuple[int, int, str]]:
     return out
 
 
-def _put(verb: str, rest: str, p: _Parser, clause: str) -> _Step | None:
+def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
-    rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where it (?:was|came from|belongs|started)|its (?:original |old |starting )?(?:place|spot|position))$",
+    rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
+                  r"|its (?:original |old |starting )?(?:place|spot|position))$",
                   " back", rest)
     if verb == "stack" and not _find_relation(rest):  # "stack the cubes": a tower, the biggest at the bottom
-        objs = sorted(_objs(rest, p), key=lambda o: -float(o.size[0] * o.size[1] * o.size[2]))
+        objs = _objs(rest, p)
         if len(objs) < 2:
             raise InputError(f"stack {rest!r} on what? name a second object; {p.resolver.listing()}")
-        p.ctx.set(objs)
-        return _Step([Call("place_on", (o.name, below.name)) for below, o in zip(objs, objs[1:])],
-                     [On(o.name, below.name) for below, o in zip(objs, objs[1:])], tuple(o.name for o in objs[1:]))
+        return each_other(objs, "on", p)
     m = re.fullmatch(r"(.+?)\s+(back|down)(?: where it (?:was|came from|belongs)| in its (?:place|spot)| on its spot)?", rest)
     if verb in ("put back", "put down", "set down", "lay down") and not _find_relation(rest):
         m = re.fullmatch(r"(.+)", rest)
     if m and not _relation_tail(rest):
         objs = _objs(m.group(1), p)
         p.ctx.set(objs)
-        return _Step([Call("place", (o.name, [round(v, 3) for v in o.position])) for o in objs],
+        return Step([Call("place", (o.name, [round(v, 3) for v in o.position])) for o in objs],
                      [Placed(o.name, (round(o.position[0], 3), round(o.position[1], 3))) for o in objs], tuple(o.name for o in objs))
     last_error: InputError | None = None
     for start, end, kind in _find_relation(rest):
@@ -231,7 +213,7 @@ def _relation_tail(rest: str) -> bool:
     return any(s > 0 and rest[e:].strip() for s, e, _ in _find_relation(rest))
 
 
-def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: str) -> _Step:
+def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: str) -> Step:
     target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
     target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
     if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):
@@ -241,7 +223,7 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
         for o in objs:
             calls.append(Call("place_down", (o.name,)))
             goals.append(OnTable(o.name))
-        return _Step(calls, goals, tuple(o.name for o in objs))
+        return Step(calls, goals, tuple(o.name for o in objs))
     if kind == "between":
         refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
         if len(refs) != 2:
@@ -251,8 +233,10 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
             raise InputError(f"cannot put an object between itself and another; {p.resolver.listing()}")
         p.ctx.set(objs)
         a, b = refs
-        return _Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
+        return Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
                      [Between(o.name, a.name, b.name) for o in objs], tuple(o.name for o in objs))
+    if EACH_OTHER.fullmatch(target_phrase) and kind in ("next", "on", "to"):  # "put the cans next to each other"
+        return each_other(_objs(obj_phrase, p), "on" if kind == "on" else "next", p)
     want = {"in": "container", "on": "support"}.get(kind)
     if target_phrase in ("there", "that place", "the same place", "the same spot"):
         if p.ctx.place is None:
@@ -280,13 +264,14 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: _Parser, verb: 
         elif kind == "next":
             calls.append(Call("place_beside", (o.name, target.name, "next")))
             goals.append(NextTo(o.name, target.name))
-        else:
-            calls.append(Call("place_beside", (o.name, target.name, kind)))
-            goals.append(SideOf(o.name, target.name, kind))
-    return _Step(calls, goals, tuple(o.name for o in objs))
+        else:  # a side; "the other side": opposite to where the object is now
+            side = other_side(p, o, target) if kind == "other" else kind
+            calls.append(Call("place_beside", (o.name, target.name, side)))
+            goals.append(SideOf(o.name, target.name, side))
+    return Step(calls, goals, tuple(o.name for o in objs))
 
 
-def _target(target_phrase: str, obj_phrase: str, p: _Parser, want: str | None) -> ObjectInfo:
+def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) -> ObjectInfo:
     """The one object ``target_phrase`` names; "one" stands for the moved object's noun ("put the
     green cube beside the red one": the red cube), else for any object."""
     ctx = Context(p.ctx.last, p.ctx.place)
@@ -299,7 +284,7 @@ def _target(target_phrase: str, obj_phrase: str, p: _Parser, want: str | None) -
     return p.resolver.resolve(target_phrase, ctx, want=want, allow_plural=False)[0]
 
 
-def _head_noun(phrase: str, p: _Parser) -> str | None:
+def _head_noun(phrase: str, p: Parser) -> str | None:
     """The noun a phrase ends with ("the green cube": cube; "it": the last object's label)."""
     words = re.sub(rf"{PARTICLES}$", "", " " + norm(phrase)).split()
     if not words:
@@ -310,7 +295,7 @@ def _head_noun(phrase: str, p: _Parser) -> str | None:
     return None if word in (*GENERIC, "one", "ones", "it", "them") or word.isdigit() else word
 
 
-def _articulate(verb: str, phrase: str, p: _Parser) -> _Step:
+def _articulate(verb: str, phrase: str, p: Parser) -> Step:
     want = "door" if "door" in phrase or "lid" in phrase else "drawer"
     words = norm(phrase).split()
     if words and words[-1] in ("drawer", "door", "cabinet") and not any(w in o.affordances for o in p.objects for w in (want,)):
@@ -324,15 +309,15 @@ def _articulate(verb: str, phrase: str, p: _Parser) -> _Step:
     o = objs[0]
     p.ctx.set([o])
     if verb in ("open", "pull open", "pull out"):
-        return _Step([Call("open_drawer", (o.name,))], [DrawerOpen(o.name, 0.3 if want == "door" else 0.05)], (o.name,))
-    return _Step([Call("close_drawer", (o.name,))], [DrawerClosed(o.name)], (o.name,))
+        return Step([Call("open_drawer", (o.name,))], [DrawerOpen(o.name, 0.3 if want == "door" else 0.05)], (o.name,))
+    return Step([Call("close_drawer", (o.name,))], [DrawerClosed(o.name)], (o.name,))
 
 
 # ----------------------------------------------------------------------------------------------
 # pushes (the words: realsim.planner.pushes) and swaps
 
 
-def _push(rest: str, p: _Parser, clause: str) -> _Step:
+def _push(rest: str, p: Parser, clause: str) -> Step:
     objs, tail, first_error = None, "", None
     for cut in [*TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
         obj_phrase = rest[: cut.start()].strip() if cut else rest
@@ -356,23 +341,5 @@ def _push(rest: str, p: _Parser, clause: str) -> _Step:
         raise InputError(f"which way? say left, right, forward or back in {clause!r}")
     dist = distance(tail) or DEFAULT_PUSH
     p.ctx.set(objs)
-    return _Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
+    return Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
                  [Moved(o.name, DIRECTIONS[direction], round(dist, 3)) for o in objs], tuple(o.name for o in objs))
-
-
-
-_SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|locations) of| where| places of)?"
-                   r" (.+?) and (.+?)(?: (?:are|is|around|over|places|positions|spots|sit))*")
-
-
-def _swap(a_phrase: str, b_phrase: str, p: _Parser) -> _Step:
-    """Each object where the other was: the first steps aside (beyond the second, away from its
-    own spot), the second goes to the first's spot, then the first to the second's."""
-    a = p.resolver.resolve(a_phrase, p.ctx, allow_plural=False)[0]
-    b = p.resolver.resolve(b_phrase, Context(p.ctx.last), exclude=[a.name], allow_plural=False)[0]
-    (af, al), (bf, bl) = p.resolver.robot_xy(a), p.resolver.robot_xy(b)
-    side = ("left" if bl > al else "right") if abs(bl - al) >= abs(bf - af) else ("behind" if bf > af else "front")
-    pa, pb = [round(v, 3) for v in a.position], [round(v, 3) for v in b.position]
-    p.ctx.set([a, b])
-    return _Step([Call("place_beside", (a.name, b.name, side)), Call("place", (b.name, pa)), Call("place", (a.name, pb))],
-                 [Placed(a.name, (pb[0], pb[1])), Placed(b.name, (pa[0], pa[1]))], (a.name, b.name))

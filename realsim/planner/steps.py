@@ -1,0 +1,88 @@
+"""The rule planner's working state and the arrangements it makes of several objects at once.
+
+A :class:`Step` is what one clause does (calls, the goals to check, the objects it moves); a
+:class:`Parser` holds the scene and what earlier clauses referred to. The arrangements here go
+beyond one relation to one target: swapping two objects, putting several "next to each other"
+or "on each other", and "the other side" of a reference (opposite to where the object is now).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from realsim.errors import InputError
+from realsim.planner.goals import Goal, NextTo, On, Placed
+from realsim.planner.program import Call
+from realsim.planner.reference import Context, Resolver
+from realsim.planner.types import ObjectInfo
+
+__all__ = ["EACH_OTHER", "SWAP", "Parser", "Step", "each_other", "other_side", "swap"]
+
+
+@dataclass
+class Step:
+    """What one clause does: its calls, the goals to check, the objects whose state it changes."""
+
+    calls: list[Call]
+    goals: list[Goal]
+    objects: tuple[str, ...] = ()
+    moves_robot: bool = True
+    pending: str = ""  # a plural "take" that a later "put them ..." carries out, else this error
+
+
+@dataclass
+class Parser:
+    """The scene as the planner reads it and the context earlier clauses left ("it", "there")."""
+
+    objects: Sequence[ObjectInfo]
+    robot_yaw: float = 0.0
+    ctx: Context = field(default_factory=Context)
+
+    def __post_init__(self) -> None:
+        self.resolver = Resolver(self.objects, self.robot_yaw)
+        self.by_name = {o.name: o for o in self.objects}
+
+
+SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|locations) of| where| places of)?"
+                  r" (.+?) and (.+?)(?: (?:are|is|around|over|places|positions|spots|sit))*")
+EACH_OTHER = re.compile(r"(?:each other|one another|one other|together)")
+
+
+def _away_side(p: Parser, a: ObjectInfo, b: ObjectInfo) -> str:
+    """The side of ``b`` away from ``a`` along the axis they differ most on (robot frame)."""
+    (af, al), (bf, bl) = p.resolver.robot_xy(a), p.resolver.robot_xy(b)
+    return ("left" if bl > al else "right") if abs(bl - al) >= abs(bf - af) else ("behind" if bf > af else "front")
+
+
+def swap(a_phrase: str, b_phrase: str, p: Parser) -> Step:
+    """Each object where the other was: the first steps aside (beyond the second, away from its
+    own spot), the second goes to the first's spot, then the first to the second's."""
+    a = p.resolver.resolve(a_phrase, p.ctx, allow_plural=False)[0]
+    b = p.resolver.resolve(b_phrase, Context(p.ctx.last), exclude=[a.name], allow_plural=False)[0]
+    side = _away_side(p, a, b)
+    pa, pb = [round(v, 3) for v in a.position], [round(v, 3) for v in b.position]
+    p.ctx.set([a, b])
+    return Step([Call("place_beside", (a.name, b.name, side)), Call("place", (b.name, pa)), Call("place", (a.name, pb))],
+                [Placed(a.name, (pb[0], pb[1])), Placed(b.name, (pa[0], pa[1]))], (a.name, b.name))
+
+
+def other_side(p: Parser, obj: ObjectInfo, ref: ObjectInfo) -> str:
+    """"the other side of the bowl": the side of ``ref`` opposite to where ``obj`` is now."""
+    return _away_side(p, obj, ref)
+
+
+def each_other(objs: list[ObjectInfo], kind: str, p: Parser) -> Step:
+    """Several objects "next to each other" (each beside the first) or "on each other" (a tower,
+    the biggest at the bottom)."""
+    if len(objs) < 2:
+        raise InputError(f"'each other' needs two or more objects, got {len(objs)}; {p.resolver.listing()}")
+    p.ctx.set(objs)
+    if kind == "on":
+        tower = sorted(objs, key=lambda o: -float(o.size[0] * o.size[1] * o.size[2]))
+        return Step([Call("place_on", (o.name, below.name)) for below, o in zip(tower, tower[1:])],
+                    [On(o.name, below.name) for below, o in zip(tower, tower[1:])], tuple(o.name for o in tower[1:]))
+    first, rest = objs[0], objs[1:]
+    return Step([Call("place_beside", (o.name, first.name, "next")) for o in rest],
+                [NextTo(o.name, first.name) for o in rest], tuple(o.name for o in rest))
