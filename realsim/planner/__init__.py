@@ -1,8 +1,9 @@
 """Natural-language commands to programs over the robot primitives, run in a sandbox.
 
 ``make_planner()`` picks Claude when ``ANTHROPIC_API_KEY`` is set, else the offline rule
-planner; both return a :class:`Plan` whose program runs through :func:`sandbox.run`, and whose
-goals are checked afterwards (:mod:`realsim.planner.goals`).
+planner; both return a :class:`Plan` that runs through :func:`sandbox.run` (the rule planner's
+typed :class:`Program` of calls, Claude's checked source), and whose goals are checked
+afterwards (:mod:`realsim.planner.goals`).
 """
 
 from __future__ import annotations
@@ -30,13 +31,13 @@ from realsim.planner.goals import (
     verdict,
 )
 from realsim.planner.rules import RulePlanner
-from realsim.planner.sandbox import ExecutionReport, Limits, PrimitiveCall, SandboxViolation, check, run
-from realsim.planner.types import Call, ObjectInfo, Plan, Planner
+from realsim.planner.sandbox import ExecutionReport, Limits, PrimitiveCall, SandboxViolation, check, check_calls, run
+from realsim.planner.types import Call, ObjectInfo, Plan, Planner, Program
 
 __all__ = [
     "AtHome", "Between", "Call", "ClaudePlanner", "DrawerClosed", "DrawerOpen", "ExecutionReport", "Goal", "GoalResult",
     "Inside", "Lifted", "Limits", "Moved", "NextTo", "ObjectInfo", "On", "OnTable", "Placed", "Plan", "Planner",
-    "PlanningError", "PrimitiveCall", "RulePlanner", "SandboxViolation", "SideOf", "WorldView", "check",
+    "PlanningError", "PrimitiveCall", "Program", "RulePlanner", "SandboxViolation", "SideOf", "WorldView", "check", "check_calls",
     "evaluate_all", "make_planner", "prepare_all", "run", "verdict",
 ]
 
