@@ -114,9 +114,10 @@ def kettle(d: D) -> Shape:
     body = vessel([(r, 0.0), (r * 0.75, h)], wall=0.003, bottom=0.006, segments=1, closed_top=0.01)
     knob = cylinder(0.015, 0.012).moved(z=h + 0.008)
     path = arc((0.0, 0.0, h * 0.7), r * 0.8, 10, 170, "xz", 9)
+    top = h + 0.045  # the arch clears the lid knob: fingers close around it from above
+    path[:, 2] = h * 0.7 + (path[:, 2] - h * 0.7) * (top - h * 0.7) / (r * 0.8)
     handle = tube(path, 0.009, 8)
     spout = tube(np.array([[r * 0.85, 0.0, h * 0.25], [r * 1.2, 0.0, h * 0.55], [r * 1.35, 0.0, h * 0.7]]), [0.014, 0.01, 0.008], 8)
-    top = h * 0.7 + r * 0.8
     return union(body, knob, handle, spout).with_sites(handle=(0.0, 0.0, top), lid=(0.0, 0.0, h + 0.025), spout=(r * 1.35, 0.0, h * 0.7))
 
 

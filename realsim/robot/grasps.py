@@ -109,14 +109,15 @@ def body_surface(model: mujoco.MjModel, body_id: int, count: int = 4000) -> tupl
     return np.vstack(pts), np.vstack(nrm)
 
 
-def antipodal(normals: np.ndarray | None, between: np.ndarray, proj_c: np.ndarray, closing: np.ndarray, approach: np.ndarray,
+def antipodal(normals: np.ndarray | None, between: np.ndarray, proj_c: np.ndarray, closing: np.ndarray, approach: np.ndarray | None,
               cos_cone: float = COS_FRICTION_CONE, flat: bool = False, band: float = 0.004) -> bool:
     """Whether the surface the two pads would touch faces them (within the cone ``cos_cone``).
 
     The contact patches are the points of ``between`` within ``band`` of each extreme of
     ``proj_c`` (their coordinate along ``closing``). Normals are taken without their component
     along the fingers (``approach``): a shoulder sloping along the fingers is fine, an
-    off-centre chord of a round body is not (the pads would slide off it). The patch's mean
+    off-centre chord of a round body is not (the pads would slide off it); with ``approach`` None
+    the whole normal counts (a handle: an edge sloping along the fingers is no pad contact). The patch's mean
     normal must lie in the cone; with ``flat``, nine in ten of its normals must (a flat face,
     not a curve). Without normals nothing can be checked (True).
     """
@@ -126,7 +127,8 @@ def antipodal(normals: np.ndarray | None, between: np.ndarray, proj_c: np.ndarra
     for extreme, sign in ((c.min(), -1.0), (c.max(), 1.0)):
         patch = np.flatnonzero(between)[np.abs(c - extreme) < band]
         n = normals[patch]
-        n = n - np.outer(n @ approach, approach)  # the part of each normal a pad can push against
+        if approach is not None:
+            n = n - np.outer(n @ approach, approach)  # the part of each normal a pad can push against
         length = np.linalg.norm(n, axis=1)
         side = length > 0.5  # faces, not caps seen edge-on from the pad
         if not side.any():
@@ -300,14 +302,17 @@ PAD_DEPTH = 0.02  # m: length of the pads' contact along the fingers
 def twist_check(cand: GraspCandidate, com: np.ndarray, mass: float, friction: float, force: float) -> tuple[bool, float, float]:
     """Statics of a pinch: (holds, gravity torque, what the pads resist about that axis), N m.
 
-    Gravity's torque about the pinch point has two parts the pads must resist: about the closing
+    Gravity's torque about the pinch point has three parts the pads must resist: about the closing
     axis (the object spins between the pads) they resist by twisting friction, about 2 * (2/3) *
-    friction * force * :data:`PAD_RADIUS`; about the hand's other horizontal axis (the object
+    friction * force * :data:`PAD_RADIUS`; about the axis across the fingers (the object
     tilts in the pinch) by the pressure spread along the fingers, about force * :data:`PAD_DEPTH`
-    / 2. The worse of the two, relative to its capacity, is returned."""
+    / 2; about the approach axis (a sideways hand: the object turns across the pads) by the
+    pressure spread across the fingers' width, about force * :data:`FINGER_HALF_WIDTH`. The worst
+    of the three, relative to its capacity, is returned."""
     arm = np.asarray(com, float) - cand.pos
     tau = np.cross(arm, np.array([0.0, 0.0, -9.81 * mass]))
     parts = [(abs(float(tau @ cand.rot[:, 1])), 2.0 * (2.0 / 3.0) * friction * force * PAD_RADIUS),
-             (abs(float(tau @ cand.rot[:, 0])), force * PAD_DEPTH / 2.0)]
+             (abs(float(tau @ cand.rot[:, 0])), force * PAD_DEPTH / 2.0),
+             (abs(float(tau @ cand.rot[:, 2])), force * FINGER_HALF_WIDTH)]
     need, can = max(parts, key=lambda p: p[0] / p[1])
     return need <= can, need, can

@@ -46,6 +46,7 @@ class PickParams:
     error_reward: float = -0.1  # reward of an attempt that could not be planned
     contact_reward: float = 0.3  # reward for both fingers touching at close
     lift_reward: float = 0.4  # reward for a full lift (scaled by the height reached)
+    handle_statics_weight: float = 0.3  # taken off a handle pinch's score per unit of torque needed over torque held
 
 
 @dataclass(frozen=True)

@@ -3,12 +3,14 @@ approaches, and attempts retried with epsilon-greedy grasp parameters."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import mujoco
 import numpy as np
 
 from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, grasp_candidates, narrowest_width, rotate_about, twist_check
+from realsim.robot.handles import handle_candidates
 from realsim.robot.ik import IKResult
 from realsim.robot.model import GRIPPER_OPEN_CTRL, HOME_ARM
 from realsim.robot.motion import Motion
@@ -24,25 +26,66 @@ class GraspSkill(Motion):
     """graspability and grasp (pick and lift)."""
 
     def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
-        """Pinches that fit the hand and whose lever arm the grip can hold against gravity."""
-        return [c for c in self._fitting_candidates(obj, height_offset) if self._holds(obj, c)[0]]
+        """Pinches that fit the hand and whose lever arm the grip can hold against gravity; a
+        handle pinch ranks lower the nearer its torque comes to what the grip holds."""
+        out = []
+        for c in self._fitting_candidates(obj, height_offset):
+            ok, need, can = self._holds(obj, c)
+            if ok:
+                out.append(replace(c, score=c.score - self.params.pick.handle_statics_weight * need / can) if c.kind == "handle" else c)
+        out.sort(key=lambda c: -c.score)
+        return out
 
     def _fitting_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
-        """Pinches of ``obj`` that fit the hand, from its surface points above its support."""
+        """Pinches of ``obj`` that fit the hand, from its surface points above its support; its
+        handles too when it has handle sites or when no pinch of its body holds."""
         pts = self.object_points(obj)
         surface = self.surface_below(pts[:, :2].mean(axis=0), float(pts[:, 2].min()) + self.params.pick.support_probe, exclude=obj)
-        return grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=height_offset,
-                                normals=self.object_normals(obj))
+        normals = self.object_normals(obj)
+        cands = grasp_candidates(pts, surface, self.base_pos[:2], self._prefer_yaw(), height_offset=height_offset, normals=normals)
+        sites = self._handle_sites(obj)
+        if sites or not any(self._holds(obj, c)[0] for c in cands):
+            cands += self._handles(obj, pts, normals, surface, sites)
+            cands.sort(key=lambda c: -c.score)
+        return cands
+
+    def _handle_sites(self, obj: str) -> list[np.ndarray]:
+        """World positions of the handle sites (``<obj>_handle``, ``<obj>_handle_2``) on the object's own body."""
+        b, m = self._body(obj), self.model
+        return [self.data.site_xpos[i].copy() for i in range(m.nsite)
+                if m.site_bodyid[i] == b and m.site(i).name.removeprefix(f"{obj}_").startswith("handle")]
+
+    def _handles(self, obj: str, pts: np.ndarray, normals: np.ndarray, surface: float, sites: list[np.ndarray]) -> list[GraspCandidate]:
+        """Handle pinches of ``obj`` (:func:`handle_candidates`), computed once per object pose."""
+        pos, quat = self.object_pose(obj)
+        key = (obj, *np.round(np.concatenate([pos, quat]), 4).tolist())
+        cache: dict[tuple[object, ...], list[GraspCandidate]] = self.__dict__.setdefault("_handle_cache", {})
+        if key not in cache:
+            cache[key] = handle_candidates(pts, normals, surface, self.base_pos[:2], sites or None)
+        return list(cache[key])
 
     def _holds(self, obj: str, cand: GraspCandidate) -> tuple[bool, float, float]:
         """Statics of ``cand`` on ``obj``: its mass and centre of mass from the model (attached parts
-        included), friction of its geoms, the gripper's force limit."""
+        included), friction of its geoms, the gripper's squeeze at the pinch's width."""
         b = self._body(obj)
         mujoco.mj_comPos(self.model, self.data)
         geoms = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in self._subtree(b)]
         friction = float(min(self.model.geom_friction[g][0] for g in geoms)) if geoms else self.params.arm.default_friction
-        force = float(abs(self.model.actuator_forcerange[self.grip_act]).max()) or self.params.arm.default_grip_force
-        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), friction, force)
+        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), friction, self._squeeze(cand.width))
+
+    def _squeeze(self, width: float) -> float:
+        """Force (N) each pad of the closed gripper presses on a part ``width`` across: the
+        actuator's force at that opening (ctrl 0, clamped to its range) through its tendon."""
+        m, a = self.model, self.grip_act
+        length = width / 2  # the tendon is the fingers' mean travel
+        force = abs(float(m.actuator_biasprm[a][0] + m.actuator_biasprm[a][1] * length))
+        if m.actuator_forcelimited[a]:
+            force = min(force, float(np.abs(m.actuator_forcerange[a]).max()))
+        if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_TENDON:
+            return force or self.params.arm.default_grip_force
+        t = m.actuator_trnid[a][0]
+        coef = float(np.abs(m.wrap_prm[m.tendon_adr[t]: m.tendon_adr[t] + m.tendon_num[t]]).max())
+        return force * coef or self.params.arm.default_grip_force
 
     def _prefer_yaw(self) -> float:
         """Yaw of the hand's closing axis at home: pinches near it are preferred."""
@@ -50,7 +93,8 @@ class GraspSkill(Motion):
         return float(np.arctan2(r[1, 1], r[0, 1]))
 
     def graspability(self, obj: str) -> tuple[bool, str]:
-        """Whether the hand can hold ``obj`` at all (some cross-section within the opening)."""
+        """Whether the hand can hold ``obj`` at all (some cross-section, rim or handle within the opening
+        whose lever arm the grip holds), and why not."""
         if self._grasp_candidates(obj):
             return True, ""
         fitting = self._fitting_candidates(obj)
@@ -60,7 +104,7 @@ class GraspSkill(Motion):
             return False, (f"{obj} fits the hand only where its weight twists out of the pinch: {need:.2f} N m about the "
                            f"fingers at the best of {len(fitting)} pinches, the grip holds {can:.2f} N m")
         w = narrowest_width(self.object_points(obj))
-        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim the hand can pinch (handles are not used): the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
+        return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim or handle the hand can pinch: the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
 
     def grasp(self, obj: str, max_attempts: int | None = None, max_sim_time: float | None = None) -> ActionResult:
         """Grasp and lift ``obj``; failed attempts retry with epsilon-greedy grasp parameters."""
