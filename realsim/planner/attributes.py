@@ -44,11 +44,10 @@ def _volume(o: ObjectInfo, word: str) -> float:
     return float(np.prod(o.size))
 
 
-def extreme_by_size(objs: list[ObjectInfo], word: str) -> ObjectInfo:
-    """The biggest (or smallest) of ``objs`` in the sense of ``word`` (tall: height; long: extent; else volume)."""
-    big = word in BIG
-    ranked = sorted(objs, key=lambda o: _volume(o, word), reverse=big)
-    return ranked[0]
+def ranked_by_size(objs: list[ObjectInfo], word: str) -> list[ObjectInfo]:
+    """``objs`` from the most to the least ``word`` (tall: height; long: extent; else volume):
+    "the biggest" is the first, "the two smallest" the first two by "smallest"."""
+    return sorted(objs, key=lambda o: _volume(o, word), reverse=word in BIG)
 
 
 def relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, forward: np.ndarray, left: np.ndarray) -> bool:

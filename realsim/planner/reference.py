@@ -21,7 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import relations
-from realsim.planner.attributes import colors_of, extreme_by_size, nth, pts, relation_holds
+from realsim.planner.attributes import colors_of, nth, pts, ranked_by_size, relation_holds
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
@@ -264,9 +264,9 @@ class Resolver:
             words = [w for w in words[1:] if w not in ("of", "the")] or (["thing"] if words[0] == "everything" else [])
         joined = " ".join(words)
         for phrase_n, n in sorted(NUMBERS.items(), key=lambda kv: -len(kv[0])):
-            if re.match(rf"(?:the )?{phrase_n}\b", joined) and n > 1:
-                quantity, plural = n, True
-                joined = re.sub(rf"^(?:the )?{phrase_n}\b\s*", "", joined)
+            m = re.match(rf"(?:the )?((?:\w+(?:est|most) )?){phrase_n}\b\s*", joined)  # "the two biggest", "the biggest two"
+            if m and n > 1:
+                quantity, plural, joined = n, True, m.group(1) + joined[m.end():]
                 break
         m = re.match(r"(?:the )?(\d+)\s+(.+)", joined)
         if m and int(m.group(1)) > 1:
@@ -309,7 +309,7 @@ class Resolver:
             found = exact  # the scene's own name for it, word for word ("the red object" beside a red box)
         # size and position
         if sizes and len(found) > 1:
-            found = [extreme_by_size(found, sizes[-1])]
+            found = ranked_by_size(found, sizes[-1])[: quantity or 1]
         if order is not None and len(found) > 1:
             found = self._ordered(found, order, ordinal, phrase)
         elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:
