@@ -32,7 +32,7 @@ Key = tuple[frozenset[str], frozenset[str]]
 class AvoidParams:
     """Distances and solver settings of :class:`CollisionIK`."""
 
-    clearance: float = 0.008  # m kept between an arm geom and an obstacle
+    clearance: float = 0.015  # m kept between an arm geom and an obstacle
     detect: float = 0.05  # m at which an arm-obstacle pair starts to constrain the motion
     gain: float = 0.85  # fraction of the remaining gap a link may close per step
     max_iters: int = 300

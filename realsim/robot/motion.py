@@ -20,6 +20,10 @@ from realsim.robot.transit import plan_joint_path
 
 Solve = Callable[[np.ndarray, np.ndarray, np.ndarray], IKResult]
 
+
+class PathBlocked(PlanFailure):
+    """A planned path would touch an object (the arm could reach, but not this way)."""
+
 __all__ = ["Motion"]
 
 
@@ -92,8 +96,9 @@ class Motion(WorldQueries):
 
     def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False,
                  q_goal: np.ndarray | None = None) -> None:
-        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked); when no
-        such path is clear, a sampling-based plan in joint space (:meth:`_plan_transit`).
+        """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked); when such
+        paths are blocked, or fail on the way to a given goal posture, a sampling-based plan in joint
+        space (:meth:`_plan_transit`).
 
         With ``turn_late`` (a sideways hand for a handle, out of reach up high) the hand may keep
         its orientation across and turn while descending, or swing across in joint space at height.
@@ -134,21 +139,27 @@ class Motion(WorldQueries):
         if turn_late:
             plans += [lambda z: across(z, cmd_rot), swing]
         last: PlanFailure | None = None
+        blocked: PathBlocked | None = None
         ignore = {skip} if skip else set()
         for plan in plans:
             for z in heights:
                 try:
                     path = plan(z) + ([np.asarray(q_goal, float)] if q_goal is not None else [])
                     self._check_clear(path, ignore=ignore)
+                except PathBlocked as exc:
+                    last = blocked = exc
+                    continue
                 except PlanFailure as exc:
                     last = exc
                     continue
                 self._follow(path)
                 return
+        if blocked is None and q_goal is None:  # no posture to aim at, and the lines failed on reach, not on what is in the way
+            raise last or PlanFailure("no safe path")
         try:
             self._plan_transit(end, rot_end, ignore, q_goal)
         except PlanFailure as exc:
-            raise PlanFailure(f"{last or 'no safe path'}; {exc}") from None
+            raise PlanFailure(f"{blocked or last}; {exc}") from None
 
     @functools.cached_property
     def _far_links(self) -> set[int]:
@@ -200,5 +211,5 @@ class Motion(WorldQueries):
             for f in (0.5, 1.0):
                 hits = self._touches(q_prev + f * (q - q_prev), ignore, hand_may_touch, carry)
                 if hits:
-                    raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))}")
+                    raise PathBlocked(f"the arm would touch {', '.join(sorted(hits))}")
             q_prev = q
