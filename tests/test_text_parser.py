@@ -98,3 +98,37 @@ def test_a_similar_word_is_not_a_typo() -> None:
     labels = {o.label for o in spec.objects}
     assert "banana" in labels and "toaster" not in labels  # a typo is corrected; another word is not
     assert any("coaster" in w for w in spec.warnings)
+
+
+def test_where_on_the_support() -> None:
+    """"on the left", "in the middle", "at the back": a place on the support, before or after the object."""
+    spec = parse_scene("a toolbox on the left, a hammer in the middle and two screwdrivers on the right. At the back there is a lamp.")
+    at = {o.label: o.position for o in spec.objects}
+    assert at == {"toolbox": (0.2, 0.5), "hammer": (0.5, 0.5), "screwdriver": (0.8, 0.5), "lamp": (0.5, 0.8)}
+
+
+def test_plus_ends_a_list_of_contents() -> None:
+    objs = _objs("a bowl holding three lemons, plus a mug and a spoon")
+    assert objs["lemon"][3] == "bowl" and objs["mug"][2:4] == ("table", None) and objs["spoon"][2:4] == ("table", None)
+
+
+def test_counted_unknown_things_are_objects_bulk_ones_contents() -> None:
+    """"a plate with a sandwich on it": a stand-in object; "a box of screws", "some cheese": contents, left out."""
+    spec = parse_scene("a plate with a sandwich on it, a box of screws and a board with some cheese")
+    assert {o.label: (o.count, o.on) for o in spec.objects} == {"plate": (1, "table"), "sandwich": (1, "plate"), "box": (1, "table"),
+                                                               "board": (1, "table")}
+    assert any("sandwich" in w and "stands in" in w for w in spec.warnings)
+    assert any("screw" in w and "left out" in w for w in spec.warnings) and any("cheese" in w and "left out" in w for w in spec.warnings)
+
+
+def test_stack_as_a_verb() -> None:
+    assert _objs("stack three bowls on the counter")["bowl"] == ("bowl", 3, "counter", None, True)
+
+
+def test_a_relation_said_before_its_subject() -> None:
+    """"..., and behind the kettle a jar": the jar is behind the kettle (not the teacup), and a mug stays on its table."""
+    spec = parse_scene("In front of the kettle there is a teacup, and behind the kettle a jar. A mug on the table, and on the shelf a vase.")
+    rel = {o.label: [(r.relation, r.target) for r in o.relations] for o in spec.objects}
+    assert rel["teacup"] == [("in_front_of", "kettle")]
+    assert rel["jar"] == [("behind", "kettle")]
+    assert {o.label: o.on for o in spec.objects}["mug"] == "table" and {o.label: o.on for o in spec.objects}["vase"] == "shelf"

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from realsim.physics.size_table import lookup
 from realsim.text.schema import SUPPORT_DEFAULTS, ObjectSpec, RelationSpec, SceneSpec, SupportSpec
 
 
@@ -19,6 +20,11 @@ class Phrase:
     definite: bool = False  # "the mug": an object already named, when there is one
     each: bool = False  # "next to each plate": one subject per instance of the target
     counted: bool = False  # a number word was said ("a", "two"): not a bare plural or mass noun
+
+
+def known(label: str) -> bool:
+    """True when the size table knows the label (an exact, alias or close match)."""
+    return lookup(label) is not None  # fuzzy matches are typos only (size_table.is_typo)
 
 
 class Builder:
@@ -96,3 +102,23 @@ class Builder:
         elif owner.spec is not None and p.spec is not None:
             self.relate([p], "in" if kind_for(owner.spec.label) in CONTAINERS else "on", owner)
             self.contents.add(p.spec.id)
+
+    def finish(self) -> None:
+        """Default supports, names, and warnings for what is not in the size table."""
+        spec = self.spec
+        elevated = [s for s in self.support_order if s != "floor"]
+        if not spec.supports or (elevated == [] and any(o.on is None and o.inside is None for o in spec.objects) and "floor" not in self.support_order):
+            self.add_support(Phrase("support", support="table"))
+        default = elevated[0] if elevated else ("floor" if "floor" in self.support_order else "table")
+        for o in [o for o in spec.objects if (o.inside or o.id in self.contents) and o.id in self.uncounted and not known(o.label)]:
+            where = o.inside or o.on  # "a vase with flowers", "a box of screws": bulk contents the table does not know are
+            # not modelled; a counted one ("a plate with a sandwich on it") is an object of its own, a stand-in box
+            spec.warnings.append(f"{o.label!r}{' in the ' + where.replace('_', ' ') if where else ''} is not in the size table: left out")
+            spec.objects.remove(o)
+        for o in spec.objects:
+            if o.on is None and o.inside is None:
+                o.on = default
+            if not known(o.label):
+                spec.warnings.append(f"{o.label!r} is not in the size table: a box of default size stands in")
+        used = {o.on for o in spec.objects} | {o.inside for o in spec.objects}
+        spec.supports = [s for s in spec.supports if s.id in used] or spec.supports[:1]

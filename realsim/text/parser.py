@@ -37,8 +37,10 @@ from realsim.text.vocabulary import (
     PLURAL_COUNT,
     PREAMBLE,
     PRONOUNS,
+    REGIONS,
     REL_MARKERS,
     SUPPORTS,
+    VAGUE,
 )
 
 
@@ -51,6 +53,7 @@ class _State:
     topic: Phrase | None = None
     pending: tuple[str, Phrase] | None = None  # a relation said before its subjects ("on the desk there's ...")
     recent: list[Phrase] = field(default_factory=list)  # object phrases read so far
+    region: tuple[float, float] | None = None  # "on the left, a toolbox": where on its support the next object goes
 
 
 def _tokens(text: str) -> list[str]:
@@ -77,7 +80,7 @@ def _prepare(text: str) -> str:
     return t
 
 
-def _mass_container(m: re.Match) -> str:
+def _mass_container(m: re.Match[str]) -> str:
     """"a bottle of wine" -> "wine bottle" when the table knows it, else "bottle" (the contents are not modelled)."""
     container, contents = m.group(1), m.group(2)
     found = lookup(f"{contents} {container}")
@@ -91,11 +94,6 @@ IRREGULAR = {"knives": "knife", "glasses": "glass", "dishes": "dish", "boxes": "
 
 def _singular(text: str) -> str:
     return " ".join(IRREGULAR.get(w) or (w[:-2] if w.endswith("sses") else singular(w)) for w in text.split())
-
-
-def known(label: str) -> bool:
-    """True when the size table knows the label (an exact, alias or close match)."""
-    return lookup(label) is not None  # fuzzy matches are typos only (size_table.is_typo)
 
 
 def _match_noun(words: list[str]) -> tuple[str, int, int] | None:
@@ -126,13 +124,13 @@ def _phrase(words: list[str]) -> Phrase | None:
             sup = Phrase("support", support=kind)
             sup.region = str(height) if height is not None else None
             return sup
-    count, counted, color, size, material = 1, False, "", "", ""
+    count, counted, vague, color, size, material = 1, False, False, "", "", ""
     rest: list[str] = []
     for i, w in enumerate(words):
         if w.isdigit() and not counted:
             count, counted = max(1, min(int(w), MAX_COUNT)), True
         elif w in NUMBERS and not counted and w not in ("one",) + (() if i + 1 < len(words) else ("few",)):
-            count, counted = NUMBERS[w], True
+            count, counted, vague = NUMBERS[w], True, w in VAGUE
         elif w == "one" and not counted:
             count, counted = 1, True
         elif w in COLORS and i + 1 < len(words):
@@ -160,6 +158,8 @@ def _phrase(words: list[str]) -> Phrase | None:
     plural = _singular(head) != head
     if plural and not counted:
         count = PLURAL_COUNT
+    if vague:  # "some apples": several, not a number said; "some cheese": a quantity of it, one object
+        counted, count = False, count if plural else 1
     spec = ObjectSpec(id=label, label=label, name=label,
                       count=count, color=color, size=size, material=material)
     each = words[0] in ("each", "every")
@@ -190,9 +190,12 @@ def _items(tokens: list[str]) -> list[str | Phrase]:
 
     def flush() -> None:
         if words:
-            # "my kitchen counter has a cutting board": a support word followed by an object: two phrases
-            cut = next((i + 1 for i, w in enumerate(words) if w in SUPPORTS and any(v not in FILLER and v not in NUMBERS for v in words[i + 1:])), None)
-            for part in ([words[:cut], words[cut:]] if cut else [words]):
+            # two phrases: "my kitchen counter has a cutting board" (a support word, then an object), "behind the
+            # kettle a jar" (an article after a known noun starts the next phrase)
+            cuts = {i + 1 for i, w in enumerate(words) if w in SUPPORTS and any(v not in FILLER and v not in NUMBERS for v in words[i + 1:])}
+            cuts |= {i for i, w in enumerate(words) if i > 0 and w in ("a", "an", "the") and _match_noun(words[:i]) is not None}
+            bounds = [0, *sorted(cuts), len(words)]
+            for part in (words[lo:hi] for lo, hi in zip(bounds, bounds[1:])):
                 p = _phrase(part)
                 if p is not None:
                     items.append(p)
@@ -219,7 +222,7 @@ def parse_scene(text: str) -> SceneSpec:
         if heading and len(b.spec.objects) > before:
             _expand_heading(b, heading, b.spec.objects[before:])
         heading = [o for o in b.spec.objects[before:] if o.id in b.uncounted] if end == ":" else []
-    _finish(b)
+    b.finish()
     return b.spec
 
 
@@ -270,6 +273,8 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
                 it.spec.stacked |= stack_next and it.spec.count > 1
                 it.spec.row |= row_next and it.spec.count > 1
                 stack_next = row_next = False
+                if st.region is not None:
+                    it.spec.position, st.region = st.region, None
                 if st.closed:
                     st.group, st.closed = [], False
                 st.group.append(it)
@@ -292,14 +297,21 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
                 objs[0].spec.stacked = True  # type: ignore[union-attr]
             for lower, upper in zip(objs, objs[1:]):  # "a plate and a bowl stacked": the bowl on the plate
                 b.relate([upper], "on", lower)
-            if len(objs) == 1 and objs[0].spec.count == 1 and isinstance(nxt, str) and nxt == "on":
+            if len(objs) == 1 and objs[0].spec.count == 1 and isinstance(nxt, str) and nxt == "on":  # type: ignore[union-attr]
                 pass  # "stacked on the box": the relation follows
         elif marker == "ROW":
             for p in st.group:
                 if p.spec is not None and p.spec.count > 1:
                     p.spec.row = True
-        elif marker == "REGION":
-            pass  # "on the left": a place on the support, not kept offline
+        elif marker.startswith("REGION_"):  # "a toolbox on the left": where on its support
+            if st.group and not st.closed:
+                for p in st.group:
+                    p.spec.position = REGIONS[marker[7:]]  # type: ignore[union-attr]
+                st.closed = True
+            else:
+                st.region = REGIONS[marker[7:]]
+        elif marker == "ALSO":  # "a bowl holding lemons, plus a salt shaker": the list of contents ends
+            st.listing, st.closed = False, True
         elif marker == "with":
             prev = next((q for q in reversed(items[:i]) if q != "and"), None)  # "a stack of plates, with ..."
             if isinstance(prev, Phrase) and prev.kind != "pronoun":
@@ -345,8 +357,9 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
             owner = st.owner if st.owner is not None and st.owner.kind == "object" else None
             if owner is not None and target is not owner and owner.spec is not None:  # contents follow their container
                 subjects = [owner if p.spec is not None and owner.spec.id in (p.spec.inside, p.spec.on) else p for p in subjects]
-            if not st.group:
-                st.pending = (marker, target)
+            after = items[i + 2] if i + 2 < len(items) else None  # "..., and behind the kettle a jar": said before its subject
+            if not st.group or (items[i - 1] == "and" and isinstance(after, Phrase) and after.kind == "object"):
+                st.group, st.closed, st.pending = [], False, (marker, target)
                 if target.kind == "object" and target is nxt:
                     st.topic = target
             else:
@@ -360,23 +373,3 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
             continue
         i += 1
     return st.topic
-
-
-def _finish(b: Builder) -> None:
-    """Default supports, names, and warnings for what is not in the size table."""
-    spec = b.spec
-    elevated = [s for s in b.support_order if s != "floor"]
-    if not spec.supports or (elevated == [] and any(o.on is None and o.inside is None for o in spec.objects) and "floor" not in b.support_order):
-        b.add_support(Phrase("support", support="table"))
-    default = elevated[0] if elevated else ("floor" if "floor" in b.support_order else "table")
-    for o in [o for o in spec.objects if (o.inside or o.id in b.contents) and not known(o.label)]:  # "a vase with
-        where = o.inside or o.on  # flowers", "a box of screws": contents the table does not know are not modelled
-        spec.warnings.append(f"{o.label!r}{' in the ' + where.replace('_', ' ') if where else ''} is not in the size table: left out")
-        spec.objects.remove(o)
-    for o in spec.objects:
-        if o.on is None and o.inside is None:
-            o.on = default
-        if not known(o.label):
-            spec.warnings.append(f"{o.label!r} is not in the size table: a box of default size stands in")
-    used = {o.on for o in spec.objects} | {o.inside for o in spec.objects}
-    spec.supports = [s for s in spec.supports if s.id in used] or spec.supports[:1]

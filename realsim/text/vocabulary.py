@@ -7,6 +7,7 @@ NUMBERS = {"a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "three": 3, "four":
            "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "couple": 2, "pair": 2, "another": 1, "dozen": 12, "few": 3,
            "several": 4, "some": 3, "both": 2, "bunch": 4, "handful": 4, "lots": 5, "many": 5}
 PLURAL_COUNT = 3  # "oranges", "some apples": several
+VAGUE = {"some", "several", "few", "lots", "many", "bunch", "handful"}  # quantities, not numbers said
 COLORS = {
     "red": (0.8, 0.1, 0.1), "green": (0.15, 0.6, 0.2), "blue": (0.15, 0.3, 0.8), "yellow": (0.95, 0.85, 0.15),
     "orange": (0.95, 0.5, 0.1), "purple": (0.5, 0.2, 0.6), "pink": (0.95, 0.55, 0.7), "white": (0.95, 0.95, 0.95),
@@ -38,7 +39,7 @@ PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
 # Marker patterns, longest first; each becomes a token "§<kind>§".
 MARKERS: list[tuple[str, str]] = [
     (r"stacked (?:up )?on top of each other|stacked up|(?:stacked|piled) on each other|on top of each other|on top of one another|stacked|piled up|piled", "STACKED"),
-    (r"\b(?:a |one )?(?:stack|pile|tower|heap) of", "STACKOF"),
+    (r"\b(?:a |one )?(?:stack|pile|tower|heap) of|(?:stack|pile)(?: up)?(?= (?:\d+|two|three|four|five|six|some|several|few|the|all|my) )", "STACKOF"),
     (r"\b(?:a |one )?(?:row|line) of", "ROWOF"),
     (r"in a (?:row|line)|lined up|side by side|in a neat row", "ROW"),
     (r"(?:in|at|on|to|near) the (?:very )?(?:middle|centre|center|corner|edge|far end|near end|back|front)(?: part)? of", "on"),
@@ -47,17 +48,24 @@ MARKERS: list[tuple[str, str]] = [
     (r"in front of", "in_front_of"),
     (r"behind|in back of", "behind"),
     (r"next to|beside|besides|near|nearby|alongside|close to|by", "next_to"),
-    (r"(?:on|at|to) the (?:left|right|back|front|far end|near end)(?: side)?(?: of it)?", "REGION"),
+    (r"(?:on|at|to) the left(?: hand)?(?: side)?", "REGION_left"),
+    (r"(?:on|at|to) the right(?: hand)?(?: side)?", "REGION_right"),
+    (r"(?:on|at|in|to) the (?:back|far end|rear)(?: side)?", "REGION_back"),
+    (r"(?:on|at|in|to) the (?:front|near end)(?: side)?", "REGION_front"),
+    (r"(?:in|at) the (?:very )?(?:middle|centre|center)", "REGION_middle"),
     (r"full of|filled with|containing|holding|that holds|which holds|that has|has|have|holds|with", "with"),
     (r"inside of|inside|into|within|in", "in"),
     (r"on top of|ontop of|on to|onto|on|upon|atop|on top", "on"),
     (r"under|underneath|beneath|below", "under"),
     (r"of", "of"),
-    (r"and|plus|as well as|also|along with|then|together with|[,]|there is|there are|i've got|i got|is|are|"
+    (r"plus|as well as|also", "ALSO"),
+    (r"and|along with|then|together with|[,]|there is|there are|i've got|i got|is|are|"
      r"sits|stands|lies|sitting|standing|lying|placed|resting|rests|stand|sit|lie", "and"),
     (r"[.;!?]", "SENT"),
     (r"[:]", "SENT:"),
 ]
+# where on its support a "REGION_<name>" marker puts an object: (x, y) in [0, 1], left to right, front to back
+REGIONS = {"left": (0.2, 0.5), "right": (0.8, 0.5), "back": (0.5, 0.8), "front": (0.5, 0.2), "middle": (0.5, 0.5)}
 REL_MARKERS = {"on", "in", "next_to", "left_of", "right_of", "behind", "in_front_of", "under"}
 
 
