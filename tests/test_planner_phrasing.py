@@ -191,3 +191,14 @@ ARRANGEMENTS: list[tuple[str, list[str]]] = [
 @pytest.mark.parametrize(("sentence", "lines"), ARRANGEMENTS, ids=[p[0][:40] for p in ARRANGEMENTS])
 def test_order_each_other_sides_and_heights(sentence: str, lines: list[str]) -> None:
     assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("put the square green thing in the bowl", ["place_in('obj5_cube', 'obj6_bowl')"]),
+    ("grab the cylindrical object on the right", ["grasp('obj2_soda_can')"]),
+])
+def test_shape_words_select_by_what_a_thing_is(sentence: str, lines: list[str]) -> None:
+    """A can is round, a cube square: shape words narrow like a kind; the rest is still asked."""
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("pick up the round red thing", CLUTTER)

@@ -44,7 +44,16 @@ KINDS: dict[str, tuple[str, ...]] = {
     "dish": ("plate", "bowl", "mug", "cup", "glass", "dish"),
     "container": ("bowl", "mug", "cup", "basket", "bin", "box", "pot", "jar", "pitcher", "glass", "tray", "bucket"),
     "drink": ("can", "bottle", "cup", "mug", "glass"),
+    # shapes, from what a thing is called (a can is round, a carton square)
+    "round": ("can", "tin", "cylinder", "ball", "sphere", "orange", "apple", "lemon", "lime", "peach", "plum", "tomato", "bowl", "plate",
+              "mug", "cup", "bottle", "jar", "glass", "pot", "bucket", "disk", "disc"),
+    "cylinder": ("can", "tin", "cylinder", "bottle", "mug", "cup", "jar", "glass", "pot", "marker", "pen", "tube"),
+    "square": ("box", "cube", "block", "brick", "carton", "package", "parcel", "crate"),
+    "flat": ("plate", "tray", "book", "board", "lid", "coaster", "sheet", "card", "disk", "disc"),
 }
+for _shape, _kind in (("cylindrical", "cylinder"), ("boxy", "square"), ("rectangular", "square"), ("cubic", "square"),
+                      ("cuboid", "square"), ("spherical", "round"), ("circular", "round")):
+    KINDS[_shape] = KINDS[_kind]
 # the colours a kind of object usually has, for "the yellow fruit" when the capture gives no colour
 TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),
