@@ -13,7 +13,7 @@ class ArmParams:
 
     check_every: int = 50  # physics steps between divergence checks
     finger_rest_speed: float = 1e-3  # rad/s: the closing fingers have stopped
-    holding_min_opening: float = 0.002  # m between the fingers while holding (not closed on nothing)
+    holding_min_opening: float = 0.0  # m between the fingers while holding (not closed on nothing; a thin part squeezed hard leaves under 2 mm)
     open_min: float = 0.07  # m an open gripper reaches
     default_friction: float = 0.5  # when an object has no geoms
     default_grip_force: float = 70.0  # N when the gripper's force range is unset
@@ -30,6 +30,7 @@ class MotionParams:
     transit_drops: tuple[float, ...] = (0.04, 0.08)  # m below the safe height also tried
     swing_steps: int = 10  # joint-space waypoints of a swing across
     swing_dip: float = 0.02  # m a swing may dip below the lowest traverse
+    joint_check_step: float = 0.05  # rad between checked postures of a move in joint space
 
 
 @dataclass(frozen=True)
@@ -77,6 +78,7 @@ class PlaceParams:
     down_radius: float = 0.30  # m around the object searched (place_down)
     down_step: float = 0.03  # m between search rings; six spots per step of radius
     table_tol: float = 0.002  # m: a spot on the static surface
+    support_fraction: float = 0.5  # of the way from the object's centre to its footprint's edge that must lie over the support
 
 
 @dataclass(frozen=True)

@@ -1,8 +1,8 @@
 """Where to release a held object: spots within a target's free area, hand yaws and heights.
 
-A place that cannot reach its first release pose tries what a person would: another spot
-within the container's cavity or the support's top (nearer the robot first), the hand turned
-about the vertical, a slightly higher release. These functions only propose; the robot checks
+A place that cannot reach its first release pose tries what a person would: the hand turned
+about the vertical, a slightly higher release, another spot within the container's cavity or the
+support's top (nearer the robot first). These functions only propose; the robot checks
 each pose with IK and a planned path before moving.
 """
 
@@ -21,7 +21,7 @@ class ReleaseParams:
     ring: int = 6  # spots around the centre of the free area
     yaws: tuple[float, ...] = (0.0, 0.5, -0.5, 1.0, -1.0, np.pi / 2)  # rad the hand turns about the vertical
     drops: tuple[float, ...] = (0.01, 0.03, 0.05)  # m above the surface at release
-    max_poses: int = 40
+    max_poses: int = 48  # the first spot's yaws and heights and three yaws at each of two rings of six
 
 
 def footprint_radius(obj_pts: np.ndarray) -> float:
@@ -29,6 +29,18 @@ def footprint_radius(obj_pts: np.ndarray) -> float:
     xy = obj_pts[:, :2]
     c = (xy.min(axis=0) + xy.max(axis=0)) / 2
     return float(np.linalg.norm(xy - c, axis=1).max())
+
+
+def footprint_ring(obj_pts: np.ndarray, n: int = 8, frac: float = 0.5) -> np.ndarray:
+    """(n + 1, 2) offsets from the object's footprint centre: the centre and ``frac`` of the way
+    to the footprint's edge in ``n`` directions. A release spot whose support is level under all
+    of them keeps the object's centre of mass well over its support (not off the table edge)."""
+    xy = obj_pts[:, :2] - (obj_pts[:, :2].min(axis=0) + obj_pts[:, :2].max(axis=0)) / 2
+    ang = 2 * np.pi * np.arange(n) / n
+    dirs = np.column_stack([np.cos(ang), np.sin(ang)])
+    off = np.angle(np.exp(1j * (np.arctan2(xy[:, 1], xy[:, 0])[:, None] - ang[None, :])))  # each point's angle from each direction
+    dist = np.where(np.abs(off) <= min(np.pi / n, 0.1), np.linalg.norm(xy, axis=1)[:, None], 0.0)  # the footprint's radius along each direction
+    return np.vstack([np.zeros(2), frac * dist.max(axis=0)[:, None] * dirs])
 
 
 def cavity_centre(container_pts: np.ndarray) -> tuple[np.ndarray, float]:
@@ -71,12 +83,10 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
 
 
 def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams(), limit: bool = True) -> list[tuple[np.ndarray, float, float]]:
-    """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, then
-    the other spots, then higher releases; at most ``params.max_poses`` with ``limit``."""
-    out: list[tuple[np.ndarray, float, float]] = []
+    """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, higher
+    releases there, then the other spots; at most ``params.max_poses`` with ``limit``."""
     first = params.drops[0]
-    for k, xy in enumerate(spot_list):
-        yaws = params.yaws if k == 0 else params.yaws[:3]
-        out += [(xy, yaw, first) for yaw in yaws]
+    out = [(spot_list[0], yaw, first) for yaw in params.yaws]
     out += [(spot_list[0], yaw, drop) for drop in params.drops[1:] for yaw in params.yaws[:3]]
+    out += [(xy, yaw, first) for xy in spot_list[1:] for yaw in params.yaws[:3]]
     return out[: params.max_poses] if limit else out

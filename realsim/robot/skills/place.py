@@ -7,7 +7,7 @@ from numpy.typing import ArrayLike
 
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
-from realsim.robot.placing import cavity_centre, footprint_radius, spots, top_area
+from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, spots, top_area
 from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult
 from realsim.robot.skills.release import Keepout, Release
@@ -39,12 +39,14 @@ class PlaceSkills(Release):
         return self._run("place", body, max_sim_time)
 
     def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
-        """Put the held ``obj`` on top of body ``target`` (spots within its top face, clear of what
-        already lies there)."""
+        """Put the held ``obj`` on top of body ``target`` (spots within its top face that keep the
+        object's centre well inside it, clear of what already lies there)."""
+        pl = self.params.place
+
         def body() -> ActionResult:
             tp = self.object_points(target)
             centre, r_in = top_area(tp)
-            near = spots(centre, r_in, self.base_pos[:2], self.release.ring)
+            near = spots(centre, max(r_in - footprint_radius(self.object_points(obj)) * pl.support_fraction, 0.0), self.base_pos[:2], self.release.ring)
             return self._place(obj, near, np.nan, "place_on", lambda: relations.on(
                 self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target),
                 Keepout(self._others(obj, {target}, above=float(tp[:, 2].max()) - self.params.place.on_top_margin), soft=True))
@@ -97,7 +99,9 @@ class PlaceSkills(Release):
                         cands.append((extra + abs(lat), float(np.linalg.norm(xy - self.base_pos[:2])) if side == "next" else 0.0, xy))
             cands.sort(key=lambda t: (t[0], t[1]))
             level = float(r[:, 2].min())
-            near = [xy for _, _, xy in cands if abs(self.geometry.surface_below(xy, level + pl.level_probe, exclude=obj) - level) < pl.level_tol]
+            ring = footprint_ring(o, frac=pl.support_fraction)
+            near = [xy for _, _, xy in cands if all(abs(self.geometry.surface_below(xy + off, level + pl.level_probe, exclude=obj) - level) < pl.level_tol
+                                                    for off in ring)]
             if not near:
                 return ActionResult("place_beside", False, f"no spot {'next to' if side == 'next' else _SIDE_WORDS[side]} {ref} "
                                     "on its surface (table edge)")
@@ -137,8 +141,9 @@ class PlaceSkills(Release):
             cands = [start + rr * np.array([np.cos(a), np.sin(a)]) for rr in np.arange(0.0, pl.down_radius + pl.down_step / 3, pl.down_step)
                      for a in np.linspace(0, 2 * np.pi, max(1, int(round(rr / pl.down_step)) * 6), endpoint=False)]
             top = float(o[:, 2].max())
-            near = [xy for xy in cands if self.geometry.surface_below(xy, top, exclude=obj)
-                    <= self.geometry.surface_below(xy, top, exclude=obj, static_only=True) + pl.table_tol]
+            ring = footprint_ring(o, frac=pl.support_fraction)
+            near = [xy for xy in cands if all(self.geometry.surface_below(xy + off, top, exclude=obj)
+                                              <= self.geometry.surface_below(xy + off, top, exclude=obj, static_only=True) + pl.table_tol for off in ring)]
             if not near:
                 return ActionResult("place_down", False, f"no free table surface within {pl.down_radius * 100:.0f} cm of {obj}")
             return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)), Keepout(self._others(obj)))
