@@ -181,6 +181,8 @@ ARRANGEMENTS: list[tuple[str, list[str]]] = [
     ("slide the strawberry towards the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),  # a way, not into it
     # a lift has one height; put back where it was found
     ("raise the blue cube by 5 cm", ["grasp('obj4_cube')"]),
+    # "the other one" in a list: the other of those named before it
+    ("drop the right can and the other one into the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')", "place_in('obj1_soda_can', 'obj6_bowl')"]),
     # a count with a superlative takes that many, ranked
     ("put the two largest cubes next to the bowl", ["place_beside('obj4_cube', 'obj6_bowl', 'next')", "place_beside('obj3_cube', 'obj6_bowl', 'next')"]),
     ("drop the smallest two cubes in the bowl", ["place_in('obj5_cube', 'obj6_bowl')", "place_in('obj3_cube', 'obj6_bowl')"]),

@@ -195,8 +195,8 @@ class Resolver:
         parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
         if len(parts) > 1 and allow_plural:
             out: list[ObjectInfo] = []
-            for p in parts:
-                for o in self.resolve(p, ctx, want=want, exclude=exclude, allow_plural=True):
+            for p in parts:  # "the left can and the other one": the other of those named before it
+                for o in self.resolve(p, Context(out) if out and re.match(r"(?:the )?other\b", p) else ctx, want=want, exclude=exclude):
                     if o not in out:
                         out.append(o)
             return out
