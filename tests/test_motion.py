@@ -9,6 +9,7 @@ from test_robot import box_object, build, loaded
 
 from realsim.robot import Robot
 from realsim.robot.grasps import frame_from, rotate_about
+from realsim.robot.motion import PathBlocked
 from realsim.robot.result import PlanFailure
 from realsim.robot.transit import TransitParams, plan_joint_path
 from realsim.scene import Scene
@@ -77,14 +78,25 @@ def test_joint_planner_goes_around_a_blocked_region_deterministically() -> None:
         plan_joint_path(q0, q1, lower, upper, lambda q: not (abs(q[1]) < 0.3), seed=3, params=TransitParams(max_checks=300))
 
 
-def test_planned_transit_keeps_the_arm_off_the_box(tall_scene: Scene) -> None:
+def _facing(d: np.ndarray, tilt: float) -> np.ndarray:
+    """A closed hand leaning back by ``tilt`` with its fingertips leading along ``d``."""
+    return rotate_about(np.array([d[1], -d[0], 0.0]), tilt) @ frame_from(np.array([0, 0, -1.0]), np.array([-d[1], d[0], 0.0]))
+
+
+def test_planned_moves_keep_the_arm_off_the_box(tall_scene: Scene) -> None:
     model, data = loaded(tall_scene)
     robot = Robot(model, data)
-    rot = rotate_about(np.array([0.0, -1.0, 0.0]), 0.8) @ frame_from(np.array([0, 0, -1.0]), np.array([0, 1.0, 0]))
-    goal = np.array([-0.02, 0.0, TCP_Z])  # low beside the tall box
     b = model.body("tall_box").id
     start = data.xpos[b].copy()
-    robot._plan_transit(goal, rot, set())
-    tcp, _ = robot.tcp_pose()
-    assert np.linalg.norm(tcp - goal) < 0.01
-    assert np.linalg.norm(data.xpos[b] - start) < 0.002  # not touched on the way
+    near = np.array([-0.02, 0.0, TCP_Z])  # low beside the tall box
+    robot._plan_transit(near, _facing(np.array([1.0, 0, 0]), 0.8), set())
+    assert np.linalg.norm(robot.tcp_pose()[0] - near) < 0.01
+    far = np.array([0.12, 0.0, TCP_Z])  # low on its other side: straight across in joint space runs through it
+    q_far = robot._ik_clear(far, _facing(np.array([-1.0, 0, 0]), 0.8), data.ctrl[robot.act].copy())
+    assert q_far.converged
+    q0 = data.ctrl[robot.act].copy()
+    with pytest.raises(PathBlocked):
+        robot._check_clear([q0 + f * (q_far.q - q0) for f in np.linspace(0.02, 1.0, 50)])
+    robot._move_joints(q_far.q)
+    assert np.linalg.norm(robot.tcp_pose()[0] - far) < 0.01
+    assert np.linalg.norm(data.xpos[b] - start) < 0.002  # never touched on the way

@@ -161,6 +161,25 @@ class Motion(WorldQueries):
         except PlanFailure as exc:
             raise PlanFailure(f"{blocked or last}; {exc}") from None
 
+    def _move_joints(self, q_goal: np.ndarray, ignore: set[str] | frozenset[str] = frozenset()) -> None:
+        """Straight to arm joints ``q_goal`` in joint space when that is clear (checked every
+        ``joint_check_step``), else along a planned path; raises PlanFailure when neither is."""
+        q0, q_goal = self.data.ctrl[self.act].copy(), np.asarray(q_goal, float)
+        n = max(1, int(np.ceil(np.abs(q_goal - q0).max() / self.params.motion.joint_check_step)))
+        try:
+            self._check_clear([q0 + f * (q_goal - q0) for f in np.linspace(1 / n, 1.0, n)], ignore=ignore)
+        except PathBlocked:
+            self._follow_corners(self._planned(q0, q_goal, ignore))
+            return
+        self._follow([q_goal])
+
+    def _planned(self, q0: np.ndarray, q_goal: np.ndarray, ignore: set[str] | frozenset[str]) -> list[np.ndarray]:
+        """Corners of a sampling-based joint path on which no link, nor the held object, touches an
+        object (``ignore`` aside) and the forearm and wrist stay off the table."""
+        carry = self._carry()
+        return plan_joint_path(q0, q_goal, self.ik.lower, self.ik.upper, lambda q: not self._touches(q, ignore, carry=carry, world=True),
+                               seed=self.seed)
+
     @functools.cached_property
     def _far_links(self) -> set[int]:
         """The arm's bodies from link 3 on: they never need to touch the table."""
@@ -168,19 +187,15 @@ class Motion(WorldQueries):
         return {self.model.body(n).id for n in names if mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, n) >= 0}
 
     def _plan_transit(self, end: np.ndarray, rot_end: np.ndarray, ignore: set[str], q_goal: np.ndarray | None = None) -> None:
-        """Move to the tcp pose (``end``, ``rot_end``) along a sampling-based joint-space path on which
-        no link, nor the held object, touches an object (``ignore`` aside) and the forearm and wrist
-        stay off the table; raises PlanFailure."""
+        """Move to the tcp pose (``end``, ``rot_end``) along a planned joint path (:meth:`_planned`)
+        to ``q_goal`` (default: a clear IK posture); raises PlanFailure."""
         q0 = self.data.ctrl[self.act].copy()
         if q_goal is None:
             goal = self._ik_clear(end, rot_end, q0, ignore)
             if not goal.converged:
                 raise PlanFailure(f"target {np.round(end, 3).tolist()} unreachable ({goal.reason})")
             q_goal = goal.q
-        carry = self._carry()
-        corners = plan_joint_path(q0, q_goal, self.ik.lower, self.ik.upper, lambda q: not self._touches(q, ignore, carry=carry, world=True),
-                                  seed=self.seed)
-        self._follow_corners(corners)
+        self._follow_corners(self._planned(q0, q_goal, ignore))
 
     def _carry(self) -> tuple[np.ndarray, np.ndarray] | None:
         """The held object's pose in the tcp frame (position, rotation), None when nothing is held."""

@@ -17,7 +17,7 @@ class BasicSkills(Motion):
     """go_home, move_ee_to, open_gripper, close_gripper."""
 
     def go_home(self, max_sim_time: float | None = None) -> ActionResult:
-        """Back to the home posture (lifting first if the hand is low)."""
+        """Back to the home posture (lifting first if the hand is low, around what is in the way)."""
         def body() -> ActionResult:
             pos, _ = self.tcp_pose()
             home_pos, _ = self.ik.fk(np.array(HOME_ARM))
@@ -26,7 +26,10 @@ class BasicSkills(Motion):
                     self._straight(np.array([pos[0], pos[1], home_pos[2]]))
                 except PlanFailure:
                     pass
-            self._follow([np.array(HOME_ARM)])
+            try:  # around what is in the way; the direct joint move when no clear path is found
+                self._move_joints(np.array(HOME_ARM), ignore={self.held} if self.held else set())
+            except PlanFailure:
+                self._follow([np.array(HOME_ARM)])
             err = float(np.abs(self.data.qpos[self.qadr] - np.array(HOME_ARM)).max())
             ok = err < self.params.arm.home_tol
             return ActionResult("go_home", ok, "" if ok else f"joint error {err:.3f} rad", values={"joint_error": err})
