@@ -89,3 +89,20 @@ def test_the_rule_planner_refuses_an_unknown_object_naming_the_scene() -> None:
     with pytest.raises(InputError) as err:
         RulePlanner().plan("put the teapot in the bowl", OBJECTS)
     assert "obj1_mug" in str(err.value) and "obj2_bowl" in str(err.value)
+
+
+def test_a_typed_program_keeps_the_same_budgets() -> None:
+    import time
+
+    from realsim.planner.sandbox import Limits
+
+    def slow(obj: str) -> bool:
+        time.sleep(0.05)
+        return True
+
+    program = Program(tuple(Call("grasp", (n,)) for n in NAMES[:4]))
+    report = sandbox.run(program, {"grasp": slow}, limits=Limits(max_wall_seconds=0.12))
+    assert report.error is not None and "the run took longer than 0.12 s" in report.error
+    assert 2 <= len(report.calls) < 4
+    with pytest.raises(sandbox.SandboxViolation, match="more than 2 primitive calls"):
+        sandbox.run(program, {"grasp": slow}, limits=Limits(max_calls=2))

@@ -217,8 +217,18 @@ class Runner:
 
     def _on_line(self, frame: FrameType) -> None:
         lim = self.limits
-        self.report.steps += 1
         line = frame.f_lineno
+        self._step(line)
+        for name, value in frame.f_locals.items():
+            if isinstance(value, (str, list, tuple)) and len(value) > lim.max_len:
+                raise _Stop(f"line {line}: {name!r} holds {len(value)} elements (at most {lim.max_len})")
+            if isinstance(value, int) and value.bit_length() > lim.max_int_bits:
+                raise _Stop(f"line {line}: {name!r} is too large an integer (at most {lim.max_int_bits} bits)")
+
+    def _step(self, line: int) -> None:
+        """Count one executed line against the step and time budgets."""
+        lim = self.limits
+        self.report.steps += 1
         if self.report.steps > lim.max_steps:
             raise _Stop(f"line {line}: more than {lim.max_steps} steps executed (runaway loop?)")
         now = time.monotonic()
@@ -226,11 +236,6 @@ class Runner:
             raise _Stop(f"line {line}: the program ran longer than {lim.max_seconds:g} s (runaway loop?)")
         if lim.max_wall_seconds is not None and now - self.start > lim.max_wall_seconds:
             raise _Stop(f"line {line}: the run took longer than {lim.max_wall_seconds:g} s")
-        for name, value in frame.f_locals.items():
-            if isinstance(value, (str, list, tuple)) and len(value) > lim.max_len:
-                raise _Stop(f"line {line}: {name!r} holds {len(value)} elements (at most {lim.max_len})")
-            if isinstance(value, int) and value.bit_length() > lim.max_int_bits:
-                raise _Stop(f"line {line}: {name!r} is too large an integer (at most {lim.max_int_bits} bits)")
 
     def run_calls(self, calls: Iterable[tuple[int, str, tuple[Any, ...]]]) -> ExecutionReport:
         """Make ``(line, name, args)`` calls in order through the same wrapped primitives, budgets
@@ -239,6 +244,7 @@ class Runner:
         try:
             for line, name, args in calls:
                 self.line = line
+                self._step(line)
                 self.wrap(name, self.funcs[name])(*args)
         except _Stop as stop:
             self.report.error = str(stop)
