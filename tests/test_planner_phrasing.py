@@ -204,3 +204,11 @@ def test_shape_words_select_by_what_a_thing_is(sentence: str, lines: list[str]) 
     assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("pick up the round red thing", CLUTTER)
+
+
+@pytest.mark.parametrize("sentence", ["put a soda can in the bowl", "drop one of the cans into the bowl", "put either can in the bowl"])
+def test_any_one_will_do_for_an_indefinite_reference(sentence: str) -> None:
+    """"a can", "one of the cans": one can (the nearest to the robot), never both and never a refusal."""
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == ["place_in('obj1_soda_can', 'obj6_bowl')"]
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("put the soda can in the bowl", CLUTTER)  # "the" asks for one the person has in mind

@@ -44,6 +44,11 @@ def _volume(o: ObjectInfo, word: str) -> float:
     return float(np.prod(o.size))
 
 
+def left_order(i: int, n: int) -> str:
+    """The place of the ``i``-th of ``n`` objects counted from the robot's left: leftmost, second from the left..., rightmost."""
+    return "leftmost" if i == 0 else "rightmost" if i == n - 1 else f"{nth(i + 1)} from the left"
+
+
 def ranked_by_size(objs: list[ObjectInfo], word: str) -> list[ObjectInfo]:
     """``objs`` from the most to the least ``word`` (tall: height; long: extent; else volume):
     "the biggest" is the first, "the two smallest" the first two by "smallest"."""

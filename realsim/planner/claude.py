@@ -10,13 +10,17 @@ when it reads the command, else there are none ("goal unknown").
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from realsim import llm
 from realsim.errors import InputError, RealsimError
 from realsim.planner import primitives, rules, sandbox
+from realsim.planner.attributes import left_order
 from realsim.planner.goals import Goal
-from realsim.planner.reference import scene_vocabulary
+from realsim.planner.reference import Resolver
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.resources import load_prompt
 
@@ -104,3 +108,37 @@ def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | Non
         if notes is not None:
             notes.append(f"goal unknown (rule parser: {exc})")
         return []
+
+
+def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> list[str]:
+    """One line per object in the words the rule planner reads: body name, colour, label, other
+    names, kinds, and its place among objects of the same label (leftmost, larger...), then its
+    box in the world frame and its affordances."""
+    res = Resolver(objects, robot_yaw)
+    lines = []
+    for o in objects:
+        same = [x for x in objects if x.label == o.label]
+        words = []
+        if len(same) > 1:
+            ranked = sorted(same, key=lambda x: -res.robot_xy(x)[1])
+            i = ranked.index(o)
+            words.append(left_order(i, len(ranked)))
+            words.append(f"{'largest' if o is max(same, key=lambda x: float(np.prod(x.size))) else 'smallest' if o is min(same, key=lambda x: float(np.prod(x.size))) else 'middle-sized'}"
+                         f" of {len(same)} {o.label}s")
+        f, l = res.robot_xy(o)
+        kinds = sorted(res.kinds_of(o) - {"container"})
+        x, y, z = o.position
+        sx, sy, sz = o.size
+        line = f"{o.name}: {' '.join(w for w in (res.color_of(o), o.label) if w)}"
+        if o.aliases:
+            line += f" (also: {', '.join(o.aliases)})"
+        if kinds:
+            line += f" [kind: {', '.join(kinds)}]"
+        if words:
+            line += f" [{'; '.join(words)}]"
+        line += (f" at ({x:.3f}, {y:.3f}, {z:.3f}) m, size {sx:.3f} x {sy:.3f} x {sz:.3f} m; "
+                 f"robot frame (turned with the robot, world origin): forward {f:+.2f} m, left {l:+.2f} m")
+        if o.affordances:
+            line += f" [{', '.join(o.affordances)}]"
+        lines.append(line)
+    return lines

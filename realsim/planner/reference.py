@@ -21,7 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import relations
-from realsim.planner.attributes import colors_of, nth, pts, ranked_by_size, relation_holds
+from realsim.planner.attributes import colors_of, left_order, pts, ranked_by_size, relation_holds
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
@@ -172,6 +172,10 @@ class Resolver:
         """The objects ``phrase`` names (one, unless the phrase is plural or a quantity); with
         ``loose`` an ambiguous phrase gives all its candidates instead of an error."""
         text = norm(phrase)
+        m = re.fullmatch(r"(?:an?|any|either|(?:any )?one of(?: the| those| these)?|any of(?: the| those| these)?) (.+)", text)
+        if m and not re.search(r"\band\b|,", text):  # "a can", "one of the cans": any one will do, the nearest
+            pool = self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True)
+            return [min(pool, key=lambda o: (round(self.robot_xy(o)[0], 3), -self.robot_xy(o)[1]))]
         text = re.sub(r"^(?:(?:the|a|an|my|your|our)\s+)+", "", text).strip()
         text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
         if not text:
@@ -353,40 +357,6 @@ class Resolver:
         ranked = sorted(objs, key=lambda o: -self.robot_xy(o)[1])
         out = []
         for i, o in enumerate(ranked):
-            where = "leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{nth(i + 1)} from the left"
+            where = left_order(i, len(ranked))
             out.append(f"{o.name} ({' '.join(w for w in (self.color_of(o), o.label) if w)}, {where})")
         return out
-
-
-def scene_vocabulary(objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> list[str]:
-    """One line per object in the words the rule planner reads: body name, colour, label, other
-    names, kinds, and its place among objects of the same label (leftmost, larger...), then its
-    box in the world frame and its affordances."""
-    res = Resolver(objects, robot_yaw)
-    lines = []
-    for o in objects:
-        same = [x for x in objects if x.label == o.label]
-        words = []
-        if len(same) > 1:
-            ranked = sorted(same, key=lambda x: -res.robot_xy(x)[1])
-            i = ranked.index(o)
-            words.append("leftmost" if i == 0 else "rightmost" if i == len(ranked) - 1 else f"{nth(i + 1)} from the left")
-            words.append(f"{'largest' if o is max(same, key=lambda x: float(np.prod(x.size))) else 'smallest' if o is min(same, key=lambda x: float(np.prod(x.size))) else 'middle-sized'}"
-                         f" of {len(same)} {o.label}s")
-        f, l = res.robot_xy(o)
-        kinds = sorted(res.kinds_of(o) - {"container"})
-        x, y, z = o.position
-        sx, sy, sz = o.size
-        line = f"{o.name}: {' '.join(w for w in (res.color_of(o), o.label) if w)}"
-        if o.aliases:
-            line += f" (also: {', '.join(o.aliases)})"
-        if kinds:
-            line += f" [kind: {', '.join(kinds)}]"
-        if words:
-            line += f" [{'; '.join(words)}]"
-        line += (f" at ({x:.3f}, {y:.3f}, {z:.3f}) m, size {sx:.3f} x {sy:.3f} x {sz:.3f} m; "
-                 f"robot frame (turned with the robot, world origin): forward {f:+.2f} m, left {l:+.2f} m")
-        if o.affordances:
-            line += f" [{', '.join(o.affordances)}]"
-        lines.append(line)
-    return lines
