@@ -100,3 +100,6 @@ def test_planned_moves_keep_the_arm_off_the_box(tall_scene: Scene) -> None:
     robot._move_joints(q_far.q)
     assert np.linalg.norm(robot.tcp_pose()[0] - far) < 0.01
     assert np.linalg.norm(data.xpos[b] - start) < 0.002  # never touched on the way
+    with pytest.raises(PathBlocked):  # a straight line into the box, kept clear of everything
+        robot._straight(far - np.array([0.05, 0.0, 0.0]), clear_but=set())
+    assert np.linalg.norm(data.xpos[b] - start) < 0.002

@@ -86,13 +86,21 @@ class Motion(WorldQueries):
             q = res.q
         return path
 
-    def _straight(self, end: np.ndarray, rot_end: np.ndarray | None = None) -> None:
-        """Move the tcp in a straight line to ``end`` (``rot_end``: None keeps the orientation)."""
+    def _straight(self, end: np.ndarray, rot_end: np.ndarray | None = None, clear_but: Iterable[str] | None = None) -> None:
+        """Move the tcp in a straight line to ``end`` (``rot_end``: None keeps the orientation). With
+        ``clear_but`` the arm and the held object keep off every object but those named (postures
+        from the collision-aware IK where needed, the path checked), or PathBlocked is raised."""
         _, rot = self.tcp_pose()
         rot_end = rot if rot_end is None else rot_end
         q = self.data.ctrl[self.act].copy()
         cmd_pos, cmd_rot = self.ik.fk(q)  # plan from the commanded pose, not the sagging one
-        self._follow(self._line(cmd_pos, end, cmd_rot, rot_end, q))
+        if clear_but is None:
+            self._follow(self._line(cmd_pos, end, cmd_rot, rot_end, q))
+            return
+        ignore = set(clear_but)
+        path = self._line(cmd_pos, end, cmd_rot, rot_end, q, solve=lambda p, r, qi: self._ik_clear(p, r, qi, ignore))
+        self._check_clear(path, ignore=ignore)
+        self._follow(path)
 
     def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False,
                  q_goal: np.ndarray | None = None) -> None:
