@@ -1,7 +1,8 @@
 """Motion: IK waypoints along straight lines, transits that lift before they traverse (or, when
-no such path is clear, a sampling-based plan in joint space), and the kinematic collision checks
-every planned path passes before it runs. Where a plain IK posture would touch an object, the
-collision-aware IK (:mod:`realsim.robot.collision_ik`) looks for one that does not."""
+those are blocked, a sampling-based plan in joint space, :mod:`realsim.robot.transit`), and the
+kinematic collision checks every planned path passes before it runs. Where a plain IK posture
+would touch an object, the collision-aware IK (:mod:`realsim.robot.collision_ik`) looks for one
+that does not."""
 
 from __future__ import annotations
 
@@ -18,13 +19,13 @@ from realsim.robot.queries import WorldQueries
 from realsim.robot.result import PlanFailure
 from realsim.robot.transit import plan_joint_path
 
-Solve = Callable[[np.ndarray, np.ndarray, np.ndarray], IKResult]
+__all__ = ["Motion", "PathBlocked", "Solve"]
+
+Solve = Callable[[np.ndarray, np.ndarray, np.ndarray], IKResult]  # IK of a tcp (position, rotation) from arm joints
 
 
 class PathBlocked(PlanFailure):
     """A planned path would touch an object (the arm could reach, but not this way)."""
-
-__all__ = ["Motion"]
 
 
 class Motion(WorldQueries):
