@@ -181,6 +181,10 @@ ARRANGEMENTS: list[tuple[str, list[str]]] = [
     ("slide the strawberry towards the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),  # a way, not into it
     # a lift has one height; put back where it was found
     ("raise the blue cube by 5 cm", ["grasp('obj4_cube')"]),
+    # sides said with a possessive or "at", and "side by side"
+    ("set the strawberry down to the banana's left", ["place_beside('obj8_strawberry', 'obj7_banana', 'left')"]),
+    ("place the banana at the right of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'right')"]),
+    ("put the cans side by side", ["place_beside('obj2_soda_can', 'obj1_soda_can', 'next')"]),
     # "the other one" in a list: the other of those named before it
     ("drop the right can and the other one into the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')", "place_in('obj1_soda_can', 'obj6_bowl')"]),
     # a count with a superlative takes that many, ranked

@@ -38,7 +38,7 @@ ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("op
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
 
 RELATIONS: tuple[tuple[str, str], ...] = (
-    ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
+    ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
     ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
     ("to the front of", "front"), ("at the front of", "front"), ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
@@ -61,6 +61,9 @@ def clean(command: str) -> str:
     text = re.sub(r"[!?]+", ".", text)
     text = _VOCATIVE.sub(" ", text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
+    # "to the mug's left": to the left of the mug; "side by side": next to each other
+    text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
+    text = re.sub(r"\bside by side\b", "next to each other", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
     text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
