@@ -125,7 +125,9 @@ def plan_pipeline(
 
     ``overrides`` maps stage names to ``{parameter: value}`` or to the stage's parameter
     dataclass itself (``{"segment": SegmentParams(min_object_size=0.02)}``)."""
-    overrides = {k: as_mapping(v) for k, v in (overrides or {}).items()} if isinstance(overrides, dict) else overrides
+    overrides = overrides or {}
+    if isinstance(overrides, dict):
+        overrides = {k: as_mapping(v) for k, v in overrides.items()}
     check_seed(seed)
     if not isinstance(overrides, dict) or not all(isinstance(v, dict) for v in overrides.values()):
         raise InputError("overrides must map stage names to {parameter: value} mappings")
