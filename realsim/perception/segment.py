@@ -23,6 +23,7 @@ from realsim.geometry import inside_convex_polygon
 from realsim.perception.object_relations import filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
+from realsim.perception.visibility import visibility_score
 from realsim.scene import SupportPlane
 
 __all__ = ["SegmentParams", "SegmentResult", "assign_supports", "filter_by_size", "segment_objects"]
@@ -182,6 +183,7 @@ def merge_regions(n_seg: int, si: np.ndarray, sj: np.ndarray, weight: np.ndarray
 # objects
 
 
+
 def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray, radius: float) -> np.ndarray:
     """For clouds without a viewpoint: each segment normal points away from the (point-weighted)
     centre of the segments within ``radius``, which lies inside the object the segment bounds."""
@@ -197,11 +199,13 @@ def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, count
 
 
 def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
-                           radius: float, step: float) -> np.ndarray:
+                           radius: float, step: float, visibility_cell: float) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
     cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
-    Near-horizontal surfaces face up: scans see tops, and an object stacked on a top fills the
+    Clouds sampled no coarser than ``visibility_cell`` are oriented by what each side of a patch
+    sees (:mod:`realsim.perception.visibility`) where that decides: at a contact between two
+    objects the free space in front of a side is the other object's. Near-horizontal surfaces face up: scans see tops, and an object stacked on a top fills the
     space above it."""
     tree = cKDTree(points)
     ts = np.arange(2 * step, radius + 1e-9, step)
@@ -212,6 +216,10 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
         score += np.asarray(behind, float) - np.asarray(ahead, float)
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
+    spacing = float(np.median(tree.query(points[:: max(1, len(points) // 5000)], k=2)[0][:, 1]))
+    if spacing <= visibility_cell:
+        seen = visibility_score(points, centroids, normals, spacing, 5 * radius)
+        sign = np.where(np.abs(seen) >= 2, np.sign(seen), sign)
     # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
     level = np.abs(normals[:, 2]) > 0.7
     sign = np.where(level, np.sign(normals[:, 2]), sign)
@@ -277,7 +285,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         # pixel normals point toward the camera: their sum gives the outward side of each segment
         away_seg = -np.stack([np.bincount(part, normals[ids, i], minlength=n_seg) for i in range(3)], axis=1)
     else:
-        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance)
+        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance,
+                                     params.visibility_cell)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 

@@ -35,6 +35,8 @@ class SegmentParams:
     # merging supervoxels (LCCP)
     convex_tolerance: float = 40.0  # connections this close to flat count as convex
     orientation_radius: float = 0.06  # unorganized clouds: segment normals point away from the centre of what lies this close
+    visibility_cell: float = 0.007  # m: clouds this fine orient patches by what each side sees (a third of the
+    # smallest object: coarser cells, dilated to close a surface, also close the cracks between objects)
     min_contact_links: int = 6  # fewer links between two fragments are not a contact
     color_edge: float | None = None  # segments whose mean RGB differ more do not join directly (None: off;
     # on textured real objects any useful threshold splits objects, see bench)

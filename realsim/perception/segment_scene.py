@@ -95,26 +95,42 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     noise = _noise(scene, params)
     result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
-    _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance)
+    _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
+                    resolution)
     return labels, result
 
 
 def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centres: np.ndarray, centre_labels: np.ndarray,
-                    params: SegmentParams, noise: float, reach: float) -> None:
-    """Give the points between the support's noise (4 sigma, never under 2 mm) and ``min_height``
-    to the object within ``reach`` of them: the foot of each object, once the objects are found
-    (the objects are never joined through it)."""
-    low = max(4 * noise, MIN_OBJECT_HEIGHT)
+                    params: SegmentParams, noise: float, reach: float, cell: float) -> None:
+    """Give the points between the support's noise and ``min_height`` to the object whose foot
+    they are, once the objects are found (the objects are never joined through it): above 4 sigma
+    of the noise (never under 2 mm), to the object within ``reach``; between 1 and 4 sigma, only
+    inside that object's footprint (its occupied cells of side ``cell``): the support under an
+    object is hidden, so what rises there is the object's foot, not the support's noise."""
+    low, sure = max(noise, MIN_OBJECT_HEIGHT), max(4 * noise, MIN_OBJECT_HEIGHT)
     obj = centre_labels > 0
     if low >= params.min_height or not obj.any():
         return
-    lower, _ = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=low))
+    lower, height = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=low))
     band = np.flatnonzero((lower >= 0) & (support < 0))
     if len(band) == 0:
         return
     dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
     near = np.isfinite(dist)
-    labels[band[near]] = centre_labels[obj][nn[near]]
+    band, owner = band[near], centre_labels[obj][nn[near]]
+    keep = height[band] > sure
+    doubt = np.flatnonzero(~keep)
+    if len(doubt):
+        foot = np.floor(centres[obj][:, :2] / cell).astype(np.int64)
+        mine = np.floor(scene.points[band[doubt], :2] / cell).astype(np.int64)
+        lo = np.minimum(foot.min(axis=0), mine.min(axis=0))
+        span = np.maximum(foot.max(axis=0), mine.max(axis=0)) - lo + 1
+
+        def key(lab: np.ndarray, ij: np.ndarray) -> np.ndarray:
+            return (lab.astype(np.int64) * span[0] + (ij[:, 0] - lo[0])) * span[1] + (ij[:, 1] - lo[1])
+
+        keep[doubt] = np.isin(key(owner[doubt], mine), key(centre_labels[obj], foot))
+    labels[band[keep]] = owner[keep]
 
 
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
