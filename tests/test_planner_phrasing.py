@@ -185,6 +185,8 @@ ARRANGEMENTS: list[tuple[str, list[str]]] = [
     ("set the strawberry down to the banana's left", ["place_beside('obj8_strawberry', 'obj7_banana', 'left')"]),
     ("place the banana at the right of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'right')"]),
     ("put the cans side by side", ["place_beside('obj2_soda_can', 'obj1_soda_can', 'next')"]),
+    # "that same cube": the cube just named, even among several cubes
+    ("grab the blue cube, then put the same cube next to the bowl", ["grasp('obj4_cube')", "place_beside('obj4_cube', 'obj6_bowl', 'next')"]),
     # "the other one" in a list: the other of those named before it
     ("drop the right can and the other one into the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')", "place_in('obj1_soda_can', 'obj6_bowl')"]),
     # a count with a superlative takes that many, ranked

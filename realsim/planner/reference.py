@@ -188,6 +188,9 @@ class Resolver:
             if text in SINGULAR_PRONOUNS and len(ctx.last) > 1 and text not in ("it", "one"):
                 return list(ctx.last)
             return list(ctx.last)
+        m = re.fullmatch(r"(?:that |this )?same (.+)", text)  # "that same cube": the cube just named
+        if m and ctx.last and m.group(1) not in ("one", "ones", "thing", "object"):
+            return self.resolve(m.group(1), Context(), want=want, exclude=[o.name for o in self.objects if o not in ctx.last])
         m = re.fullmatch(r"(?:the )?other(?: one)?|(?:the )?other (.+)", text)
         if m:
             noun = m.group(1) or (ctx.last[0].label if ctx.last else "")
