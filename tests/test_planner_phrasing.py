@@ -218,3 +218,13 @@ def test_any_one_will_do_for_an_indefinite_reference(sentence: str) -> None:
     assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == ["place_in('obj1_soda_can', 'obj6_bowl')"]
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("put the soda can in the bowl", CLUTTER)  # "the" asks for one the person has in mind
+
+
+def test_again_repeats_the_last_step_and_its_goal_adds_up() -> None:
+    from realsim.planner import Moved
+
+    plan = RulePlanner().plan("nudge the blue cube 2 cm to the right, then do it again, and once more", CLUTTER)
+    assert [c.text() for c in plan.calls] == ["push('obj4_cube', 'right', 0.02)"] * 3
+    assert [(g.obj, g.distance) for g in plan.goals if isinstance(g, Moved)] == [("obj4_cube", 0.06)]
+    with pytest.raises(InputError, match="repeats nothing"):
+        RulePlanner().plan("do that again", CLUTTER)

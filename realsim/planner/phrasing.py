@@ -37,6 +37,10 @@ ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("op
                                                   "come", "head", "pull open", "pull out", "push in"))))
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
 
+# "do that again", "repeat it", "once more": the last step again (a clause of its own)
+AGAIN = re.compile(r"(?:do (?:that|it|this|so|the same)(?: thing)? (?:again|once more|one more time)|repeat(?: that| it| this)?(?: again)?"
+                   r"|(?:and )?(?:once more|one more time|again))")
+
 RELATIONS: tuple[tuple[str, str], ...] = (
     ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
     ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
@@ -96,7 +100,7 @@ def split_command(command: str) -> list[str]:
         parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
-        if clauses and not verb_re.match(part):
+        if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part):
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
             if verb and verb.group(0) in PUT and rel and rel_re.search(f" {part} "):

@@ -20,11 +20,11 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.phrasing import ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
+from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
 from realsim.planner.reference import Context
-from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, other_side, swap
+from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, other_side, repeat, swap
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, name_words, norm, singular
 
@@ -57,7 +57,9 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
     p = Parser(objects, robot_yaw)
-    steps = [_clause(c, p) for c in clauses]
+    steps: list[Step] = []
+    for c in clauses:
+        steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)

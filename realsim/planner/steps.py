@@ -3,22 +3,23 @@
 A :class:`Step` is what one clause does (calls, the goals to check, the objects it moves); a
 :class:`Parser` holds the scene and what earlier clauses referred to. The arrangements here go
 beyond one relation to one target: swapping two objects, putting several "next to each other"
-or "on each other", and "the other side" of a reference (opposite to where the object is now).
+or "on each other", "the other side" of a reference (opposite to where the object is now), and
+"do that again".
 """
 
 from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from realsim.errors import InputError
-from realsim.planner.goals import Goal, NextTo, On, Placed
+from realsim.planner.goals import Goal, Moved, NextTo, On, Placed
 from realsim.planner.program import Call
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import ObjectInfo
 
-__all__ = ["EACH_OTHER", "SWAP", "Parser", "Step", "each_other", "other_side", "swap"]
+__all__ = ["EACH_OTHER", "SWAP", "Parser", "Step", "each_other", "other_side", "repeat", "swap"]
 
 
 @dataclass
@@ -66,6 +67,17 @@ def swap(a_phrase: str, b_phrase: str, p: Parser) -> Step:
     p.ctx.set([a, b])
     return Step([Call("place_beside", (a.name, b.name, side)), Call("place", (b.name, pa)), Call("place", (a.name, pb))],
                 [Placed(a.name, (pb[0], pb[1])), Placed(b.name, (pa[0], pa[1]))], (a.name, b.name))
+
+
+def repeat(steps: list[Step]) -> Step:
+    """The last step once more ("push the cube 3 cm left, then do that again"): a push's goal is
+    then the distance of both pushes."""
+    last = next((s for s in reversed(steps) if s.calls), None)
+    if last is None:
+        raise InputError("'again' repeats nothing: say what to do first")
+    pushed = {str(c.args[0]): float(c.args[2]) for c in last.calls if c.name == "push" and isinstance(c.args[2], (int, float))}
+    goals = [replace(g, distance=round(g.distance + pushed.get(g.obj, 0.0), 3)) if isinstance(g, Moved) else g for g in last.goals]
+    return Step(list(last.calls), goals, last.objects, last.moves_robot)
 
 
 def other_side(p: Parser, obj: ObjectInfo, ref: ObjectInfo) -> str:
