@@ -137,6 +137,9 @@ ASIDES: list[tuple[str, list[str]]] = [
     # asking to be given a thing
     ("may I have the strawberry", ["grasp('obj8_strawberry')"]),
     ("I'd like the blue cube please", ["grasp('obj4_cube')"]),
+    ("I'll take the green cube", ["grasp('obj5_cube')"]),
+    ("show me the strawberry", ["grasp('obj8_strawberry')"]),
+    ("is it possible to push the bowl 4 cm to the left", ["push('obj6_bowl', 'left', 0.04)"]),  # a question as a request
     ("I'd like the can closest to the bowl", ["grasp('obj2_soda_can')"]),  # a locator, not a place
     ("I need the banana over by the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),  # a wish with a place
 ]

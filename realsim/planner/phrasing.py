@@ -9,7 +9,8 @@ from __future__ import annotations
 import re
 
 FILLERS = (
-    r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
+    r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
+    r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
     r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
@@ -28,7 +29,7 @@ GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "m
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
            "getting": "get", "returning": "return", "placing it": "place it"}
 TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
-        "collect", "hand me", "give me", "pass me", "bring me", "retrieve")
+        "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
        "move", "shift", "slide", "drag", "stand", "rest")
@@ -144,7 +145,7 @@ _DESIRE = re.compile(r"^i (?:would |d )?(?:like|want|need|wish)(?: you to| to ha
 _PARTICIPLE = re.compile(r"^(.+?)\s+(?:moved|put|placed|pushed|pulled|slid|shifted|set|taken|brought|stacked|dropped|"
                          r"nudged|shoved|scooted|dragged|carried|lifted|picked up|sitting|standing|lying)\b\s*(.*)$")
 _PLACE_WORD = re.compile(r"\s(?:" + "|".join(re.escape(w) for w, k in RELATIONS if k != "to") + r")\s")
-_ASK = re.compile(r"^(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)\s+(.+)$")
+_ASK = re.compile(r"^(?:(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)|i (?:ll |will )?take)\s+(.+)$")
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
 _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)"
