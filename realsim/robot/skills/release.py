@@ -77,7 +77,7 @@ class Release(Motion):
                 continue
             try:
                 self._transit(goal + np.array([0, 0, pl.approach_height]), r_goal, skip=obj, below_tcp=below)
-                self._straight(goal, r_goal)
+                self._straight(goal, r_goal, clear_but={obj})  # the arm and the held object shove nothing on the way down
                 break
             except PlanFailure as exc:
                 last = exc
