@@ -75,10 +75,10 @@ def plan_joint_path(q_start: np.ndarray, q_goal: np.ndarray, lower: np.ndarray, 
     planner.setRange(params.range)
     planner.setProblemDefinition(pdef)
     planner.setup()
-    solved = planner.solve(ob.PlannerTerminationCondition(lambda: checks[0] > params.max_checks))
+    planner.solve(ob.PlannerTerminationCondition(lambda: checks[0] > params.max_checks))
     if not pdef.hasExactSolution():
         planner.clear()
-        raise PlanFailure(f"no collision-free path found ({checks[0]} postures checked: {solved})")
+        raise PlanFailure(f"no collision-free path found ({checks[0]} postures checked)")
     path = pdef.getSolutionPath()
     simplifier = og.PathSimplifier(si)
     simplifier.reduceVertices(path, params.simplify_steps)
