@@ -280,15 +280,15 @@ def robot_bench() -> int:
             convert(None, Path(tmp) / "s", seed=i, overrides={"load": {"text": f"a {label} on the table"}})
             sim = Sim.load(Path(tmp) / "s")
             name = sim.robot.object_names()[0]
-            ok, reason = False, ""
+            ok, reason, kind = False, "", ""
             for _ in range(4):
                 sim.reset()
                 res = sim.robot.grasp(name)
-                ok, reason = res.success, res.reason
+                ok, reason, kind = res.success, res.reason, str(res.values.get("kind") or "")
                 if ok or not res.values.get("graspable", True):
                     break
             lifted += ok
-            print(f"{label:14s} {'lifted' if ok else 'NOT lifted'} {'' if ok else reason}", flush=True)
+            print(f"{label:14s} {'lifted (' + kind + ')' if ok else 'NOT lifted'} {'' if ok else reason}", flush=True)
     print(f"families lifted by the Franka: {lifted}/{len(GRASP_FAMILIES)}")
     return 0
 

@@ -48,6 +48,7 @@ class PickParams:
     contact_reward: float = 0.3  # reward for both fingers touching at close
     lift_reward: float = 0.4  # reward for a full lift (scaled by the height reached)
     handle_statics_weight: float = 0.3  # taken off a handle pinch's score per unit of torque needed over torque held
+    squeeze_safety: float = 2.0  # the gripper squeezes this many times what the pinch's statics need
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,7 @@ from realsim.robot.model import GRIPPER_OPEN_CTRL, HOME_ARM
 from realsim.robot.motion import Motion
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
 from realsim.robot.result import ActionResult, PlanFailure
+from realsim.robot.squeeze import close_ctrl, needed_pad, pad_force, servo_pad
 
 SUCCESS = 1.0  # reward of an attempt that holds the object lifted
 
@@ -26,12 +27,15 @@ class GraspSkill(Motion):
     """graspability and grasp (pick and lift)."""
 
     def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
-        """Pinches that fit the hand and whose lever arm the grip can hold against gravity; a
-        handle pinch ranks lower the nearer its torque comes to what the grip holds."""
+        """Pinches that fit the hand and whose lever arm the grip can hold against gravity (a handle
+        pinch with ``squeeze_safety`` to spare); a handle pinch ranks lower the nearer its torque
+        comes to what the grip holds."""
         out = []
         for c in self._fitting_candidates(obj, height_offset):
             ok, need, can = self._holds(obj, c)
             if ok:
+                if c.kind == "handle" and need * self.params.pick.squeeze_safety > can:
+                    continue  # a lever held only just: carrying it swings it out of the pinch
                 out.append(replace(c, score=c.score - self.params.pick.handle_statics_weight * need / can) if c.kind == "handle" else c)
         out.sort(key=lambda c: -c.score)
         return out
@@ -69,23 +73,25 @@ class GraspSkill(Motion):
         included), friction of its geoms, the gripper's squeeze at the pinch's width."""
         b = self._body(obj)
         mujoco.mj_comPos(self.model, self.data)
-        geoms = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in self._subtree(b)]
-        friction = float(min(self.model.geom_friction[g][0] for g in geoms)) if geoms else self.params.arm.default_friction
-        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), friction, self._squeeze(cand.width))
+        return twist_check(cand, self.data.subtree_com[b], float(self.model.body_subtreemass[b]), self._friction(b), pad_force(self.model, self.grip_act, cand.width))
 
-    def _squeeze(self, width: float) -> float:
-        """Force (N) each pad of the closed gripper presses on a part ``width`` across: the
-        actuator's force at that opening (ctrl 0, clamped to its range) through its tendon."""
+    def _friction(self, b: int) -> float:
+        """The lowest sliding friction of body ``b``'s geoms and the bodies attached to it."""
+        geoms = [g for g in range(self.model.ngeom) if self.model.geom_bodyid[g] in self._subtree(b)]
+        return float(min(self.model.geom_friction[g][0] for g in geoms)) if geoms else self.params.arm.default_friction
+
+    def _close_ctrl(self, obj: str, cand: GraspCandidate) -> float:
+        """The gripper command for ``cand``: the plain servo's squeeze at that width
+        (:func:`servo_pad`: a body pinch, whose small lever the soft contacts hold better than the
+        statics say, and a thin wall squeezed harder is driven through), harder for a handle,
+        as its lever needs, up to the most the gripper can."""
         m, a = self.model, self.grip_act
-        length = width / 2  # the tendon is the fingers' mean travel
-        force = abs(float(m.actuator_biasprm[a][0] + m.actuator_biasprm[a][1] * length))
-        if m.actuator_forcelimited[a]:
-            force = min(force, float(np.abs(m.actuator_forcerange[a]).max()))
-        if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_TENDON:
-            return force or self.params.arm.default_grip_force
-        t = m.actuator_trnid[a][0]
-        coef = float(np.abs(m.wrap_prm[m.tendon_adr[t]: m.tendon_adr[t] + m.tendon_num[t]]).max())
-        return force * coef or self.params.arm.default_grip_force
+        if cand.kind != "handle":
+            return close_ctrl(m, a, cand.width, servo_pad(m, a, cand.width))
+        _, need, can = self._holds(obj, cand)
+        b = self._body(obj)
+        pad = needed_pad(need, can, pad_force(m, a, cand.width), float(m.body_subtreemass[b]), self._friction(b), self.params.pick.squeeze_safety)
+        return close_ctrl(m, a, cand.width, min(max(pad, servo_pad(m, a, cand.width)), pad_force(m, a, cand.width)))
 
     def _prefer_yaw(self) -> float:
         """Yaw of the hand's closing axis at home: pinches near it are preferred."""
@@ -183,7 +189,7 @@ class GraspSkill(Motion):
             except PlanFailure:
                 if k == len(reachable) - 1:
                     raise
-        self._gripper(0.0)
+        self._gripper(self._close_ctrl(obj, cand))
         touching = self._contacts_with(obj)
         z_before = float(self.object_points(obj)[:, 2].min())
         pos, _ = self.tcp_pose()

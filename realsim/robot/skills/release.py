@@ -83,6 +83,9 @@ class Release(Motion):
                 last = exc
         else:
             raise PlanFailure(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, heights; last: {last})")
+        if not self.holding(obj):
+            self.held = None
+            return ActionResult(name, False, f"{obj} slipped out of the hand on the way", values={"release_pose": k})
         self._gripper(GRIPPER_OPEN_CTRL)
         self.held = None
         pos, _ = self.tcp_pose()
