@@ -43,7 +43,7 @@ class PlaneParams:
     max_support_height: float = 2.5  # planes higher than this above the floor are ceilings
     max_covered_fraction: float = 0.5  # a surface mostly covered by another just above it is an underside
     covered_band: tuple[float, float] = (0.01, 0.08)  # ... within this height band above it (m)
-    max_work_points: int = 1_500_000  # denser captures are voxel-downsampled at their working resolution
+    max_work_points: int = 500_000  # denser captures are worked on a seeded subset (3x denser: voxels at their resolution first)
     table_heights: tuple[float, float] = (0.4, 1.2)  # plausible table or counter tops above the floor (m)
 
 
@@ -175,8 +175,10 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     resolution = working_resolution(scene.capture.point_spacing if scene.capture.point_spacing is not None else float("nan"))
     params = at_resolution(params, resolution)
     work = scene.points[finite]
-    if len(work) > params.max_work_points:  # a dense capture is worked at its resolution: bounded cost
+    if len(work) > 3 * params.max_work_points:  # a dense capture is worked at its resolution: bounded cost
         work = voxel_downsample(work, resolution)
+    if len(work) > params.max_work_points:  # a least-squares plane on this many points is already exact
+        work = work[np.sort(np.random.default_rng(scene.seed).choice(len(work), params.max_work_points, replace=False))]
     proposals = ransac_proposals(work, params, scene.seed)
     viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.camera_view else None
     cos_level = np.cos(np.radians(params.level_max_tilt_deg))

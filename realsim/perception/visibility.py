@@ -47,7 +47,8 @@ def _escapes(occupied: np.ndarray, shape: np.ndarray, origin: np.ndarray, dirs: 
 def visibility_score(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, cell: float, reach: float,
                      offset: float = 2.5) -> np.ndarray:
     """Rays escaping from ``offset`` cells in front of each patch minus rays escaping from behind
-    it: positive when ``normals`` point to the side the patch was seen from, 0 when undecided."""
+    it: positive when ``normals`` point to the side the patch was seen from (the more open one;
+    a thin wall, a cup's, seen from both sides, faces its more open side)."""
     lo = points.min(axis=0) - 2 * cell
     ijk = np.unique(np.floor((points - lo) / cell).astype(np.int64), axis=0)
     shape = ijk.max(axis=0) + 3
