@@ -1,9 +1,11 @@
 """Physics speed of a converted scene, before and after the collision and sleep changes, in one run.
 
 The scene: 10 YCB scans on a 1.2 x 0.8 m table with the Panda (objects capture, seed 3). It is
-converted twice from the same capture: "before" with the former settings (CoACD hulls capped at
-48, no primitives, no hull budget, no sleeping) and "after" with the defaults. For each, two
-workloads are timed on one core (process CPU time of ``mj_step`` only):
+converted three times from the same capture: "before" with the former settings (CoACD hulls
+capped at 48 at the former 3.5 mm self-check, no primitives, no hull budget, no container rings,
+no sleeping), "no rings" with the defaults before open containers got floor-and-wall rings, and
+"after" with the defaults. For each, two workloads are timed on one core (process CPU time of
+``mj_step`` only):
 
 - rest: 5 s from keyframe ``initial``, the robot holding its home posture;
 - robot: a pick and place commanded through the runtime ("put the soup can next to the bowl"),
@@ -41,7 +43,9 @@ YCB = REPO.parent / "shared" / "data" / "ycb_google16k"
 OBJECTS = ("003_cracker_box", "005_tomato_soup_can", "006_mustard_bottle", "010_potted_meat_can", "011_banana",
            "024_bowl", "025_mug", "035_power_drill", "037_scissors", "061_foam_brick")
 COMMAND = "put the soup can next to the bowl"
-BEFORE = {"objects": {"assets": {"primitives": False, "hull_budget": False}}, "compose": {"sleep": False}}
+BEFORE = {"objects": {"assets": {"primitives": False, "hull_budget": False, "container_ring": False, "target_p95": 0.0035}},
+          "compose": {"sleep": False}}
+NO_RINGS = {"objects": {"assets": {"container_ring": False, "target_p95": 0.0035}}}  # the defaults before container rings
 
 
 def make_capture(root: Path) -> Path:
@@ -124,7 +128,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         cap = make_capture(Path(tmp))
         rows = []
-        for label, overrides in (("before", BEFORE), ("after", {})):
+        for label, overrides in (("before", BEFORE), ("no rings", NO_RINGS), ("after", {})):
             out = Path(tmp) / label
             started = time.perf_counter()
             convert(cap, out, seed=3, overrides=overrides)
@@ -141,8 +145,9 @@ def main() -> None:
         print(f"{'scene':8s} {'collision geoms':28s} {'rest x':>8s} {'robot x':>8s} {'ncon':>5s} {'nefc':>5s}  {'command':10s} {'sim s':>6s} {'convert s':>9s}")
         for label, geoms, rest_x, robot_x, ncon, nefc, verdict, sim_s, took in rows:
             print(f"{label:8s} {geoms:28s} {rest_x:8.1f} {robot_x:8.1f} {ncon:5d} {nefc:5d}  {verdict:10s} {sim_s:6.1f} {took:9.1f}")
-        before, after = rows[0], rows[1]
-        print(f"speed-up after/before: rest {after[2] / before[2]:.1f}x, robot {after[3] / before[3]:.1f}x")
+        before, no_rings, after = rows
+        print(f"speed-up after/before: rest {after[2] / before[2]:.1f}x, robot {after[3] / before[3]:.1f}x; "
+              f"after/no rings: rest {after[2] / no_rings[2]:.2f}x, robot {after[3] / no_rings[3]:.2f}x")
         if not args.no_options:
             options_table(after_xml, after_ctrls, args.rest)
 

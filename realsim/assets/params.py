@@ -25,6 +25,8 @@ class AssetParams:
     # --- convex shortcut: a single hull when it is already faithful
     convex_volume_ratio: float = 0.90  # solid volume / hull volume at least this ...
     convex_tolerance: float = 0.0025  # ... and p95 hull-surface-to-scan distance (m) at most this
+    # --- open containers: a floor slab and a ring of wall slabs when faithful (few hulls, cavity kept)
+    container_ring: bool = True
     # --- CoACD
     decimate_faces: int = 1500
     threshold: float = 0.05
@@ -37,12 +39,12 @@ class AssetParams:
     seed: int = 0
     # --- self-check: re-run CoACD with a lower threshold when the parts are not faithful enough
     refine_attempts: int = 1
-    target_p95: float = 0.0035  # m, two-way 95th percentile surface distance
+    target_p95: float = 0.0038  # m, two-way 95th percentile surface distance (the fidelity bar is 4 mm)
     target_iou: float = 0.85  # volume IoU (objects without an open cavity)
     # --- hull post-processing
     max_hulls: int = 48
     hull_budget: bool = True  # merge further while the self-check holds (fewer hulls, cheaper contacts)
-    hull_budgets: tuple[int, ...] = (32, 24, 16, 12, 8, 6, 4, 3, 2, 1)
+    hull_budgets: tuple[int, ...] = (40, 32, 28, 24, 20, 16, 12, 8, 6, 4, 3, 2, 1)
     merge_tolerance: float = 0.0015  # m: merge two parts while the merged hull stays this close to them
     min_hull_thickness: float = 0.0005  # m: thinner hulls are thickened to this
     max_hull_vertices: int = 64

@@ -110,7 +110,7 @@ def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetPara
     return dict(scale=scale, offset=offset, solid=solid, method=method, notes=notes, warnings=warns, hulls=hulls, info=info, hull_volume=hull_vol, timings=t)
 
 
-PREPARE_VERSION = 3  # bump when the preparation logic changes: old cache entries stop matching
+PREPARE_VERSION = 6  # bump when the preparation logic changes: old cache entries stop matching
 
 
 def _file_key(path: Path, label: str | None, params: AssetParams) -> str | None:

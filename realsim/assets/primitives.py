@@ -14,6 +14,8 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull
 
+from realsim.assets.fidelity import parts_fidelity
+
 PRIMITIVE_KEY = "mujoco_primitive"
 
 
@@ -84,8 +86,6 @@ def sphere_fit(solid: trimesh.Trimesh) -> trimesh.Trimesh:
 def fit_primitive(solid: trimesh.Trimesh, tolerance: float, min_iou: float) -> tuple[trimesh.Trimesh | None, dict]:
     """The best-fitting primitive within ``tolerance`` (p95, m) and ``min_iou``, or None; and
     the fidelity of every candidate tried."""
-    from realsim.assets.decompose import parts_fidelity
-
     tried: dict = {}
     best: tuple[float, trimesh.Trimesh] | None = None
     for kind, fit in (("box", box_fit), ("cylinder", cylinder_fit), ("sphere", sphere_fit)):
