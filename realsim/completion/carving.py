@@ -39,14 +39,24 @@ def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, ow
     column xy centres (M, 2), each voxel's column and centre, and which voxels are free."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
+    xy, col, cells = _cells(mesh, step)
+    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own)
+
+
+def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Voxel centres inside the convex ``mesh``: column xy centres (M, 2), each voxel's column and centre."""
     xy, z_bot, z_top = _columns(mesh, step)
     if len(xy) == 0:
-        return step, xy, np.zeros(0, np.int64), np.zeros((0, 3)), np.zeros(0, bool)
+        return xy, np.zeros(0, np.int64), np.zeros((0, 3))
     counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
     col = np.repeat(np.arange(len(xy)), counts)
     k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
-    cells = np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
-    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own)
+    return xy, col, np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
+
+
+def voxel_centres(mesh: trimesh.Trimesh, step: float) -> np.ndarray:
+    """(N, 3) centres of the ``step`` voxels inside the convex ``mesh``."""
+    return _cells(mesh, step)[2]
 
 
 def _column_extremes(n_columns: int, col: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

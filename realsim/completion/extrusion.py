@@ -14,11 +14,15 @@ from scipy.spatial import QhullError
 from realsim.completion.hull import fast_hull
 
 
-def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False) -> tuple[trimesh.Trimesh, np.ndarray]:
+def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False,
+                  drops: np.ndarray | None = None) -> tuple[trimesh.Trimesh, np.ndarray]:
     """The observed points' convex hull extruded down to ``base_z`` (world frame); ``fast``: straight
-    from Qhull (collision pieces), else trimesh's triangulation (a surface that gets painted)."""
-    kept = points[points[:, 2] <= top_z]
-    base = kept.copy()
+    from Qhull (collision pieces), else trimesh's triangulation (a surface that gets painted).
+    ``drops``: which points may be extruded (the space straight below them was not seen empty; a
+    tapered side seen below its top edge stays as seen), all when None or fewer than three."""
+    low = points[:, 2] <= top_z
+    kept = points[low]
+    base = kept[drops[low]] if drops is not None and np.count_nonzero(drops[low]) >= 3 else kept.copy()
     base[:, 2] = base_z
     top = kept.copy()
     top[:, 2] = np.maximum(top[:, 2], base_z + 1e-3)
@@ -33,17 +37,20 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = 
     return mesh, np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, base_z])
 
 
-def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float, max_slabs: int,
-                   max_fill: float, whole: trimesh.Trimesh | None = None, min_elongation: float = 2.0) -> list[trimesh.Trimesh] | None:
+def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float, max_slabs: int, max_fill: float,
+                   whole: trimesh.Trimesh | None = None, min_elongation: float = 2.0,
+                   drops: np.ndarray | None = None) -> list[trimesh.Trimesh] | None:
     """Convex pieces: the points cut into slabs about ``slab`` long across their principal horizontal
     axis, each slab's hull extruded down (neighbouring slabs share their boundary points). None when
     the object is short or not ``min_elongation`` times longer than wide, or the pieces fill more than ``max_fill`` of the single extruded hull
     (``whole``, when already made)."""
-    kept = points[points[:, 2] <= top_z]
+    low = points[:, 2] <= top_z
+    kept = points[low]
+    droppable = drops[low] if drops is not None else np.ones(len(kept), bool)
     if len(kept) < 60:
         return None
     _, first = np.unique(np.floor(kept / 0.003).astype(np.int64), axis=0, return_index=True)
-    kept = kept[np.sort(first)]  # one point per 3 mm cell: the hulls need no more
+    kept, droppable = kept[np.sort(first)], droppable[np.sort(first)]  # one point per 3 mm cell: the hulls need no more
     xy = kept[:, :2] - kept[:, :2].mean(axis=0)
     _, _, vt = np.linalg.svd(xy, full_matrices=False)
     s, t = xy @ vt[0], xy @ vt[1]
@@ -58,16 +65,46 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
     margin = 0.1 * (edges[1] - edges[0])
     pieces = []
     for a, b in zip(edges[:-1], edges[1:]):
-        part = kept[(s >= a - margin) & (s <= b + margin)]
-        if len(part) < 8:
+        inside = (s >= a - margin) & (s <= b + margin)
+        if inside.sum() < 8:
             continue
         try:
-            pieces.append(complete_hull(part, base_z, top_z, fast=True)[0])
+            pieces.append(complete_hull(kept[inside], base_z, top_z, fast=True, drops=droppable[inside])[0])
         except (QhullError, ValueError):
             continue
     if len(pieces) < 2:
         return None
-    whole = whole if whole is not None else complete_hull(kept, base_z, top_z)[0]
+    whole = whole if whole is not None else complete_hull(kept, base_z, top_z, drops=droppable)[0]
     if sum(p.volume for p in pieces) > max_fill * whole.volume:
+        return None
+    return pieces
+
+
+def complete_bands(points: np.ndarray, base_z: float, top_z: float, bands: int, max_fill: float,
+                   whole: trimesh.Trimesh, min_height_share: float = 1.0, drops: np.ndarray | None = None) -> list[trimesh.Trimesh] | None:
+    """Convex pieces of an upright body whose profile is not convex (a bottle's shoulder and neck):
+    the points cut into ``bands`` height bands (neighbours share their boundary points), each band's
+    hull, the lowest one extruded down to ``base_z``. None when the body is lower than
+    ``min_height_share`` of its width, or the bands fill more than ``max_fill`` of the single hull ``whole``."""
+    kept = points[points[:, 2] <= top_z]
+    height = top_z - base_z
+    if len(kept) < 60 or height < min_height_share * float(np.max(whole.extents[:2])):
+        return None
+    droppable = drops[points[:, 2] <= top_z] if drops is not None else np.ones(len(kept), bool)
+    edges = np.linspace(base_z, top_z, bands + 1)
+    margin = 0.1 * height / bands
+    pieces = []
+    for i, (a, b) in enumerate(zip(edges[:-1], edges[1:])):
+        inside = (kept[:, 2] >= a - margin) & (kept[:, 2] <= b + margin)
+        if inside.sum() < 8:
+            continue
+        try:
+            if i == 0:
+                pieces.append(complete_hull(kept[inside], base_z, top_z, fast=True, drops=droppable[inside])[0])
+            else:
+                pieces.append(fast_hull(kept[inside]))
+        except (QhullError, ValueError):
+            continue
+    if len(pieces) < 2 or sum(p.volume for p in pieces) > max_fill * whole.volume:
         return None
     return pieces

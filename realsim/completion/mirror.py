@@ -9,7 +9,8 @@ from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
 
-def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
+def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams,
+                       outline: np.ndarray | None = None) -> np.ndarray | None:
     """The observed points plus the mirror image of their front part behind the occluding contour.
 
     The contour (the leftmost and rightmost points of each height band of the sides, as the camera
@@ -18,7 +19,8 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     behind the plane (a box top seen whole) stay and bound the result. None when the contour is not
     seen (too few side points), the visible depth is already ``mirror_max_depth_share`` of the width,
     or the top is seen whole and as wide as the body (a box's top face shows its depth; a bottle's
-    cap does not).
+    cap does not). ``outline``: the points to find the contour in (default ``points``; the pixels
+    seen edge-on, left out of ``points`` as unreliable surface, are where the contour is).
     """
     d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
     if np.linalg.norm(d) < 1e-6:
@@ -34,14 +36,16 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     if depth >= params.mirror_max_depth_share * width or (_top_face_seen(top, d, depth) and np.ptp(top @ lateral) >= 0.8 * width):
         return None  # a top face as wide as the body (a prism's cross-section) shows its depth
     height = top_z - base_z
-    side = (points[:, 2] < top_z - 0.25 * height) & (points[:, 2] > base_z + 0.05 * height)
+    rim = points if outline is None else outline
+    side = (rim[:, 2] < top_z - 0.25 * height) & (rim[:, 2] > base_z + 0.05 * height)
+    ws, ss = rim @ lateral, rim @ d
     edges = np.linspace(base_z + 0.05 * height, top_z - 0.25 * height, params.mirror_bands + 1)
     contour = []
     for lo, hi in zip(edges[:-1], edges[1:]):
-        band = side & (points[:, 2] >= lo) & (points[:, 2] < hi)
+        band = side & (rim[:, 2] >= lo) & (rim[:, 2] < hi)
         if band.sum() < 10:
             continue
-        wb, sb = w[band], s[band]
+        wb, sb = ws[band], ss[band]
         left, right = np.percentile(wb, 3), np.percentile(wb, 97)
         contour.extend([float(np.median(sb[wb <= left])), float(np.median(sb[wb >= right]))])
     if len(contour) < 4:

@@ -28,10 +28,16 @@ class CompletionParams:
     carve_tile: float = 0.02  # much carved shapes are kept as convex cubic tiles at least this wide (m)
     max_pieces: int = 24  # about this many tiles (the bounding box cut in this many cubes)
     tile_min_fraction: float = 0.1  # a shape this much seen through is kept as tiles (a hull would refill the free space)
+    denoise_window: int = 5  # object pixels' depth: the median of this many pixels square of the same object (camera views)
+    clip_free_space: bool = True  # cut every finished piece back out of the space the camera saw through
+    free_space_sigmas: float = 4.0  # a piece nearer than the captured depth by this many sensor-noise sigmas is cut back
+    free_space_min_tolerance: float = 0.003  # m: the least such tolerance (quantized depth shows no noise)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
     slab: float = 0.025  # a body that is not convex is extruded in slabs about this long (m)
     max_slabs: int = 8
     slab_max_fill: float = 0.8  # slabs are used when they fill less than this share of the single hull
+    bands: int = 6  # an upright body whose profile is not convex is its hulls in this many height bands
+    bands_max_fill: float = 0.95  # bands are used when they fill less than this share of the single hull
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
     mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored

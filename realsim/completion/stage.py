@@ -7,7 +7,8 @@ import trimesh
 
 from realsim.completion.carving import carve, carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
-from realsim.completion.extrusion import complete_hull, complete_slabs
+from realsim.completion.extrusion import complete_bands, complete_hull, complete_slabs
+from realsim.completion.freespace import free_drops, free_space_tolerance, keep_out_of_free_space
 from realsim.completion.hull import fast_hull
 from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
@@ -31,6 +32,10 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     hollow: set[int] = set()
     pieces: dict[int, list[trimesh.Trimesh]] = {}
     view = DepthView.of(scene) if params.carve else None
+    tolerance = free_space_tolerance(view, params) if view is not None else 0.0
+    if view is not None and params.denoise_window > 1:  # shapes from the surfaces, not the noise's extremes
+        smooth = view.denoised(params.denoise_window)
+        points, view = view.moved_to(smooth, points), smooth
     veil = view.veil(params.veil_deg, labels.reshape(view.depth.shape) > 0).ravel() if view is not None else np.zeros(len(labels), bool)
     order = bottom_up(scene.objects)
     for obj in order:
@@ -56,10 +61,11 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             mesh, parts, visual = revolved.outer, revolved.pieces, revolved.visual
             base_centre = np.array([revolved.centre[0], revolved.centre[1], base_z])
         else:
-            mirrored = mirror_hidden_half(pts, view, base_z, top_z, params) if view is not None else None
+            mirrored = mirror_hidden_half(pts, view, base_z, top_z, params, points[mask]) if view is not None else None
             kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)" if mirrored is not None else "hull"
             body = pts if mirrored is None else mirrored
-            mesh, base_centre = complete_hull(body, base_z, top_z)
+            drops = free_drops(body, base_z, view, tolerance) if view is not None else None
+            mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops)
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:
@@ -80,10 +86,12 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             if carving is not None and carving.tiles is not None:  # much seen through: the body is not convex
                 parts, visual = carving.tiles, carving.hull  # one closed surface to paint
                 kind = f"{kind}, {len(parts)} convex tiles of what the camera's free space leaves"
-            elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill, mesh)) is not None:
+            elif (parts := complete_slabs(body, base_z, top_z, params.slab, params.max_slabs, params.slab_max_fill, mesh, drops=drops)) is not None:
                 kind = f"{kind} in {len(parts)} slabs (not convex)"
                 if view is not None:
                     parts, carved = carve_pieces(parts, view, base_z, params, own=obj.id)
+            elif (parts := complete_bands(body, base_z, top_z, params.bands, params.bands_max_fill, mesh, drops=drops)) is not None:
+                kind = f"{kind} in {len(parts)} height bands (its profile is not convex)"
             elif carving is not None:
                 mesh = carving.hull
         elif view is not None and parts is not None:
@@ -104,4 +112,6 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
     separate_neighbours([o for o in order if o.id not in hollow], done, observed, params, pieces)
+    if view is not None and params.clip_free_space:
+        keep_out_of_free_space(order, view, tolerance, params)
     return scene

@@ -68,6 +68,51 @@ class DepthView:
         out[idx] = np.nan_to_num(cos, nan=1.0) < np.cos(np.radians(tolerance_deg))
         return out.reshape(h, w)
 
+    def denoised(self, window: int = 5) -> "DepthView":
+        """This view with every object pixel's depth taken from the plane fitted (least squares) to
+        the depths of the ``window`` x ``window`` pixels around it that show the same object:
+        unbiased on surfaces that are flat at that scale, even at a silhouette where only one side
+        of the window is the object; other pixels are left as captured."""
+        if self.labels is None or not np.any(self.labels > 0):
+            return self
+        v, u = np.nonzero(self.labels > 0)
+        r = window // 2
+        v0, v1, u0, u1 = max(v.min() - r, 0), min(v.max() + r + 1, self.depth.shape[0]), max(u.min() - r, 0), min(u.max() + r + 1, self.depth.shape[1])
+        depth, labels = np.pad(self.depth[v0:v1, u0:u1], r, constant_values=np.nan), np.pad(self.labels[v0:v1, u0:u1], r)
+        h, w = v1 - v0, u1 - u0
+        centre = labels[r:r + h, r:r + w]
+        offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
+        d = np.stack([depth[r + di:r + di + h, r + dj:r + dj + w] for di, dj in offsets])
+        ok = np.stack([labels[r + di:r + di + h, r + dj:r + dj + w] == centre for di, dj in offsets]) & np.isfinite(d)
+        basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
+        wgt = ok.astype(float)
+        normal = np.einsum("kij,kp,kq->ijpq", wgt, basis, basis)
+        rhs = np.einsum("kij,kp->ijp", wgt * np.nan_to_num(d), basis)
+        fit = (centre > 0) & (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
+        out = self.depth.copy()
+        block = out[v0:v1, u0:u1]
+        block[fit] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
+        return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
+
+    def moved_to(self, other: "DepthView", points: np.ndarray) -> np.ndarray:
+        """The organized world ``points`` (one per pixel, this view's) moved along their rays to the
+        depth ``other`` holds at their pixel (unchanged where either depth is missing)."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            factor = np.nan_to_num(other.depth / self.depth, nan=1.0, posinf=1.0, neginf=1.0).ravel()
+        camera = self.camera
+        return np.asarray(camera + (points - camera) * factor[:, None])
+
+    def noise(self, edge: float = 0.02) -> float:
+        """The sensor's depth noise (m, one sigma) on object pixels (all pixels when no labels): the
+        spread of second differences along rows (six times the variance of independent noise),
+        steps over ``edge`` (silhouettes) left out."""
+        d2 = self.depth[:, :-2] - 2 * self.depth[:, 1:-1] + self.depth[:, 2:]
+        with np.errstate(invalid="ignore"):
+            ok = np.isfinite(d2) & (np.abs(d2) < edge)
+        if self.labels is not None and np.count_nonzero(ok & (self.labels[:, 1:-1] > 0)) >= 100:
+            ok &= self.labels[:, 1:-1] > 0
+        return float(np.std(d2[ok]) / np.sqrt(6.0)) if np.count_nonzero(ok) >= 100 else 0.0
+
     def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None) -> np.ndarray:
         """Mask of world points the camera saw through: nearer than the captured depth at their pixel
         by more than ``tolerance`` where the pixel shows object ``own`` (its own noisy surface), by

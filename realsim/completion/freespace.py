@@ -1,0 +1,173 @@
+"""The free-space rule: no completed piece covers a pixel where the camera saw farther away.
+
+The line of sight to every observed pixel is empty up to the captured depth (less the sensor's
+noise). A convex piece that pokes into that space is seen through from its front surface first
+(a ray entering the piece meets its surface before its inside), so the piece is tested on samples
+of its surface. It is then cut by planes, one at a time, each chosen among vertical planes
+(keeping the base on its support), planes along the line of sight (a cut of the silhouette) and
+across it (a cut in depth), to remove the seen-through samples while losing the least of the piece's
+volume. A piece seen through almost whole is dropped.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from realsim.completion.carving import voxel_centres
+from realsim.completion.neighbours import clip_convex
+from realsim.completion.params import CompletionParams
+from realsim.completion.stacking import set_shape
+from realsim.completion.view import DepthView
+from realsim.scene import SceneObject
+
+MAX_CUTS = 6
+SURFACE_SAMPLES = 3000
+MAX_CUT_LOSS = 0.1  # a piece that one cut would lose more of is split in two first
+MISS_WEIGHT = 20.0  # leaving this share of the surface seen through costs as much as losing the whole piece, inverted
+
+
+def _directions(ray: np.ndarray) -> np.ndarray:
+    """Candidate cut normals (unit; the cut keeps ``n . x <= c``): horizontal, tilted up, across and
+    along the mean line of sight ``ray``; none points far down (the base stays on its support)."""
+    az = np.linspace(0.0, 2 * np.pi, 24, endpoint=False)
+    flat = np.column_stack([np.cos(az), np.sin(az), np.zeros_like(az)])
+    up = np.column_stack([np.cos(az) * 0.7, np.sin(az) * 0.7, np.full_like(az, 0.714)])
+    e1 = np.cross(ray, [0.0, 0.0, 1.0])
+    e1 = e1 / np.linalg.norm(e1) if np.linalg.norm(e1) > 1e-6 else np.array([1.0, 0.0, 0.0])
+    e2 = np.cross(ray, e1)
+    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    across = np.outer(np.cos(t), e1) + np.outer(np.sin(t), e2)  # planes containing the line of sight
+    normals = np.vstack([flat, up, across, -ray[None, :], [[0.0, 0.0, 1.0]]])
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    return normals[normals[:, 2] > -0.5]
+
+
+def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
+    """Surface samples of a convex piece: its vertices and area-weighted points on its faces."""
+    rng = np.random.default_rng(seed)
+    tri = piece.triangles
+    area = piece.area_faces
+    if area.sum() <= 0:
+        return np.asarray(piece.vertices)
+    face = rng.choice(len(tri), SURFACE_SAMPLES, p=area / area.sum())
+    a, b = rng.random((2, SURFACE_SAMPLES))
+    flip = a + b > 1
+    a[flip], b[flip] = 1 - a[flip], 1 - b[flip]
+    t = tri[face]
+    pts = t[:, 0] + a[:, None] * (t[:, 1] - t[:, 0]) + b[:, None] * (t[:, 2] - t[:, 0])
+    return np.vstack([piece.vertices, pts])
+
+
+def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int) -> tuple[np.ndarray, float, float]:
+    """The cut (normal, offset: keep ``n . x <= c``) minimising the share of ``inside`` lost plus
+    MISS_WEIGHT times the share of the ``samples`` surface samples left seen through (``bad``), and
+    that cost (the cost of no cut when no cut is better)."""
+    best = (normals[0], np.inf, MISS_WEIGHT * len(bad) / samples)
+    for n in normals:
+        pi, pb = np.sort(inside @ n), np.sort(bad @ n)
+        cuts = pb - 1e-6 * max(float(np.ptp(pi)), 1e-9)  # just below each bad sample: it and everything beyond are cut
+        lost = 1.0 - np.searchsorted(pi, cuts, side="right") / max(len(pi), 1)
+        cost = lost + MISS_WEIGHT * np.arange(len(pb)) / samples
+        k = int(np.argmin(cost))
+        if cost[k] < best[2]:
+            best = (n, float(cuts[k]), float(cost[k]))
+    return best
+
+
+def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
+    """Normalized image coordinates (x / z, y / z in the optical frame) of world points."""
+    opt = points @ view.world_to_optical[:3, :3].T + view.world_to_optical[:3, 3]
+    return np.asarray(opt[:, :2] / opt[:, 2:3])
+
+
+def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int) -> tuple[np.ndarray, float, float]:
+    """The best cut as a world half-space ``n . x <= c`` (and its cost): a plane among the fixed
+    directions (see :func:`_directions`), or one through the camera centre (a line in the image that
+    trims the piece's silhouette)."""
+    ray = bad.mean(axis=0) - view.camera
+    n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples)
+    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples)
+    if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
+        k = np.array([n2[0], n2[1], -c2])
+        a, b = view.world_to_optical[:3, :3], view.world_to_optical[:3, 3]
+        return a.T @ k, float(-k @ b), cost2
+    return n, c, cost
+
+
+def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float, seed: int = 0,
+                       splits: int = 2) -> list[trimesh.Trimesh]:
+    """``piece`` (convex, world frame) cut until none of its surface samples lies nearer the camera
+    than the captured depth at its pixel by more than ``tolerance``: convex pieces, none when next
+    to nothing is left (a piece standing in seen free space). A cut that would lose more than
+    MAX_CUT_LOSS of the piece (its hull bridges a concave side the camera saw) splits it in two
+    halves across its longest extent instead, each clipped in turn (at most ``splits`` times deep)."""
+    volume = piece.volume
+    for _ in range(MAX_CUTS):
+        surface = _samples(piece, seed)
+        bad = view.seen_through(surface, tolerance)
+        if not bad.any():
+            return [piece]
+        step = float(np.clip(np.max(piece.extents) / 25, 0.001, 0.005))
+        inside = np.vstack([voxel_centres(piece, step), surface[~bad]])
+        n, c, _ = _cut(view, inside, surface[bad], len(surface))
+        lost = float(np.mean(inside @ n > c)) if np.isfinite(c) else 0.0
+        if splits > 0 and lost > MAX_CUT_LOSS and bad.mean() < 0.5:
+            axis = np.zeros(3)
+            axis[int(np.argmax(piece.extents))] = 1.0
+            middle = float(np.median(inside @ axis))
+            halves = [clip_convex(piece, sign * axis, sign * middle) for sign in (1.0, -1.0)]
+            return [c for h in halves if h is not None for c in clip_to_free_space(h, view, tolerance, seed, splits - 1)]
+        if not np.isfinite(c):  # no cut is worth its loss
+            return [] if bad.mean() > 0.5 else [piece]
+        cut = clip_convex(piece, -n, -c)
+        if cut is None or cut.volume < 0.05 * volume:
+            return []
+        piece = cut
+    return [piece]
+
+
+def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float) -> tuple[list[trimesh.Trimesh], float]:
+    """Every piece clipped to the free space (pieces left empty dropped), and the share of volume removed."""
+    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i)]
+    before = sum(p.volume for p in pieces)
+    return out, (1.0 - sum(p.volume for p in out) / before) if before > 0 else 0.0
+
+
+def free_space_tolerance(view: DepthView, params: CompletionParams) -> float:
+    """How far in front of the captured depth a surface may stand: ``free_space_sigmas`` sensor-noise sigmas."""
+    return max(params.free_space_sigmas * view.noise(), params.free_space_min_tolerance)
+
+
+def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, tolerance: float, params: CompletionParams) -> None:
+    """Clip every completed object's collision pieces to the free space (see :func:`clip_to_free_space`);
+    an object's single hull is also its visual, so that is clipped with it."""
+    for obj in objects:
+        if not obj.collision:
+            continue
+        base = obj.position - np.array([0.0, 0.0, params.base_clearance])
+        world = [p.copy() for p in obj.collision]
+        for p in world:
+            p.apply_translation(base)
+        clipped, share = clip_pieces(world, view, tolerance)
+        if not clipped or (share <= 0.0 and len(clipped) == len(world)):
+            continue
+        hull = trimesh.convex.convex_hull(np.vstack([p.vertices for p in clipped]))
+        if obj.visual is None or obj.visual is obj.collision[0]:  # a single hull is its own visual: the clipped pieces' hull
+            visual = hull
+        else:
+            visual = obj.visual.copy()
+            visual.apply_translation(base)
+        set_shape(obj, hull, base, params, None if len(clipped) == 1 and visual is hull else clipped, visual)
+        obj.notes.append(f"cut back out of the space the camera saw through ({100 * share:.0f} % of its volume, "
+                         f"{1000 * tolerance:.1f} mm tolerance)")
+
+
+def free_drops(points: np.ndarray, base_z: float, view: DepthView, tolerance: float, heights: int = 6) -> np.ndarray:
+    """Which points may be extruded down to ``base_z``: none of ``heights`` points on the vertical
+    segment below it was seen through (a side that tapers in below its top edge was seen there)."""
+    t = (np.arange(heights) + 0.5) / heights
+    below = np.repeat(points, heights, axis=0)
+    below[:, 2] -= np.tile(t, len(points)) * np.repeat(points[:, 2] - base_z, heights)
+    return np.asarray(~view.seen_through(below, tolerance).reshape(len(points), heights).any(axis=1))
