@@ -31,6 +31,7 @@ class MotionParams:
     swing_steps: int = 10  # joint-space waypoints of a swing across
     swing_dip: float = 0.02  # m a swing may dip below the lowest traverse
     joint_check_step: float = 0.05  # rad between checked postures of a move in joint space
+    goal_posture_tol: float = 0.05  # rad: a transit ending this near a given goal posture need not move into it
 
 
 @dataclass(frozen=True)
@@ -47,7 +48,7 @@ class PickParams:
     error_reward: float = -0.1  # reward of an attempt that could not be planned
     contact_reward: float = 0.3  # reward for both fingers touching at close
     lift_reward: float = 0.4  # reward for a full lift (scaled by the height reached)
-    handle_statics_weight: float = 0.3  # taken off a handle pinch's score per unit of torque needed over torque held
+    statics_weight: float = 0.3  # taken off a pinch's score per unit of torque needed over torque held
     squeeze_safety: float = 2.0  # the gripper squeezes this many times what the pinch's statics need
 
 

@@ -28,15 +28,15 @@ class GraspSkill(Motion):
 
     def _grasp_candidates(self, obj: str, height_offset: float = 0.0) -> list[GraspCandidate]:
         """Pinches that fit the hand and whose lever arm the grip can hold against gravity (a handle
-        pinch with ``squeeze_safety`` to spare); a handle pinch ranks lower the nearer its torque
-        comes to what the grip holds."""
+        pinch with ``squeeze_safety`` to spare); a pinch ranks lower the nearer its torque comes to
+        what the grip holds (a screwdriver by its grip, not by its shaft far from its weight)."""
         out = []
         for c in self._fitting_candidates(obj, height_offset):
             ok, need, can = self._holds(obj, c)
             if ok:
                 if c.kind == "handle" and need * self.params.pick.squeeze_safety > can:
                     continue  # a lever held only just: carrying it swings it out of the pinch
-                out.append(replace(c, score=c.score - self.params.pick.handle_statics_weight * need / can) if c.kind == "handle" else c)
+                out.append(replace(c, score=c.score - self.params.pick.statics_weight * need / can))
         out.sort(key=lambda c: -c.score)
         return out
 
