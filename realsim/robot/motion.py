@@ -111,7 +111,8 @@ class Motion(WorldQueries):
 
         With ``turn_late`` (a sideways hand for a handle, out of reach up high) the hand may keep
         its orientation across and turn while descending, or swing across in joint space at height.
-        ``q_goal``: the arm posture to end in (one already checked for what follows).
+        ``q_goal``: the arm posture to end in (one already checked for what follows), unless the
+        straight lines end within ``goal_posture_tol`` of it.
         """
         mp = self.params.motion
         q0 = self.data.ctrl[self.act].copy()
@@ -153,7 +154,9 @@ class Motion(WorldQueries):
         for plan in plans:
             for z in heights:
                 try:
-                    path = plan(z) + ([np.asarray(q_goal, float)] if q_goal is not None else [])
+                    path = plan(z)
+                    if q_goal is not None and np.abs(path[-1] - q_goal).max() > mp.goal_posture_tol:
+                        path.append(np.asarray(q_goal, float))  # into the vetted posture (another IK branch)
                     self._check_clear(path, ignore=ignore)
                 except PathBlocked as exc:
                     last = blocked = exc
