@@ -1,4 +1,4 @@
-"""The hull budget on a thin curved wall: merging by distance from the scan keeps patches even."""
+"""The hull budget on a thin curved wall (merging by distance from the scan keeps patches even), and the vertex cap."""
 
 from __future__ import annotations
 
@@ -55,3 +55,15 @@ def test_fewest_hulls_meets_target_with_few_hulls():
     least = math.ceil(math.pi / math.acos(1 - params.target_p95 / (RADIUS - WALL)))
     assert least - 2 <= len(best) <= 16, (len(best), least)
     assert all(len(h.vertices) <= params.max_hull_vertices for h in best)
+
+
+def test_capped_hull_keeps_at_most_64_vertices_close_to_the_shape():
+    from realsim.assets.hulls import capped
+
+    ball = trimesh.creation.icosphere(subdivisions=3, radius=0.05)  # 642 vertices
+    cut = capped(ball)
+    assert len(cut.vertices) <= 64 and cut.is_convex
+    assert np.abs(np.linalg.norm(cut.vertices, axis=1) - 0.05).max() < 1e-9  # vertices of the original
+    assert cut.volume >= 0.85 * ball.volume
+    box = trimesh.creation.box(extents=[0.1, 0.1, 0.1])
+    assert capped(box) is box  # few vertices: unchanged

@@ -78,3 +78,12 @@ def hull_p95_distance(hull: trimesh.Trimesh, solid: trimesh.Trimesh, n: int = 40
     eq = ConvexHull(hull.vertices).equations
     d_s2h = np.maximum(-(sample_surface(solid, n, 9) @ eq[:, :3].T + eq[:, 3]).max(axis=1), 0.0)
     return float(max(np.percentile(d_h2s, 95), np.percentile(d_s2h, 95)))
+
+
+def capped(mesh: trimesh.Trimesh, max_vertices: int = 64) -> trimesh.Trimesh:
+    """``mesh`` when it has at most ``max_vertices`` vertices, else its convex hull cut down to that
+    many (MuJoCo collides a mesh as its convex hull; GPU collision wants few vertices per hull)."""
+    if len(mesh.vertices) <= max_vertices:
+        return mesh
+    hull = make_hull(np.asarray(mesh.vertices), max_vertices=max_vertices)
+    return hull if hull is not None else mesh

@@ -14,6 +14,7 @@ import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
 
+from realsim.assets.hulls import capped
 from realsim.composition.appearance import (
     AppearanceParams,
     CaptureImage,
@@ -178,7 +179,7 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
             shape = dict(type=PRIMITIVES[primitive["type"]], size=list(primitive["size"]), pos=list(primitive["pos"]), quat=list(primitive["quat"]))
         else:
             file = f"{obj.name}_collision_{i}.stl"
-            assets[file] = mesh_bytes(hull, "stl")
+            assets[file] = mesh_bytes(capped(hull), "stl")  # at most 64 vertices per hull (scan pieces can have more)
             spec.add_mesh(name=f"{obj.name}_collision_{i}", file=file)
             shape = dict(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"{obj.name}_collision_{i}")
         body.add_geom(
