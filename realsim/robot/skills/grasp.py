@@ -105,10 +105,13 @@ class GraspSkill(Motion):
             return True, ""
         fitting = self._fitting_candidates(obj)
         if fitting:
-            torques = [self._holds(obj, c) for c in fitting]
-            _, need, can = min(torques, key=lambda t: t[1])
+            safety = self.params.pick.squeeze_safety
+            torques = [(c.kind, *self._holds(obj, c)[1:]) for c in fitting]
+            kind, need, can = min(torques, key=lambda t: t[1] / t[2] * (safety if t[0] == "handle" else 1.0))
+            held = f"the grip holds {can:.2f} N m" + (f" (a handle must hold {safety:g} times its torque to be carried without swinging out)"
+                                                       if kind == "handle" else "")
             return False, (f"{obj} fits the hand only where its weight twists out of the pinch: {need:.2f} N m about the "
-                           f"fingers at the best of {len(fitting)} pinches, the grip holds {can:.2f} N m")
+                           f"fingers at the best of {len(fitting)} pinches ({'a handle' if kind == 'handle' else 'of its body'}), {held}")
         w = narrowest_width(self.object_points(obj))
         return False, f"{obj} is {w * 1000:.0f} mm across at its narrowest and has no rim or handle the hand can pinch: the Panda hand opens {MAX_WIDTH * 1000:.0f} mm usable (80 mm max)"
 
