@@ -88,3 +88,12 @@ def test_container_grows_for_its_contents() -> None:
     scene, b = _settled("some bananas in a bowl", seed=8)
     bowl = _named(scene, "bowl")[0]
     assert max(b[bowl][1][:2] - b[bowl][0][:2]) > max(generate("bowl", np.random.default_rng(0)).dims)
+
+
+def test_where_on_the_support_and_what_does_not_fit() -> None:
+    """"a hammer on the left, a mug on the right": sides of the support; a thing larger than its support is left out
+    with a warning while the rest is built."""
+    scene, bounds = _settled("a rack on the counter, a hammer on the left and a mug on the right")
+    assert _named(scene, "rack") == [] and any("rack" in w and "left out" in w for w in scene.warnings)
+    (hammer,), (mug,) = _named(scene, "hammer"), _named(scene, "mug")
+    assert (bounds[hammer][0][0] + bounds[hammer][1][0]) / 2 < (bounds[mug][0][0] + bounds[mug][1][0]) / 2 - 0.2

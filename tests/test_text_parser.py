@@ -132,3 +132,9 @@ def test_a_relation_said_before_its_subject() -> None:
     assert rel["teacup"] == [("in_front_of", "kettle")]
     assert rel["jar"] == [("behind", "kettle")]
     assert {o.label: o.on for o in spec.objects}["mug"] == "table" and {o.label: o.on for o in spec.objects}["vase"] == "shelf"
+
+
+def test_who_is_not_what_and_stacks_of_several_phrases() -> None:
+    spec = parse_scene("On my desk you'd find two books and a tablet stacked, and we've got a mug.")
+    assert {o.label: (o.count, o.on, o.stacked) for o in spec.objects} == {"book": (2, "desk", True), "tablet": (1, "book", False),
+                                                                           "mug": (1, "desk", False)}

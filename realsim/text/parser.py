@@ -74,6 +74,7 @@ def _prepare(text: str) -> str:
     t = re.sub(rf"\b(bottle|glass|cup|mug|jar|can|carton|box|bowl|pot|bag|tin|packet)s? of ({MASS_NOUNS})\b", _mass_container, t)
     t = re.sub(r"\b(each|every) (?:one )?of them\b", "", t)
     t = re.sub(r"\bthere's\b", "there is", t)
+    t = re.sub(r"\b(i|you|we|they|he|she)'(?:d|ll|ve|re|m)\b", r"\1", t)  # "you'd find", "we've got": who, not what
     t = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?: side| hand side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", t)
     t = re.sub(r"\bin front\b(?! of)", "in front of it", t)
     t = re.sub(r"(\d+)\s*x\b", r"\1", t)
@@ -293,10 +294,12 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
             row_next = True
         elif marker == "STACKED":
             objs = [p for p in st.group if p.spec is not None]
-            if len(objs) == 1 and objs[0].spec.count > 1:  # type: ignore[union-attr]
-                objs[0].spec.stacked = True  # type: ignore[union-attr]
-            for lower, upper in zip(objs, objs[1:]):  # "a plate and a bowl stacked": the bowl on the plate
+            if objs and objs[-1].spec.count > 1:  # type: ignore[union-attr]  # "a rack, and three plates stacked": the plates
+                objs[-1].spec.stacked, objs = True, []  # type: ignore[union-attr]
+            for lower, upper in zip(objs, objs[1:]):  # "two books and a tablet stacked": the tablet on the books, and
+                lower.spec.stacked |= lower.spec.count > 1  # type: ignore[union-attr]
                 b.relate([upper], "on", lower)
+            st.group = objs[:1] or st.group  # "... stacked on the desk": the bottom of the stack stands there
             if len(objs) == 1 and objs[0].spec.count == 1 and isinstance(nxt, str) and nxt == "on":  # type: ignore[union-attr]
                 pass  # "stacked on the box": the relation follows
         elif marker == "ROW":

@@ -110,6 +110,25 @@ def _supports(spec: SceneSpec) -> dict[str, SupportPlane]:
     return planes
 
 
+def _unit_of(items: list[Item], key: str) -> str | None:
+    """The row group of the item ``key`` (None when it stands alone)."""
+    return next((it.group for it in items if it.key == key), None)
+
+
+def _resting_on_placed(children: list[Item], placed: dict[str, Item]) -> list[Item]:
+    """The children whose chain of parents ends on a placed item (those on something left out are left out too)."""
+    by_key = {it.key: it for it in children}
+
+    def grounded(it: Item) -> bool:
+        seen: set[str] = set()
+        while it.parent is not None and it.parent not in placed and it.parent in by_key and it.key not in seen:
+            seen.add(it.key)
+            it = by_key[it.parent]
+        return it.parent in placed
+
+    return [it for it in children if grounded(it)]
+
+
 def _floor_region(planes: dict[str, SupportPlane]) -> tuple[np.ndarray, np.ndarray] | None:
     """Where floor objects go beside table-like supports: a band behind them (away from the robot)."""
     elevated = [p for p in planes.values() if p.kind != "floor"]
@@ -260,13 +279,19 @@ def _arrange(scene: Scene, spec: SceneSpec, instances: list[_Instance], planes: 
         region = _floor_region(planes) if support.kind == "floor" else None
         layout = params.objects.layout if support.kind != "floor" else dataclasses.replace(params.objects.layout, reach_radius=None)
         floor_obstacles = obstacles + ([p.polygon for p in planes.values() if p.kind != "floor"] if support.kind == "floor" else [])
-        try:
-            scene.warnings.extend(place_roots(group, support, floor_obstacles, rng, layout, region))
-        except _NoRoom as exc:
-            raise InputError(f"cannot place {len(group)} objects on the {support.rect_size[0]:.2f} x {support.rect_size[1]:.2f} m {support.kind} "
-                             f"without overlap ({exc} does not fit): describe fewer or smaller objects") from None
+        while group:  # what does not fit on its support (beside the rest) is left out, with a warning
+            try:
+                scene.warnings.extend(place_roots(group, support, floor_obstacles, rng, layout, region))
+                break
+            except _NoRoom as exc:
+                unit = {it.key for it in group if it.key == str(exc) or (it.group is not None and it.group == _unit_of(group, str(exc)))}
+                group = [it for it in group if it.key not in unit]
+                scene.warnings.append(f"{', '.join(sorted(unit))}: no room on the {support.rect_size[0]:.2f} x {support.rect_size[1]:.2f} m "
+                                      f"{support.kind} beside the rest; left out (describe fewer or smaller objects)")
         placed.update({it.key: it for it in group})
-    scene.warnings.extend(place_children([it for it in items if it.parent is not None], placed, rng))
+    if not placed:
+        raise InputError("none of the described objects fits on its support: describe fewer or smaller objects")
+    scene.warnings.extend(place_children(_resting_on_placed([it for it in items if it.parent is not None], placed), placed, rng))
     for inst in instances:
         it = inst.item
         if it is None or it.key not in placed:

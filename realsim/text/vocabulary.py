@@ -33,7 +33,8 @@ FILLER = {"the", "there", "is", "are", "s", "some", "its", "it", "that", "which"
           "sort", "kind", "type", "stuff", "things", "thing", "bunch", "got", "sat", "left", "right", "corner", "middle", "center",
           "centre", "edge", "side", "back", "front", "top", "together", "neatly", "too", "else", "whole", "next", "near", "far", "end",
           "be", "should", "want", "like", "would", "let", "make", "made", "with", "of", "and", "or", "but", "so", "at", "to", "onto",
-          "each", "every", "could", "please", "setup"}
+          "each", "every", "could", "please", "setup", "find", "notice", "spot", "keep", "keeps", "will", "might", "may", "usually",
+          "always", "probably", "currently", "he", "she"}
 MASS_NOUNS = r"water|juice|milk|soda|wine|beer|coffee|tea|jam|honey|oil|flour|rice|pasta|cereal|sugar|salt|soup|sauce|cream|butter|food|snacks|candy|sand|soil|dirt"
 PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
 # Marker patterns, longest first; each becomes a token "§<kind>§".
