@@ -138,3 +138,11 @@ def test_who_is_not_what_and_stacks_of_several_phrases() -> None:
     spec = parse_scene("On my desk you'd find two books and a tablet stacked, and we've got a mug.")
     assert {o.label: (o.count, o.on, o.stacked) for o in spec.objects} == {"book": (2, "desk", True), "tablet": (1, "book", False),
                                                                            "mug": (1, "desk", False)}
+
+
+def test_parts_measures_and_between() -> None:
+    """A part after "with" describes its owner ("a box with a lid" is a lidded box); "a roll of tape" is tape;
+    "between them" places a thing beside them."""
+    spec = parse_scene("a box with a lid, a pot with two handles, a roll of tape. There are 2 mugs. Between them there's a teapot.")
+    assert {o.label: o.count for o in spec.objects} == {"lidded box": 1, "pot": 1, "tape": 1, "mug": 2, "teapot": 1}
+    assert [(r.relation, r.target) for o in spec.objects if o.label == "teapot" for r in o.relations] == [("next_to", "mug")]

@@ -92,6 +92,13 @@ class Builder:
                     s.spec.on = s.spec.inside = None
                 s.spec.relations.append(RelationSpec(relation=rel, target=t.id))  # type: ignore[arg-type]
 
+    def add_part(self, owner: Phrase, part: str) -> None:
+        """"a box with a lid": a part of the object said before "with"; a box gets a hinged lid, others keep their model."""
+        from realsim.procedural.generate import kind_for
+
+        if part == "lid" and owner.spec is not None and kind_for(owner.spec.label) in ("box", "upright_box", "primitive_box"):
+            owner.spec.label = owner.spec.name = f"lidded {owner.spec.label}"
+
     def with_default(self, owner: Phrase, p: Phrase) -> None:
         """What "X with Y" means for Y: on a support, in a container, else on X."""
         from realsim.procedural.families import CONTAINERS

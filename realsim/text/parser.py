@@ -34,6 +34,7 @@ from realsim.text.vocabulary import (
     MEASURES,
     NOT_SUPPORT_AFTER,
     NUMBERS,
+    PARTS,
     PLURAL_COUNT,
     PREAMBLE,
     PRONOUNS,
@@ -267,6 +268,8 @@ def _sentence(items: list[str | Phrase], b: Builder, topic: Phrase | None) -> Ph
                 st.topic = it if st.topic is None else st.topic
                 if st.owner is None and isinstance(nxt, str) and nxt == "with":
                     st.owner = it
+            elif it.kind == "object" and st.listing and st.owner is not None and st.owner.kind == "object" and it.spec.label in PARTS:  # type: ignore[union-attr]
+                b.add_part(st.owner, it.spec.label)  # type: ignore[union-attr]
             elif it.kind == "object":
                 b.add_object(it)
                 st.recent.append(it)

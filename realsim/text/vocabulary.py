@@ -48,7 +48,7 @@ MARKERS: list[tuple[str, str]] = [
     (r"(?:to|on|at) the right(?: hand side)? of|right of", "right_of"),
     (r"in front of", "in_front_of"),
     (r"behind|in back of", "behind"),
-    (r"next to|beside|besides|near|nearby|alongside|close to|by", "next_to"),
+    (r"next to|beside|besides|near|nearby|alongside|close to|by|in between|between", "next_to"),
     (r"(?:on|at|to) the left(?: hand)?(?: side)?", "REGION_left"),
     (r"(?:on|at|to) the right(?: hand)?(?: side)?", "REGION_right"),
     (r"(?:on|at|in|to) the (?:back|far end|rear)(?: side)?", "REGION_back"),
@@ -67,6 +67,8 @@ MARKERS: list[tuple[str, str]] = [
 ]
 # where on its support a "REGION_<name>" marker puts an object: (x, y) in [0, 1], left to right, front to back
 REGIONS = {"left": (0.2, 0.5), "right": (0.8, 0.5), "back": (0.5, 0.8), "front": (0.5, 0.2), "middle": (0.5, 0.5)}
+# parts of a thing: "a box with a lid", "a pot with two handles" describe it, they are not objects of their own
+PARTS = {"lid", "handle", "spout", "cap", "cork", "knob", "strap", "hinge", "leg", "wheel", "button", "label", "sticker"}
 REL_MARKERS = {"on", "in", "next_to", "left_of", "right_of", "behind", "in_front_of", "under"}
 
 
@@ -78,4 +80,4 @@ PREAMBLE = (r"^\W*(?:please\s+|hey\s+|ok\s+|so\s+)*(?:(?:i|we)\s+(?:need|want|wo
 # fixtures of a room: named as landmarks ("next to the sink"), never built as objects
 FIXTURES = {"sink", "wall", "window", "door", "fridge", "refrigerator", "freezer", "oven", "dishwasher", "radiator", "fireplace",
             "couch", "sofa", "bed", "wardrobe", "closet", "cupboard", "staircase", "stairs", "doorway", "corner"}
-MEASURES = r"loaf|loaves|slice|slices|piece|pieces|chunk|chunks|wedge|wedges|head|heads|stick|sticks|bar|bars|block|blocks|ear|ears|clove|cloves|sprig|sprigs"
+MEASURES = r"roll|rolls|tube|tubes|sheet|sheets|loaf|loaves|slice|slices|piece|pieces|chunk|chunks|wedge|wedges|head|heads|stick|sticks|bar|bars|block|blocks|ear|ears|clove|cloves|sprig|sprigs"
