@@ -290,3 +290,65 @@ def test_single_view_keeps_hidden_bases_drops_walls() -> None:
     out = filter_by_size(points, result, [_table()], SegmentParams(), structure_only=True)
     assert np.all(out.labels[: len(hidden_base)] == 1)
     assert np.all(out.labels[len(hidden_base):] == 0)
+
+
+def _tube(r: float, z0: float, z1: float, step: float, centre: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """Points on a vertical cylinder wall of radius ``r`` from ``z0`` to ``z1`` above the table."""
+    a, z = np.meshgrid(np.arange(0.0, 2 * np.pi, step / r), np.arange(z0, z1, step))
+    return np.stack([centre[0] + r * np.cos(a.ravel()), centre[1] + r * np.sin(a.ravel()), TABLE_Z + z.ravel()], axis=1)
+
+
+def _disc(r: float, z: float, step: float, centre: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    g = np.arange(-r, r, step)
+    gx, gy = np.meshgrid(g, g)
+    inside = gx.ravel() ** 2 + gy.ravel() ** 2 < r * r
+    return np.stack([centre[0] + gx.ravel()[inside], centre[1] + gy.ravel()[inside], np.full(inside.sum(), TABLE_Z + z)], axis=1)
+
+
+def _on_table(objects: list[np.ndarray], footprints: list[tuple[tuple[float, float], float]], step: float,
+              seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Table points (minus what lies under the round ``footprints``) plus the objects, 1 mm noise;
+    and the ground-truth object index (0 table) of each point."""
+    g = np.arange(-0.3, 0.3, step)
+    gx, gy = np.meshgrid(g, g)
+    table = np.stack([gx.ravel(), gy.ravel(), np.full(gx.size, TABLE_Z)], axis=1)
+    for (cx, cy), r in footprints:
+        table = table[np.hypot(table[:, 0] - cx, table[:, 1] - cy) > r]
+    points = np.vstack([table, *objects])
+    gt = np.concatenate([np.zeros(len(table), int), *[np.full(len(o), k) for k, o in enumerate(objects, start=1)]])
+    return points + np.random.default_rng(seed).normal(0.0, 0.001, points.shape), gt
+
+
+@pytest.mark.parametrize("yaw", [0.0, 0.7, 2.0])
+def test_box_against_a_can_in_a_cloud_is_two_objects(yaw: float) -> None:
+    """A cube pressed against a can (a tangent contact, the crack between them narrower than a
+    link) in a cloud without a viewpoint: the sides facing each other are each seen from the
+    crack, so the contact is concave and the two stay apart."""
+    step = 0.003
+    box = _box_surface(np.array([-0.03, -0.03, TABLE_Z]), np.array([0.03, 0.03, TABLE_Z + 0.06]), step)
+    c, s = np.cos(yaw), np.sin(yaw)
+    box[:, :2] = box[:, :2] @ np.array([[c, -s], [s, c]]).T
+    centre = (0.0705 * c, 0.0705 * s)  # 0.5 mm from the cube's face
+    can = np.vstack([_tube(0.04, 0.0, 0.09, step, centre), _disc(0.04, 0.09, step, centre)])
+    points, gt = _on_table([box, can], [((0.0, 0.0), 0.042), (centre, 0.04)], step, seed=3)
+    result = segment_objects(points, None, [_table()], None, SegmentParams(), seed=0)
+    assert len(np.unique(result.labels[result.labels > 0])) == 2
+    assert matched_ious(result.labels, gt).min() > 0.7
+
+
+@pytest.mark.xfail(strict=True, reason="known limit: the inside of a handle faces the mug's wall across a gap, as two touching "
+                   "objects do; seen-side orientation splits the handle with a strip of wall off (noise seeds 4 and 5, not 0)")
+def test_mug_with_a_handle_in_a_cloud_is_one_object() -> None:
+    """A single non-convex object (an open cup with a thick wall and a handle) is not split at
+    its concave creases (inside bottom, handle joints)."""
+    step = 0.003
+    r = 0.04
+    u, v = np.meshgrid(np.arange(-np.pi / 2, np.pi / 2, step / 0.025), np.arange(0.0, 2 * np.pi, step / 0.006))
+    ring = 0.025 + 0.006 * np.cos(v)
+    handle = np.stack([(r - 0.005 + ring * np.cos(u)).ravel(), (0.006 * np.sin(v)).ravel(), (TABLE_Z + 0.045 + ring * np.sin(u)).ravel()], axis=1)
+    handle = handle[np.hypot(handle[:, 0], handle[:, 1]) > r]
+    mug = np.vstack([_tube(r, 0.0, 0.09, step), _tube(r - 0.004, 0.008, 0.09, step), _disc(r - 0.004, 0.008, step), handle])
+    points, gt = _on_table([mug], [((0.0, 0.0), r)], step, seed=4)
+    result = segment_objects(points, None, [_table()], None, SegmentParams(), seed=0)
+    assert len(np.unique(result.labels[result.labels > 0])) == 1
+    assert matched_ious(result.labels, gt)[0] > 0.85
