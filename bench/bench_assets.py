@@ -3,6 +3,7 @@
     python bench/bench_assets.py                 # fidelity, mass, drop, cavity tables + cold/warm timing
     python bench/bench_assets.py --baseline      # + sequential CoACD at obj2mjcf defaults (subset)
     python bench/bench_assets.py --baseline all  # ... on all 15 objects (slow: minutes)
+    python bench/bench_assets.py --only 024_bowl 025_mug   # a subset of the scans (folder names)
 """
 
 from __future__ import annotations
@@ -49,8 +50,9 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--baseline", nargs="?", const="subset", default=None, help="'subset' (default) or 'all'")
     ap.add_argument("--data", type=Path, default=DATA)
+    ap.add_argument("--only", nargs="+", default=None, help="scan folder names to measure (default: all)")
     args = ap.parse_args()
-    paths = sorted(args.data.glob("*/textured.obj"))
+    paths = sorted(p for p in args.data.glob("*/textured.obj") if args.only is None or p.parent.name in args.only)
     params = AssetParams()
     with tempfile.TemporaryDirectory() as tmp:
         cache = DiskCache(Path(tmp))
