@@ -40,6 +40,7 @@ class Item:
     fixed_yaw: bool = False
     position: tuple[float, float] | None = None  # preferred (x, y) in [0, 1] on the support (a photo)
     extra: list[np.ndarray] = field(default_factory=list)  # more pieces moving with it (an articulated child), object frame
+    local_print: np.ndarray | None = None  # footprint polygon in the object frame (a cache of _print)
     xy: np.ndarray | None = None
     yaw: float = 0.0
     z: float = 0.0
@@ -51,8 +52,10 @@ def _rot(yaw: float) -> np.ndarray:
 
 
 def _print(item: Item, xy: np.ndarray, yaw: float) -> np.ndarray:
-    pts = np.vstack([h[:, :2] for h in item.hulls + item.extra])
-    return footprint(pts @ _rot(yaw).T + xy)
+    """The item's footprint polygon at (``xy``, ``yaw``): its own footprint (computed once) moved there."""
+    if item.local_print is None:
+        item.local_print = footprint(np.vstack([h[:, :2] for h in item.hulls + item.extra]))
+    return item.local_print @ _rot(yaw).T + xy
 
 
 def world_hulls(item: Item) -> list[np.ndarray]:
