@@ -24,11 +24,12 @@ class ContainerParams:
 
     enabled: bool = True
     min_depth: float = 0.3  # cavity depth (rim minus floor) as a share of the height that makes it open
-    bands: int = 8  # height bands of the revolved profile
-    sectors: int = 16  # convex wall pieces
+    bands: int = 12  # radial bins of the cavity's profile
+    sectors: int = 12  # wall pieces around
+    segments: int = 2  # wall pieces up
     min_wall: float = 0.003  # m
     max_wall_share: float = 0.25  # of the rim radius
-    min_floor: float = 0.004  # thinnest bottom (m)
+    min_floor: float = 0.002  # thinnest bottom (m)
 
 
 @dataclass
@@ -67,31 +68,36 @@ def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float
     return centre, radius
 
 
-def _profile(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float, bands: int) -> tuple[np.ndarray, np.ndarray]:
-    """Outer radius per height (z, r), non-decreasing upwards and concave so the solid is convex."""
-    r = np.linalg.norm(points[:, :2] - centre, axis=1)
-    z = np.linspace(base_z, top_z, bands + 1)
-    radii = np.full(bands + 1, np.nan)
-    for i in range(bands + 1):
-        near = np.abs(points[:, 2] - z[i]) <= (top_z - base_z) / bands
-        if near.sum() >= 10:
-            radii[i] = float(np.percentile(r[near], 90))
-    good = np.isfinite(radii)
-    if good.sum() < 2:
-        return z, np.full(bands + 1, radius)
-    radii = np.interp(z, z[good], radii[good])
-    radii = np.minimum(np.maximum.accumulate(radii), radius * 1.05)
-    # the upper concave envelope of (z, r): a convex solid of revolution
-    hull = [0]
-    for i in range(1, len(z)):
-        while len(hull) >= 2:
-            a, b = hull[-2], hull[-1]
-            if (radii[b] - radii[a]) * (z[i] - z[a]) <= (radii[i] - radii[a]) * (z[b] - z[a]):
-                hull.pop()
-            else:
-                break
-        hull.append(i)
-    return z, np.interp(z, z[hull], radii[hull])
+def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor: float, top_z: float, bins: int,
+                   camera_xy: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
+    """The cavity's surface as heights over radii (r, z), r from the axis to ``radius``: per radial
+    bin the median height of the points seen inside the rim (on the side away from the camera, where
+    the camera sees the inner wall), non-decreasing outwards, from ``floor`` up to the rim at ``top_z``."""
+    rel = points[:, :2] - centre
+    r = np.linalg.norm(rel, axis=1)
+    inside = r < radius
+    if camera_xy is not None and np.linalg.norm(centre - camera_xy) > 1e-6:
+        away = (centre - camera_xy) / np.linalg.norm(centre - camera_xy)
+        far = inside & (rel @ away > 0)
+        inside = far if far.sum() >= 20 else inside
+    edges = np.linspace(0.0, radius, bins + 1)
+    mids = (edges[:-1] + edges[1:]) / 2
+    heights = np.full(bins, np.nan)
+    for i in range(bins):
+        near = inside & (r >= edges[i]) & (r < edges[i + 1])
+        if near.sum() >= 5:
+            heights[i] = float(np.median(points[near, 2]))
+    good = np.isfinite(heights)
+    heights = np.interp(mids, mids[good], heights[good]) if good.any() else np.full(bins, floor)
+    heights = np.clip(np.maximum.accumulate(np.clip(heights, floor, top_z)), floor, top_z)
+    return np.concatenate([[0.0], mids, [radius]]), np.concatenate([[heights[0]], heights, [top_z]])
+
+
+def _offset(r: np.ndarray, z: np.ndarray, wall: float) -> tuple[np.ndarray, np.ndarray]:
+    """The (r, z) polyline moved ``wall`` along its normal away from the cavity (outwards and down)."""
+    dr, dz = np.gradient(r), np.gradient(z)
+    length = np.maximum(np.hypot(dr, dz), 1e-12)
+    return r + wall * dz / length, z - wall * dr / length
 
 
 def _ring(radius: float, z: float, angles: np.ndarray, centre: np.ndarray) -> np.ndarray:
@@ -99,38 +105,55 @@ def _ring(radius: float, z: float, angles: np.ndarray, centre: np.ndarray) -> np
 
 
 def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
-                            params: ContainerParams = ContainerParams()) -> OpenContainer | None:
-    """The hollow solid of an open round container, or None when its observed top is not hollow."""
+                            params: ContainerParams = ContainerParams(), camera_xy: np.ndarray | None = None,
+                            seen_inside: np.ndarray | None = None) -> OpenContainer | None:
+    """The hollow solid of an open round container, or None when its observed top is not hollow.
+
+    The cavity is the surface seen inside the rim (see :func:`_inner_profile`; ``seen_inside``: every
+    point the camera saw within the rim, whatever object it was given to: a shallow floor is often
+    taken for the support), the wall that surface moved outwards by the thickness scanned at the
+    rim, the bottom solid down to the support."""
     if not params.enabled:
         return None
     height = top_z - base_z
     floor = cavity_floor(points, centre, radius, height, params.min_depth)
     if floor is None:
         return None
+    cavity = points if seen_inside is None else np.vstack([points, seen_inside])
+    inner = cavity[np.linalg.norm(cavity[:, :2] - centre, axis=1) < 0.7 * radius]
+    floor = min(floor, float(np.percentile(inner[:, 2], 10))) if len(inner) >= 20 else floor
     floor = float(np.clip(floor, base_z + params.min_floor, top_z - 0.2 * height))
-    z, r_out = _profile(points, centre, radius, base_z, top_z, params.bands)
     rim = points[points[:, 2] >= top_z - 0.1 * height]
     rr = np.linalg.norm(rim[:, :2] - centre, axis=1) if len(rim) else np.array([radius])
-    wall = float(np.clip(np.percentile(rr, 95) - np.percentile(rr, 5), params.min_wall, params.max_wall_share * r_out[-1]))
-    r_in = np.maximum(r_out - wall, 0.2 * r_out)
-    # the visual: revolve the closed profile (axis -> outer wall -> rim -> inner wall -> floor -> axis)
-    inner = z >= floor
-    zin = np.concatenate([[floor], z[inner]])
-    rin = np.interp(zin, z, r_in)
-    line = np.vstack([[0.0, base_z], np.column_stack([r_out, z]), np.column_stack([rin[::-1], zin[::-1]]), [0.0, floor]])
+    wall = float(np.clip(np.percentile(rr, 95) - np.percentile(rr, 5), params.min_wall, params.max_wall_share * radius))
+    r_in, z_in = _inner_profile(cavity, centre, radius - wall / 2, floor, top_z, params.bands, camera_xy)
+    r_out, z_out = _offset(r_in, z_in, wall)
+    r_out[-1], z_out[-1] = r_in[-1] + wall, top_z  # the rim: flat, one wall wide
+    wall_part = (z_out > base_z) & (r_out > r_in[1])
+    r_out, z_out = r_out[wall_part], z_out[wall_part]
+    foot = float(r_out[0]) if len(r_out) else radius
+    # the visual: revolve the closed profile (axis -> foot -> outer wall -> rim -> inner wall -> floor -> axis)
+    line = np.vstack([[0.0, base_z], [foot, base_z], np.column_stack([r_out, z_out]), np.column_stack([r_in[::-1], z_in[::-1]]), [0.0, z_in[0]]])
     visual = trimesh.creation.revolve(line, sections=32)
     visual.apply_translation([centre[0], centre[1], 0.0])
     if visual.volume < 0:
         visual.invert()
-    # collision: a bottom disc and wall sectors between the outer and inner profiles
+    # collision: the bottom (support to cavity floor) and wall pieces, ``sectors`` around, ``segments`` up
     angles = np.linspace(0.0, 2 * np.pi, params.sectors + 1)
     fine = np.linspace(0.0, 2 * np.pi, 4 * params.sectors + 1)[:-1]
-    bottom = np.vstack([_ring(float(np.interp(zz, z, r_out)), zz, fine, centre) for zz in (base_z, floor)])
-    pieces = [trimesh.convex.convex_hull(bottom)]
-    for a0, a1 in zip(angles[:-1], angles[1:]):
-        arc = np.linspace(a0, a1, 3)
-        cloud = np.vstack([_ring(float(ro), float(zz), arc, centre) for zz, ro in zip(zin, np.interp(zin, z, r_out))] +
-                          [_ring(float(ri), float(zz), arc, centre) for zz, ri in zip(zin, rin)])
-        pieces.append(trimesh.convex.convex_hull(cloud))
-    outer = trimesh.convex.convex_hull(np.vstack([_ring(float(ro), float(zz), fine, centre) for zz, ro in zip(z, r_out)]))
-    return OpenContainer(pieces, visual, outer, wall, floor)
+    flat = z_in <= z_in[0] + 0.1 * (top_z - z_in[0])
+    floor_r = float(r_in[flat].max()) if flat.any() else foot
+    pieces = [trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre), _ring(max(floor_r, 1e-3), float(z_in[0]), fine, centre)]))]
+    inner_wall = r_in >= floor_r
+    zs = np.linspace(float(z_in[0]), top_z, params.segments + 1)
+    for z0, z1 in zip(zs[:-1], zs[1:]):
+        levels = np.linspace(z0, z1, 3)
+        ri = np.interp(levels, z_in[inner_wall], r_in[inner_wall])
+        order = np.argsort(z_out)
+        ro = np.interp(levels, z_out[order], r_out[order], left=foot)
+        for a0, a1 in zip(angles[:-1], angles[1:]):
+            arc = np.linspace(a0, a1, 3)
+            cloud = np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(np.concatenate([ri, ro]), np.concatenate([levels, levels]))])
+            pieces.append(trimesh.convex.convex_hull(cloud))
+    outer = trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre)] + [_ring(float(x), float(zz), fine, centre) for x, zz in zip(r_out, z_out)]))
+    return OpenContainer(pieces, visual, outer, wall, float(z_in[0]))

@@ -12,6 +12,7 @@ import trimesh
 from scipy.spatial import QhullError
 
 from realsim.completion.hull import fast_hull
+from realsim.completion.neighbours import clip_convex
 
 
 def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False,
@@ -93,7 +94,7 @@ def complete_bands(points: np.ndarray, base_z: float, top_z: float, bands: int, 
     droppable = drops[points[:, 2] <= top_z] if drops is not None else np.ones(len(kept), bool)
     edges = np.linspace(base_z, top_z, bands + 1)
     margin = 0.1 * height / bands
-    pieces = []
+    pieces, bounds = [], []
     for i, (a, b) in enumerate(zip(edges[:-1], edges[1:])):
         inside = (kept[:, 2] >= a - margin) & (kept[:, 2] <= b + margin)
         if inside.sum() < 8:
@@ -105,6 +106,18 @@ def complete_bands(points: np.ndarray, base_z: float, top_z: float, bands: int, 
                 pieces.append(fast_hull(kept[inside]))
         except (QhullError, ValueError):
             continue
-    if len(pieces) < 2 or sum(p.volume for p in pieces) > max_fill * whole.volume:
+        bounds.append((a, b))
+    if len(pieces) < 2 or _band_volume(pieces, bounds) > max_fill * whole.volume:
         return None
     return pieces
+
+
+def _band_volume(pieces: list[trimesh.Trimesh], bounds: list[tuple[float, float]]) -> float:
+    """Volume of band pieces without the overlaps they share with their neighbours (each cut to its band)."""
+    up = np.array([0.0, 0.0, 1.0])
+    total = 0.0
+    for piece, (a, b) in zip(pieces, bounds):
+        low = clip_convex(piece, up, a) if piece.bounds[0][2] < a else piece
+        band = clip_convex(low, -up, -b) if low is not None and low.bounds[1][2] > b else low
+        total += band.volume if band is not None else 0.0
+    return total

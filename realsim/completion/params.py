@@ -37,7 +37,7 @@ class CompletionParams:
     max_slabs: int = 8
     slab_max_fill: float = 0.8  # slabs are used when they fill less than this share of the single hull
     bands: int = 6  # an upright body whose profile is not convex is its hulls in this many height bands
-    bands_max_fill: float = 0.95  # bands are used when they fill less than this share of the single hull
+    bands_max_fill: float = 0.98  # bands are used when they fill less than this share of the single hull
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
     mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored

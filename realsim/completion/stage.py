@@ -69,7 +69,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:
-            container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers)
+            within = (np.linalg.norm(points[:, :2] - rim[0], axis=1) < rim[1]) & (points[:, 2] > base_z) & (points[:, 2] < top_z)
+            container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers,
+                                                view.camera[:2] if view is not None else None, points[within & ~mask])
         carved = 0.0
         if container is not None and rim is not None:
             mesh, parts, visual = container.outer, container.pieces, container.visual
