@@ -25,4 +25,5 @@ def test_spots_and_poses_try_the_centre_first_then_nearer_the_robot() -> None:
     poses = release_poses(near, ReleaseParams())
     assert len(poses) == 6 + 6 + 12 * 3 <= ReleaseParams().max_poses
     assert {round(y, 3) for _, y, _ in poses[:6]} == {round(y, 3) for y in ReleaseParams().yaws}  # every yaw at the first spot
-    assert all(np.allclose(xy, 0.0) and d > ReleaseParams().drops[0] for xy, _, d in poses[6:12])  # then higher releases there
+    assert all(d == ReleaseParams().drops[0] for _, _, d in poses[:42])  # the other spots before any higher release
+    assert all(np.allclose(xy, 0.0) and d > ReleaseParams().drops[0] for xy, _, d in poses[42:])  # higher releases last, within the limit

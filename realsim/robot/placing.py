@@ -1,8 +1,8 @@
 """Where to release a held object: spots within a target's free area, hand yaws and heights.
 
 A place that cannot reach its first release pose tries what a person would: the hand turned
-about the vertical, a slightly higher release, another spot within the container's cavity or the
-support's top (nearer the robot first). These functions only propose; the robot checks
+about the vertical, another spot within the container's cavity or the support's top (nearer the
+robot first), a slightly higher release. These functions only propose; the robot checks
 each pose with IK and a planned path before moving.
 """
 
@@ -21,7 +21,7 @@ class ReleaseParams:
     ring: int = 6  # spots around the centre of the free area
     yaws: tuple[float, ...] = (0.0, 0.5, -0.5, 1.0, -1.0, np.pi / 2)  # rad the hand turns about the vertical
     drops: tuple[float, ...] = (0.01, 0.03, 0.05)  # m above the surface at release
-    max_poses: int = 48  # the first spot's yaws and heights and three yaws at each of two rings of six
+    max_poses: int = 48  # the first spot's yaws, three yaws at each of two rings of six, then higher releases
 
 
 def footprint_radius(obj_pts: np.ndarray) -> float:
@@ -83,10 +83,11 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
 
 
 def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams(), limit: bool = True) -> list[tuple[np.ndarray, float, float]]:
-    """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, higher
-    releases there, then the other spots; at most ``params.max_poses`` with ``limit``."""
+    """(xy, hand yaw change, drop height) to try, in order: every yaw at the first spot, the
+    other spots, then higher releases at the first spot (a tall object dropped from higher may
+    tip: the last resort); at most ``params.max_poses`` with ``limit``."""
     first = params.drops[0]
     out = [(spot_list[0], yaw, first) for yaw in params.yaws]
-    out += [(spot_list[0], yaw, drop) for drop in params.drops[1:] for yaw in params.yaws[:3]]
     out += [(xy, yaw, first) for xy in spot_list[1:] for yaw in params.yaws[:3]]
+    out += [(spot_list[0], yaw, drop) for drop in params.drops[1:] for yaw in params.yaws[:3]]
     return out[: params.max_poses] if limit else out

@@ -83,7 +83,7 @@ class Release(Motion):
                 last = exc
         else:
             raise PlanFailure(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, heights; last: {last})")
-        if not self.holding(obj):
+        if self._slipped(obj):
             self.held = None
             return ActionResult(name, False, f"{obj} slipped out of the hand on the way", values={"release_pose": k})
         self._gripper(GRIPPER_OPEN_CTRL)
@@ -106,6 +106,10 @@ class Release(Motion):
         ok = verdict.ok and resting
         reason = "" if ok else (f"not {_WORDS[name]} after release: {verdict.measured}" if not verdict.ok else "object still moving")
         return ActionResult(name, ok, reason, values=values)
+
+    def _slipped(self, obj: str) -> bool:
+        """Whether no finger touches ``obj`` any more: it fell or swung out of the hand on the way."""
+        return not self._contacts_with(obj)
 
     def _clear_poses(self, poses: list[tuple[np.ndarray, float, float]], keepout: Keepout, pts: np.ndarray, tcp: np.ndarray,
                      rot: np.ndarray, offset: np.ndarray) -> list[tuple[np.ndarray, float, float]]:
