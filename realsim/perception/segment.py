@@ -199,14 +199,14 @@ def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, count
 
 
 def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
-                           radius: float, step: float, visibility_cell: float) -> np.ndarray:
+                           radius: float, step: float, cell: float | None) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
     cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
-    Clouds sampled no coarser than ``visibility_cell`` are oriented by what each side of a patch
+    With a ``cell`` (the cloud's resolution, fine enough), patches are oriented by what each side
     sees (:mod:`realsim.perception.visibility`) where that decides: at a contact between two
-    objects the free space in front of a side is the other object's. Near-horizontal surfaces face up: scans see tops, and an object stacked on a top fills the
-    space above it."""
+    objects the free space in front of a side is the other object's. Near-horizontal surfaces
+    face up: scans see tops, and an object stacked on a top fills the space above it."""
     tree = cKDTree(points)
     ts = np.arange(2 * step, radius + 1e-9, step)
     score = np.zeros(len(centroids))
@@ -216,14 +216,21 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
         score += np.asarray(behind, float) - np.asarray(ahead, float)
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
-    spacing = float(np.median(tree.query(points[:: max(1, len(points) // 5000)], k=2)[0][:, 1]))
-    if spacing <= visibility_cell:
-        seen = visibility_score(points, centroids, normals, spacing, 5 * radius)
+    if cell is not None:
+        seen = visibility_score(points, centroids, normals, cell, 5 * radius)
         sign = np.where(np.abs(seen) >= 2, np.sign(seen), sign)
     # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
     level = np.abs(normals[:, 2]) > 0.7
     sign = np.where(level, np.sign(normals[:, 2]), sign)
     return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
+
+
+def _spacing(points: np.ndarray) -> float:
+    """Median distance from a point to its nearest neighbour (on a deterministic subset)."""
+    if len(points) < 2:
+        return float("inf")
+    sample = points[:: max(1, len(points) // 5000)]
+    return float(np.median(cKDTree(points).query(sample, k=2)[0][:, 1]))
 
 
 def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
@@ -234,11 +241,12 @@ def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
 
 def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[SupportPlane],
                     grid_shape: tuple[int, int] | None, params: SegmentParams = SegmentParams(),
-                    seed: int = 0) -> SegmentResult:
+                    seed: int = 0, resolution: float | None = None) -> SegmentResult:
     """Label each point: 0 support/background, -1 noise, k > 0 object k (ordered by centroid x, then y).
 
     ``points`` (N, 3) are in the world frame (Z up) in input order, NaN rows allowed; ``colors``
-    (N, 3) in [0, 1] or None; ``grid_shape`` (H, W) when the cloud is an organized image grid.
+    (N, 3) in [0, 1] or None; ``grid_shape`` (H, W) when the cloud is an organized image grid;
+    ``resolution`` (m) the working resolution of an unorganized cloud (None: its measured spacing).
     The method is deterministic (``seed`` is accepted for interface uniformity; nothing is random).
     """
     points = np.asarray(points, dtype=np.float64)
@@ -285,8 +293,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         # pixel normals point toward the camera: their sum gives the outward side of each segment
         away_seg = -np.stack([np.bincount(part, normals[ids, i], minlength=n_seg) for i in range(3)], axis=1)
     else:
+        cell = _spacing(points[ids])  # voxel centres lie closer than their voxels: a finer, still closed grid
+        fine = (resolution if resolution is not None else cell) <= params.visibility_cell
         nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance,
-                                     params.visibility_cell)
+                                     cell if fine else None)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 

@@ -91,7 +91,8 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
 
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
-    result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed)
+    result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed,
+                             resolution=resolution)
     noise = _noise(scene, params)
     result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
