@@ -6,7 +6,7 @@ converted object holding most of its pixels. Per object: volume IoU of the compl
 its composed pose) with the true mesh (occupancy on a 2 mm grid), the oriented size error (sorted
 extents of the oriented bounding boxes), whether it was found once, and the pixels where the
 completed solid hides something the camera saw farther away (a ray through the pixel centre hits
-the solid more than 1 cm before the captured depth: free space filled). ``--all`` covers every
+the solid more than 1 cm before the captured depth: free space filled), and its collision pieces. ``--all`` covers every
 shared YCB object once per seed (three scenes of five, layouts table, counter, table). Run:
 
     .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline]
@@ -120,7 +120,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         truth = obj.mesh()
         truth.apply_transform(synth_to_realsim)  # the conversion levels and centres the scene its own way
         rows.append({**row, "iou": volume_iou(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
-                     "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth),
+                     "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"])})
     return rows
 
@@ -135,9 +135,9 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
         rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, Path(tmp), args.baseline, layout, objects)]
-    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s}  name given")
+    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s}  name given")
     for r in rows:
-        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d}  "
+        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d}  "
               f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''}")
     ious = [r["iou"] for r in rows]
     errs = [r["size_err_mm"] for r in rows if np.isfinite(r["size_err_mm"])]
@@ -146,7 +146,8 @@ def main() -> None:
           f"{np.median(errs):.1f} mm, found once {sum(r['clusters'] == 1 for r in rows)}/{len(rows)}")
     print(f"{len(solid)} solid objects (not {', '.join(sorted(CONTAINERS))}): median IoU {np.median(solid):.2f}, min {np.min(solid):.2f}; "
           f"pixels of seen free space covered: {sum(r.get('free_px', 0) for r in rows)} "
-          f"({sum(r.get('free_px', 0) > 0 for r in rows)} objects)")
+          f"({sum(r.get('free_px', 0) > 0 for r in rows)} objects); collision pieces per object: median {np.median([r.get('pieces', 0) for r in rows]):.0f}, "
+          f"total {sum(r.get('pieces', 0) for r in rows)}")
 
 
 if __name__ == "__main__":

@@ -26,7 +26,7 @@ class ContainerParams:
     min_depth: float = 0.3  # cavity depth (rim minus floor) as a share of the height that makes it open
     bands: int = 12  # radial bins of the cavity's profile
     sectors: int = 12  # wall pieces around
-    segments: int = 2  # wall pieces up
+    segments: int = 3  # wall pieces up (equal lengths along the profile)
     min_wall: float = 0.003  # m
     max_wall_share: float = 0.25  # of the rim radius
     min_floor: float = 0.002  # thinnest bottom (m)
@@ -144,16 +144,18 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     flat = z_in <= z_in[0] + 0.1 * (top_z - z_in[0])
     floor_r = float(r_in[flat].max()) if flat.any() else foot
     pieces = [trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre), _ring(max(floor_r, 1e-3), float(z_in[0]), fine, centre)]))]
-    inner_wall = r_in >= floor_r
-    zs = np.linspace(float(z_in[0]), top_z, params.segments + 1)
-    for z0, z1 in zip(zs[:-1], zs[1:]):
-        levels = np.linspace(z0, z1, 3)
-        ri = np.interp(levels, z_in[inner_wall], r_in[inner_wall])
-        order = np.argsort(z_out)
-        ro = np.interp(levels, z_out[order], r_out[order], left=foot)
+    wall_r, wall_z = r_in[r_in >= floor_r], z_in[r_in >= floor_r]  # from the floor's edge up to the rim
+    out_r, out_z = _offset(wall_r, wall_z, wall)
+    out_r[-1], out_z[-1] = wall_r[-1] + wall, top_z
+    out_z = np.maximum(out_z, base_z)
+    length = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(wall_r), np.diff(wall_z)))])
+    cuts = np.linspace(0.0, length[-1], params.segments + 1)  # equal lengths along the profile: short where it bends
+    for s0, s1 in zip(cuts[:-1], cuts[1:]):
+        at = np.concatenate([[s0], length[(length > s0) & (length < s1)], [s1]])
+        ring_r = np.concatenate([np.interp(at, length, wall_r), np.interp(at, length, out_r)])
+        ring_z = np.concatenate([np.interp(at, length, wall_z), np.interp(at, length, out_z)])
         for a0, a1 in zip(angles[:-1], angles[1:]):
             arc = np.linspace(a0, a1, 3)
-            cloud = np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(np.concatenate([ri, ro]), np.concatenate([levels, levels]))])
-            pieces.append(trimesh.convex.convex_hull(cloud))
+            pieces.append(trimesh.convex.convex_hull(np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(ring_r, ring_z)])))
     outer = trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre)] + [_ring(float(x), float(zz), fine, centre) for x, zz in zip(r_out, z_out)]))
     return OpenContainer(pieces, visual, outer, wall, float(z_in[0]))
