@@ -20,6 +20,7 @@ NOT_OBJECT = re.compile(r"\b(?:by|about|around|roughly|approximately|toward|towa
 
 
 def has_direction(text: str) -> bool:
+    """Whether the text names a direction to push in (left, away, toward the robot, ...)."""
     return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", text))
 
 
@@ -32,6 +33,7 @@ def is_push(rest: str) -> bool:
 
 
 def distance(text: str) -> float | None:
+    """The distance said in the text, in metres ("5 cm", "a bit"), or None."""
     for phrase, value in sorted(VAGUE_DISTANCES.items(), key=lambda kv: -len(kv[0])):
         if re.search(rf"\b{re.escape(phrase)}\b", text):
             return value

@@ -68,6 +68,7 @@ class Context:
 
 
 def describe(o: ObjectInfo) -> str:
+    """An object as a candidate is listed to the user: its name, colour and label."""
     return f"{o.name} ({(o.color + ' ') if o.color else ''}{o.label})"
 
 

@@ -97,6 +97,7 @@ def singular(word: str) -> str:
 
 
 def is_plural(word: str) -> bool:
+    """Whether a word is a plural noun (not a function word ending in s)."""
     return singular(word) != word and word not in ("its", "this", "is", "was", "has")
 
 

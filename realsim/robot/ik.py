@@ -59,12 +59,14 @@ def _origin_model() -> mujoco.MjModel:
 
 
 def quat_to_mat(quat: np.ndarray) -> np.ndarray:
+    """The 3x3 rotation matrix of a unit quaternion (w, x, y, z)."""
     mat = np.zeros(9)
     mujoco.mju_quat2Mat(mat, np.asarray(quat, float))
     return mat.reshape(3, 3)
 
 
 def mat_to_quat(mat: np.ndarray) -> np.ndarray:
+    """The unit quaternion (w, x, y, z) of a 3x3 rotation matrix."""
     quat = np.zeros(4)
     mujoco.mju_mat2Quat(quat, np.asarray(mat, float).reshape(9))
     return quat

@@ -16,6 +16,8 @@ import numpy as np
 
 @dataclass(frozen=True)
 class GraspParams:
+    """Perturbations of a grasp tried after a failed attempt: hand tilt, height and yaw offsets, which candidate."""
+
     tilt: float = 0.0
     height_offset: float = 0.0
     yaw_offset: float = 0.0
@@ -24,6 +26,8 @@ class GraspParams:
 
 @dataclass
 class EpsilonGreedy:
+    """Seeded epsilon-greedy search over grasp perturbations: explore with a decaying probability, else refine the best so far."""
+
     seed: int = 0
     epsilon: float = 0.6
     decay: float = 0.6

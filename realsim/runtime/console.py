@@ -18,6 +18,7 @@ from realsim.runtime.sim import Sim
 
 
 def numbered(program: str) -> str:
+    """A program with line numbers, as printed by ``realsim run``."""
     lines = program.rstrip("\n").splitlines()
     width = len(str(len(lines)))
     return "\n".join(f"  {i:>{width}} | {line}" for i, line in enumerate(lines, 1))

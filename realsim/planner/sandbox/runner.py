@@ -88,6 +88,8 @@ def _short(value: Any, limit: int = 60) -> str:
 
 
 class Runner:
+    """Runs a checked program's statements or typed calls against the bound primitives within the step and time limits."""
+
     def __init__(self, funcs: Mapping[str, Callable[..., Any]], limits: Limits) -> None:
         self.funcs = funcs
         self.limits = limits
