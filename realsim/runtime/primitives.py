@@ -26,7 +26,7 @@ import numpy as np
 from realsim.planner import primitives
 from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
-from realsim.robot.robot import ActionResult
+from realsim.robot.robot import ActionResult, Robot
 from realsim.runtime.sim import Sim
 from realsim.scene_format import jsonable
 
@@ -49,7 +49,7 @@ class ProgramAPI:
         self.actions: list[dict[str, Any]] = []
 
     @property
-    def robot(self):  # the sim may be reset between runs: always the current robot
+    def robot(self) -> Robot:  # the sim may be reset between runs: always the current robot
         return self.sim.robot
 
     def functions(self) -> dict[str, Callable[..., Any]]:

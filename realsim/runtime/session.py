@@ -80,7 +80,8 @@ class RunRecord:
     def to_json(self) -> dict[str, Any]:
         d = asdict(self)
         d = {"format": LOG_FORMAT, **d, "success": self.success, "exit_code": self.exit_code}
-        return _jsonable(d)
+        record: dict[str, Any] = _jsonable(d)
+        return record
 
     def summary(self) -> str:
         """Human-readable lines: each call's outcome, the goal check, the verdict."""

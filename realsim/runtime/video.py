@@ -117,4 +117,5 @@ def probe(path: str | Path) -> tuple[int, float]:
     """(frames, seconds) of a video as ffmpeg decodes it; raises when it does not play."""
     import imageio_ffmpeg
 
-    return imageio_ffmpeg.count_frames_and_secs(str(path))
+    frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(path))
+    return int(frames), float(seconds)
