@@ -85,7 +85,8 @@ def complete_bands(points: np.ndarray, base_z: float, top_z: float, bands: int, 
                    whole: trimesh.Trimesh, min_height_share: float = 1.0, drops: np.ndarray | None = None) -> list[trimesh.Trimesh] | None:
     """Convex pieces of an upright body whose profile is not convex (a bottle's shoulder and neck):
     the points cut into ``bands`` height bands (neighbours share their boundary points), each band's
-    hull, the lowest one extruded down to ``base_z``. None when the body is lower than
+    hull with the points above it that may be extruded (``drops``) carried down through it, the
+    lowest one extruded down to ``base_z``. None when the body is lower than
     ``min_height_share`` of its width, or the bands fill more than ``max_fill`` of the single hull ``whole``."""
     kept = points[points[:, 2] <= top_z]
     height = top_z - base_z
@@ -99,11 +100,13 @@ def complete_bands(points: np.ndarray, base_z: float, top_z: float, bands: int, 
         inside = (kept[:, 2] >= a - margin) & (kept[:, 2] <= b + margin)
         if inside.sum() < 8:
             continue
+        above = kept[(kept[:, 2] > b) & droppable]  # what stands above extends down through the band (a box's top face)
+        cloud = np.vstack([kept[inside], above * [1, 1, 0] + [0, 0, b], above * [1, 1, 0] + [0, 0, a]])
         try:
             if i == 0:
-                pieces.append(complete_hull(kept[inside], base_z, top_z, fast=True, drops=droppable[inside])[0])
+                pieces.append(complete_hull(cloud, base_z, top_z, fast=True, drops=np.concatenate([droppable[inside], np.ones(2 * len(above), bool)]))[0])
             else:
-                pieces.append(fast_hull(kept[inside]))
+                pieces.append(fast_hull(cloud))
         except (QhullError, ValueError):
             continue
         bounds.append((a, b))

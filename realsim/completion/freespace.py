@@ -19,24 +19,26 @@ from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.completion.view import DepthView
-from realsim.scene import SceneObject
+from realsim.scene import SceneObject, SupportPlane
 
 MAX_CUTS = 6
-SURFACE_SAMPLES = 3000
+SURFACE_SAMPLES = 1500
+INSIDE_SAMPLES = 2000
 MAX_CUT_LOSS = 0.1  # a piece that one cut would lose more of is split in two first
+MIN_SPLIT = 0.04  # m: pieces shorter than this are cut, never split
 MISS_WEIGHT = 20.0  # leaving this share of the surface seen through costs as much as losing the whole piece, inverted
 
 
 def _directions(ray: np.ndarray) -> np.ndarray:
     """Candidate cut normals (unit; the cut keeps ``n . x <= c``): horizontal, tilted up, across and
     along the mean line of sight ``ray``; none points far down (the base stays on its support)."""
-    az = np.linspace(0.0, 2 * np.pi, 24, endpoint=False)
+    az = np.linspace(0.0, 2 * np.pi, 16, endpoint=False)
     flat = np.column_stack([np.cos(az), np.sin(az), np.zeros_like(az)])
-    up = np.column_stack([np.cos(az) * 0.7, np.sin(az) * 0.7, np.full_like(az, 0.714)])
+    up = np.column_stack([np.cos(az[::2]) * 0.7, np.sin(az[::2]) * 0.7, np.full(8, 0.714)])
     e1 = np.cross(ray, [0.0, 0.0, 1.0])
     e1 = e1 / np.linalg.norm(e1) if np.linalg.norm(e1) > 1e-6 else np.array([1.0, 0.0, 0.0])
     e2 = np.cross(ray, e1)
-    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    t = np.linspace(0.0, 2 * np.pi, 36, endpoint=False)
     across = np.outer(np.cos(t), e1) + np.outer(np.sin(t), e2)  # planes containing the line of sight
     normals = np.vstack([flat, up, across, -ray[None, :], [[0.0, 0.0, 1.0]]])
     normals /= np.linalg.norm(normals, axis=1, keepdims=True)
@@ -63,16 +65,17 @@ def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples:
     """The cut (normal, offset: keep ``n . x <= c``) minimising the share of ``inside`` lost plus
     MISS_WEIGHT times the share of the ``samples`` surface samples left seen through (``bad``), and
     that cost (the cost of no cut when no cut is better)."""
-    best = (normals[0], np.inf, MISS_WEIGHT * len(bad) / samples)
-    for n in normals:
-        pi, pb = np.sort(inside @ n), np.sort(bad @ n)
-        cuts = pb - 1e-6 * max(float(np.ptp(pi)), 1e-9)  # just below each bad sample: it and everything beyond are cut
-        lost = 1.0 - np.searchsorted(pi, cuts, side="right") / max(len(pi), 1)
-        cost = lost + MISS_WEIGHT * np.arange(len(pb)) / samples
-        k = int(np.argmin(cost))
-        if cost[k] < best[2]:
-            best = (n, float(cuts[k]), float(cost[k]))
-    return best
+    pi, pb = np.sort(inside @ normals.T, axis=0), np.sort(bad @ normals.T, axis=0)
+    cuts = pb - 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)  # just below each bad sample: it and everything beyond are cut
+    span = 2.0 * max(float(np.abs(pi).max()), float(np.abs(cuts).max())) + 1.0  # columns apart: one sorted array
+    shift = span * np.arange(normals.shape[0])
+    kept = np.searchsorted((pi + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right").reshape(cuts.shape, order="F")
+    lost = 1.0 - (kept - len(pi) * np.arange(normals.shape[0])) / max(len(pi), 1)
+    cost = lost + MISS_WEIGHT * np.arange(len(pb))[:, None] / samples
+    k, j = np.unravel_index(int(np.argmin(cost)), cost.shape)
+    if cost[k, j] >= MISS_WEIGHT * len(bad) / samples:
+        return normals[0], np.inf, MISS_WEIGHT * len(bad) / samples
+    return normals[j], float(cuts[k, j]), float(cost[k, j])
 
 
 def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
@@ -87,7 +90,7 @@ def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int) -> 
     trims the piece's silhouette)."""
     ray = bad.mean(axis=0) - view.camera
     n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples)
-    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    t = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
     n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples)
     if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
         k = np.array([n2[0], n2[1], -c2])
@@ -111,9 +114,11 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
             return [piece]
         step = float(np.clip(np.max(piece.extents) / 25, 0.001, 0.005))
         inside = np.vstack([voxel_centres(piece, step), surface[~bad]])
+        if len(inside) > INSIDE_SAMPLES:
+            inside = inside[np.random.default_rng(seed).choice(len(inside), INSIDE_SAMPLES, replace=False)]
         n, c, _ = _cut(view, inside, surface[bad], len(surface))
         lost = float(np.mean(inside @ n > c)) if np.isfinite(c) else 0.0
-        if splits > 0 and lost > MAX_CUT_LOSS and bad.mean() < 0.5:
+        if splits > 0 and lost > MAX_CUT_LOSS and bad.mean() < 0.5 and np.max(piece.extents) > MIN_SPLIT:
             axis = np.zeros(3)
             axis[int(np.argmax(piece.extents))] = 1.0
             middle = float(np.median(inside @ axis))
@@ -130,14 +135,27 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
 
 def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float) -> tuple[list[trimesh.Trimesh], float]:
     """Every piece clipped to the free space (pieces left empty dropped), and the share of volume removed."""
-    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i)]
+    splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
+    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits)]
     before = sum(p.volume for p in pieces)
     return out, (1.0 - sum(p.volume for p in out) / before) if before > 0 else 0.0
 
 
-def free_space_tolerance(view: DepthView, params: CompletionParams) -> float:
-    """How far in front of the captured depth a surface may stand: ``free_space_sigmas`` sensor-noise sigmas."""
-    return max(params.free_space_sigmas * view.noise(), params.free_space_min_tolerance)
+def free_space_tolerance(view: DepthView, params: CompletionParams, points: np.ndarray | None = None,
+                         planes: list[SupportPlane] | None = None) -> float:
+    """How far in front of the captured depth a surface may stand: ``free_space_sigmas`` sigmas of
+    the sensor's depth noise, the larger of its pixel-to-pixel noise on the objects and the spread
+    of the largest support's points about its plane (quantization and slow distortions show there)."""
+    sigma = view.noise()
+    seen = [p for p in planes or [] if p.observed]
+    if points is not None and seen:
+        support = max(seen, key=lambda p: p.inlier_count)
+        with np.errstate(invalid="ignore"):
+            residual = points[:, 2] - support.height
+            near = residual[np.abs(residual) < 0.01]
+        if len(near) >= 100:
+            sigma = max(sigma, 1.4826 * float(np.median(np.abs(near - np.median(near)))))
+    return max(params.free_space_sigmas * sigma, params.free_space_min_tolerance)
 
 
 def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, tolerance: float, params: CompletionParams) -> None:

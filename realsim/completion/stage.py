@@ -32,7 +32,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     hollow: set[int] = set()
     pieces: dict[int, list[trimesh.Trimesh]] = {}
     view = DepthView.of(scene) if params.carve else None
-    tolerance = free_space_tolerance(view, params) if view is not None else 0.0
+    tolerance = free_space_tolerance(view, params, points, scene.planes) if view is not None else 0.0
     if view is not None and params.denoise_window > 1:  # shapes from the surfaces, not the noise's extremes
         smooth = view.denoised(params.denoise_window)
         points, view = view.moved_to(smooth, points), smooth
