@@ -32,13 +32,13 @@ MISS_WEIGHT = 20.0  # leaving this share of the surface seen through costs as mu
 def _directions(ray: np.ndarray) -> np.ndarray:
     """Candidate cut normals (unit; the cut keeps ``n . x <= c``): horizontal, tilted up, across and
     along the mean line of sight ``ray``; none points far down (the base stays on its support)."""
-    az = np.linspace(0.0, 2 * np.pi, 16, endpoint=False)
+    az = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
     flat = np.column_stack([np.cos(az), np.sin(az), np.zeros_like(az)])
-    up = np.column_stack([np.cos(az[::2]) * 0.7, np.sin(az[::2]) * 0.7, np.full(8, 0.714)])
+    up = np.column_stack([np.cos(az[::2]) * 0.7, np.sin(az[::2]) * 0.7, np.full(24, 0.714)])
     e1 = np.cross(ray, [0.0, 0.0, 1.0])
     e1 = e1 / np.linalg.norm(e1) if np.linalg.norm(e1) > 1e-6 else np.array([1.0, 0.0, 0.0])
     e2 = np.cross(ray, e1)
-    t = np.linspace(0.0, 2 * np.pi, 36, endpoint=False)
+    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
     across = np.outer(np.cos(t), e1) + np.outer(np.sin(t), e2)  # planes containing the line of sight
     normals = np.vstack([flat, up, across, -ray[None, :], [[0.0, 0.0, 1.0]]])
     normals /= np.linalg.norm(normals, axis=1, keepdims=True)
@@ -90,7 +90,7 @@ def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int) -> 
     trims the piece's silhouette)."""
     ray = bad.mean(axis=0) - view.camera
     n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples)
-    t = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
+    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
     n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples)
     if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
         k = np.array([n2[0], n2[1], -c2])
