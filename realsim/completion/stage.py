@@ -115,5 +115,6 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
     separate_neighbours([o for o in order if o.id not in hollow], done, observed, params, pieces)
     if view is not None and params.clip_free_space:
-        keep_out_of_free_space(order, view, tolerance, params)
+        supporters = {o.resting_on for o in order if o.resting_on is not None}  # their flat tops keep what stands on them level
+        keep_out_of_free_space([o for o in order if o.id not in supporters], view, tolerance, params)
     return scene
