@@ -93,6 +93,46 @@ def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[
     return sorted(written)
 
 
+FILE_ATTRIBUTES = ("file", "fileright", "fileleft", "fileup", "filedown", "filefront", "fileback")
+
+
+def _relocated_xml(xml: Path, src_dir: Path, dest_dir: Path) -> str:
+    """The text of ``xml`` with every asset file copied to ``dest_dir/assets`` (flat, by base name)
+    and referenced there; everything else is left exactly as written."""
+    import xml.etree.ElementTree as ET
+
+    tree = ET.parse(xml)
+    root = tree.getroot()
+    compiler = root.find("compiler")
+    if compiler is None:
+        compiler = ET.SubElement(root, "compiler")
+    meshdir, texturedir = compiler.get("meshdir", ""), compiler.get("texturedir", "")
+    if root.find(".//include") is not None:
+        raise InputError(f"{xml}: scenes with <include> are not exported; convert the scene again")
+    assets = dest_dir / ASSET_DIR
+    assets.mkdir(parents=True, exist_ok=True)
+    written: dict[Path, str] = {}
+    for element in root.iter():
+        subdir = texturedir if element.tag == "texture" else meshdir
+        for attr in FILE_ATTRIBUTES:
+            value = element.get(attr)
+            if not value:
+                continue
+            source = _resolve(src_dir, subdir, value).resolve()
+            if not source.is_file():
+                raise InputError(f"{source}: an asset the scene refers to is missing; re-run `realsim convert`")
+            if source not in written:
+                name, k = source.name, 1
+                while name in written.values():
+                    name, k = f"{source.stem}_{k}{source.suffix}", k + 1
+                shutil.copyfile(source, assets / name)
+                written[source] = name
+            element.set(attr, written[source])
+    compiler.set("meshdir", ASSET_DIR)
+    compiler.set("texturedir", ASSET_DIR)
+    return ET.tostring(root, encoding="unicode")
+
+
 def export_mjcf(source: Path, dest: Path | str, *, force: bool = False) -> Path:
     """Write the whole scene of ``source`` as a self-contained MJCF folder at ``dest``.
 
@@ -100,10 +140,11 @@ def export_mjcf(source: Path, dest: Path | str, *, force: bool = False) -> Path:
     source's ``scene.json``; it is written atomically and compiled before it is moved in place.
     """
     dest = check_destination(dest, inputs=[source], force=force)
-    spec, src_dir = load_spec(source)
+    _, src_dir = load_spec(source)  # a scene MuJoCo can load
     with atomic_folder(dest, force=force, kind="export-mjcf") as tmp:
-        relocate_assets(spec, src_dir, tmp)
-        (tmp / "scene.xml").write_text(spec.to_xml())
+        # the source XML with its file references rewritten, not a spec round trip: MjSpec.to_xml of a
+        # loaded scene writes each mesh's recentring offset into its geom again, so the copy would drift
+        (tmp / "scene.xml").write_text(_relocated_xml(scene_xml(source), src_dir, tmp))
         if (src_dir / "scene.json").is_file():
             shutil.copyfile(src_dir / "scene.json", tmp / "scene.json")
         verify_compiles(tmp / "scene.xml")
