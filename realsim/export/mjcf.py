@@ -48,31 +48,34 @@ def _resolve(base: Path, subdir: str, file: str) -> Path:
     return (base / subdir / path) if subdir else (base / path)
 
 
-def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[str]:
-    """Copy every file the spec refers to into ``dest_dir/assets`` and point the spec there.
+class _AssetFolder:
+    """``dest_dir/assets``: each source file copied once, flat, by base name (a numeric suffix
+    resolves a clash between different files of the same name)."""
 
-    Mesh, skin and texture (2D and cube-face) files are flattened to their base names (a
-    numeric suffix resolves a clash between different files of the same name). Returns the
-    names written.
-    """
-    assets = dest_dir / ASSET_DIR
-    assets.mkdir(parents=True, exist_ok=True)
-    written: dict[str, Path] = {}
+    def __init__(self, dest_dir: Path) -> None:
+        self.folder = dest_dir / ASSET_DIR
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.written: dict[Path, str] = {}
 
-    def place(source: Path) -> str:
+    def place(self, source: Path) -> str:
+        """The name ``source`` has in the folder (copied there on first use)."""
         if not source.is_file():
             raise InputError(f"{source}: an asset the scene refers to is missing; re-run `realsim convert`")
         source = source.resolve()
-        for name, origin in written.items():
-            if origin == source:
-                return name
-        name, stem, suffix, k = source.name, source.stem, source.suffix, 1
-        while name in written:
-            name, k = f"{stem}_{k}{suffix}", k + 1
-        shutil.copyfile(source, assets / name)
-        written[name] = source
-        return name
+        if source not in self.written:
+            name, k = source.name, 1
+            while name in self.written.values():
+                name, k = f"{source.stem}_{k}{source.suffix}", k + 1
+            shutil.copyfile(source, self.folder / name)
+            self.written[source] = name
+        return self.written[source]
 
+
+def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[str]:
+    """Copy every file the spec refers to into ``dest_dir/assets`` (see :class:`_AssetFolder`) and
+    point the spec there. Returns the names written."""
+    folder = _AssetFolder(dest_dir)
+    place = folder.place
     for mesh in spec.meshes:
         if mesh.file:
             mesh.file = place(_resolve(src_dir, spec.meshdir, mesh.file))
@@ -90,7 +93,7 @@ def relocate_assets(spec: mujoco.MjSpec, src_dir: Path, dest_dir: Path) -> list[
             hfield.file = place(_resolve(src_dir, spec.meshdir, hfield.file))
     spec.meshdir = ASSET_DIR
     spec.texturedir = ASSET_DIR
-    return sorted(written)
+    return sorted(folder.written.values())
 
 
 FILE_ATTRIBUTES = ("file", "fileright", "fileleft", "fileup", "filedown", "filefront", "fileback")
@@ -101,33 +104,19 @@ def _relocated_xml(xml: Path, src_dir: Path, dest_dir: Path) -> str:
     and referenced there; everything else is left exactly as written."""
     import xml.etree.ElementTree as ET
 
-    tree = ET.parse(xml)
-    root = tree.getroot()
+    root = ET.parse(xml).getroot()
     compiler = root.find("compiler")
     if compiler is None:
         compiler = ET.SubElement(root, "compiler")
     meshdir, texturedir = compiler.get("meshdir", ""), compiler.get("texturedir", "")
     if root.find(".//include") is not None:
         raise InputError(f"{xml}: scenes with <include> are not exported; convert the scene again")
-    assets = dest_dir / ASSET_DIR
-    assets.mkdir(parents=True, exist_ok=True)
-    written: dict[Path, str] = {}
+    assets = _AssetFolder(dest_dir)
     for element in root.iter():
         subdir = texturedir if element.tag == "texture" else meshdir
         for attr in FILE_ATTRIBUTES:
-            value = element.get(attr)
-            if not value:
-                continue
-            source = _resolve(src_dir, subdir, value).resolve()
-            if not source.is_file():
-                raise InputError(f"{source}: an asset the scene refers to is missing; re-run `realsim convert`")
-            if source not in written:
-                name, k = source.name, 1
-                while name in written.values():
-                    name, k = f"{source.stem}_{k}{source.suffix}", k + 1
-                shutil.copyfile(source, assets / name)
-                written[source] = name
-            element.set(attr, written[source])
+            if value := element.get(attr):
+                element.set(attr, assets.place(_resolve(src_dir, subdir, value)))
     compiler.set("meshdir", ASSET_DIR)
     compiler.set("texturedir", ASSET_DIR)
     return ET.tostring(root, encoding="unicode")
