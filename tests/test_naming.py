@@ -61,6 +61,15 @@ def test_look_alikes_are_told_apart() -> None:
     assert labels[2:] == ["left_white_can", "right_tall_white_can"]  # same size, one colour: told apart by position
 
 
+def test_a_generic_name_does_not_single_out_one_of_several_same_coloured_objects() -> None:
+    """ "the red object" may mean the red box too: the generic one gets a telling word, the box keeps its name."""
+    names = [Name("red_object", "red", "object", ""), Name("red_box", "red", "box", ""), Name("white_can", "white", "can", "")]
+    out = distinct(names, [1.0, 3.0, 1.0], [[("red", 1.0)], [("red", 1.0)], [("white", 1.0)]], [0.2, 0.5, 0.8])
+    assert [n.label for n in out] == ["small_red_object", "red_box", "white_can"]
+    alone = distinct(names[:1] + names[2:], [1.0, 1.0], [[("red", 1.0)], [("white", 1.0)]], [0.2, 0.8])
+    assert [n.label for n in alone] == ["red_object", "white_can"]  # the only red thing: nothing to tell apart
+
+
 @pytest.mark.parametrize("scan", ["test0", "test45", "test55"])
 def test_scanned_objects_get_distinct_colour_and_shape_names(scan: str, tmp_path) -> None:
     scene = convert(MOSD / f"{scan}.pcd", tmp_path / scan, overrides=NO_ROBOT)
@@ -72,6 +81,10 @@ def test_scanned_objects_get_distinct_colour_and_shape_names(scan: str, tmp_path
         assert o.name == f"obj{o.id}_{o.label}"
         said.append("_".join(w for w in words if w not in ("tall", "flat")))
     assert len(set(said)) == len(said), said
+    for name in said:  # "the red object" must not be one object's name while another red one exists
+        words = name.split("_")
+        if len(words) == 2 and words[1] == "object":
+            assert sum(words[0] in other.split("_") for other in said) == 1, said
     for bad in ("hat", "speaker", "headphones", "stuffed_animal", "clock", "power_drill"):
         assert not any(bad in o.label for o in scene.objects)
 

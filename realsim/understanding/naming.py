@@ -7,7 +7,8 @@ completed solid (round footprint: can, cup, bowl, disc; rectangular: box; else o
 for round ones, whether the observed top is hollow. A size-table category replaces the shape
 word only when the fit is unambiguous (close, and clearly closer than the runner-up). When two
 objects would share a name, they are told apart by size (small/big), then by a second colour,
-then by where they are in the view (left/right).
+then by where they are in the view (left/right). A generic name ("red_object") is what a person
+may call any object of that colour, so it too gets such a word when another red object exists.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from realsim.understanding.shape_label import ranked_labels
 CATEGORY_MAX_DISTANCE = 0.1  # a size-table fit this close (RMS log extent ratio) ...
 CATEGORY_MARGIN = 0.1  # ... and this much closer than the runner-up is unambiguous
 SHAPE_ADJECTIVES = frozenset({"tall", "flat"})
+GENERIC_SHAPES = frozenset({"object"})  # a shape word that says nothing a person could tell apart by
 ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth")
 
 
@@ -124,16 +126,35 @@ def offline_name(size: np.ndarray, points: np.ndarray, rgb: np.ndarray, axis_xy:
 def distinct(names: list[Name], volumes: list[float], colours: list[list[tuple[str, float]]], image_x: list[float | None]) -> list[Name]:
     """``names`` with a discriminating word added wherever two objects would share a name."""
     out = list(names)
-    for _ in range(3):  # size, then second colour, then position
+    for _ in range(4):  # size, then second colour, then position (and a generic name told apart)
         groups: dict[str, list[int]] = {}
         for i, n in enumerate(out):  # "the white can" would mean a tall white can too: shape adjectives do not tell apart
             groups.setdefault("_".join(w for w in n.label.split("_") if w not in SHAPE_ADJECTIVES), []).append(i)
         clashes = [g for g in groups.values() if len(g) > 1]
-        if not clashes:
+        if clashes:
+            for group in clashes:
+                _disambiguate(out, group, volumes, colours, image_x)
+            continue
+        generic = _generic_clash(out)
+        if generic is None:
             break
-        for group in clashes:
-            _disambiguate(out, group, volumes, colours, image_x)
+        told_apart = list(out)
+        _disambiguate(told_apart, generic, volumes, colours, image_x)
+        for i in generic:  # only the generic name gets the extra word; "the red box" stays what it was
+            if out[i].shape in GENERIC_SHAPES:
+                out[i] = told_apart[i]
     return out
+
+
+def _generic_clash(names: list[Name]) -> list[int] | None:
+    """The first bare generic name ("red_object") with the objects of its colour: "the red object"
+    is what a person may call any red thing, so the name alone must not single one out."""
+    for i, n in enumerate(names):
+        if n.shape in GENERIC_SHAPES and n.label == f"{n.colour}_{n.shape}":
+            same = [j for j, m in enumerate(names) if m.colour == n.colour]
+            if len(same) > 1:
+                return same
+    return None
 
 
 def _disambiguate(out: list[Name], group: list[int], volumes: list[float], colours: list[list[tuple[str, float]]], image_x: list[float | None]) -> None:
