@@ -91,7 +91,7 @@ HELDOUT: list[tuple[str, str, str]] = [
     ("textblocks", "put the cubes on the plate one by one", "on cube@red plate; on cube@blue plate; on cube@green plate"),
     ("textkitchen", "I want the cereal box moved 5 cm to the left", "moved cereal_box left 0.05"),
     # --- converted scans (objects named by colour and shape from the capture)
-    ("scan45", "pick up the red box", "lift red_cracker_box"),
+    ("scan45", "pick up the red box", "lift red_box"),
     ("scan45", "push the white box 5 cm to the left", "moved white_box left 0.05"),
     ("scan45", "grab the red one", "refuse"),
     ("scan45", "put the red object next to the white box", "refuse"),  # two red objects now: the red can and the red cracker box

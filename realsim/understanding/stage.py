@@ -173,8 +173,9 @@ class Understanding:
             pts = scene.points[mask]
             rgb = colors[mask] if colors is not None else np.zeros((0, 3))
             size, cylinder, prism = _extents(o)
-            if any(n.startswith("completed") and "open container" in n for n in o.notes):  # hollow: round, whatever its fill
-                cylinder, prism = True, False
+            completed = " ".join(n for n in o.notes if n.startswith("completed"))
+            if "open container" in completed or "as a cylinder" in completed:  # fitted round from its visible profile,
+                cylinder, prism = True, False  # whatever carving and cutting from its neighbours did to its fill
             name, cols = offline_name(size, pts[np.all(np.isfinite(pts), axis=1)], rgb[np.all(np.isfinite(rgb), axis=1)], o.position[:2],
                                       cylinder, prism)
             names.append(name)
