@@ -39,7 +39,7 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from commands_heldout import HELDOUT, HELDOUT2, HELDOUT3, HELDOUT4  # noqa: E402
+from commands_heldout import HELDOUT, HELDOUT2, HELDOUT3, HELDOUT4, HELDOUT5  # noqa: E402
 
 from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
@@ -469,7 +469,7 @@ def bench_sim(args: argparse.Namespace) -> int:
 def _suite(args: argparse.Namespace) -> list[tuple[str, str, str]]:
     """The sentences ``--set`` chooses: the suite, a held-out batch, or all."""
     return {"suite": SUITE, "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3,
-            "heldout4": HELDOUT4, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
+            "heldout4": HELDOUT4, "heldout5": HELDOUT5, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
 
 
 def bench_plans(args: argparse.Namespace) -> int:
@@ -553,7 +553,7 @@ def main() -> int:
     ap.add_argument("--scene", help="--sim: only this scene")
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "all"],
+    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "heldout5", "all"],
                     help="--plans/--sim: the suite, a held-out batch (bench/commands_heldout.py), or all")
     args = ap.parse_args()
     if args.plans:
