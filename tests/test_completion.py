@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import trimesh
+from ball_drop import drop_ball
 
 from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex, mirror_hidden_half
 from realsim.perception.intrinsics import Intrinsics
@@ -81,8 +82,6 @@ def _bowl_points(radius: float = 0.08, height: float = 0.055, seed: int = 0) -> 
 
 
 def test_an_open_bowl_is_completed_hollow_and_holds_a_ball() -> None:
-    import mujoco
-
     from realsim.completion.containers import complete_open_container, round_rim
 
     pts = _bowl_points()
@@ -93,20 +92,7 @@ def test_an_open_bowl_is_completed_hollow_and_holds_a_ball() -> None:
     assert bowl.visual.is_volume and bowl.visual.volume < 0.5 * bowl.outer.volume  # hollow
     can = complete_open_container(np.column_stack([pts[:, :2], np.full(len(pts), 0.055)]), rim[0], rim[1], 0.0, 0.055)
     assert can is None  # a closed top is not a container
-    spec = mujoco.MjSpec()
-    spec.option.timestep = 0.002
-    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1, 1, 0.1])
-    for i, piece in enumerate(bowl.pieces):
-        spec.add_mesh(name=f"p{i}", uservert=piece.vertices.ravel().tolist(), userface=piece.faces.ravel().tolist())
-        spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"p{i}")
-    ball = spec.worldbody.add_body(name="ball", pos=[0.02, 0.0, 0.15])
-    ball.add_freejoint()
-    ball.add_geom(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.015, 0, 0], density=1000)
-    model = spec.compile()
-    data = mujoco.MjData(model)
-    for _ in range(1000):
-        mujoco.mj_step(model, data)
-    x, y, z = data.body("ball").xpos
+    x, y, z = drop_ball(bowl.pieces, np.array([0.02, 0.0, 0.15]), seconds=2.0)
     assert np.hypot(x - rim[0][0], y - rim[0][1]) < rim[1] - bowl.wall and bowl.floor_z - 0.003 < z - 0.015 < 0.05
 
 

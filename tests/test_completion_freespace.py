@@ -7,11 +7,11 @@ bench/bench_completion.py), and may not lose what is truly there; the bowl keeps
 
 from __future__ import annotations
 
-import mujoco
 import numpy as np
 import open3d as o3d
 import pytest
 import trimesh
+from ball_drop import drop_ball
 
 from realsim.completion import CompletionParams, DepthView, complete_hull, complete_open_container, round_rim
 from realsim.completion.freespace import clip_pieces, free_drops, free_space_tolerance
@@ -100,17 +100,5 @@ def test_the_scanned_bowl_is_one_hollow_piece_set_that_holds_a_ball() -> None:
     assert bowl.visual.is_volume and bowl.visual.volume < 0.4 * bowl.outer.volume  # hollow
     pieces, _ = clip_pieces(bowl.pieces, view, tolerance)
     assert _covered_pixels(pieces, view) <= 20
-    spec = mujoco.MjSpec()
-    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1, 1, 0.1], pos=[0, 0, table])
-    for i, piece in enumerate(pieces):
-        spec.add_mesh(name=f"p{i}", uservert=piece.vertices.ravel().tolist(), userface=piece.faces.ravel().tolist())
-        spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"p{i}")
-    ball = spec.worldbody.add_body(name="ball", pos=[centre[0] + 0.02, centre[1], top + 0.05])
-    ball.add_freejoint()
-    ball.add_geom(type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.015, 0, 0], density=1000)
-    model = spec.compile()
-    data = mujoco.MjData(model)
-    for _ in range(1500):
-        mujoco.mj_step(model, data)
-    x, y, z = data.body("ball").xpos
+    x, y, z = drop_ball(pieces, np.array([centre[0] + 0.02, centre[1], top + 0.05]), floor_z=table)
     assert np.hypot(x - centre[0], y - centre[1]) < radius and table < z - 0.015 < bowl.floor_z + 0.01  # resting on the cavity floor
