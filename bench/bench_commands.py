@@ -219,11 +219,12 @@ SUITE: list[tuple[str, str, str]] = [
     ("scan45", "lift the tall can on the left", "lift left_tall_white_can"),
     ("scan45", "push the red cracker box 5 cm to the left", "moved red_box left 0.05"),
     ("scan45", "move the small white object toward you by 4 cm", "moved small_white_object back 0.04"),
-    ("scan45", "put the cracker box to the right of the red can", "right red_box red_can"),
+    # the scan names its boxes red_box and white_box: nothing says which is the cracker box, so the planner asks
+    ("scan45", "put the cracker box to the right of the red can", "refuse"),
     ("scan45", "put the can in the box", "refuse"),
     ("scan45", "pick up the white can", "refuse"),
     ("scan45", "take the small white object and set it down in front of the red can", "front small_white_object red_can"),
-    ("scan45", "pick up the cracker box, then go home", "lift red_box"),
+    ("scan45", "pick up the cracker box, then go home", "refuse"),
     ("scan45", "slide the tall white can 4 cm to the right", "moved left_tall_white_can right 0.04"),
     ("scan45", "grab the bottle", "refuse"),
     # --- a cluttered converted scan (mOSD test55, 15 objects named by colour and shape)
@@ -433,7 +434,7 @@ def bench_sim(args: argparse.Namespace) -> int:
 
     root = Path(args.scenes)
     root.mkdir(parents=True, exist_ok=True)
-    suite = [s for s in _suite(args) if (not args.only or args.only in s[1]) and (not args.scene or s[0] == args.scene)]
+    suite = [s for s in _suite(args) if (not args.only or any(o in s[1] for o in args.only)) and (not args.scene or s[0] in args.scene)]
     if args.limit:
         suite = suite[: args.limit]
     sims: dict[str, Sim] = {}
@@ -549,8 +550,8 @@ def main() -> int:
     ap.add_argument("--scenes", default=str(Path(os.environ.get("TMPDIR", "/tmp")) / "realsim_bench_commands"),
                     help="where the scenes are made and cached")
     ap.add_argument("--planner", default="rules", choices=["rules", "claude", "auto"], help="planner for --sim")
-    ap.add_argument("--only", help="--sim: only sentences containing this text")
-    ap.add_argument("--scene", help="--sim: only this scene")
+    ap.add_argument("--only", action="append", help="--sim: only sentences containing this text (repeatable: any of them)")
+    ap.add_argument("--scene", action="append", help="--sim: only this scene (repeatable)")
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "heldout5", "all"],

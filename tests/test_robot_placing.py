@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from realsim.robot.placing import ReleaseParams, footprint_ring, release_poses, spots
+from realsim.robot.placing import ReleaseParams, footprint_ring, long_axis, release_poses, spots, underside
 
 
 def test_footprint_ring_reaches_half_way_to_the_edge_in_every_direction() -> None:
@@ -27,3 +27,25 @@ def test_spots_and_poses_try_the_centre_first_then_nearer_the_robot() -> None:
     assert {round(y, 3) for _, y, _ in poses[:6]} == {round(y, 3) for y in ReleaseParams().yaws}  # every yaw at the first spot
     assert all(d == ReleaseParams().drops[0] for _, _, d in poses[:42])  # the other spots before any higher release
     assert all(np.allclose(xy, 0.0) and d > ReleaseParams().drops[0] for xy, _, d in poses[42:])  # higher releases last, within the limit
+
+
+def test_underside_keeps_the_lowest_point_of_every_cell() -> None:
+    rng = np.random.default_rng(1)
+    xy = rng.uniform(-0.1, 0.1, (5000, 2))
+    rod = np.column_stack([xy, 0.2 * xy[:, 0] + rng.uniform(0.0, 0.02, len(xy))])  # a tipped slab, 2 cm thick
+    low = underside(rod, 0.02)
+    assert 90 <= len(low) <= 110  # one point per 2 cm cell of the 20 x 20 cm footprint
+    cells = np.floor(rod[:, :2] / 0.02).astype(int)
+    for p in low[:10]:
+        same = np.all(cells == np.floor(p[:2] / 0.02).astype(int), axis=1)
+        assert p[2] == pytest.approx(rod[same, 2].min())
+
+
+def test_long_axis_follows_the_footprint() -> None:
+    rng = np.random.default_rng(2)
+    local = rng.uniform([-0.1, -0.02, 0.0], [0.1, 0.02, 0.03], (3000, 3))
+    for angle in (0.0, 0.7, 2.0):
+        c, s = np.cos(angle), np.sin(angle)
+        pts = local @ np.array([[c, s, 0], [-s, c, 0], [0, 0, 1]]) + [0.4, -0.1, 0.75]
+        axis = long_axis(pts)
+        assert abs(float(axis @ [c, s])) == pytest.approx(1.0, abs=1e-3)  # either end

@@ -69,9 +69,13 @@ class PlaceParams:
     tolerance: float = 0.03  # m from the asked point (place)
     on_top_margin: float = 0.01  # m below a target's top where what lies on it starts
     in_bottom_margin: float = 0.005  # m above a container's bottom where what lies in it starts
+    rim_margin: float = 0.005  # m below a container's rim an object's bottom must come at release (else it rests on the rim)
     beside_gap: float = 0.03  # m between the object and the reference (place_beside)
     beside_extra: tuple[float, ...] = (0.0, 0.02, 0.05)  # m further out also tried
-    beside_lateral: tuple[float, ...] = (0.0, 0.03, -0.03, 0.06, -0.06)  # m sideways for a named side
+    beside_along: tuple[float, ...] = (0.0, 0.02, 0.05, -0.01, -0.02)  # m further out (or nearer) than the gap, for a named side
+    beside_step: float = 0.03  # m between spots sideways off the line, for a named side
+    side_slack: float = 0.02  # m off the line past the two half widths that a named side allows (relations.side_of)
+    beside_margin: float = 0.015  # m kept inside that allowance
     level_probe: float = 0.3  # m above the reference's bottom the surface is looked for from
     level_tol: float = 0.02  # m: a spot on the reference's surface (not off the table edge)
     between_along: tuple[float, ...] = (0.15, -0.15, 0.3, -0.3)  # fractions of the gap off the middle

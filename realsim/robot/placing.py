@@ -22,6 +22,10 @@ class ReleaseParams:
     yaws: tuple[float, ...] = (0.0, 0.5, -0.5, 1.0, -1.0, np.pi / 2)  # rad the hand turns about the vertical
     drops: tuple[float, ...] = (0.01, 0.03, 0.05)  # m above the surface at release
     max_poses: int = 48  # the first spot's yaws, three yaws at each of two rings of six, then higher releases
+    tilts: tuple[float, ...] = tuple(np.round(np.arange(0.1, 0.61, 0.05), 2))  # rad an object longer than a container's opening is tipped, one end first
+    lean_reach: tuple[float, ...] = (0.85, 0.6, 0.35)  # of the opening's radius past its centre the low end of a tipped object goes
+    lean_mass: float = 0.5  # of the opening's radius the tipped object's centre may lie off its centre (it slides in, not out)
+    underside_cell: float = 0.015  # m: the lowest point of the held object in each cell this wide meets the surface first
 
 
 def footprint_radius(obj_pts: np.ndarray) -> float:
@@ -80,6 +84,26 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
             ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
             out += ringed
     return out
+
+
+def underside(pts: np.ndarray, cell: float) -> np.ndarray:
+    """The lowest point in each ``cell``-wide xy cell of ``pts``: what meets a surface first as
+    the object is lowered."""
+    keys = np.floor(pts[:, :2] / cell).astype(np.int64)
+    order = np.lexsort((pts[:, 2], keys[:, 1], keys[:, 0]))
+    k = keys[order]
+    first = np.ones(len(k), bool)
+    first[1:] = np.any(k[1:] != k[:-1], axis=1)
+    out: np.ndarray = pts[order][first]
+    return out
+
+
+def long_axis(pts: np.ndarray) -> np.ndarray:
+    """Unit xy direction of the object's longest horizontal extent (its footprint's principal axis)."""
+    xy = pts[:, :2] - pts[:, :2].mean(axis=0)
+    _, vecs = np.linalg.eigh(xy.T @ xy)
+    axis: np.ndarray = vecs[:, -1]
+    return axis
 
 
 def release_poses(spot_list: list[np.ndarray], params: ReleaseParams = ReleaseParams(), limit: bool = True) -> list[tuple[np.ndarray, float, float]]:

@@ -110,22 +110,32 @@ class SceneGeometry:
     def surface_below(self, xy: np.ndarray, z_from: float, exclude: str | None = None, static_only: bool = False) -> float:
         """z of the first collision surface below (xy, z_from), ignoring the robot and ``exclude``
         (and, with ``static_only``, every movable object: the table or floor under them)."""
-        best = -np.inf
-        geomid = np.zeros(1, np.int32)
         exclude_body = self.body(exclude) if exclude else -1
-        for dx, dy in ((0, 0), (0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01)):
-            start = np.array([xy[0] + dx, xy[1] + dy, z_from])
-            for _ in range(4):
-                d = mujoco.mj_ray(self.model, self.data, start, np.array([0, 0, -1.0]), COLLISION_GROUPS, 1, exclude_body, geomid)
-                if d < 0:
-                    break
-                hit = int(self.model.geom_bodyid[geomid[0]])
-                if hit in self.robot_bodies or (static_only and self.owner(hit) != WORLD):
-                    start = start - np.array([0, 0, d + 1e-4])
-                    continue
-                best = max(best, start[2] - d)
-                break
+        hits = [self._ray_down(np.array([xy[0] + dx, xy[1] + dy, z_from]), exclude_body, static_only)
+                for dx, dy in ((0, 0), (0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01))]
+        best = max(hits)
         return float(best) if np.isfinite(best) else 0.0
+
+    def surfaces_below(self, xys: np.ndarray, z_from: float, exclude: str | None = None) -> np.ndarray:
+        """z of the first collision surface straight below each of ``xys`` from ``z_from``, one ray
+        each, ignoring the robot and ``exclude``; -inf where there is none."""
+        exclude_body = self.body(exclude) if exclude else -1
+        return np.array([self._ray_down(np.array([x, y, z_from]), exclude_body, False) for x, y in np.asarray(xys)[:, :2]])
+
+    def _ray_down(self, start: np.ndarray, exclude_body: int, static_only: bool) -> float:
+        """z where a ray straight down from ``start`` first meets a collision geom that is not the
+        robot's (nor a movable object's, with ``static_only``); -inf when it meets none."""
+        geomid = np.zeros(1, np.int32)
+        for _ in range(4):
+            d = mujoco.mj_ray(self.model, self.data, start, np.array([0, 0, -1.0]), COLLISION_GROUPS, 1, exclude_body, geomid)
+            if d < 0:
+                return -np.inf
+            hit = int(self.model.geom_bodyid[geomid[0]])
+            if hit in self.robot_bodies or (static_only and self.owner(hit) != WORLD):
+                start = start - np.array([0, 0, d + 1e-4])
+                continue
+            return float(start[2] - d)
+        return -np.inf
 
     def robot_hits(self, qadr: np.ndarray, q_arm: np.ndarray, ignore: Iterable[str] = (), hand_may_touch: Iterable[str] = (),
                    hand_bodies: Iterable[int] = (), shifted: dict[str, np.ndarray] | None = None,

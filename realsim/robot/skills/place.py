@@ -10,7 +10,7 @@ from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
 from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, spots, top_area
 from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult
-from realsim.robot.skills.release import Keepout, Release
+from realsim.robot.skills.release import Cavity, Keepout, Release
 
 __all__ = ["PlaceSkills"]
 
@@ -67,7 +67,8 @@ class PlaceSkills(Release):
             near = spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring)
             return self._place(obj, near, np.nan, "place_in", lambda: relations.inside(
                 self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container),
-                Keepout(self._others(obj, {container}, above=float(cp[:, 2].min()) + self.params.place.in_bottom_margin), soft=True))
+                Keepout(self._others(obj, {container}, above=float(cp[:, 2].min()) + self.params.place.in_bottom_margin), soft=True),
+                cavity=Cavity(container, centre, r_in, float(cp[:, 2].max())))
         return self._run("place_in", body, max_sim_time)
 
     def place_beside(self, obj: str, ref: str, side: str = "next", gap: float | None = None,
@@ -83,20 +84,15 @@ class PlaceSkills(Release):
         def body() -> ActionResult:
             o, r = self.object_points(obj), self.object_points(ref)
             rc, oc = box_centre(r), box_centre(o)
-            if side == "next":
-                dirs = [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]
-                lats: tuple[float, ...] = (0.0,)
-            else:
-                dirs = [np.array(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw))]
-                lats = pl.beside_lateral
             cands: list[tuple[float, float, np.ndarray]] = []
-            for d in dirs:
-                perp = np.array([-d[1], d[0]])
-                reach = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max()) + gap_
-                for extra in pl.beside_extra:
-                    for lat in lats:
-                        xy = rc + d * (reach + extra) + perp * lat
-                        cands.append((extra + abs(lat), float(np.linalg.norm(xy - self.base_pos[:2])) if side == "next" else 0.0, xy))
+            if side == "next":
+                for d in [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]:
+                    reach = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max()) + gap_
+                    for extra in pl.beside_extra:
+                        xy = rc + d * (reach + extra)
+                        cands.append((extra, float(np.linalg.norm(xy - self.base_pos[:2])), xy))
+            else:
+                cands = self._side_spots(o, r, np.asarray(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw), float), gap_)
             cands.sort(key=lambda t: (t[0], t[1]))
             level = float(r[:, 2].min())
             ring = footprint_ring(o, frac=pl.support_fraction)
@@ -112,6 +108,19 @@ class PlaceSkills(Release):
                 return relations.next_to(o_now, r_now, touching) if side_d is None else relations.side_of(o_now, r_now, side_d, touching)
             return self._place(obj, near, np.nan, "place_beside", judge, Keepout(self._others(obj)))
         return self._run("place_beside", body, max_sim_time)
+
+    def _side_spots(self, o: np.ndarray, r: np.ndarray, d: np.ndarray, gap: float) -> list[tuple[float, float, np.ndarray]]:
+        """(cost, 0, xy) of spots for the object ``o``'s centre on the ``d`` side of ``r``: over the
+        relation's sector (nearer or further out, off the line as far as the relation allows, a
+        side spot still past ``r``'s extent), the spot ``gap`` straight out first."""
+        pl = self.params.place
+        perp = np.array([-d[1], d[0]])
+        oc, rc = box_centre(o), box_centre(r)
+        base = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max())
+        allowed = float(np.ptp(r[:, :2] @ perp) + np.ptp(o[:, :2] @ perp)) / 2 + pl.side_slack - pl.beside_margin
+        lats = [0.0] + [sgn * k * pl.beside_step for k in range(1, int(allowed / pl.beside_step) + 1) for sgn in (1.0, -1.0)]
+        out = [(abs(along) + abs(lat), 0.0, rc + d * (base + gap + along) + perp * lat) for along in pl.beside_along for lat in lats]
+        return out
 
     def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on the table between objects ``a`` and ``b``."""

@@ -17,10 +17,13 @@ from realsim.planner import relations
 from realsim.robot.grasps import rotate_about
 from realsim.robot.model import GRIPPER_OPEN_CTRL
 from realsim.robot.motion import Motion
-from realsim.robot.placing import release_poses
+from realsim.robot.placing import footprint_radius, long_axis, release_poses, underside
+from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult, PlanFailure
 
-__all__ = ["Keepout", "Release"]
+__all__ = ["Cavity", "Keepout", "Release"]
+
+Pose = tuple[np.ndarray, float, float, float]  # where the object's footprint centre goes (xy), hand yaw, drop, tilt
 
 _WORDS = {"place": "at the target", "place_on": "on the target", "place_in": "inside the target", "place_beside": "beside the target",
           "place_between": "between the targets", "place_down": "on the table"}
@@ -34,6 +37,16 @@ class Keepout:
     xy: np.ndarray
     margin: float = 0.01
     soft: bool = False
+
+
+@dataclass(frozen=True)
+class Cavity:
+    """A container's opening: its centre (xy), inner radius and rim height (z)."""
+
+    name: str
+    centre: np.ndarray
+    radius: float
+    rim: float
 
 
 class Release(Motion):
@@ -53,36 +66,55 @@ class Release(Motion):
         return relations.Relation(err <= tolerance, f"centre {err * 1000:.0f} mm from the target (<= {tolerance * 1000:.0f})")
 
     def _place(self, obj: str, candidates: list[np.ndarray], surface_hint: float, name: str,
-               judge: Callable[[], relations.Relation], keepout: Keepout | None = None) -> ActionResult:
+               judge: Callable[[], relations.Relation], keepout: Keepout | None = None,
+               cavity: Cavity | None = None) -> ActionResult:
         """Carry the held ``obj`` over the first reachable release pose (spot, hand yaw, height),
-        lower it there, release, retreat; ``judge`` says whether the end state is what was asked."""
+        lower it there, release, retreat; ``judge`` says whether the end state is what was asked.
+
+        The release height comes from the object's own underside over what lies below it at that
+        pose (``surface_hint``: a given surface height instead). With a ``cavity`` (a container's
+        opening), poses that would leave the object on the rim are skipped and tipped releases
+        (one end first, the rest over the rim) are tried for an object longer than the opening."""
         if self.held != obj or not self.holding(obj):
             return ActionResult(name, False, f"{obj} is not held (grasp it first)")
         pl = self.params.place
         pts = self.object_points(obj)
         tcp, rot = self.tcp_pose()
-        offset = self._centre_xy(obj) - tcp[:2]  # object centre relative to the tcp, turns with the hand
-        below = tcp[2] - float(pts[:, 2].min())
-        poses = release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))
-        if keepout is not None and len(keepout.xy):
-            poses = self._clear_poses(poses, keepout, pts, tcp, rot, offset)
+        rel = pts - tcp  # the object relative to the tcp: it turns with the hand
+        axis = long_axis(pts)
+        poses: list[Pose] = [(xy, yaw, drop, 0.0) for xy, yaw, drop in
+                             release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))]
+        lean = self._lean_poses(obj, rel, axis, cavity) if cavity is not None else []
         last: PlanFailure | None = None
-        for k, (xy, yaw, drop) in enumerate(poses):
-            turn = rotate_about(np.array([0.0, 0.0, 1.0]), yaw)
-            r_goal = turn @ rot
-            surface = surface_hint if np.isfinite(surface_hint) else self.surface_below(xy, self._tallest(obj) + pl.surface_probe, exclude=obj)
-            goal = np.array([*(xy - turn[:2, :2] @ offset), surface + below + drop])
+        if cavity is not None and footprint_radius(rel) > cavity.radius and not lean:
+            last = PlanFailure(f"{obj} is longer than {cavity.name}'s opening and, {self._mass(obj) * 1000:.0f} g leaning on the rim of "
+                               f"{self._mass(cavity.name) * 1000:.0f} g, would tip it over")
+        if keepout is not None and len(keepout.xy):
+            poses = self._clear_poses(poses, keepout, rel, rot, axis)
+            lean = self._clear_poses(lean, keepout, rel, rot, axis) if lean else []
+        poses += lean
+        for k, (xy, yaw, drop, tilt) in enumerate(poses):
+            turn = self._turn(yaw, tilt, axis)
+            r_goal, moved = turn @ rot, rel @ turn.T
+            tcp_xy = xy - box_centre(moved)
+            low = underside(moved, self.release.underside_cell)
+            z = surface_hint - float(low[:, 2].min()) if np.isfinite(surface_hint) else self._rest_height(obj, tcp_xy, low)
+            bottom = z + float(moved[:, 2].min())
+            if cavity is not None and bottom > cavity.rim - pl.rim_margin:
+                last = PlanFailure(f"{obj} would rest on the rim ({(bottom - cavity.rim) * 1000:+.0f} mm)")
+                continue
+            goal = np.array([*tcp_xy, z + drop])
             if not self._ik(goal, r_goal, self.data.ctrl[self.act].copy()).converged:
                 last = PlanFailure(f"release pose {np.round(goal, 3).tolist()} unreachable")
                 continue
             try:
-                self._transit(goal + np.array([0, 0, pl.approach_height]), r_goal, skip=obj, below_tcp=below)
+                self._transit(goal + np.array([0, 0, pl.approach_height]), r_goal, skip=obj, below_tcp=-float(moved[:, 2].min()))
                 self._straight(goal, r_goal, clear_but={obj})  # the arm and the held object shove nothing on the way down
                 break
             except PlanFailure as exc:
                 last = exc
         else:
-            raise PlanFailure(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, heights; last: {last})")
+            raise PlanFailure(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, tilts, heights; last: {last})")
         if self._slipped(obj):
             self.held = None
             return ActionResult(name, False, f"{obj} slipped out of the hand on the way", values={"release_pose": k})
@@ -102,38 +134,79 @@ class Release(Motion):
             resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < pl.rest_speed
         verdict = judge()
         values = {"object_xy": self._centre_xy(obj).tolist(), "target_xy": np.asarray(xy).tolist(), "release_pose": k,
-                  "release_yaw": yaw, "release_drop": drop, "measured": verdict.measured, "resting": resting}
+                  "release_yaw": yaw, "release_tilt": tilt, "release_drop": drop, "measured": verdict.measured, "resting": resting}
         ok = verdict.ok and resting
         reason = "" if ok else (f"not {_WORDS[name]} after release: {verdict.measured}" if not verdict.ok else "object still moving")
         return ActionResult(name, ok, reason, values=values)
+
+    @staticmethod
+    def _turn(yaw: float, tilt: float, axis: np.ndarray) -> np.ndarray:
+        """The hand's change of orientation for a release: ``yaw`` about the vertical, then the
+        object's long ``axis`` (xy, turned with it) tipped by ``tilt`` (its + end down)."""
+        turn = rotate_about(np.array([0.0, 0.0, 1.0]), yaw)
+        if tilt:
+            u = turn @ np.array([axis[0], axis[1], 0.0])
+            turn = rotate_about(np.cross([0.0, 0.0, 1.0], u), tilt) @ turn
+        return turn
+
+    def _rest_height(self, obj: str, tcp_xy: np.ndarray, low: np.ndarray) -> float:
+        """tcp height at which the object's underside ``low`` (points relative to the tcp) first
+        meets what lies below it with the tcp over ``tcp_xy``."""
+        floors = self.geometry.surfaces_below(tcp_xy + low[:, :2], self._tallest(obj) + self.params.place.surface_probe, exclude=obj)
+        if not np.isfinite(floors).any():
+            return self.surface_below(tcp_xy, self._tallest(obj) + self.params.place.surface_probe, exclude=obj) - float(low[:, 2].min())
+        return float(np.max(floors - low[:, 2]))
+
+    def _lean_poses(self, obj: str, rel: np.ndarray, axis: np.ndarray, cavity: Cavity) -> list[Pose]:
+        """Tipped releases into a container for an object longer than its opening: the low end
+        past the opening's centre, the object's mass over the opening (it slides in, leaning on
+        the rim), the ones that leave its centre lowest (least fall onto the rim) first; none when
+        the container is lighter than the object (it would tip over)."""
+        if footprint_radius(rel) <= cavity.radius or self._mass(obj) > self._mass(cavity.name):
+            return []  # it fits lying flat, or leaning on the rim it would tip a lighter container over
+        scored: list[tuple[int, float, Pose]] = []
+        for tilt in self.release.tilts:
+            for sign in (1.0, -1.0):
+                for yaw in self.release.yaws[:3]:
+                    turn = self._turn(yaw, sign * tilt, axis)
+                    moved = rel @ turn.T
+                    low = moved[int(np.argmin(moved[:, 2]))]
+                    w = sign * (turn @ np.array([axis[0], axis[1], 0.0]))[:2]
+                    w /= max(float(np.linalg.norm(w)), 1e-9)
+                    for f in self.release.lean_reach:
+                        tcp_xy = cavity.centre + w * f * cavity.radius - low[:2]
+                        off = float(np.linalg.norm(tcp_xy + moved[:, :2].mean(axis=0) - cavity.centre))
+                        if off < self.release.lean_mass * cavity.radius:
+                            z = self._rest_height(obj, tcp_xy, underside(moved, self.release.underside_cell))
+                            scored.append((0, z + float(moved[:, 2].mean()),
+                                           (tcp_xy + box_centre(moved), yaw, self.release.drops[0], sign * tilt)))
+        scored.sort(key=lambda t: t[:2])
+        return [pose for _, _, pose in scored]
+
+    def _mass(self, name: str) -> float:
+        """Mass of object ``name`` with its attached parts (kg)."""
+        return float(self.model.body_subtreemass[self._body(name)])
 
     def _slipped(self, obj: str) -> bool:
         """Whether no finger touches ``obj`` any more: it fell or swung out of the hand on the way."""
         return not self._contacts_with(obj)
 
-    def _clear_poses(self, poses: list[tuple[np.ndarray, float, float]], keepout: Keepout, pts: np.ndarray, tcp: np.ndarray,
-                     rot: np.ndarray, offset: np.ndarray) -> list[tuple[np.ndarray, float, float]]:
+    def _clear_poses(self, poses: list[Pose], keepout: Keepout, rel: np.ndarray, rot: np.ndarray, axis: np.ndarray) -> list[Pose]:
         """The release poses whose footprint (the object's, and the fingers' as they open) keeps
         ``keepout.margin`` to the other objects; all of them when none does and the keep-out is soft."""
         pl = self.params.place
-        y, x = rot[:2, 1], rot[:2, 0]
+        y, x = rot[:, 1], rot[:, 0]
         fingers = np.array([sy * pl.finger_reach * y + sx * pl.finger_half_width * x for sy in (-1.0, 1.0) for sx in (-1.0, 0.0, 1.0)])
-        foot = np.vstack([pts[:, :2] - tcp[:2], fingers])
+        foot = np.vstack([rel[:: max(1, len(rel) // pl.footprint_samples)], fingers])
         tree = cKDTree(keepout.xy)
 
-        def turn_offset(yaw: float) -> np.ndarray:  # the object's centre relative to the tcp, turned
-            c, s_ = np.cos(yaw), np.sin(yaw)
-            turned: np.ndarray = offset @ np.array([[c, s_], [-s_, c]])
-            return turned
-
-        def fits(pose: tuple[np.ndarray, float, float]) -> bool:
-            xy, yaw, _ = pose
-            c, s_ = np.cos(yaw), np.sin(yaw)
-            turned = foot @ np.array([[c, s_], [-s_, c]])
-            at = turned - turn_offset(yaw) + xy
-            return bool(tree.query(at[:: max(1, len(at) // pl.footprint_samples)])[0].min() >= keepout.margin)
+        def fits(pose: Pose) -> bool:
+            xy, yaw, _, tilt = pose
+            turn = self._turn(yaw, tilt, axis)
+            at = (foot @ turn.T)[:, :2] - box_centre(rel @ turn.T) + xy
+            return bool(tree.query(at)[0].min() >= keepout.margin)
         clear = [pose for pose in poses if fits(pose)]
         if not clear and not keepout.soft:
             raise PlanFailure(f"no release pose leaves {keepout.margin * 1000:.0f} mm to the other objects ({len(poses)} tried)")
-        kept: list[tuple[np.ndarray, float, float]] = (clear or poses)[: self.release.max_poses]
+        kept: list[Pose] = (clear or poses)[: self.release.max_poses]
         return kept
