@@ -162,7 +162,7 @@ def scene_object(prepared: PreparedObject, manifest: ObjectManifest, object_id: 
         position=np.zeros(3),
         quat=np.array([1.0, 0.0, 0.0, 0.0]),
         size=np.asarray(prepared.size, dtype=np.float64),
-        color=np.asarray(prepared.color if prepared.color is not None else prepared.rgba[:3], dtype=np.float64),
+        color=np.asarray(prepared.color, dtype=np.float64) if prepared.color is not None else None,
         visual=prepared.visual,
         collision=list(prepared.hulls),
         mass=manifest.mass_kg,

@@ -187,6 +187,20 @@ def test_visuals_kept():
     assert len(p.rgba) == 4
 
 
+def test_colour_is_what_the_file_records(prepared, tmp_path):
+    """The banana's texture gives yellow; the bowl's MTL names a texture that is missing, so its
+    colour is unknown (None), not the loader's grey; an MTL Kd is a recorded colour."""
+    banana = prepare_object(DATA / "011_banana" / "textured.obj", cache=DiskCache(enabled=False))
+    assert banana.color is not None and banana.color[0] > 0.5 and banana.color[1] > 0.5 and banana.color[2] < 0.3
+    assert prepared["bowl"].color is None
+    (tmp_path / "red.mtl").write_text("newmtl m\nKd 0.8 0.1 0.1\n")
+    box = trimesh.creation.box((0.05, 0.05, 0.05))
+    lines = ["mtllib red.mtl", "usemtl m", *(f"v {x} {y} {z}" for x, y, z in box.vertices), *(f"f {a + 1} {b + 1} {c + 1}" for a, b, c in box.faces)]
+    (tmp_path / "red_block.obj").write_text("\n".join(lines) + "\n")
+    red = prepare_object(tmp_path / "red_block.obj", cache=DiskCache(enabled=False))
+    assert red.color is not None and np.allclose(red.color, (0.8, 0.1, 0.1), atol=0.01)
+
+
 def test_warm_cache_fast_and_deterministic(prepared, cache_dir):
     paths = [DATA / n / "textured.obj" for n in SUBSET]
     t = time.perf_counter()

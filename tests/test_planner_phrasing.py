@@ -21,6 +21,7 @@ from realsim.planner.phrasing import rephrase, split_command
     ("i want the box moved 5 cm to the left", "move the box 5 cm to the left"),
     ("mug in the bowl", "put mug in the bowl"),
     ("the box needs to be moved 5 cm forward", "move the box 5 cm forward"),
+    ("i want the soup can to be in front of the mug", "put the soup can in front of the mug"),
     ("dance with the mug", "dance with the mug"),
 ])
 def test_rephrase_gives_the_imperative(clause: str, imperative: str) -> None:
@@ -44,6 +45,8 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("put the cubes in the bowl one by one", ["place_in('obj3_cube', 'obj6_bowl')", "place_in('obj4_cube', 'obj6_bowl')", "place_in('obj5_cube', 'obj6_bowl')"]),
     ("take the banana out and put it to the left of the bowl", ["grasp('obj7_banana')", "place_beside('obj7_banana', 'obj6_bowl', 'left')"]),
     ("put the strawberry in the bowl then the banana", ["place_in('obj8_strawberry', 'obj6_bowl')", "place_in('obj7_banana', 'obj6_bowl')"]),
+    ("get the banana out of the way, put it behind the bowl", ["grasp('obj7_banana')", "place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    ("the strawberry, next to the bowl please", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
 ]
 
 
@@ -61,6 +64,17 @@ def test_colours_of_a_kind_when_the_capture_gives_none() -> None:
     assert [c.text() for c in RulePlanner().plan("drop the small red fruit in the bowl", plain).calls] == ["place_in('obj8_strawberry', 'obj6_bowl')"]
     with pytest.raises(InputError, match="no purple object"):
         RulePlanner().plan("grab the purple fruit", plain)
+
+
+def test_an_unrecorded_colour_cannot_tell_apart_but_does_not_refuse_the_one_named() -> None:
+    """Meshes whose texture is missing have no colour: 'the green bowl' is still the only bowl,
+    'the red cube' among three such cubes is asked about, and a recorded colour still rules out."""
+    plain = [replace(o, color=None) for o in CLUTTER]
+    assert [c.text() for c in RulePlanner().plan("grab the green bowl", plain).calls] == ["grasp('obj6_bowl')"]
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("grab the red cube", plain)
+    with pytest.raises(InputError, match="no yellow object"):
+        RulePlanner().plan("grab the yellow can", CLUTTER)
 
 
 def test_a_colour_never_picks_another_noun() -> None:

@@ -104,6 +104,21 @@ def _texture_image(mesh: trimesh.Trimesh):
     return img
 
 
+def colour_captured(mesh: trimesh.Trimesh) -> bool:
+    """Whether the file says what colour the object is: a texture image, vertex or face colours, or
+    a material colour it sets (an MTL ``Kd``, a glTF ``baseColorFactor``). A material that names a
+    texture file which is not there says nothing: its grey is the loader's default, not the object's."""
+    vis = getattr(mesh, "visual", None)
+    if getattr(vis, "kind", None) in ("face", "vertex"):
+        return True
+    if _texture_image(mesh) is not None:
+        return True
+    mat = getattr(vis, "material", None)
+    if isinstance(mat, trimesh.visual.material.PBRMaterial):
+        return mat.baseColorFactor is not None
+    return mat is not None and any(k.lower() == "kd" for k in (getattr(mat, "kwargs", None) or {}))
+
+
 def texture_file(path: Path) -> Path | None:
     """The PNG named by an OBJ's MTL ``map_Kd`` when it exists (read as is, no re-encoding)."""
     path = Path(path)

@@ -11,7 +11,7 @@ import trimesh
 
 from realsim.assets.decompose import decompose
 from realsim.assets.geometry import blend_inertia, clean_geometry, make_solid, plausible_scale, shell_inertia_unit, solid_inertia_unit
-from realsim.assets.loading import load_object_mesh, missing_references, texture_file, visual_appearance
+from realsim.assets.loading import colour_captured, load_object_mesh, missing_references, texture_file, visual_appearance
 from realsim.assets.params import AssetParams
 from realsim.cache import DiskCache, cache_key
 from realsim.composition.atlas import baked_colours, surface_colour
@@ -47,7 +47,7 @@ class PreparedObject:
     inertia_model: str = "solid"  # "solid" | "shell" | "shell+contents"
     decomposition: dict = field(default_factory=dict)
     category: str | None = None
-    color: np.ndarray | None = None  # (3,) RGB the object shows (its texture's mean), for names and the planner
+    color: np.ndarray | None = None  # (3,) RGB the object shows (its texture's mean), for names and the planner; None: unknown
 
     @property
     def open_container(self) -> bool:
@@ -111,18 +111,19 @@ def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetPara
 
 
 PREPARE_VERSION = 6  # bump when the preparation logic changes: old cache entries stop matching
+FINISH_VERSION = 1  # bump when only the cheap finish (appearance, inertia) changes: hulls stay cached
 
 
 def _file_key(path: Path, label: str | None, params: AssetParams) -> str | None:
     """Key of the whole prepared object from the file bytes (+ MTL/texture), label, params and
-    :data:`PREPARE_VERSION`."""
+    :data:`PREPARE_VERSION` and :data:`FINISH_VERSION`."""
     from realsim.assets.loading import texture_file
 
     path = Path(path)
     if not path.is_file():
         return None
     files = [path] + [f for f in path.parent.glob("*.mtl")][:1] + ([t] if (t := texture_file(path)) else [])
-    return cache_key("assets.prepared_file", files=files, params={"label": label, "params": params, "version": PREPARE_VERSION})
+    return cache_key("assets.prepared_file", files=files, params={"label": label, "params": params, "version": PREPARE_VERSION, "finish": FINISH_VERSION})
 
 
 def prepare_object(path: Path, label: str | None = None, params: AssetParams = AssetParams(), cache: DiskCache | None = None) -> PreparedObject:
@@ -168,7 +169,10 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
     if png is None and (baked := baked_colours(visual)) is not None:  # painted vertices: their colours as a texture
         visual, png = baked
         rgba = (1.0, 1.0, 1.0, 1.0)
-    shown = surface_colour(visual, png) if png is not None else None  # a textured object's colour is its texture's
+    if png is not None:  # a textured object's colour is its texture's
+        shown = surface_colour(visual, png)
+    else:  # a material colour the file sets; None when the file does not say (e.g. its texture is missing)
+        shown = np.asarray(rgba[:3], float) if colour_captured(visual) else None
     solid = heavy["solid"]
     open_cavity = heavy["hull_volume"] > 0 and solid.volume / heavy["hull_volume"] < OPEN_CAVITY_RATIO
     com, inertia, model = _inertia_for(solid, label, open_cavity)
@@ -180,7 +184,7 @@ def _prepare_uncached_file(path: Path, label: str | None, params: AssetParams, c
         visual=visual,
         texture_png=png,
         rgba=rgba,
-        color=shown if shown is not None else np.asarray(rgba[:3], float),
+        color=shown,
         hulls=heavy["hulls"],
         volume=float(solid.volume),
         size=np.asarray(solid.extents, float),

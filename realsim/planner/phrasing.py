@@ -75,6 +75,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
+    text = re.sub(r"\bout of (?:the|my|your|our) way\b", " ", text)  # "get the banana out of the way, put it ...": take it
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
     text = re.sub(r"(?<!the )(?<!far )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
     for filler in FILLERS:
@@ -91,7 +92,7 @@ def split_command(command: str) -> list[str]:
     text = _in_order(clean(command))
     text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
     parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
-    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
+    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
     topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
@@ -99,6 +100,8 @@ def split_command(command: str) -> list[str]:
             and verb_re.match(parts[1]) and re.search(r"\b(?:it|them)\b", parts[1])):
         # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
         parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
+    elif re.match(r"(?:the|that|this|these|those) ", topic) and not verb_re.match(topic) and not _has_relation(topic) and _relation_start(parts[1]):
+        parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part):
@@ -175,7 +178,7 @@ def rephrase(clause: str) -> str:
         return f"hand me {m.group(1)}"
     m = _DESIRE.match(c)
     if m:
-        rest = m.group(1)
+        rest = re.sub(r"\s+to (?:be|go|sit|stand|end up|stay|rest|lie)(?= )", "", m.group(1))  # "i want X to be next to Y"
         p = _PARTICIPLE.match(rest)
         if p and p.group(2):
             return f"move {p.group(1)} {p.group(2)}"

@@ -300,11 +300,17 @@ class Resolver:
             scored = [(o, s + (0.3 if s > 0 and want in o.affordances else 0.0)) for o, s in scored]
         scored = [(o, s) for o, s in scored if s > 0]
         if colors and scored:  # a colour decides before the noun's score does ("the blue one" is not the plate)
-            if not any(colors_of(o) for o, _ in scored):
-                raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o, _ in scored)}; "
-                                 "name it another way")
             named = max((s for _, s in scored), default=0.0) >= 1.5  # the noun names some object outright
-            scored = [(o, s) for o, s in scored if set(colors) <= colors_of(o) and (s >= 1.5 or not named)]
+            matching = [(o, s) for o, s in scored if set(colors) <= colors_of(o) and (s >= 1.5 or not named)]
+            pool = [(o, s) for o, s in scored if s >= 1.5] if named else scored
+            if not any(colors_of(o) for o, _ in pool):
+                if not named:
+                    raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o, _ in scored)}; "
+                                     "name it another way")
+                # the noun names it and no candidate's colour is recorded: the colour word cannot tell them
+                # apart, so it is not checked ("the red brick" with one brick whose texture is missing)
+                matching = pool
+            scored = matching
             if not scored:
                 raise InputError(f"no {' '.join(colors)} object matches {phrase.strip()!r}; {self.listing()}")
         if not scored:

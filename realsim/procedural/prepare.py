@@ -32,7 +32,7 @@ def prepare_part(part: Part, params: AssetParams = AssetParams()) -> PreparedObj
     m = lookup(part.label)
     return PreparedObject(
         label=part.label, source=Path(SOURCE_PREFIX) / part.label.replace(" ", "_"), visual=solid.copy(), texture_png=None,
-        rgba=(*(float(c) for c in part.color), 1.0), hulls=hulls, volume=float(solid.volume), size=np.asarray(solid.extents, float),
+        rgba=(*(float(c) for c in part.color), 1.0), color=np.asarray(part.color, float), hulls=hulls, volume=float(solid.volume), size=np.asarray(solid.extents, float),
         com=com, inertia_unit_mass=inertia, scale_applied=1.0, solid=solid, surface_area=float(solid.area),
         convex_hull_volume=hull_volume, solid_method="procedural", inertia_model=model,
         decomposition={"method": "procedural", "hulls": len(hulls)}, category=m.category.name if m else None,

@@ -33,7 +33,8 @@ def prepared_from_mesh(label: str, mesh: trimesh.Trimesh, source: Path, rgba: tu
         inertia = np.diag([e[1] ** 2 + e[2] ** 2, e[0] ** 2 + e[2] ** 2, e[0] ** 2 + e[1] ** 2]) / 12.0
         volume = volume or float(np.prod(e))
     return PreparedObject(
-        label=label, source=source, visual=mesh, texture_png=None, rgba=tuple(float(c) for c in rgba), hulls=[mesh],
+        label=label, source=source, visual=mesh, texture_png=None, rgba=tuple(float(c) for c in rgba), color=np.asarray(rgba[:3], float),
+        hulls=[mesh],
         volume=volume, size=np.asarray(mesh.extents, float), com=com, inertia_unit_mass=inertia, scale_applied=1.0,
         warnings=list(warnings or []), solid=mesh, surface_area=float(mesh.area), convex_hull_volume=float(abs(mesh.convex_hull.volume)),
         solid_method="primitive",
