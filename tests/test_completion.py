@@ -110,3 +110,30 @@ def test_the_hidden_half_of_a_flat_bottle_is_mirrored_behind_its_silhouette() ->
     assert both is not None and np.isclose(np.ptp(both[:, 0]), 0.06, atol=0.002)
     box_top = np.column_stack([np.tile(np.linspace(-0.03, 0.03, 30), 40), np.repeat(np.linspace(-0.05, 0.05, 40), 30), np.full(1200, 0.2)])
     assert mirror_hidden_half(np.vstack([front, box_top]), view, 0.0, 0.2, CompletionParams()) is None  # its whole top is seen
+
+
+def test_free_space_is_certain_only_past_the_pixels_around_a_point() -> None:
+    # the box top (10 cm wide, 0.9 m below) ends between pixel columns 90 (box) and 91 (floor)
+    depth = _depth_of_box(np.array([-0.05, -0.04, -1.0]), np.array([0.05, 0.04, -0.9]), floor=-1.0)
+    view = _view(depth, np.where(depth < 0.95, 1, 0))
+    assert depth[60, 90] == 0.9 and depth[60, 91] == 1.0
+
+    def at(u: float) -> np.ndarray:  # a point at the box top's height on the ray through column u, row 59.5
+        return np.array([[(u - INTR.cx) / INTR.fx * 0.9, 0.0, -0.9]])
+
+    edge, past = at(90.8), at(91.6)  # between the last box pixel and the first floor pixel; past the floor pixel
+    assert view.seen_through(edge, 0.005, footprint=False)[0]  # its nearest pixel saw the floor...
+    assert not view.seen_through(edge, 0.005)[0]  # ...but the box's edge may lie anywhere up to that pixel
+    assert view.seen_through(past, 0.005)[0] and view.seen_through(past, 0.005, own=1)[0]
+
+
+def test_edge_pixels_continuing_the_surface_are_kept_and_mixed_ones_dropped() -> None:
+    depth = _depth_of_box(np.array([-0.05, -0.04, -1.0]), np.array([0.05, 0.04, -0.9]), floor=-1.0)
+    labels = np.where(depth < 0.95, 1, 0)
+    depth[50, 91], depth[55, 91] = 0.95, 0.902  # a mixed depth between box and floor; the box's own edge
+    labels[50, 91] = labels[55, 91] = 1
+    veil = np.zeros(depth.shape, bool)
+    veil[50, 91] = veil[55, 91] = True
+    out = _view(depth, labels).unveiled(veil, 0.005)
+    assert np.isnan(out.depth[50, 91]) and out.depth[55, 91] == 0.902
+    assert np.array_equal(out.depth[~veil], depth[~veil])

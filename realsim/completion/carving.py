@@ -40,7 +40,7 @@ def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, ow
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
     xy, col, cells = _cells(mesh, step)
-    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own)
+    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own, footprint=False)
 
 
 def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -3,10 +3,12 @@
 The line of sight to every observed pixel is empty up to the captured depth (less the sensor's
 noise). A convex piece that pokes into that space is seen through from its front surface first
 (a ray entering the piece meets its surface before its inside), so the piece is tested on samples
-of its surface. It is then cut by planes, one at a time, each chosen among vertical planes
-(keeping the base on its support), planes along the line of sight (a cut of the silhouette) and
-across it (a cut in depth), to remove the seen-through samples while losing the least of the piece's
-volume. A piece seen through almost whole is dropped.
+of its surface, each against all four pixels around its image (between an object's last pixel and
+the first past it the edge may lie anywhere: only beyond that is the space certainly empty). It is
+then cut by planes, one at a time, each chosen among vertical planes (keeping the base on its
+support), planes along the line of sight (a cut of the silhouette) and across it (a cut in depth),
+to remove the seen-through samples while losing the least of the piece's volume. A piece seen
+through almost whole is dropped.
 """
 
 from __future__ import annotations

@@ -43,5 +43,6 @@ class CompletionParams:
     mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored
     mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
+    veil_keep: bool = True  # veil pixels continuing the surface beside them (within the free-space tolerance) are kept: the edge
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30

@@ -37,6 +37,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         smooth = view.denoised(params.denoise_window)
         points, view = view.moved_to(smooth, points), smooth
     veil = view.veil(params.veil_deg, labels.reshape(view.depth.shape) > 0).ravel() if view is not None else np.zeros(len(labels), bool)
+    if view is not None and params.veil_keep:
+        edge = view.unveiled(veil.reshape(view.depth.shape), tolerance)
+        veil &= ~np.isfinite(edge.depth.ravel())
     order = bottom_up(scene.objects)
     for obj in order:
         mask = labels == obj.id

@@ -7,6 +7,7 @@ depth at its pixel was seen through.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -94,6 +95,32 @@ class DepthView:
         block[fit] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
         return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
 
+    def unveiled(self, veil: np.ndarray, tolerance: float, window: int = 5) -> "DepthView":
+        """This view with the ``veil`` pixels (H, W) of objects that continue the surface beside them kept
+        (no deeper than the farthest surface pixel of the same object in the ``window`` x ``window``
+        pixels around by more than ``tolerance``: the object's own edge, seen edge-on) and the others,
+        mixed depths between the object and what lies behind it, set to NaN."""
+        if self.labels is None or not np.any(veil & (self.labels > 0)):
+            return self
+        v, u = np.nonzero(veil & (self.labels > 0))
+        r = window // 2
+        v0, v1, u0, u1 = max(v.min() - r, 0), min(v.max() + r + 1, self.depth.shape[0]), max(u.min() - r, 0), min(u.max() + r + 1, self.depth.shape[1])
+        h, w = v1 - v0, u1 - u0
+        surface = np.pad(np.where(veil[v0:v1, u0:u1], np.nan, self.depth[v0:v1, u0:u1]), r, constant_values=np.nan)
+        labels = np.pad(self.labels[v0:v1, u0:u1], r)
+        centre = labels[r:r + h, r:r + w]
+        deepest = np.full((h, w), -np.inf)
+        for di in range(window):
+            for dj in range(window):
+                d = surface[di:di + h, dj:dj + w]
+                same = (labels[di:di + h, dj:dj + w] == centre) & np.isfinite(d)
+                deepest = np.where(same, np.maximum(deepest, np.nan_to_num(d, nan=-np.inf)), deepest)
+        out = self.depth.copy()
+        block = out[v0:v1, u0:u1]
+        sel = veil[v0:v1, u0:u1] & (centre > 0)
+        block[sel] = np.where(block[sel] <= deepest[sel] + tolerance, block[sel], np.nan)
+        return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
+
     def moved_to(self, other: "DepthView", points: np.ndarray) -> np.ndarray:
         """The organized world ``points`` (one per pixel, this view's) moved along their rays to the
         depth ``other`` holds at their pixel (unchanged where either depth is missing)."""
@@ -113,20 +140,34 @@ class DepthView:
             ok &= self.labels[:, 1:-1] > 0
         return float(np.std(d2[ok]) / np.sqrt(6.0)) if np.count_nonzero(ok) >= 100 else 0.0
 
-    def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None) -> np.ndarray:
-        """Mask of world points the camera saw through: nearer than the captured depth at their pixel
-        by more than ``tolerance`` where the pixel shows object ``own`` (its own noisy surface), by
-        more than a millimetre where it shows anything else (nothing of ``own`` can be in front of that)."""
+    @cached_property
+    def _cell_depth(self) -> np.ndarray:
+        """Per image cell (the square between four neighbouring pixel centres, (H-1, W-1)): the nearest
+        depth its corners saw (NaN when one of them saw nothing)."""
+        d = self.depth
+        return np.asarray(np.minimum(np.minimum(d[:-1, :-1], d[1:, :-1]), np.minimum(d[:-1, 1:], d[1:, 1:])))
+
+    def seen_through(self, points: np.ndarray, tolerance: float, own: int | None = None, footprint: bool = True) -> np.ndarray:
+        """Mask of world points certainly in the space the camera saw through: nearer than the captured
+        depth of all four pixel centres around their image position (a point between an object's last
+        pixel and the first pixel past it may be the object's own edge: the pixel footprint) by more than
+        ``tolerance`` when one of those pixels shows object ``own`` (its own noisy surface), by more than
+        a millimetre when none does (nothing of ``own`` can be in front of that). Without ``footprint``
+        only the nearest pixel is asked (voxels coarser than a pixel, whose hull keeps the seen points)."""
         opt = points @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
-        pix = np.rint(self.intrinsics.project(opt)).astype(np.int64, copy=False) if len(points) else np.zeros((0, 2), np.int64)
         h, w = self.depth.shape
-        inside = (opt[:, 2] > 0) & (pix[:, 0] >= 0) & (pix[:, 0] < w) & (pix[:, 1] >= 0) & (pix[:, 1] < h)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            uv = (np.floor if footprint else np.rint)(self.intrinsics.project(opt)) if len(points) else np.zeros((0, 2))
+        inside = (opt[:, 2] > 0) & (uv[:, 0] >= 0) & (uv[:, 0] < w - footprint) & (uv[:, 1] >= 0) & (uv[:, 1] < h - footprint)
+        cell = uv[inside].astype(np.int64)
         seen = np.full(len(points), np.nan)
-        seen[inside] = self.depth[pix[inside, 1], pix[inside, 0]]
+        seen[inside] = (self._cell_depth if footprint else self.depth)[cell[:, 1], cell[:, 0]]
         tol = np.full(len(points), tolerance)
         if own is not None and self.labels is not None:
-            other = np.ones(len(points), bool)
-            other[inside] = self.labels[pix[inside, 1], pix[inside, 0]] != own
-            tol[other] = OTHER_SURFACE_TOLERANCE
+            v, u = cell[:, 1], cell[:, 0]
+            corners = [(0, 0), (1, 0), (0, 1), (1, 1)] if footprint else [(0, 0)]
+            mine = np.zeros(len(points), bool)
+            mine[inside] = np.any([self.labels[v + dv, u + du] == own for dv, du in corners], axis=0)
+            tol[~mine] = OTHER_SURFACE_TOLERANCE
         with np.errstate(invalid="ignore"):
             return np.asarray(opt[:, 2] / self.scale < seen - tol)
