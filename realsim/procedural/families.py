@@ -16,9 +16,8 @@ from typing import Callable
 import numpy as np
 from manifold3d import Manifold
 
-from realsim.procedural.parts import Shape, arc, box, cylinder, ellipsoid, hull_shape, open_box, rounded_slab, tube, union, vessel
-
-D = tuple[float, float, float]
+from realsim.procedural.parts import D, Shape, arc, box, cylinder, ellipsoid, hull_shape, open_box, rounded_slab, tube, union, vessel
+from realsim.procedural.utensils import fork, hammer, knife, screwdriver, spoon, wrench
 
 
 @dataclass
@@ -36,6 +35,7 @@ class Articulated:
 
 # ---------------------------------------------------------------- open containers and tableware
 def mug(d: D) -> Shape:
+    """A mug sized by the table's (height, diameter): see :func:`mug_hd`."""
     return mug_hd(d[1], d[1] * 0.9)
 
 
@@ -51,16 +51,19 @@ def mug_hd(h: float, dia: float) -> Shape:
 
 
 def cup(d: D) -> Shape:
+    """A cup: a tapered open vessel, thin wall, no handle."""
     h, r = d[0], d[1] / 2
     return vessel([(r * 0.78, 0.0), (r, h)], wall=0.004, bottom=0.006, segments=2)
 
 
 def glass(d: D) -> Shape:
+    """A drinking glass: a nearly straight open vessel with a thick bottom."""
     h, r = d[0], d[1] / 2
     return vessel([(r * 0.9, 0.0), (r, h)], wall=0.003, bottom=0.008, segments=2)
 
 
 def bowl(d: D) -> Shape:
+    """A bowl of the table's diameter and height: see :func:`bowl_hd`."""
     return bowl_hd(d[2], d[0])
 
 
@@ -74,6 +77,7 @@ def bowl_hd(h: float, dia: float) -> Shape:
 
 
 def plate(d: D) -> Shape:
+    """A plate: a low dish, a foot and a flared rim (at least 15 mm high)."""
     R, h = d[0] / 2, max(d[2], 0.015)
     return vessel([(R * 0.55, 0.0), (R * 0.65, h * 0.35), (R, h)], wall=0.005, bottom=0.005, segments=1)
 
@@ -139,6 +143,7 @@ def teapot(d: D) -> Shape:
 
 
 def tray(d: D) -> Shape:
+    """A tray: a shallow open box (at least 30 mm high) with a handle site on its +x rim."""
     return open_box(d[0], d[1], max(d[2], 0.03), wall=0.006).with_sites(handle=(d[0] / 2 - 0.003, 0.0, max(d[2], 0.03)))
 
 
@@ -168,6 +173,7 @@ def bin_(d: D) -> Shape:
 
 # ---------------------------------------------------------------- closed containers and solids
 def bottle(d: D) -> Shape:
+    """A bottle: a round body, a shoulder and a narrow neck (a lid site on top)."""
     h, r = d[0], d[1] / 2
     neck = max(r * 0.32, 0.009)
     body_h, shoulder_h = h * 0.62, h * 0.2
@@ -184,12 +190,14 @@ def _ring_pts(r: float, z: float, n: int = 20) -> np.ndarray:
 
 
 def can(d: D) -> Shape:
+    """A can: a cylinder with rolled-in top and bottom rims (a lid site on top)."""
     h, r = d[0], d[1] / 2
     pts = np.vstack([_ring_pts(r * 0.88, 0.0), _ring_pts(r, h * 0.06), _ring_pts(r, h * 0.94), _ring_pts(r * 0.9, h)])
     return hull_shape(pts).with_sites(lid=(0.0, 0.0, h))
 
 
 def jar(d: D) -> Shape:
+    """A jar: a cylinder under a slightly narrower lid band (a lid site on top)."""
     h, r = d[0], d[1] / 2
     return union(cylinder(h * 0.86, r), cylinder(h * 0.14, r * 0.9).moved(z=h * 0.86)).with_sites(lid=(0.0, 0.0, h))
 
@@ -210,6 +218,7 @@ def upright_box(d: D) -> Shape:
 
 
 def book(d: D) -> Shape:
+    """A closed book lying flat, the pages' fore-edge inset a little (visual only)."""
     x, y, z = d[0], d[1], d[2]
     cover = min(0.003, z * 0.15)
     shape = box(x, y, z)
@@ -218,6 +227,7 @@ def book(d: D) -> Shape:
 
 
 def cutting_board(d: D) -> Shape:
+    """A cutting board: a rounded slab with a hanging hole near +x (a handle site there)."""
     x, y, z = d[0], d[1], max(d[2], 0.012)
     board = rounded_slab(x, y, z, 0.02)
     hole = Manifold.cylinder(z * 3, 0.012, 0.012, 24).translate([x / 2 - 0.03, 0.0, -z])
@@ -245,6 +255,7 @@ def fruit(d: D) -> Shape:
 
 
 def banana(d: D) -> Shape:
+    """A banana: a tapered tube bent upward at both ends, lying on its side."""
     length, width, thick = d[0], d[1], d[2]
     t = np.linspace(-1.0, 1.0, 7)
     bend = width - thick
@@ -255,6 +266,7 @@ def banana(d: D) -> Shape:
 
 
 def carrot(d: D) -> Shape:
+    """A carrot: a tapering tube lying flat, flat on its underside."""
     length, r = d[0], d[1] / 2
     radii = np.array([r, r * 0.7, r * 0.12])
     path = np.column_stack([[-length / 2, 0.0, length / 2], np.zeros(3), radii * np.cos(np.pi / 8)])  # flat underside
@@ -262,80 +274,15 @@ def carrot(d: D) -> Shape:
 
 
 def pen(d: D) -> Shape:
+    """A pen or marker: a thin hexagonal tube lying along x."""
     length, r = d[0], d[1] / 2
     return tube(np.array([[-length / 2, 0.0, 0.0], [length / 2, 0.0, 0.0]]), r, 6, phase=True)
 
 
 def ball(d: D) -> Shape:
+    """A ball of the table's diameter."""
     r = d[0] / 2
     return ellipsoid(r, r, r)
-
-
-# ---------------------------------------------------------------- cutlery and tools (lying flat)
-def knife(d: D) -> Shape:
-    length, width, thick = d[0], d[1], d[2]
-    grip = length * 0.42
-    handle = box(grip, width * 0.8, thick, at=(-length / 2 + grip / 2, 0.0, 0.0))
-    x0, x1 = -length / 2 + grip, length / 2
-    blade = hull_shape(np.array([[x0, -width / 2, 0], [x0, width / 2, 0], [x1, width * 0.1, 0], [x1, -width * 0.1, 0],
-                                 [x0, -width / 2, 0.003], [x0, width / 2, 0.003], [x1, width * 0.1, 0.0015], [x1, -width * 0.1, 0.0015]]))
-    return (handle + blade).with_sites(handle=(-length / 2 + grip / 2, 0.0, thick))
-
-
-def _flat_utensil(d: D, head: Shape, head_len: float) -> Shape:
-    length, thick = d[0], 0.005
-    bar = box(length - head_len + 0.01, max(d[1] * 0.35, 0.01), thick, at=(-head_len / 2 + 0.005, 0.0, 0.0))  # 1 cm into the head
-    return (bar + head).with_sites(handle=(-length / 2 + (length - head_len) * 0.3, 0.0, thick))
-
-
-def fork(d: D) -> Shape:
-    length, width = d[0], d[1]
-    head_len = length * 0.3
-    x0, x1 = length / 2 - head_len, length / 2
-    # the head curves up towards the tines, as a fork's does (something for fingers to close on)
-    head = hull_shape(np.array([[x, y, z] for x, zs in ((x0, (0.0, 0.005)), (x1, (0.008, 0.013))) for y in (-width / 2, width / 2) for z in zs]))
-    tines = Manifold.cube([head_len * 0.6, 0.003, 0.04], center=True)
-    cut = None
-    for yy in (-width / 6, width / 6, 0.0):
-        s = tines.translate([length / 2 - head_len * 0.3 + 0.001, yy, 0.0])
-        cut = s if cut is None else cut + s
-    return _flat_utensil(d, head.minus(cut), head_len)
-
-
-def spoon(d: D) -> Shape:
-    length, width = d[0], d[1]
-    head_len = length * 0.33
-    e = ellipsoid(head_len / 2, width / 2, 0.012)
-    pts = e.hulls[0]
-    pts = pts[pts[:, 2] <= 0.0005] + [length / 2 - head_len / 2, 0.0, 0.012]
-    head = hull_shape(np.vstack([pts, [[length / 2 - head_len / 2, 0.0, 0.0]]]))
-    return _flat_utensil(d, head, head_len)
-
-
-def hammer(d: D) -> Shape:
-    length, head_w, thick = d[0], d[1], max(d[2], 0.025)
-    handle = box(length - 0.03, 0.028, thick * 0.8, at=(-0.015, 0.0, 0.0))
-    head = box(0.03, head_w, thick, at=(length / 2 - 0.015, 0.0, 0.0))
-    return (handle + head).with_sites(handle=(-length / 2 + length * 0.25, 0.0, thick * 0.8))
-
-
-def screwdriver(d: D) -> Shape:
-    length, r = d[0], d[1] / 2
-    grip = length * 0.45
-    handle = tube(np.array([[-length / 2, 0.0, r], [-length / 2 + grip, 0.0, r]]), r, 6, phase=True)
-    shaft = tube(np.array([[-length / 2 + grip, 0.0, r], [length / 2, 0.0, r]]), max(r * 0.2, 0.0025), 6, phase=True)
-    return (handle + shaft).with_sites(handle=(-length / 2 + grip / 2, 0.0, 2 * r))
-
-
-def wrench(d: D) -> Shape:
-    length, width, thick = d[0], d[1], max(d[2], 0.006)
-    bar = box(length - width, width * 0.45, thick)
-    jaws = []
-    for sign in (1, -1):
-        cx = sign * (length / 2 - width / 2)
-        jaws += [box(width, width * 0.3, thick, at=(cx, width * 0.35, 0.0)), box(width, width * 0.3, thick, at=(cx, -width * 0.35, 0.0)),
-                 box(width * 0.3, width, thick, at=(cx - sign * width * 0.35, 0.0, 0.0))]
-    return union(bar, *jaws).with_sites(handle=(0.0, 0.0, thick))
 
 
 # ---------------------------------------------------------------- articulated

@@ -19,6 +19,7 @@ from scipy.spatial.transform import Rotation
 SEGMENTS = 48  # circular resolution of the visual solid
 WEDGES = 16  # angular pieces of a revolved wall (chord error 2 % of the radius)
 Site = tuple[float, float, float]
+D = tuple[float, float, float]  # an object's extents, largest first (what every family is a function of)
 
 
 @dataclass
