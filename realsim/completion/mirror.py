@@ -46,8 +46,8 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
         if band.sum() < 10:
             continue
         wb, sb = ws[band], ss[band]
-        left, right = np.percentile(wb, 3), np.percentile(wb, 97)
-        contour.extend([float(np.median(sb[wb <= left])), float(np.median(sb[wb >= right]))])
+        wb = wb - 0.5 * (np.percentile(wb, 1) + np.percentile(wb, 99))  # from the band's middle
+        contour.extend([_extreme_depth(-wb, sb), _extreme_depth(wb, sb)])
     if len(contour) < 4:
         return None
     plane = float(np.median(contour))
@@ -55,6 +55,22 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     if len(front) < 10:
         return None
     return np.vstack([points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]])
+
+
+def _extreme_depth(w: np.ndarray, s: np.ndarray, share: float = 0.25) -> float:
+    """The depth ``s`` at which a side reaches its largest lateral extent ``w`` (measured from the
+    body's middle): the vertex of w^2 fitted as a parabola in s (exact for an elliptic section) to the
+    points in the outer ``share`` of the extent. The camera sees the side only up to where its line
+    of sight grazes it, so the outermost points all lie in front of the extreme (their median is too
+    near the camera by a share of the body's depth); that median when the fit is no cap."""
+    outer = w >= (1.0 - share) * np.max(w)
+    fallback = float(np.median(s[w >= np.percentile(w, 97)]))
+    if np.max(w) <= 0 or outer.sum() < 8 or np.ptp(s[outer]) <= 0:
+        return fallback
+    c2, c1, _ = np.polyfit(s[outer], w[outer] ** 2, 2)
+    vertex = -c1 / (2 * c2) if c2 < 0 else np.nan
+    reach = float(np.ptp(s[outer]))
+    return float(vertex) if np.isfinite(vertex) and s[outer].min() - reach <= vertex <= s[outer].max() + reach else fallback
 
 
 def _top_face_seen(top: np.ndarray, d: np.ndarray, depth: float, cell: float = 0.005) -> bool:
