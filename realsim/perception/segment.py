@@ -20,7 +20,8 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
-from realsim.perception.object_relations import filter_by_size, support_relations
+from realsim.perception.footprints import merge_shared_footprints
+from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 from realsim.perception.visibility import visibility_score
@@ -313,10 +314,23 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     size = np.bincount(obj)
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
+    if not organized:  # a clouds seen from around shows whole footprints: pieces standing in one are one object
+        obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray, height: np.ndarray,
+                     params: SegmentParams) -> np.ndarray:
+    """:func:`merge_shared_footprints` of the clusters whose base is on their support."""
+    if not (labels >= 0).any():
+        return labels
+    standing = np.zeros(int(labels.max()) + 1, dtype=bool)
+    for k in np.unique(labels[labels >= 0]):
+        standing[k] = base_height(height[labels == k]) < params.stack_min_height
+    return merge_shared_footprints(points[:, :2], labels, support, standing)
 
 
 def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:

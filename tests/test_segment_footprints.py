@@ -1,0 +1,39 @@
+"""Footprints: standing pieces that share a footprint are one object; stacked or adjacent ones are not."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.perception.footprints import merge_shared_footprints
+
+
+def _ring(r: float, z1: float, centre: tuple[float, float], step: float = 0.004) -> np.ndarray:
+    a, z = np.meshgrid(np.arange(0.0, 2 * np.pi, step / r), np.arange(0.0, z1, step))
+    return np.stack([centre[0] + r * np.cos(a.ravel()), centre[1] + r * np.sin(a.ravel()), z.ravel()], axis=1)
+
+
+def _box(lo: tuple[float, float, float], hi: tuple[float, float, float], n: int, seed: int) -> np.ndarray:
+    return np.random.default_rng(seed).uniform(lo, hi, (n, 3))
+
+
+def test_inside_and_outside_of_a_bowl_join_stacked_and_neighbours_stay() -> None:
+    """A bowl cut into its outer wall and its inside (two standing clusters, one inside the
+    other's hull) becomes one; a box stacked on a box (not standing) and a box standing next to
+    them keep their own labels."""
+    outer = _ring(0.08, 0.06, (0.0, 0.0))
+    inner = _ring(0.07, 0.05, (0.0, 0.0))
+    lower = _box((0.2, -0.05, 0.0), (0.3, 0.05, 0.06), 800, 1)
+    upper = _box((0.22, -0.03, 0.06), (0.28, 0.03, 0.1), 300, 2)  # on the lower box: inside its hull
+    beside = _box((0.3, 0.06, 0.0), (0.36, 0.12, 0.05), 300, 3)  # touches the lower box's corner
+    clusters = [outer, inner, lower, upper, beside]
+    points = np.concatenate(clusters)
+    labels = np.concatenate([np.full(len(c), k) for k, c in enumerate(clusters)])
+    standing = np.array([True, True, True, False, True])
+    out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), standing)
+    assert len(np.unique(out[labels <= 1])) == 1  # the bowl
+    assert len(np.unique(out)) == 4
+    for k in (2, 3, 4):
+        assert np.all(out[labels == k] == k)
+    # on different supports, nothing joins
+    other = np.where(labels == 1, 1, 0)
+    assert len(np.unique(merge_shared_footprints(points[:, :2], labels, other, standing))) == 5
