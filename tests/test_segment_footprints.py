@@ -37,3 +37,18 @@ def test_inside_and_outside_of_a_bowl_join_stacked_and_neighbours_stay() -> None
     # on different supports, nothing joins
     other = np.where(labels == 1, 1, 0)
     assert len(np.unique(merge_shared_footprints(points[:, :2], labels, other, standing))) == 5
+
+
+def test_walls_are_tall_columns_objects_beside_them_are_not() -> None:
+    """A wall rising 1 m above the support is structure before segmentation; a 30 cm bottle
+    standing 3 cm from it is not."""
+    from realsim.perception.segment import SegmentParams
+    from realsim.perception.segment_scene import _in_tall_columns
+
+    rng = np.random.default_rng(0)
+    wall = rng.uniform([-0.5, 0.0, 0.01], [0.5, 0.004, 0.99], (5000, 3))
+    bottle = rng.uniform([-0.04, -0.11, 0.01], [0.04, -0.03, 0.3], (2000, 3))
+    points = np.concatenate([wall, bottle])
+    tall = _in_tall_columns(points, np.zeros(len(points), dtype=np.int64), points[:, 2], SegmentParams())
+    assert tall[: len(wall)].all()
+    assert not tall[len(wall):].any()

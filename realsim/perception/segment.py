@@ -200,7 +200,7 @@ def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, count
 
 
 def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
-                           radius: float, step: float, cell: float | None) -> np.ndarray:
+                           radius: float, step: float, cell: float | None, context: np.ndarray | None = None) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
     cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
@@ -218,7 +218,7 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
     if cell is not None:
-        seen = visibility_score(points, centroids, normals, cell, 5 * radius)
+        seen = visibility_score(points if context is None else np.vstack([points, context]), centroids, normals, cell, 5 * radius)
         sign = np.where(np.abs(seen) >= 2, np.sign(seen), sign)
     # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
     level = np.abs(normals[:, 2]) > 0.7
@@ -242,12 +242,13 @@ def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
 
 def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[SupportPlane],
                     grid_shape: tuple[int, int] | None, params: SegmentParams = SegmentParams(),
-                    seed: int = 0, resolution: float | None = None) -> SegmentResult:
+                    seed: int = 0, resolution: float | None = None, context: np.ndarray | None = None) -> SegmentResult:
     """Label each point: 0 support/background, -1 noise, k > 0 object k (ordered by centroid x, then y).
 
     ``points`` (N, 3) are in the world frame (Z up) in input order, NaN rows allowed; ``colors``
     (N, 3) in [0, 1] or None; ``grid_shape`` (H, W) when the cloud is an organized image grid;
-    ``resolution`` (m) the working resolution of an unorganized cloud (None: its measured spacing).
+    ``resolution`` (m) the working resolution of an unorganized cloud (None: its measured spacing);
+    ``context`` (M, 3) points that are not segmented but block the view (walls left out before).
     The method is deterministic (``seed`` is accepted for interface uniformity; nothing is random).
     """
     points = np.asarray(points, dtype=np.float64)
@@ -297,7 +298,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         cell = _spacing(points[ids])  # voxel centres lie closer than their voxels: a finer, still closed grid
         fine = (resolution if resolution is not None else cell) <= params.visibility_cell
         nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance,
-                                     cell if fine else None)
+                                     cell if fine else None, context)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 

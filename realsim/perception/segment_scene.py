@@ -74,8 +74,10 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     then give every input point its voxel's label: the cost depends on the scene, not on how
     densely it was sampled."""
     resolution = working_resolution(scene.capture.point_spacing if scene.capture.point_spacing is not None else float("nan"))
-    support, _ = assign_supports(scene.points, scene.planes, params)
+    support, height = assign_supports(scene.points, scene.planes, params)
     fg = np.flatnonzero(support >= 0)
+    tall = _in_tall_columns(scene.points[fg], support[fg], height[fg], params)
+    walls, fg = fg[tall], fg[~tall]
     labels = np.zeros(len(scene.points), dtype=np.int32)
     if len(fg) == 0:
         return labels, SegmentResult(labels)
@@ -91,14 +93,32 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
 
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
+    context = scene.points[walls][:: max(1, int(round((resolution / (scene.capture.point_spacing or resolution)) ** 2)))]
     result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed,
-                             resolution=resolution)
+                             resolution=resolution, context=context)
     noise = _noise(scene, params)
     result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
     _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
                     resolution)
     return labels, result
+
+
+def _in_tall_columns(points: np.ndarray, support: np.ndarray, height: np.ndarray, params: SegmentParams) -> np.ndarray:
+    """Points in a vertical column (``min_object_size`` across) whose points rise higher above
+    their support than any object is tall: a wall or a cabinet side, structure before it costs
+    the segmentation anything."""
+    cell = params.min_object_size
+    ij = np.floor(points[:, :2] / cell).astype(np.int64)
+    ij -= ij.min(axis=0, initial=0)
+    key = (support.astype(np.int64) * (ij[:, 0].max(initial=0) + 1) + ij[:, 0]) * (ij[:, 1].max(initial=0) + 1) + ij[:, 1]
+    _, col = np.unique(key, return_inverse=True)
+    col = col.ravel()
+    top = np.full(col.max(initial=-1) + 1, -np.inf)
+    low = np.full(len(top), np.inf)
+    np.maximum.at(top, col, height)
+    np.minimum.at(low, col, height)
+    return (top - low)[col] > params.max_object_size
 
 
 def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centres: np.ndarray, centre_labels: np.ndarray,
