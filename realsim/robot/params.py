@@ -76,6 +76,8 @@ class PlaceParams:
     beside_step: float = 0.03  # m between spots sideways off the line, for a named side
     side_slack: float = 0.02  # m off the line past the two half widths that a named side allows (relations.side_of)
     beside_margin: float = 0.015  # m kept inside that allowance
+    beside_turns: tuple[float, ...] = (0.0, 1.5707963)  # rad the object may be turned for a named side (a long one across)
+    turn_cost: float = 0.02  # m of spot cost per rad turned
     level_probe: float = 0.3  # m above the reference's bottom the surface is looked for from
     level_tol: float = 0.02  # m: a spot on the reference's surface (not off the table edge)
     between_along: tuple[float, ...] = (0.15, -0.15, 0.3, -0.3)  # fractions of the gap off the middle

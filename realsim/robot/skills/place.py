@@ -17,6 +17,14 @@ __all__ = ["PlaceSkills"]
 _SIDE_WORDS = {"left": "left of", "right": "right of", "front": "in front of", "behind": "behind"}
 
 
+def _turned(pts: np.ndarray, yaw: float) -> np.ndarray:
+    """``pts`` turned by ``yaw`` about the vertical through their footprint's centre."""
+    c, s_ = np.cos(yaw), np.sin(yaw)
+    centre = np.array([*box_centre(pts), 0.0])
+    turned: np.ndarray = (pts - centre) @ np.array([[c, s_, 0.0], [-s_, c, 0.0], [0.0, 0.0, 1.0]]) + centre
+    return turned
+
+
 def _on_table(touching: set[str]) -> relations.Relation:
     ok = relations.WORLD in touching and relations.ROBOT not in touching
     return relations.Relation(ok, "touching " + (", ".join(sorted(touching)) or "nothing"))
@@ -84,20 +92,25 @@ class PlaceSkills(Release):
         def body() -> ActionResult:
             o, r = self.object_points(obj), self.object_points(ref)
             rc, oc = box_centre(r), box_centre(o)
-            cands: list[tuple[float, float, np.ndarray]] = []
+            cands: list[tuple[float, float, np.ndarray, float]] = []
             if side == "next":
                 for d in [np.array([np.cos(a), np.sin(a)]) for a in np.arange(8) * np.pi / 4]:
                     reach = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max()) + gap_
                     for extra in pl.beside_extra:
                         xy = rc + d * (reach + extra)
-                        cands.append((extra, float(np.linalg.norm(xy - self.base_pos[:2])), xy))
+                        cands.append((extra, float(np.linalg.norm(xy - self.base_pos[:2])), xy, 0.0))
             else:
-                cands = self._side_spots(o, r, np.asarray(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw), float), gap_)
+                d_side = np.asarray(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw), float)
+                for turn in pl.beside_turns:
+                    cands += [(cost + pl.turn_cost * abs(turn), 0.0, xy, turn) for cost, xy in self._side_spots(_turned(o, turn), r, d_side, gap_)]
             cands.sort(key=lambda t: (t[0], t[1]))
             level = float(r[:, 2].min())
-            ring = footprint_ring(o, frac=pl.support_fraction)
-            near = [xy for _, _, xy in cands if all(abs(self.geometry.surface_below(xy + off, level + pl.level_probe, exclude=obj) - level) < pl.level_tol
-                                                    for off in ring)]
+            rings = {turn: footprint_ring(_turned(o, turn), frac=pl.support_fraction) for turn in {c[3] for c in cands}}
+            near: list[tuple[np.ndarray, float]] = []
+            for _, _, xy, turn in cands:
+                if len(near) < self.release.max_poses and all(
+                        abs(self.geometry.surface_below(xy + off, level + pl.level_probe, exclude=obj) - level) < pl.level_tol for off in rings[turn]):
+                    near.append((xy, turn))
             if not near:
                 return ActionResult("place_beside", False, f"no spot {'next to' if side == 'next' else _SIDE_WORDS[side]} {ref} "
                                     "on its surface (table edge)")
@@ -106,11 +119,12 @@ class PlaceSkills(Release):
             def judge() -> relations.Relation:
                 o_now, r_now, touching = self.object_points(obj), self.object_points(ref), self.geometry.touching(obj)
                 return relations.next_to(o_now, r_now, touching) if side_d is None else relations.side_of(o_now, r_now, side_d, touching)
-            return self._place(obj, near, np.nan, "place_beside", judge, Keepout(self._others(obj)))
+            return self._place(obj, [xy for xy, _ in near], np.nan, "place_beside", judge, Keepout(self._others(obj)),
+                               turns=[turn for _, turn in near])
         return self._run("place_beside", body, max_sim_time)
 
-    def _side_spots(self, o: np.ndarray, r: np.ndarray, d: np.ndarray, gap: float) -> list[tuple[float, float, np.ndarray]]:
-        """(cost, 0, xy) of spots for the object ``o``'s centre on the ``d`` side of ``r``: over the
+    def _side_spots(self, o: np.ndarray, r: np.ndarray, d: np.ndarray, gap: float) -> list[tuple[float, np.ndarray]]:
+        """(cost, xy) of spots for the object ``o``'s centre on the ``d`` side of ``r``: over the
         relation's sector (nearer or further out, off the line as far as the relation allows, a
         side spot still past ``r``'s extent), the spot ``gap`` straight out first."""
         pl = self.params.place
@@ -119,8 +133,7 @@ class PlaceSkills(Release):
         base = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max())
         allowed = float(np.ptp(r[:, :2] @ perp) + np.ptp(o[:, :2] @ perp)) / 2 + pl.side_slack - pl.beside_margin
         lats = [0.0] + [sgn * k * pl.beside_step for k in range(1, int(allowed / pl.beside_step) + 1) for sgn in (1.0, -1.0)]
-        out = [(abs(along) + abs(lat), 0.0, rc + d * (base + gap + along) + perp * lat) for along in pl.beside_along for lat in lats]
-        return out
+        return [(abs(along) + abs(lat), rc + d * (base + gap + along) + perp * lat) for along in pl.beside_along for lat in lats]
 
     def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on the table between objects ``a`` and ``b``."""

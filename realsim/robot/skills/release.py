@@ -67,14 +67,15 @@ class Release(Motion):
 
     def _place(self, obj: str, candidates: list[np.ndarray], surface_hint: float, name: str,
                judge: Callable[[], relations.Relation], keepout: Keepout | None = None,
-               cavity: Cavity | None = None) -> ActionResult:
+               cavity: Cavity | None = None, turns: list[float] | None = None) -> ActionResult:
         """Carry the held ``obj`` over the first reachable release pose (spot, hand yaw, height),
         lower it there, release, retreat; ``judge`` says whether the end state is what was asked.
 
         The release height comes from the object's own underside over what lies below it at that
         pose (``surface_hint``: a given surface height instead). With a ``cavity`` (a container's
         opening), poses that would leave the object on the rim are skipped and tipped releases
-        (one end first, the rest over the rim) are tried for an object longer than the opening."""
+        (one end first, the rest over the rim) are tried for an object longer than the opening.
+        ``turns``: a hand yaw for each candidate spot that the tried yaws start from."""
         if self.held != obj or not self.holding(obj):
             return ActionResult(name, False, f"{obj} is not held (grasp it first)")
         pl = self.params.place
@@ -82,7 +83,8 @@ class Release(Motion):
         tcp, rot = self.tcp_pose()
         rel = pts - tcp  # the object relative to the tcp: it turns with the hand
         axis = long_axis(pts)
-        poses: list[Pose] = [(xy, yaw, drop, 0.0) for xy, yaw, drop in
+        start = {id(xy): turn for xy, turn in zip(candidates, turns or [])}
+        poses: list[Pose] = [(xy, yaw + start.get(id(xy), 0.0), drop, 0.0) for xy, yaw, drop in
                              release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))]
         lean = self._lean_poses(obj, rel, axis, cavity) if cavity is not None else []
         last: PlanFailure | None = None
