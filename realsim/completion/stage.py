@@ -12,6 +12,7 @@ from realsim.completion.freespace import free_drops, free_space_tolerance, keep_
 from realsim.completion.hull import fast_hull
 from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
+from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_revolved
 from realsim.completion.stacking import bottom_up, flatten_top, set_shape, top_under
@@ -116,7 +117,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         if scene.colors is not None:
             obj.color = np.median(scene.colors[mask], axis=0)
         obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
-    separate_neighbours([o for o in order if o.id not in hollow], done, observed, params, pieces)
+    solid = [o for o in order if o.id not in hollow]
+    separate_neighbours(solid, done, observed, params, pieces)
+    part_overlapping(solid, done, observed, params, pieces)
     if view is not None and params.clip_free_space:
         supporters = {o.resting_on for o in order if o.resting_on is not None}  # their flat tops keep what stands on them level
         keep_out_of_free_space([o for o in order if o.id not in supporters], view, tolerance, params)
