@@ -1,9 +1,10 @@
 """Physics speed of a converted scene, before and after the collision and sleep changes, in one run.
 
 The scene: 10 YCB scans on a 1.2 x 0.8 m table with the Panda (objects capture, seed 3). It is
-converted three times from the same capture: "before" with the former settings (CoACD hulls
+converted four times from the same capture: "before" with the former settings (CoACD hulls
 capped at 48 at the former 3.5 mm self-check, no primitives, no hull budget, no container rings,
-no sleeping), "no rings" with the defaults before open containers got floor-and-wall rings, and
+no sleeping), "no rings" with the defaults before open containers got floor-and-wall rings,
+"1 mm/s" with today's defaults but MuJoCo's default sleep tolerance (the former defaults), and
 "after" with the defaults. For each, two workloads are timed on one core (process CPU time of
 ``mj_step`` only):
 
@@ -13,7 +14,8 @@ no sleeping), "no rings" with the defaults before open containers got floor-and-
 
 x real time = simulated seconds / CPU seconds. Also printed: hulls and primitives, peak
 contacts and constraint rows, the goal verdict, and a table of solver options on the "after"
-scene (so the defaults are chosen by measurement).
+scene (so the defaults are chosen by measurement), and where the time of the "after" robot
+workload goes (MuJoCo's per-stage timers, contacts per step by the kind of geom pair).
 
     MENAGERIE_ROOT=../shared/data .venv/bin/python bench/bench_sim.py [--rest 5] [--no-options]
 """
@@ -45,7 +47,9 @@ OBJECTS = ("003_cracker_box", "005_tomato_soup_can", "006_mustard_bottle", "010_
 COMMAND = "put the soup can next to the bowl"
 BEFORE = {"objects": {"assets": {"primitives": False, "hull_budget": False, "container_ring": False, "target_p95": 0.0035}},
           "compose": {"sleep": False}}
-NO_RINGS = {"objects": {"assets": {"container_ring": False, "target_p95": 0.0035}}}  # the defaults before container rings
+NO_RINGS = {"objects": {"assets": {"container_ring": False, "target_p95": 0.0035}},  # the defaults before container rings
+            "compose": {"sleep_tolerance": 0.001}}  # and before the 5 mm/s sleep tolerance
+SLEEP_1MM = {"compose": {"sleep_tolerance": 0.001}}  # today's defaults at MuJoCo's default sleep tolerance
 
 
 def make_capture(root: Path) -> Path:
@@ -102,9 +106,50 @@ def record_command(folder: Path) -> tuple[np.ndarray, str]:
     return np.array(ctrls), record.verdict
 
 
+TIMERS = (("collision: broad phase", "mjTIMER_COL_BROAD"), ("collision: mid + narrow phase", "mjTIMER_COL_NARROW"),
+          ("constraint make", "mjTIMER_POS_MAKE"), ("constraint solver", "mjTIMER_CONSTRAINT"),
+          ("kinematics + inertia", ("mjTIMER_POS_KINEMATICS", "mjTIMER_POS_INERTIA")), ("velocity + actuation", ("mjTIMER_VELOCITY", "mjTIMER_ACTUATION")))
+
+
+def _pair_kind(model: mujoco.MjModel, geom: int) -> str:
+    body = model.body(model.geom_bodyid[geom]).name
+    if model.geom_bodyid[geom] == 0:
+        return "static"
+    if body.startswith("panda/"):
+        return "finger" if "finger" in body else "arm"
+    return "object"
+
+
+def profile_table(model: mujoco.MjModel, ctrls: np.ndarray) -> None:
+    """Where the time of the robot workload goes: MuJoCo's stage timers (share of mj_step), the
+    contacts per step by kind of geom pair, awake trees and solver iterations."""
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("initial").id)
+    pairs: dict[str, int] = {}
+    awake = iters = 0
+    for row in ctrls:
+        data.ctrl[:] = row
+        mujoco.mj_step(model, data)
+        for g1, g2 in zip(data.contact.geom1[: data.ncon], data.contact.geom2[: data.ncon]):
+            key = " - ".join(sorted((_pair_kind(model, g1), _pair_kind(model, g2))))
+            pairs[key] = pairs.get(key, 0) + 1
+        awake += int(data.ntree_awake)
+        iters += int(data.solver_niter[0])
+    total = data.timer[int(mujoco.mjtTimer.mjTIMER_STEP)].duration
+    print("\n## where the 'after' robot workload's time goes (MuJoCo timers, share of mj_step)")
+    for label, names in TIMERS:
+        share = sum(data.timer[int(getattr(mujoco.mjtTimer, n))].duration for n in ((names,) if isinstance(names, str) else names))
+        print(f"{label:32s} {100 * share / max(total, 1e-12):5.1f} %")
+    n = max(len(ctrls), 1)
+    print("contacts per step: " + ", ".join(f"{k} {v / n:.1f}" for k, v in sorted(pairs.items(), key=lambda kv: -kv[1])))
+    print(f"awake trees per step {awake / n:.1f} of {model.ntree}; solver iterations per step {iters / n:.2f}")
+
+
 def options_table(model_path: Path, ctrls: np.ndarray, rest: float) -> None:
     variants = {
-        "defaults (Newton, elliptic, sleep)": lambda o: None,
+        "defaults (Newton, elliptic, sleep 5 mm/s)": lambda o: None,
+        "sleep tolerance 1 mm/s (MuJoCo's)": lambda o: setattr(o, "sleep_tolerance", 0.001),
+        "sleep tolerance 1 cm/s": lambda o: setattr(o, "sleep_tolerance", 0.01),
         "sleep off": lambda o: setattr(o, "enableflags", o.enableflags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)),
         "CG solver": lambda o: setattr(o, "solver", mujoco.mjtSolver.mjSOL_CG),
         "pyramidal cone": lambda o: setattr(o, "cone", mujoco.mjtCone.mjCONE_PYRAMIDAL),
@@ -128,7 +173,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         cap = make_capture(Path(tmp))
         rows = []
-        for label, overrides in (("before", BEFORE), ("no rings", NO_RINGS), ("after", {})):
+        for label, overrides in (("before", BEFORE), ("no rings", NO_RINGS), ("1 mm/s", SLEEP_1MM), ("after", {})):
             out = Path(tmp) / label
             started = time.perf_counter()
             convert(cap, out, seed=3, overrides=overrides)
@@ -145,9 +190,11 @@ def main() -> None:
         print(f"{'scene':8s} {'collision geoms':28s} {'rest x':>8s} {'robot x':>8s} {'ncon':>5s} {'nefc':>5s}  {'command':10s} {'sim s':>6s} {'convert s':>9s}")
         for label, geoms, rest_x, robot_x, ncon, nefc, verdict, sim_s, took in rows:
             print(f"{label:8s} {geoms:28s} {rest_x:8.1f} {robot_x:8.1f} {ncon:5d} {nefc:5d}  {verdict:10s} {sim_s:6.1f} {took:9.1f}")
-        before, no_rings, after = rows
+        before, no_rings, sleep_1mm, after = rows
         print(f"speed-up after/before: rest {after[2] / before[2]:.1f}x, robot {after[3] / before[3]:.1f}x; "
-              f"after/no rings: rest {after[2] / no_rings[2]:.2f}x, robot {after[3] / no_rings[3]:.2f}x")
+              f"after/no rings: rest {after[2] / no_rings[2]:.2f}x, robot {after[3] / no_rings[3]:.2f}x; "
+              f"after/1 mm/s: rest {after[2] / sleep_1mm[2]:.2f}x, robot {after[3] / sleep_1mm[3]:.2f}x")
+        profile_table(mujoco.MjModel.from_xml_path(str(after_xml)), after_ctrls)
         if not args.no_options:
             options_table(after_xml, after_ctrls, args.rest)
 

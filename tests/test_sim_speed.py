@@ -18,6 +18,7 @@ import trimesh
 from conftest import YCB
 from realsim import cli
 from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
+from realsim.composition.compose import ComposeParams
 from realsim.composition.settle import rest_check
 from realsim.physics.throughput import bench_scene, warp_available
 
@@ -62,8 +63,13 @@ def test_cube_is_a_box_and_the_scene_sleeps(scene: Path) -> None:
         if model.geom_contype[g] and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH and model.body(model.geom_bodyid[g]).name.startswith("obj"):
             assert model.mesh_vertnum[model.geom_dataid[g]] <= 64  # vertex cap per hull
     assert model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_SLEEP
-    # a rest check still measures motion although the scene may sleep: lift the cube 5 cm
+    assert model.opt.sleep_tolerance == ComposeParams().sleep_tolerance
     data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("initial").id)
+    for _ in range(int(0.5 / model.opt.timestep)):  # objects at rest fall asleep within half a second
+        mujoco.mj_step(model, data)
+    assert all(data.body_awake[b] == 0 for n, b in bodies.items() if n.startswith("obj"))
+    # a rest check still measures motion although the scene may sleep: lift the cube 5 cm
     mujoco.mj_resetDataKeyframe(model, data, model.key("initial").id)
     qadr = model.jnt_qposadr[model.body_jntadr[cube]]
     data.qpos[qadr + 2] += 0.05

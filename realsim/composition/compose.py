@@ -40,6 +40,9 @@ class ComposeParams:
 
     timestep: float = 0.002
     sleep: bool = True  # MuJoCo's island sleeping in the written scene (settling and rest checks run awake)
+    # a tree sleeps once every dof moves slower than this (m/s at the body's size) for 10 steps; MuJoCo's 1 mm/s
+    # kept a mug rocking on its 3-point contact awake for good (bench/bench_sim.py: robot x 1.28 at 5 mm/s)
+    sleep_tolerance: float = 0.005
     object_condim: int = 4
     default_density: float = 300.0  # kg/m^3 for scan objects without a manifest
     min_mass: float = 0.02
@@ -91,6 +94,7 @@ def new_spec(params: ComposeParams) -> mujoco.MjSpec:
     spec.option.impratio = 10.0
     if params.sleep:  # bodies at rest are skipped until something touches them (measured: bench/bench_sim.py)
         spec.option.enableflags |= int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+        spec.option.sleep_tolerance = params.sleep_tolerance
     spec.visual.global_.offwidth = 1280
     spec.visual.global_.offheight = 960
     spec.visual.headlight.ambient = [params.headlight_ambient] * 3
