@@ -4,7 +4,8 @@ Each scan is converted, the written scene is rendered at keyframe ``initial`` fr
 ``capture`` with the intrinsics fitted from the organized cloud, and compared with the capture's
 own RGB-D on every pixel with captured depth, robot pixels masked: depth median error, share
 within 1 cm, colour PSNR and SSIM (:mod:`realsim.fidelity`). Also printed: conversion time (in
-process), output folder size, settling drift, object collision pieces (mesh files). Run:
+process), output folder size, settling drift (the rest check after the keyframe), how far an object
+moved while settling (completed pose to keyframe ``initial``, the largest), object collision pieces (mesh files). Run:
 
     .venv/bin/python bench/bench_fidelity.py [--scans test0 test55] [--keep out/fidelity]
 """
@@ -50,6 +51,7 @@ def measure(name: str, out: Path) -> dict:
     fid = compare(render, capture, exclude=robot)
     Image.fromarray((np.hstack([render.rgb, capture.rgb]) * 255).astype(np.uint8)).save(out.parent / f"{name}_fidelity.png")
     return {"scan": name, "fid": fid, "seconds": seconds, "mb": folder_mb(out), "drift_mm": record["settle"]["max_displacement"] * 1000,
+            "settled_mm": 1000 * max(record["settle"].get("moved_during_settling", {}).values(), default=0.0),
             "robot_px": int(robot.sum()), "fx": intr.fx, "pieces": len(list((out / "assets").glob("*_collision_*.stl")))}
 
 
@@ -61,11 +63,11 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
         rows = [measure(name, root / name) for name in args.scans]
-    print(f"{'scan':8s} {'pixels':>7s} {'depth med mm':>12s} {'<=1cm %':>8s} {'PSNR dB':>8s} {'SSIM':>6s} | {'convert s':>9s} {'MB':>6s} {'drift mm':>8s} {'robot px':>8s} {'pieces':>6s}")
+    print(f"{'scan':8s} {'pixels':>7s} {'depth med mm':>12s} {'<=1cm %':>8s} {'PSNR dB':>8s} {'SSIM':>6s} | {'convert s':>9s} {'MB':>6s} {'drift mm':>8s} {'settle mm':>9s} {'robot px':>8s} {'pieces':>6s}")
     for r in rows:
         f = r["fid"]
         print(f"{r['scan']:8s} {f.pixels:7d} {f.depth_median_mm:12.2f} {100 * f.within_1cm:8.1f} {f.psnr_db:8.2f} {f.ssim:6.3f} | "
-              f"{r['seconds']:9.2f} {r['mb']:6.1f} {r['drift_mm']:8.2f} {r['robot_px']:8d} {r['pieces']:6d}")
+              f"{r['seconds']:9.2f} {r['mb']:6.1f} {r['drift_mm']:8.2f} {r['settled_mm']:9.2f} {r['robot_px']:8d} {r['pieces']:6d}")
     fids = [r["fid"] for r in rows]
     print(f"\nmean: depth median {np.mean([f.depth_median_mm for f in fids]):.2f} mm, within 1 cm {100 * np.mean([f.within_1cm for f in fids]):.1f} %, "
           f"PSNR {np.mean([f.psnr_db for f in fids]):.2f} dB, SSIM {np.mean([f.ssim for f in fids]):.3f}; "
