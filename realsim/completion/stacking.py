@@ -64,18 +64,44 @@ def bottom_up(objects: list[SceneObject]) -> list[SceneObject]:
     return placed
 
 
-def top_under(under: trimesh.Trimesh, pts: np.ndarray) -> float:
-    """Height of the top of the convex shape ``under`` below the footprint of ``pts``.
-
-    The upper surface of a convex solid is the lower envelope of its upward-facing face planes;
-    the base is its highest point under the footprint (clamped to the solid's bounds).
-    """
+def _tops(under: trimesh.Trimesh, xy: np.ndarray) -> np.ndarray:
+    """Height of the top of the convex shape ``under`` at each ``xy``: the lower envelope of its
+    upward-facing face planes (clamped to the solid's bounds)."""
     normals = under.face_normals
     up = normals[:, 2] > 1e-6
     n, p0 = normals[up], under.triangles[up, 0, :]
     d = -(n * p0).sum(axis=1)
-    xy = pts[:, :2]
     z = -(d[None, :] + xy @ n[:, :2].T) / n[None, :, 2]
-    top = z.min(axis=1)
     lo, hi = under.bounds
-    return float(np.clip(top.max(), lo[2], hi[2]))
+    return np.asarray(np.clip(z.min(axis=1), lo[2], hi[2]))
+
+
+def top_under(under: trimesh.Trimesh, pts: np.ndarray) -> float:
+    """Height of the top of the convex shape ``under`` below the footprint of ``pts``: its highest
+    point there."""
+    return float(_tops(under, pts[:, :2]).max())
+
+
+def seat_on(under: trimesh.Trimesh, pts: np.ndarray, base_z: float, meshes: list[trimesh.Trimesh],
+            clearance: float, min_slope: float = 0.02, max_residual: float = 0.001) -> list[trimesh.Trimesh]:
+    """``meshes`` (convex, world frame, flat base at ``base_z``) carried down onto a sloping top of
+    ``under``: the plane fitted to that top below the footprint of ``pts``. A body lying on a tilted
+    book lies along it; a flat base at the top's highest point would touch it on one edge, tip and
+    slide. Unchanged when the top is level (slope below ``min_slope``) or not one plane there (the
+    fit's RMS residual above ``max_residual``: a hull's top rolling off at an edge, not a tilted face)."""
+    top = _tops(under, pts[:, :2])
+    design = np.column_stack([pts[:, :2], np.ones(len(pts))])
+    plane = np.linalg.lstsq(design, top, rcond=None)[0]
+    if np.hypot(plane[0], plane[1]) < min_slope or np.sqrt(np.mean((design @ plane - top) ** 2)) > max_residual:
+        return meshes
+    out = []
+    for mesh in meshes:
+        v = np.asarray(mesh.vertices)
+        base = v[v[:, 2] <= base_z + 1e-4].copy()
+        if len(base) < 3:
+            out.append(mesh)
+            continue
+        seat = np.column_stack([base[:, :2], np.ones(len(base))]) @ plane - clearance
+        base[:, 2] = np.minimum(base[:, 2], np.maximum(seat, float(under.bounds[0][2])))
+        out.append(trimesh.convex.convex_hull(np.vstack([v, base])))
+    return out

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
+from realsim.completion.balance import brace
 from realsim.completion.carving import carve, carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_bands, complete_hull, complete_slabs
@@ -15,7 +16,7 @@ from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_revolved
-from realsim.completion.stacking import bottom_up, flatten_top, set_shape, top_under
+from realsim.completion.stacking import bottom_up, flatten_top, seat_on, set_shape, top_under
 from realsim.completion.view import DepthView
 from realsim.scene import Scene
 
@@ -108,6 +109,13 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         if parts is not None and container is None:
             mesh = fast_hull(np.vstack([p.vertices for p in parts]))
+        if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow and container is None:
+            seated = seat_on(done[obj.resting_on], pts, base_z, [mesh, *(parts or [])], params.base_clearance)
+            if seated[0] is not mesh:
+                mesh, parts = seated[0], seated[1:] or None
+                visual = mesh if parts is None else visual
+                base_centre = np.array([base_centre[0], base_centre[1], mesh.bounds[0][2]])
+                kind = f"{kind}, seated along the sloping top it lies on"
         done[obj.id] = mesh
         observed[obj.id] = pts
         if parts is not None:
@@ -123,4 +131,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     if view is not None and params.clip_free_space:
         supporters = {o.resting_on for o in order if o.resting_on is not None}  # their flat tops keep what stands on them level
         keep_out_of_free_space([o for o in order if o.id not in supporters], view, tolerance, params)
+    for obj in order:
+        if obj.resting_on is None and params.balance_margin > 0:
+            brace(obj, params.balance_margin)
     return scene
