@@ -44,5 +44,6 @@ class CompletionParams:
     mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     veil_keep: bool = True  # veil pixels continuing the surface beside them (within the free-space tolerance) are kept: the edge
+    balance_margin: float = 0.005  # m: a completed base must hold the centre of mass this far inside its polygon
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30
