@@ -147,11 +147,12 @@ def merge_by_surface_error(parts: list[np.ndarray], solid: trimesh.Trimesh, budg
 
 
 def fewest_hulls(parts: list[np.ndarray], hulls: list[trimesh.Trimesh], solid: trimesh.Trimesh, params: AssetParams,
-                 cavity: bool, info: dict) -> list[trimesh.Trimesh]:
+                 cavity: bool, info: dict, by_error: bool = True) -> list[trimesh.Trimesh]:
     """The hull budget: ``parts`` merged down to ever fewer hulls, each budget by two orders (the
-    gap between merged parts, and the merged hull's distance from the scan), while the self-check
-    still holds (two-way p95 within ``target_p95``; IoU at ``target_iou`` unless the scan is a
-    cavity's walls); the smallest set that passes (``hulls`` when none does)."""
+    gap between merged parts, and, with ``by_error``, the merged hull's distance from the scan:
+    quadratic in the parts), while the self-check still holds (two-way p95 within ``target_p95``;
+    IoU at ``target_iou`` unless the scan is a cavity's walls); the smallest set that passes
+    (``hulls`` when none does)."""
 
     def check(candidate: list[np.ndarray]) -> tuple[list[trimesh.Trimesh], float, float] | None:
         made = [h for h in (make_hull(p, params.min_hull_thickness, params.max_hull_vertices) for p in candidate) if h is not None]
@@ -165,7 +166,7 @@ def fewest_hulls(parts: list[np.ndarray], hulls: list[trimesh.Trimesh], solid: t
         return hulls
     best = hulls
     budgets = [b for b in params.hull_budgets if b < len(hulls)]
-    by_error = merge_by_surface_error(parts, solid, budgets) if budgets else {}
+    by_error = merge_by_surface_error(parts, solid, budgets) if budgets and by_error else {}
     for budget in budgets:
         if budget >= len(best):
             continue

@@ -27,6 +27,8 @@ from realsim.assets.params import AssetParams
 from realsim.assets.primitives import PRIMITIVE_KEY, fit_primitive
 from realsim.cache import DiskCache
 
+REFINE = 0.6  # CoACD threshold factor of the refining attempt (finer parts)
+
 
 def _import_single_threaded(name: str):
     """Import an OpenMP-linked module (CoACD, Open3D) with OMP_NUM_THREADS=1 while it loads.
@@ -97,6 +99,23 @@ def _coacd_parts(coacd, dec: trimesh.Trimesh, pre: str, threshold: float, params
     return parts
 
 
+def _finer_budget(coacd, dec: trimesh.Trimesh, pre: str, solid: trimesh.Trimesh, hulls: list[trimesh.Trimesh], params: AssetParams,
+                  cavity: bool, cache: DiskCache | None, info: dict) -> list[trimesh.Trimesh]:
+    """Still at ``max_hulls`` after the budget (parts that passed the self-check only barely): CoACD's
+    finer parts (the refine threshold), merged and budgeted by the gap order (the distance order is
+    quadratic in the many finer parts: minutes on the YCB pitcher); the fewer faithful hulls."""
+    pts = _coacd_parts(coacd, dec, pre, params.threshold * REFINE, params, cache)
+    merged = [h for h in (make_hull(p, params.min_hull_thickness, params.max_hull_vertices) for p in merge_hulls(pts, params)) if h is not None]
+    if not merged:
+        return hulls
+    trial: dict = {}
+    finer = fewest_hulls(pts, merged, solid, params, cavity, trial, by_error=False)
+    if len(finer) >= len(hulls) or "budget_check" not in trial:  # not fewer, or never passed the self-check
+        return hulls
+    info.update(trial, coacd_parts=len(pts), threshold=params.threshold * REFINE)
+    return finer
+
+
 def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool | None = None,
               cache: DiskCache | None = None) -> tuple[list[trimesh.Trimesh], dict]:
     """Convex parts of ``solid`` (object frame) and a small report.
@@ -144,9 +163,11 @@ def decompose(solid: trimesh.Trimesh, params: AssetParams, open_container: bool 
         info["self_check"] = {"p95": d95, "iou": iou}
         if d95 <= params.target_p95 and (cavity or iou >= params.target_iou):
             break
-        threshold *= 0.6
+        threshold *= REFINE
     if hulls and params.hull_budget:
         hulls = fewest_hulls(pts, hulls, solid, params, cavity, info)
+        if len(hulls) >= params.max_hulls and info["threshold"] == params.threshold and params.refine_attempts:
+            hulls = _finer_budget(coacd, dec, pre, solid, hulls, params, cavity, cache, info)
     info["method"] = "coacd"
     if ring is not None and hulls and (both := ring_with_rest(ring[0], ring[1], hulls, solid, params)) is not None:
         info.update(ring[2], method="container_ring+coacd", self_check=both[1])

@@ -110,7 +110,7 @@ def _heavy(mesh_v: np.ndarray, mesh_f: np.ndarray, label: str, params: AssetPara
     return dict(scale=scale, offset=offset, solid=solid, method=method, notes=notes, warnings=warns, hulls=hulls, info=info, hull_volume=hull_vol, timings=t)
 
 
-PREPARE_VERSION = 6  # bump when the preparation logic changes: old cache entries stop matching
+PREPARE_VERSION = 7  # bump when the preparation logic changes: old cache entries stop matching
 FINISH_VERSION = 1  # bump when only the cheap finish (appearance, inertia) changes: hulls stay cached
 
 
