@@ -19,7 +19,7 @@ from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
 
 DIRECTIONS = 192  # candidate plane normals spread over the sphere (plus the other shape's face normals)
-KEEP_SEEN = 0.98  # a cut must keep this share of the cut object's observed points
+KEEP_SEEN = 0.995  # a cut must keep this share of the cut object's observed points
 SEEN_TOLERANCE = 0.003  # m an observed point may lie beyond the cut and still count as kept
 
 

@@ -82,18 +82,23 @@ def top_under(under: trimesh.Trimesh, pts: np.ndarray) -> float:
     return float(_tops(under, pts[:, :2]).max())
 
 
-def seat_on(under: trimesh.Trimesh, pts: np.ndarray, base_z: float, meshes: list[trimesh.Trimesh],
-            clearance: float, min_slope: float = 0.02, max_residual: float = 0.001) -> list[trimesh.Trimesh]:
-    """``meshes`` (convex, world frame, flat base at ``base_z``) carried down onto a sloping top of
-    ``under``: the plane fitted to that top below the footprint of ``pts``. A body lying on a tilted
-    book lies along it; a flat base at the top's highest point would touch it on one edge, tip and
-    slide. Unchanged when the top is level (slope below ``min_slope``) or not one plane there (the
-    fit's RMS residual above ``max_residual``: a hull's top rolling off at an edge, not a tilted face)."""
+def sloping_top(under: trimesh.Trimesh, pts: np.ndarray, min_slope: float = 0.02, max_residual: float = 0.001) -> np.ndarray | None:
+    """The plane ``z = a x + b y + c`` (as ``[a, b, c]``) fitted to the top of ``under`` below the
+    footprint of ``pts`` when that top slopes (by ``min_slope`` or more) and is one plane there (RMS
+    residual within ``max_residual``: not a hull's top rolling off at an edge); else None."""
     top = _tops(under, pts[:, :2])
     design = np.column_stack([pts[:, :2], np.ones(len(pts))])
     plane = np.linalg.lstsq(design, top, rcond=None)[0]
     if np.hypot(plane[0], plane[1]) < min_slope or np.sqrt(np.mean((design @ plane - top) ** 2)) > max_residual:
-        return meshes
+        return None
+    return np.asarray(plane)
+
+
+def seat_on(plane: np.ndarray, floor: float, base_z: float, meshes: list[trimesh.Trimesh], clearance: float) -> list[trimesh.Trimesh]:
+    """``meshes`` (convex, world frame, flat base at ``base_z``) carried down onto the sloping top
+    ``plane`` (see :func:`sloping_top`) of what they lie on, not below ``floor``. A body lying on a
+    tilted book lies along it; a flat base at the top's highest point would touch it on one edge,
+    tip and slide."""
     out = []
     for mesh in meshes:
         v = np.asarray(mesh.vertices)
@@ -102,6 +107,6 @@ def seat_on(under: trimesh.Trimesh, pts: np.ndarray, base_z: float, meshes: list
             out.append(mesh)
             continue
         seat = np.column_stack([base[:, :2], np.ones(len(base))]) @ plane - clearance
-        base[:, 2] = np.minimum(base[:, 2], np.maximum(seat, float(under.bounds[0][2])))
+        base[:, 2] = np.minimum(base[:, 2], np.maximum(seat, floor))
         out.append(trimesh.convex.convex_hull(np.vstack([v, base])))
     return out

@@ -16,7 +16,7 @@ from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_revolved
-from realsim.completion.stacking import bottom_up, flatten_top, seat_on, set_shape, top_under
+from realsim.completion.stacking import bottom_up, flatten_top, seat_on, set_shape, sloping_top, top_under
 from realsim.completion.view import DepthView
 from realsim.scene import Scene
 
@@ -46,9 +46,12 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     for obj in order:
         mask = labels == obj.id
         pts = points[mask & ~veil] if (mask & ~veil).sum() >= params.min_points else points[mask]
+        slope = None
         if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow:
             base_z = top_under(done[obj.resting_on], pts)
-            done[obj.resting_on] = flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
+            slope = sloping_top(done[obj.resting_on], pts)
+            if slope is None:  # a level top is cut flat (a face-face contact); a sloping one is kept
+                done[obj.resting_on] = flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
         else:
             base_z = scene.plane(obj.support_id).height if obj.support_id is not None else float(np.min(pts[:, 2]))
         top_z = max(float(np.percentile(pts[:, 2], params.top_percentile)), base_z + params.min_height)
@@ -109,9 +112,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
         if parts is not None and container is None:
             mesh = fast_hull(np.vstack([p.vertices for p in parts]))
-        if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow and container is None:
-            seated = seat_on(done[obj.resting_on], pts, base_z, [mesh, *(parts or [])], params.base_clearance)
-            if seated[0] is not mesh:
+        if slope is not None and obj.resting_on is not None and container is None:
+            seated = seat_on(slope, float(done[obj.resting_on].bounds[0][2]), base_z, [mesh, *(parts or [])], params.base_clearance)
+            if seated:
                 mesh, parts = seated[0], seated[1:] or None
                 visual = mesh if parts is None else visual
                 base_centre = np.array([base_centre[0], base_centre[1], mesh.bounds[0][2]])
