@@ -1,0 +1,80 @@
+"""Completed bodies rest as they were seen: leaning neighbours parted, bodies seated on sloping
+tops, bases that hold the centre of mass (generated ground truth, exact geometry)."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from realsim.completion.balance import base_polygon, brace, centre_of_mass
+from realsim.completion.overlaps import part_overlapping
+from realsim.completion.params import CompletionParams
+from realsim.completion.stacking import seat_on, sloping_top
+from realsim.geometry import inside_convex_polygon
+from realsim.scene import SceneObject
+
+
+def _object(oid: int, mesh: trimesh.Trimesh) -> SceneObject:
+    lo, hi = mesh.bounds
+    base = np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]])
+    local = mesh.copy()
+    local.apply_translation(-base)
+    return SceneObject(oid, f"obj{oid}", "object", base, np.array([1.0, 0, 0, 0]), local.extents, support_id=1,
+                       visual=local, collision=[local])
+
+
+def _depth_inside(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
+    """How far each point lies inside the convex ``mesh`` (negative: outside by that much)."""
+    return np.asarray(-np.max(np.einsum("fk,nfk->nf", mesh.face_normals, points[:, None, :] - mesh.triangles[None, :, 0, :]), axis=1))
+
+
+def _top_points(a: np.ndarray, b: np.ndarray, slope: float, n: int = 30) -> np.ndarray:
+    """Points on the plane z = slope * x + b[2] over the rectangle a..b (xy)."""
+    x, y = np.meshgrid(np.linspace(a[0], b[0], n), np.linspace(a[1], b[1], n))
+    return np.column_stack([x.ravel(), y.ravel(), slope * x.ravel() + b[2]])
+
+
+def test_a_body_leaning_on_a_box_is_parted_along_the_plane_touching_it() -> None:
+    # A 4 cm tall box (x 0.1..0.3) and a tilted slab seen on top, its near end on the table
+    # (x 0..0.2): extruded down to the table, the slab's hull runs through the box.
+    box = trimesh.creation.box(bounds=np.array([[0.1, 0.0, 0.0], [0.3, 0.2, 0.04]]))
+    seen = _top_points(np.array([0.0, 0.02]), np.array([0.2, 0.18, 0.02]), 0.25)
+    floor = seen.copy()
+    floor[:, 2] = 0.0
+    slab = trimesh.convex.convex_hull(np.vstack([seen, floor]))
+    objects = [_object(1, box), _object(2, slab)]
+    done = {1: box, 2: slab}
+    part_overlapping(objects, done, {1: box.vertices, 2: seen}, CompletionParams(), {})
+    assert done[1].volume == np.float64(box.volume)  # the box, seen whole, is not cut
+    assert _depth_inside(done[1], np.asarray(done[2].vertices)).max() < 1e-4  # no longer through the box
+    assert _depth_inside(done[2], seen).min() > -0.003  # every seen point still on or in the body
+    assert done[2].volume > 0.4 * slab.volume
+
+
+def test_a_body_on_a_sloping_top_is_seated_along_it() -> None:
+    book = trimesh.convex.convex_hull(np.vstack([_top_points(np.array([0.0, 0.0]), np.array([0.3, 0.2, 0.02]), 0.1),
+                                                 [[0, 0, 0], [0.3, 0, 0], [0, 0.2, 0], [0.3, 0.2, 0]]]))
+    upper = _top_points(np.array([0.05, 0.05]), np.array([0.15, 0.15, 0.08]), 0.1, 10)
+    plane = sloping_top(book, upper)
+    assert plane is not None and abs(plane[0] - 0.1) < 1e-6 and abs(plane[1]) < 1e-6
+    base_z = float(plane @ [0.15, 0.15, 1.0])  # the top's highest point under the upper body
+    flat = trimesh.convex.convex_hull(np.vstack([upper, upper * [1, 1, 0] + [0, 0, base_z]]))
+    seated = seat_on(plane, 0.0, base_z, [flat], 0.0)[0]
+    low = seated.vertices[seated.vertices[:, 2] < base_z - 1e-6]
+    assert len(low) >= 2 and np.allclose(low[:, 2], low[:, 0] * plane[0] + plane[2], atol=1e-9)  # its base lies on the top
+    level = trimesh.creation.box(bounds=np.array([[0, 0, 0], [0.3, 0.2, 0.05]]))
+    assert sloping_top(level, upper) is None  # a level top keeps the flat base
+
+
+def test_a_base_that_does_not_hold_the_centre_of_mass_is_completed_under_it() -> None:
+    # An overhanging wedge: its base is a 2 cm strip, its mass mostly beyond it.
+    pts = np.array([[0, 0, 0], [0.02, 0, 0], [0, 0.05, 0], [0.02, 0.05, 0],
+                    [0, 0, 0.06], [0.12, 0, 0.06], [0, 0.05, 0.06], [0.12, 0.05, 0.06]], float)
+    obj = _object(1, trimesh.convex.convex_hull(pts))
+    polygon = base_polygon(obj.collision)
+    assert polygon is not None and not inside_convex_polygon(centre_of_mass(obj.collision)[None, :2], polygon)[0]
+    assert brace(obj, 0.005)
+    polygon = base_polygon(obj.collision)
+    assert polygon is not None and inside_convex_polygon(centre_of_mass(obj.collision)[None, :2], polygon, -0.004)[0]
+    assert obj.visual is obj.collision[0]
+    assert not brace(obj, 0.005)  # it stands: nothing more to do
