@@ -82,7 +82,8 @@ class DevTools:
 
 
 def _screenshot(page: DevTools) -> np.ndarray:
-    shot = page.call("Page.captureScreenshot", format="png")
+    # SwiftShader renders WebGL on the CPU: on a loaded 2-core machine one frame took over 30 s
+    shot = page.call("Page.captureScreenshot", timeout=120.0, format="png")
     return np.asarray(Image.open(io.BytesIO(base64.b64decode(shot["data"]))).convert("RGB")).astype(int)
 
 
