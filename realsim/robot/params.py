@@ -106,6 +106,10 @@ class PushParams:
     retreat_back: float = 0.03  # m backed off the object after the stroke
     retreat_up: float = 0.1  # m lifted after the stroke
     rest_wait: float = 0.3  # s before the push is judged
+    palm_height: float = 0.047  # m above the tcp where the hand's palm starts
+    palm_clearance: float = 0.01  # m the palm keeps above a pushed object's top edge (the contact rises for it)
+    palm_catch: float = 0.02  # m above the palm's lower edge a top edge is still caught by it (a taller face is pushed flat)
+    max_contact_fraction: float = 0.6  # of the object's height the contact may rise to
 
 
 @dataclass(frozen=True)

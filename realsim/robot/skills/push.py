@@ -34,7 +34,10 @@ class PushSkill(Motion):
             start_pos = box_centre_3d(pts)
             bottom = float(pts[:, 2].min())
             height = float(pts[:, 2].max()) - bottom
-            centre = np.array([*pts[:, :2].mean(axis=0), bottom + min(pp.contact_height, height / 2) + pp.contact_lift])
+            z = bottom + min(pp.contact_height, height / 2) + pp.contact_lift
+            if -pp.palm_clearance < bottom + height - (z + pp.palm_height) < pp.palm_catch:  # the palm would catch the top edge and press it down
+                z = max(z, min(bottom + height + pp.palm_clearance - pp.palm_height, bottom + pp.max_contact_fraction * height))
+            centre = np.array([*pts[:, :2].mean(axis=0), z])
             back = float(((pts - centre) @ d).min())
             contact = centre + d * (back - pp.standoff)
             closing = np.array([-d[1], d[0], 0.0])
