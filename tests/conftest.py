@@ -45,3 +45,47 @@ def _test_cache(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.Mo
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "shared_cache: the test uses its module's realsim cache instead of its own")
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _warp_accepts_every_written_scene(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """After the suite: MuJoCo Warp accepts every scene the tests wrote (with the per-world contact
+    and constraint sizes the scene records) and those sizes hold the contacts at keyframe
+    ``initial``. Scenes a test broke on purpose (they no longer compile) are not counted."""
+    yield
+    from realsim.physics.throughput import warp_available
+
+    if not warp_available():
+        return
+    import hashlib
+    import json
+
+    import mujoco
+    import mujoco_warp as mjw
+
+    seen: set[str] = set()
+    failures: list[str] = []
+    for xml in sorted(tmp_path_factory.getbasetemp().rglob("scene.xml")):
+        meta = xml.with_name("scene.json")
+        digest = hashlib.sha256(xml.read_bytes()).hexdigest()
+        if not meta.is_file() or digest in seen:
+            continue
+        seen.add(digest)
+        try:
+            capacity = json.loads(meta.read_text())["settle"]["capacity"]
+            model = mujoco.MjModel.from_xml_path(str(xml))
+        except Exception:  # no recorded sizes, or a file broken on purpose
+            continue
+        try:
+            data = mujoco.MjData(model)
+            if model.nkey and "initial" in [model.key(i).name for i in range(model.nkey)]:
+                mujoco.mj_resetDataKeyframe(model, data, model.key("initial").id)
+            mujoco.mj_forward(model, data)
+            mjw.put_model(model)
+            mjw.put_data(model, data, nworld=1, nconmax=model.nconmax, njmax=model.njmax)
+            assert (model.nconmax, model.njmax) == (capacity["nconmax"], capacity["njmax"]), "sizes differ from scene.json"
+            assert data.ncon <= model.nconmax and data.nefc <= model.njmax, f"{data.ncon} contacts / {data.nefc} rows overflow"
+        except Exception as exc:
+            failures.append(f"{xml}: {type(exc).__name__}: {exc}")
+    assert not failures, "MuJoCo Warp rejects written scenes:\n" + "\n".join(failures)
+    print(f"\nMuJoCo Warp accepted all {len(seen)} distinct scenes the tests wrote")
