@@ -133,7 +133,8 @@ def plan_pipeline(
         raise InputError("overrides must map stage names to {parameter: value} mappings")
     if source is not None:
         if not Path(source).exists():
-            raise InputError(f"{source}: no such file or folder")
+            hint = "; to build a scene from a description use --text" if " " in str(source) and not Path(source).suffix else ""
+            raise InputError(f"{source}: no such file or folder{hint}")
         if Path(source).is_dir():
             read_capture_config(Path(source))
     spec = load_pipeline(pipeline or pipeline_for(source, (overrides.get("load") or {}).get("text")))

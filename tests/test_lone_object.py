@@ -24,10 +24,21 @@ def test_an_object_mesh_alone_becomes_an_object_scene(tmp_path: Path) -> None:
     assert 0.05 < max(obj.size) < 0.1  # the cube stays its own size
 
 
+@pytest.mark.parametrize("name", ["003_cracker_box", "024_bowl", "019_pitcher_base", "035_power_drill"])
+def test_object_meshes_10_to_60_cm_are_objects_not_scenes(name: str) -> None:
+    """These are 0.1-0.6 m in metres: once read as tiny scenes (a box top taken for a table, or
+    "no horizontal support"); a scene needs a support larger than any object."""
+    assert is_lone_object(YCB / name / "textured.obj")
+
+
 def test_scene_sized_or_speck_sized_meshes_are_not_objects(tmp_path: Path) -> None:
     room = trimesh.creation.box(extents=(3.0, 3.0, 0.05))
     room.export(tmp_path / "room.obj")
     assert not is_lone_object(tmp_path / "room.obj")
+    table = trimesh.util.concatenate([trimesh.creation.box(extents=(0.8, 0.6, 0.04)),
+                                      trimesh.creation.box(extents=(0.07, 0.07, 0.1), transform=trimesh.transformations.translation_matrix((0, 0, 0.07)))])
+    table.export(tmp_path / "tabletop.obj")
+    assert not is_lone_object(tmp_path / "tabletop.obj")  # 80 cm: a tabletop scan, not one object
     speck = trimesh.creation.box(extents=(1e-4, 1e-4, 1e-4))
     speck.export(tmp_path / "speck.obj")
     assert not is_lone_object(tmp_path / "speck.obj")

@@ -253,12 +253,15 @@ def _object_files(folder: Path) -> list[Path]:
 
 
 def is_lone_object(path: Path) -> bool:
-    """A mesh file that is a plausible scene in no unit but 1-60 cm across in metres: one object
-    (a scanned or generated asset), converted like a capture holding it in ``objects/``."""
+    """A mesh file 1-60 cm across in metres that is no room-sized scene in another unit: one object
+    (a scanned or generated asset), converted like a capture holding it in ``objects/``.
+
+    A scene holds a support larger than the objects on it, so a mesh no larger than an object is
+    one; a scan of less than 60 cm in metres is converted as a scene from a folder (``scene.*``)."""
     if not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES or (path.suffix.lower() == ".ply" and _is_point_cloud_ply(path)):
         return False
     extent = _mesh_extent(str(path), path.stat().st_mtime_ns)
-    scene_sized = any(PLAUSIBLE_EXTENT[0] <= extent * s <= PLAUSIBLE_EXTENT[1] for s in UNIT_SCALE.values())
+    scene_sized = any(OBJECT_EXTENT[1] < extent * s <= PLAUSIBLE_EXTENT[1] for s in UNIT_SCALE.values())
     return not scene_sized and OBJECT_EXTENT[0] <= extent <= OBJECT_EXTENT[1]
 
 
