@@ -39,7 +39,7 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from commands_heldout import HELDOUT, HELDOUT2, HELDOUT3, HELDOUT4, HELDOUT5  # noqa: E402
+from commands_heldout import HELDOUT, HELDOUT2, HELDOUT3, HELDOUT4, HELDOUT5, HELDOUT6  # noqa: E402
 
 from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
@@ -470,7 +470,7 @@ def bench_sim(args: argparse.Namespace) -> int:
 def _suite(args: argparse.Namespace) -> list[tuple[str, str, str]]:
     """The sentences ``--set`` chooses: the suite, a held-out batch, or all."""
     return {"suite": SUITE, "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3,
-            "heldout4": HELDOUT4, "heldout5": HELDOUT5, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
+            "heldout4": HELDOUT4, "heldout5": HELDOUT5, "heldout6": HELDOUT6, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
 
 
 def bench_plans(args: argparse.Namespace) -> int:
@@ -554,7 +554,7 @@ def main() -> int:
     ap.add_argument("--scene", action="append", help="--sim: only this scene (repeatable)")
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "heldout5", "all"],
+    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "heldout5", "heldout6", "all"],
                     help="--plans/--sim: the suite, a held-out batch (bench/commands_heldout.py), or all")
     args = ap.parse_args()
     if args.plans:

@@ -269,3 +269,31 @@ HELDOUT5: list[tuple[str, str, str]] = [
     ("scan55", "pick up the tall white can", "lift tall_white_can"),
     ("scan55", "put the white box next to the blue box", "next white_box blue_box"),
 ]
+
+# A sixth batch (2026-11-25, H3), written blind before any change for it, in voices the other
+# batches lack: a learner's word order, indirect and formal requests, negations that name what
+# not to touch, "of the X, the one on the left", "whichever", dashes and fragments, a made-up
+# object, a second object into a bowl already holding one.
+HELDOUT6: list[tuple[str, str, str]] = [
+    ("kitchen", "please, the banana, you put in the bowl", "in banana bowl"),
+    ("kitchen", "would it be possible to move the mug so that it's beside the soup can", "next mug soup_can"),
+    ("kitchen", "I'd appreciate it if you placed the soup can on the left side of the mug", "left soup_can mug"),
+    ("kitchen", "I need both the mug and the soup can inside the bowl", "in mug bowl; in soup_can bowl"),
+    ("kitchen", "put the pen in the bowl", "refuse"),
+    ("pantry", "move the marker over so it's in front of the mustard bottle", "front marker mustard_bottle"),
+    ("pantry", "don't touch the mustard, just pick up the cube", "lift rubiks_cube"),
+    ("pantry", "set the brick down on the left of the spam", "left foam_brick potted_meat_can"),
+    ("mugbowl", "bring the mug 5 cm closer to me", "moved mug back 0.05"),
+    ("mugbowl", "swap the mug and the bowl around", "swapped mug bowl"),
+    ("fruitcans", "the can that is on the left, put it next to the bowl", "next can@left bowl"),
+    ("fruitcans", "put the strawberry into the bowl, and the banana next to the bowl as well", "in strawberry bowl; next banana bowl"),
+    ("fruitcans", "move the soup can so it's behind the meat can", "behind soup_can potted_meat_can"),
+    ("textkitchen", "of the two sodas, pick up the one on the left", "lift soda_can@left"),
+    ("textkitchen", "grab whichever can is further from the mug", "lift soda_can@left"),
+    ("textkitchen", "soda on the right - into the bowl with it", "in soda_can@right bowl"),
+    ("textkitchen", "put the glass in the bowl", "refuse"),
+    ("textblocks", "take the cube that's in the middle and put it on the plate", "on cube@blue plate"),
+    ("textblocks", "lift the green cube and then set it down again", "at cube@green"),
+    ("scan45", "the white box - could you nudge it 3 cm away from you", "moved white_box forward 0.03"),
+    ("scan55", "I'd like the orange cylinder picked up", "lift orange_cylinder"),
+]
