@@ -24,8 +24,8 @@ from rich.console import Console
 from realsim import rerun
 from realsim.destination import check_destination
 from realsim.errors import InputError
-from realsim.perception.capture import is_lone_object
 from realsim.perception.capture_config import read_capture_config
+from realsim.perception.lone_object import is_lone_object
 from realsim.perception.rgbd import is_rgbd_sequence
 from realsim.resources import data_dir
 from realsim.scene import Scene

@@ -10,7 +10,7 @@ import trimesh
 
 from conftest import YCB
 from realsim.errors import InputError
-from realsim.perception.capture import is_lone_object
+from realsim.perception.lone_object import is_lone_object
 from realsim.pipeline import convert, pipeline_for
 
 
@@ -29,6 +29,23 @@ def test_object_meshes_10_to_60_cm_are_objects_not_scenes(name: str) -> None:
     """These are 0.1-0.6 m in metres: once read as tiny scenes (a box top taken for a table, or
     "no horizontal support"); a scene needs a support larger than any object."""
     assert is_lone_object(YCB / name / "textured.obj")
+
+
+def test_a_closed_body_in_millimetres_is_an_object_and_a_tabletop_in_centimetres_a_scene(tmp_path: Path) -> None:
+    """Both read as 1-60 cm objects in one unit and 0.6-60 m scenes in another: one closed body
+    decides (a scene scan is open or made of several bodies)."""
+    from realsim.synth import SceneSpec, make_scene, write_mesh
+
+    bottle = trimesh.load(YCB / "006_mustard_bottle" / "textured.obj", force="mesh")
+    bottle.apply_scale(1000.0)
+    bottle.export(tmp_path / "bottle_mm.stl")
+    assert is_lone_object(tmp_path / "bottle_mm.stl")
+    write_mesh(make_scene(SceneSpec(layout="table", n_objects=3, seed=3)), tmp_path / "tabletop_cm.glb", units="cm", up="+y")
+    assert not is_lone_object(tmp_path / "tabletop_cm.glb")
+    open_top = trimesh.creation.box(extents=(0.3, 0.2, 0.1))
+    open_top.update_faces(open_top.face_normals[:, 2] < 0.5)  # a tray scanned from above: open, in metres
+    open_top.export(tmp_path / "tray.obj")
+    assert is_lone_object(tmp_path / "tray.obj")  # 30 cm in metres: no reading makes it a scene
 
 
 def test_scene_sized_or_speck_sized_meshes_are_not_objects(tmp_path: Path) -> None:

@@ -22,7 +22,6 @@ dominant support. Both transforms are composed into ``capture.input_to_world``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -30,14 +29,13 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.perception.capture_config import CaptureConfig, read_capture_config
-from realsim.perception.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
+from realsim.perception.formats import MESH_SUFFIXES, POINT_CLOUD_SUFFIXES, USD_SUFFIXES, is_point_cloud_ply
+from realsim.perception.lone_object import is_lone_object
+from realsim.perception.resolution import UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
 from realsim.perception.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 from realsim.viewer.splat import is_splat_ply, read_splat_ply
 
-POINT_CLOUD_SUFFIXES = {".pcd", ".ply", ".xyz", ".pts"}
-MESH_SUFFIXES = {".obj", ".stl", ".ply", ".glb", ".gltf", ".off"}
-USD_SUFFIXES = {".usd", ".usda", ".usdc", ".usdz"}
 UP_AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
 MIN_CAPTURE_POINTS = 100  # fewer finite points than this cannot show a support and an object
 
@@ -118,7 +116,7 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
     import trimesh
 
     try:
-        as_points = path.suffix.lower() == ".ply" and _is_point_cloud_ply(path)
+        as_points = path.suffix.lower() == ".ply" and is_point_cloud_ply(path)
         loaded = trimesh.load(path, process=False) if as_points else trimesh.load(path, force="mesh", process=False)
     except InputError:
         raise
@@ -185,17 +183,6 @@ def check_mesh_arrays(path: Path, vertices: np.ndarray, faces: np.ndarray) -> No
         raise InputError(f"{path}: corrupt mesh (non-finite vertex coordinates)")
 
 
-def _is_point_cloud_ply(path: Path) -> bool:
-    """True when a PLY file declares vertices but no faces."""
-    with path.open("rb") as fh:
-        header = fh.read(4096)
-    if not header.startswith(b"ply"):
-        raise InputError(f"{path}: not a PLY file (missing 'ply' magic)")
-    head = header.split(b"end_header")[0]
-    faces = [line for line in head.splitlines() if line.startswith(b"element face")]
-    return not faces or faces[0].split()[-1] == b"0"
-
-
 def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
     """Read the environment file (point cloud or mesh) of a capture."""
     if not path.exists():
@@ -212,7 +199,7 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         splats = read_splat_ply(path)
         solid = splats.opacities[:, 0] >= 0.2  # faint splats are floaters, not surfaces
         cloud = RawCloud(splats.centers[solid].astype(np.float64), splats.rgbs[solid].astype(np.float64), None, False, "ply", splat=path)
-    elif suffix == ".ply" and _is_point_cloud_ply(path):
+    elif suffix == ".ply" and is_point_cloud_ply(path):
         cloud = _load_mesh_points(path, params.mesh_pilot_points, seed)
     elif suffix in POINT_CLOUD_SUFFIXES - {".ply"}:
         cloud = _read_point_file(path)
@@ -252,31 +239,6 @@ def _object_files(folder: Path) -> list[Path]:
     return files
 
 
-def is_lone_object(path: Path) -> bool:
-    """A mesh file 1-60 cm across in metres that is no room-sized scene in another unit: one object
-    (a scanned or generated asset), converted like a capture holding it in ``objects/``.
-
-    A scene holds a support larger than the objects on it, so a mesh no larger than an object is
-    one; a scan of less than 60 cm in metres is converted as a scene from a folder (``scene.*``)."""
-    if not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES or (path.suffix.lower() == ".ply" and _is_point_cloud_ply(path)):
-        return False
-    extent = _mesh_extent(str(path), path.stat().st_mtime_ns)
-    scene_sized = any(OBJECT_EXTENT[1] < extent * s <= PLAUSIBLE_EXTENT[1] for s in UNIT_SCALE.values())
-    return not scene_sized and OBJECT_EXTENT[0] <= extent <= OBJECT_EXTENT[1]
-
-
-@lru_cache(maxsize=16)
-def _mesh_extent(path: str, mtime_ns: int) -> float:
-    """Largest bounding-box side of a mesh file (0 when it cannot be read: the scan path reports why)."""
-    import trimesh
-
-    try:
-        bounds = trimesh.load(path, force="mesh").bounds
-    except Exception:
-        return 0.0
-    return float(np.max(bounds[1] - bounds[0])) if bounds is not None and np.all(np.isfinite(bounds)) else 0.0
-
-
 def _text_capture(text: str, source: Path) -> Scene:
     """A capture made of a description only (realsim.text builds its objects)."""
     capture = CaptureInfo(source=source, kind="text", environment_file=None, units="m", up="+z", units_detected=False,
@@ -285,7 +247,6 @@ def _text_capture(text: str, source: Path) -> Scene:
 
 
 PHOTO_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp")
-OBJECT_EXTENT = (0.01, 0.6)  # m: a lone mesh file this large, and no plausible scene, is one object
 
 
 def _photo_capture(photo: Path, config: CaptureConfig, seed: int) -> Scene:
