@@ -197,8 +197,8 @@ def _exchange(a: Path, b: Path) -> bool:
 
 
 def normal_permissions(folder: Path) -> None:
-    """Give ``folder`` and everything in it the user's normal modes (umask), whatever wrote them
-    (temporary-file helpers create 0600 files and 0700 folders)."""
+    """Give ``folder`` (or a file) and everything in it the user's normal modes (umask), whatever
+    wrote them (temporary-file helpers create 0600 files and 0700 folders)."""
     umask = os.umask(0)
     os.umask(umask)
     for path in [folder, *folder.rglob("*")]:

@@ -116,6 +116,9 @@ def test_usd_stage_has_physics_on_every_object(scenes, kind, tmp_path, capsys):
     out = tmp_path / "stage" / "scene.usda"
     assert cli.main(["export", str(src), "--format", "usd", "-o", str(out)]) == 0
     assert "robot is not exported" in capsys.readouterr().err
+    umask = os.umask(0)
+    os.umask(umask)
+    assert out.stat().st_mode & 0o777 == 0o666 & ~umask  # the user's normal mode, not a temp file's 0600
     stage = Usd.Stage.Open(str(out))
     assert UsdGeom.GetStageUpAxis(stage) == UsdGeom.Tokens.z
     assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0

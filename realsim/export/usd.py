@@ -22,7 +22,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.destination import build_folder, check_destination, check_file_destination, publish
+from realsim.destination import build_folder, check_destination, check_file_destination, normal_permissions, publish
 from realsim.errors import InputError
 from realsim.export.mjcf import _resolve, load_spec, object_bodies
 from realsim.scene_format import KEYFRAME, ROBOT_PREFIX, VISUAL_GROUP
@@ -312,6 +312,7 @@ def export_usd(source: Path, dest: Path | str, robot_prefix: str = ROBOT_PREFIX,
         layer.documentation = doc
         layer.Save()
         del stage
+        normal_permissions(tmp)
         os.replace(tmp, dest)
         if writer.textures:
             publish(tex_tmp, dest.parent / tex_rel, force=force, kind="export-usd-textures")

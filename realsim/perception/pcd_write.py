@@ -11,6 +11,8 @@ from pathlib import Path
 import lzf
 import numpy as np
 
+from realsim.destination import normal_permissions
+
 ENCODINGS = ("ascii", "binary", "binary_compressed")
 DEFAULT_VIEWPOINT = (0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
 
@@ -103,6 +105,7 @@ def write_pcd(
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
+        normal_permissions(Path(tmp))
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

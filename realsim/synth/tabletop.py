@@ -40,6 +40,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from realsim.destination import normal_permissions
 from realsim.errors import InputError, RealsimError
 from realsim.perception.pcd_io import write_pcd
 from realsim.synth.tabletop_layout import (
@@ -250,6 +251,7 @@ def _write_text(path: Path, text: str) -> None:
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(text)
+        normal_permissions(Path(tmp))
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
