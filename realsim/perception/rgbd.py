@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from realsim.errors import InputError
+from realsim.perception.unique_keys import unique_inverse
 
 _ARKIT_TO_OPTICAL = np.diag([1.0, -1.0, -1.0, 1.0])
 
@@ -158,22 +159,23 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
             z = d + s / length
             pts = (ray * z[:, None]) @ pose[:3, :3].T + pose[:3, 3]
             keys.append(np.floor(pts / v).astype(np.int64))
-            sdfs.append(np.full(len(d), -s, dtype=np.float32))
-            weights.append((1.0 / d**2).astype(np.float32))
-            cols.append(rgb[vv, uu])
-    cells = np.concatenate(keys)
-    lo = cells.min(axis=0)
-    span = cells.max(axis=0) - lo + 3
-    flat = ((cells[:, 0] - lo[0] + 1) * span[1] + (cells[:, 1] - lo[1] + 1)) * span[2] + (cells[:, 2] - lo[2] + 1)
-    del cells, keys
-    uniq, inv = np.unique(flat, return_inverse=True)
+        # per ray, the same for every step: the samples run step by step, all rays each
+        sdfs.append(np.repeat(-steps, len(d)).astype(np.float32))
+        weights.append(np.tile((1.0 / d**2).astype(np.float32), len(steps)))
+        cols.append(np.tile(rgb[vv, uu], (len(steps), 1)))
+    lo = np.min([c.min(axis=0) for c in keys], axis=0)
+    span = np.max([c.max(axis=0) for c in keys], axis=0) - lo + 3
+    flat = np.concatenate([((c[:, 0] - lo[0] + 1) * span[1] + (c[:, 1] - lo[1] + 1)) * span[2] + (c[:, 2] - lo[2] + 1) for c in keys])
+    del keys
+    uniq, inv = unique_inverse(flat)
     del flat
     w = np.concatenate(weights)
     sdf = np.concatenate(sdfs)
     wsum = np.bincount(inv, w, minlength=len(uniq))
     tsdf = np.bincount(inv, w * sdf, minlength=len(uniq)) / wsum
-    col = np.concatenate(cols).astype(np.float64)
-    rgbsum = np.stack([np.bincount(inv, w * col[:, c], minlength=len(uniq)) for c in range(3)], axis=1) / wsum[:, None] / 255.0
+    col = np.concatenate(cols)
+    w64 = w.astype(np.float64)  # colour sums in float64, as uint8 colours times float32 weights
+    rgbsum = np.stack([np.bincount(inv, w64 * col[:, c], minlength=len(uniq)) for c in range(3)], axis=1) / wsum[:, None] / 255.0
     seen = np.bincount(inv, minlength=len(uniq))
     keep = seen >= 2
     uniq, tsdf, rgbsum = uniq[keep], tsdf[keep], rgbsum[keep]

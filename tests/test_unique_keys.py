@@ -1,0 +1,31 @@
+"""unique_inverse gives numpy's unique and inverse exactly, on grid keys and at the fallbacks."""
+
+import numpy as np
+import pytest
+
+from realsim.perception.unique_keys import unique_inverse
+
+
+@pytest.mark.parametrize(("n", "low", "high", "dtype"), [
+    (200_000, -(10**9), 10**9, np.int64),  # packed path
+    (5_000, 0, 40, np.int32),  # many repeats, narrow type
+    (1, 3, 4, np.int64),
+    (3_000, -(2**62), 2**62, np.int64),  # range too wide to pack: numpy's own path
+    (500, 0, 255, np.uint8),
+])
+def test_matches_numpy(n: int, low: int, high: int, dtype: type) -> None:
+    keys = np.random.default_rng(n).integers(low, high, n, dtype=dtype)
+    uniq, inverse = unique_inverse(keys)
+    ref_uniq, ref_inverse = np.unique(keys, return_inverse=True)
+    assert uniq.dtype == ref_uniq.dtype
+    np.testing.assert_array_equal(uniq, ref_uniq)
+    np.testing.assert_array_equal(inverse, ref_inverse.ravel())
+    np.testing.assert_array_equal(uniq[inverse], keys)
+
+
+def test_empty_and_float() -> None:
+    uniq, inverse = unique_inverse(np.zeros(0, np.int64))
+    assert len(uniq) == 0 and len(inverse) == 0
+    uniq, inverse = unique_inverse(np.array([0.5, -1.0, 0.5]))
+    np.testing.assert_array_equal(uniq, [-1.0, 0.5])
+    np.testing.assert_array_equal(inverse, [1, 0, 1])
