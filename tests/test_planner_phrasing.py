@@ -245,3 +245,31 @@ def test_again_repeats_the_last_step_and_its_goal_adds_up() -> None:
     assert [(g.obj, g.distance) for g in plan.goals if isinstance(g, Moved)] == [("obj4_cube", 0.06)]
     with pytest.raises(InputError, match="repeats nothing"):
         RulePlanner().plan("do that again", CLUTTER)
+
+
+VOICES: list[tuple[str, list[str]]] = [
+    ("the banana, you put in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),  # a learner's order: topic, subject, verb
+    ("of the two cans, grab the one on the left", ["grasp('obj1_soda_can')"]),  # "one" is one of the cans
+    ("grab whichever cube is further from the bowl", ["grasp('obj3_cube')"]),
+    ("grab the cube closer to the bowl", ["grasp('obj4_cube')"]),
+    ("bring the bowl 5 cm closer to me", ["push('obj6_bowl', 'back', 0.05)"]),
+    ("don't touch the banana, just pick up the strawberry", ["grasp('obj8_strawberry')"]),
+    ("the strawberry - into the bowl with it", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("pick up the banana and set it down again", ["grasp('obj7_banana')", "place('obj7_banana', [0.65, 0.0, 0.02])"]),
+    ("i'd like the banana picked up", ["grasp('obj7_banana')"]),
+    ("put the banana in the bowl and the strawberry next to the bowl as well",
+     ["place_in('obj7_banana', 'obj6_bowl')", "place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), VOICES, ids=[p[0][:40] for p in VOICES])
+def test_other_voices(sentence: str, lines: list[str]) -> None:
+    """Topics, partitives, comparatives to another object, dashes, negated objects, wishes."""
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+
+
+@pytest.mark.parametrize("sentence", ["pick up the banana without touching the banana", "don't touch the bowl, put the banana in it",
+                                      "don't touch the cube"])
+def test_an_object_not_to_touch_is_never_acted_on(sentence: str) -> None:
+    with pytest.raises(InputError, match="not to touch|ambiguous|what should I do"):
+        RulePlanner().plan(sentence, CLUTTER)

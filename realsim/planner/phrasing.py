@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import re
 
+from realsim.planner.vocab import singular
+
 FILLERS = (
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
@@ -64,6 +66,9 @@ def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
     text = re.sub(r"[!?]+", ".", text)
+    text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*", ", ", text)  # a dash between phrases: a pause, as a comma
+    text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
+    text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
     text = _VOCATIVE.sub(" ", text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     # "to the mug's left": to the left of the mug; "side by side": next to each other
@@ -95,13 +100,18 @@ def split_command(command: str) -> list[str]:
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+    parts = [re.sub(rf"^you (?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you put in the bowl"
+    parts = _partitive(parts)
     topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
-    if (re.match(r"(?:the|that|this|these|those) ", topic) and not verb_re.match(topic) and not _has_relation(topic)
-            and verb_re.match(parts[1]) and re.search(r"\b(?:it|them)\b", parts[1])):
-        # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
-        parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
-    elif re.match(r"(?:the|that|this|these|those) ", topic) and not verb_re.match(topic) and not _has_relation(topic) and _relation_start(parts[1]):
-        parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes
+    verb = verb_re.match(parts[1]) if topic else None
+    if topic and not verb_re.match(topic) and not _has_relation(_bare(topic)) and not _AVOID.match(topic):
+        if verb and re.search(r"\b(?:it|them)\b", parts[1]):
+            # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
+            parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
+        elif verb and _relation_start(parts[1][verb.end():].strip()):  # "the banana, put in the bowl": the verb's object
+            parts = [f"{verb.group(0)} {topic} {parts[1][verb.end():].strip()}", *parts[2:]]
+        elif _relation_start(parts[1]):
+            parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part):
@@ -118,6 +128,18 @@ def split_command(command: str) -> list[str]:
         else:
             clauses.append(part)
     return clauses
+
+
+_AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|try not to|avoid|(?:be )?careful not to|without)"
+                    r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing)?(?: over| down| into)? (.+)$")
+
+
+def avoided(clause: str) -> tuple[str, str]:
+    """A clause without a named thing not to touch, and that thing's phrase ("" if none): "don't
+    touch the mustard" -> ("", "the mustard"); "pick up the cube without hitting the bowl" ->
+    ("pick up the cube", "the bowl")."""
+    m = _AVOID.search(clause)
+    return (clause[: m.start()].strip(), m.group(1).strip()) if m else (clause, "")
 
 
 _PAST = {"picked": "pick", "grabbed": "grab", "taken": "take", "took": "take", "lifted": "lift", "moved": "move", "pushed": "push",
@@ -155,6 +177,25 @@ _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?
                    r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
 
 
+def _bare(phrase: str) -> str:
+    """A noun phrase without what only picks among its kind: a relative clause ("the can that is
+    on the left") or a position ("the soda on the right")."""
+    phrase = re.sub(r"\s+(?:that is|that s|thats|which is|that|which)\s.*$", "", phrase)
+    return re.sub(r"\s+(?:on|to|at|in) the (?:far )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?\b", "", phrase)
+
+
+def _partitive(parts: list[str]) -> list[str]:
+    """"of the two sodas, pick up the one on the left": "one" is a soda, and the opening names no
+    object of its own."""
+    if len(parts) < 2:
+        return parts
+    m = re.fullmatch(r"(?:of|out of|among|from among) (?:all )?(?:the |these |those )?(?:two |three |four |both )?([a-z ]+)", parts[0])
+    if not m or not re.search(r"\bone\b", parts[1]):
+        return parts
+    noun = singular(m.group(1).split()[-1])
+    return [re.sub(r"\bone\b", noun, parts[1], count=1), *parts[2:]]
+
+
 def _has_relation(text: str) -> bool:
     """Whether a relation word opens ``text`` or any of its word tails ("mug in the bowl")."""
     words = text.split()
@@ -182,6 +223,8 @@ def rephrase(clause: str) -> str:
         p = _PARTICIPLE.match(rest)
         if p and p.group(2):
             return f"move {p.group(1)} {p.group(2)}"
+        if p and re.search(r"\b(?:picked up|lifted)$", rest):  # "i'd like the cylinder picked up"
+            return f"pick up {p.group(1)}"
         # "i want the mug by the bowl": put it there; "i want the banana": give it to me
         placed = _PLACE_WORD.search(f" {rest} ")
         return f"put {rest}" if placed else f"hand me {rest}"

@@ -27,7 +27,7 @@ def has_direction(text: str) -> bool:
 def is_push(rest: str) -> bool:
     """A direction word outside any object relation ("push the mug left", not "put it left of the box")."""
     if re.search(r"\b(?:left|right) (?:of|side of)\b|\bin front of\b|\bbehind\b|\bnext to\b|\bbeside\b|\bbetween\b|\b(?:in|into|onto|inside|on top of)\b"
-                 r"|\b(?:closer|nearer) to (?!(?:me|you|the robot|yourself)\b)", rest):
+                 r"|\b(?:closer|nearer) to (?!(?:me|you|the robot|yourself)\b)|\b(?:further|farther)(?: away)? from (?!(?:me|you|the robot|yourself)\b)", rest):
         return False
     return bool(re.search(rf"(?<![a-z])(?:{_DIR_ALT})(?![a-z])", rest)) or distance(rest) is not None
 

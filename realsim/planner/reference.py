@@ -224,10 +224,11 @@ class Resolver:
         text = re.sub(r"^(?:whichever|whatever|which ever|the one of the|one of the) (.+?) (?:is|are|that is|that are) ", r"\1 ", text)
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
-        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:closest|nearest)(?: to)? (?!(?:to )?(?:me|you|the robot)$)(.+)", text)
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(closest|nearest|closer|nearer)(?: to)?|(?:farthest|furthest|further|farther)(?: away)? from)"
+                         r" (?!(?:to )?(?:me|you|the robot)$)(.+)", text)
         if m:
-            ref = self.resolve(m.group(2), Context(), allow_plural=False)[0]
-            text, order = m.group(1), ("near", ref)
+            ref = self.resolve(m.group(3), Context(), allow_plural=False)[0]
+            text, order = m.group(1), ("near" if m.group(2) else "far", ref)
             cands = [o for o in cands if o.name != ref.name]
         else:
             for pattern, rel in LOCATOR_RELATIONS:
@@ -340,10 +341,11 @@ class Resolver:
 
     def _ordered(self, found: list[ObjectInfo], order: tuple[str, object], ordinal: int | None, phrase: str) -> list[ObjectInfo]:
         kind, arg = order
-        if kind == "near":
+        if kind in ("near", "far"):  # the gap to the reference, its distance breaking ties
             ref = arg
             assert isinstance(ref, ObjectInfo)
-            return [min(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
+            pick = min if kind == "near" else max
+            return [pick(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
         if kind == "middle":
             ys = sorted(found, key=lambda o: self.robot_xy(o)[1])
             if len(ys) % 2 == 0:

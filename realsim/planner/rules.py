@@ -20,7 +20,7 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, rephrase, split_command
+from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
 from realsim.planner.reference import Context
@@ -58,12 +58,26 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
         raise InputError(f"the command is empty; {HELP}")
     p = Parser(objects, robot_yaw)
     steps: list[Step] = []
+    kept: dict[str, str] = {}  # objects the command says not to touch, and how it named them
     for c in clauses:
-        steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
+        c, phrase = avoided(c)
+        if phrase:  # the robot keeps clear of every object it is not asked to move; a named one it must not move at all
+            named = p.resolver.resolve(phrase, Context(p.ctx.last), allow_plural=True)
+            kept |= {o.name: phrase for o in named}
+            p.ctx.set(named)
+        if c:
+            steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
-    return [c for s in steps for c in s.calls], _final_goals(steps)
+    calls = [c for s in steps for c in s.calls]
+    clash = sorted({str(a) for c in calls for a in c.args if isinstance(a, str) and a in kept})
+    if clash:
+        raise InputError(f"the command says not to touch {', '.join(kept[n] for n in clash)} ({', '.join(clash)}) but also acts on it; "
+                         "say which you mean")
+    if not steps:
+        raise InputError(f"the command only says what not to touch; what should I do? {HELP}")
+    return calls, _final_goals(steps)
 
 
 def _final_goals(steps: list[Step]) -> list[Goal]:
@@ -108,13 +122,16 @@ def _clause(clause: str, p: Parser) -> Step:
     m = SWAP.fullmatch(c)
     if m:
         return swap(m.group(1), m.group(2), p)
-    c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
+    if not re.search(r"\b(?:closer|nearer)\b", c):  # "bring the mug closer to me" moves it, not into the hand
+        c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
         verb, rest = _verb(rephrase(c))
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
-    if verb in PUSH and is_push(rest):
+    # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
+    by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest))
+    if (verb in PUSH or by) and is_push(rest):
         return _push(rest, p, clause)
     if verb in ("hand me", "give me", "pass me", "bring me"):
         return _take(rest, p)
@@ -175,6 +192,7 @@ def _find_relation(rest: str) -> list[tuple[int, int, str]]:
 
 
 def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
+    rest = re.sub(r"\s+(?:again|once more)$", "", rest)  # "set it down again"
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
     rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
                   r"|its (?:original |old |starting )?(?:place|spot|position))$",
