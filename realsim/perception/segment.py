@@ -20,6 +20,7 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
+from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
@@ -226,6 +227,20 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
     return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
 
 
+def _point_outward(points: np.ndarray, normals: np.ndarray, patch_outward: np.ndarray, resolution: float | None,
+                   params: SegmentParams, context: np.ndarray | None) -> np.ndarray:
+    """Each point's normal on its outward side: what the point itself sees where that decides (a
+    cloud fine enough, :mod:`realsim.perception.visibility`), else its patch's outward side (a
+    patch straddling a contact has one side for two surfaces)."""
+    out = _orient(normals, -patch_outward)
+    cell = _spacing(points)
+    if (resolution if resolution is not None else cell) > params.visibility_cell:
+        return out
+    seen = visibility_score(points if context is None else np.vstack([points, context]), points, out, cell,
+                            5 * params.orientation_radius)
+    return out * np.where(seen <= -2, -1.0, 1.0)[:, None]
+
+
 def _spacing(points: np.ndarray) -> float:
     """Median distance from a point to its nearest neighbour (on a deterministic subset)."""
     if len(points) < 2:
@@ -315,7 +330,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     size = np.bincount(obj)
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
-    if not organized:  # a clouds seen from around shows whole footprints: pieces standing in one are one object
+    if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
+        point_normals = _point_outward(points[ids], normals[ids], nrm[part], resolution, params, context)
+        cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points, stand_height=params.stack_min_height)
+        obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
         obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]

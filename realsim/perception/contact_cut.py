@@ -1,0 +1,182 @@
+"""Contacts between objects, cut where the surface folds inward (for clouds seen from around).
+
+Clusters that touch form a group; each group is bisected again and again by a normalized cut
+(the Fiedler vector of its point graph) while the best cut runs along a concave fold. Each link
+between neighbouring points weighs 1 when the surface bends outward (or is flat) there, and
+less the more it folds inward (the LCCP criterion on point normals oriented like the patch
+they lie in): two objects pressed together meet in a concave crease all along their contact,
+so the cheapest cut follows it, whichever clusters the first segmentation made of them. A cut
+is kept only when the links it crosses are mostly concave and both sides are object-sized, so
+a convex object is never cut and pieces of one object split at a convex or flat seam join.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import sparse
+from scipy.sparse.csgraph import connected_components
+from scipy.sparse.linalg import ArpackNoConvergence, eigsh
+from scipy.spatial import cKDTree
+
+from realsim.perception.object_relations import base_height
+
+__all__ = ["CutParams", "concave_link_weights", "cut_contacts"]
+
+
+@dataclass(frozen=True)
+class CutParams:
+    """When a group of touching points is cut in two (angles in degrees, lengths in metres)."""
+
+    fold_angle: float = 25.0  # a fold this sharp weighs a link exp(-1)
+    max_cut_weight: float = 0.35  # the links a kept cut crosses weigh at most this on average
+    max_ncut: float = 0.2  # and its normalized-cut value is at most this
+    min_size: float = 0.02  # m: each side's largest extent is at least this
+    min_points: int = 5  # and it holds at least this many points
+    stand_height: float = 0.015  # m: a side whose base is higher above its support does not stand on it
+    rest_fraction: float = 0.35  # ... and rests on the other only if they meet in its lowest part of its height
+    max_depth: int = 4  # bisections per group
+    intact_share: float = 0.8  # a first cluster with this share of its points in one final part stays as it was
+
+
+def concave_link_weights(points: np.ndarray, normals: np.ndarray, a: np.ndarray, b: np.ndarray,
+                         fold_angle: float, smooth: int = 8) -> np.ndarray:
+    """Weight of each link (a, b) in [0, 1], low where the surface folds inward.
+
+    Two tests, multiplied: LCCP on the outward normals ((n_a - n_b) . (p_a - p_b) < 0 on a concave
+    connection, weighing exp(-(angle / fold_angle)^2)), and a one-sided one that needs only one
+    end's orientation: where either end sees the other in front of its tangent plane (elevation
+    sin e), the link weighs exp(-(sin e / sin fold_angle)^2). Positions are averaged over each
+    point's ``smooth`` nearest neighbours first, so sensor noise does not look like a fold; at a
+    contact where a thin wall's side is ambiguous, the other object's face still sees it in front."""
+    d = points[a] - points[b]
+    cos = np.clip((normals[a] * normals[b]).sum(axis=1), -1.0, 1.0)
+    angle = np.degrees(np.arccos(cos))
+    concave = ((normals[a] - normals[b]) * d).sum(axis=1) < 0
+    lccp = np.where(concave, np.exp(-((angle / fold_angle) ** 2)), 1.0)
+    k = min(smooth + 1, len(points))
+    centre = points[cKDTree(points).query(points, k=k)[1].reshape(len(points), k)].mean(axis=1)
+    d = centre[b] - centre[a]
+    d /= np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-12)
+    elevation = np.maximum((normals[a] * d).sum(axis=1), -(normals[b] * d).sum(axis=1))
+    one_sided = np.exp(-((np.maximum(elevation, 0.0) / np.sin(np.radians(fold_angle))) ** 2))
+    return lccp * one_sided
+
+
+def _extent(points: np.ndarray) -> float:
+    return float(np.max(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
+
+
+def _supported(height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
+    """Whether the points ``side`` can be an object of their own: they stand on the support, or
+    the points where they meet the rest (``contact``) lie in their lowest part, so they rest on
+    it (a handle meets its body at both ends, a stacked can at its bottom)."""
+    h = height[side]
+    if base_height(h) <= params.stand_height:
+        return True
+    meet = height[side & contact]
+    low = h.min()
+    return bool(len(meet)) and float(np.median(meet)) <= low + params.rest_fraction * (h.max() - low)
+
+
+def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.ndarray, height: np.ndarray,
+              params: CutParams) -> np.ndarray | None:
+    """The side (bool per node) of the best acceptable normalized cut of a connected graph, or None."""
+    if n < 2 * params.min_points:
+        return None
+    graph = sparse.coo_matrix((np.r_[w, w], (np.r_[a, b], np.r_[b, a])), shape=(n, n)).tocsr()
+    degree = np.asarray(graph.sum(axis=1)).ravel()
+    scale = 1.0 / np.sqrt(np.maximum(degree, 1e-12))
+    norm_adj = sparse.diags(scale) @ graph @ sparse.diags(scale)
+    try:  # the two largest eigenvectors of D^-1/2 W D^-1/2; the second is the Fiedler direction
+        _, vecs = eigsh(norm_adj, k=2, which="LA", v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
+    except ArpackNoConvergence:
+        return None
+    order = np.argsort(vecs[:, 0] * scale, kind="stable")
+    rank = np.empty(n, dtype=np.int64)
+    rank[order] = np.arange(n)
+    lo, hi = np.minimum(rank[a], rank[b]), np.maximum(rank[a], rank[b])
+    # a link crosses the cut "first t + 1 nodes | rest" for lo <= t < hi
+    diff = np.zeros(n + 1)
+    np.add.at(diff, lo, w)
+    np.add.at(diff, hi, -w)
+    cut = np.cumsum(diff)[: n - 1]
+    links = np.cumsum(np.bincount(lo, minlength=n + 1) - np.bincount(hi, minlength=n + 1))[: n - 1]
+    vol = np.cumsum(degree[order])[: n - 1]
+    total = degree.sum()
+    ncut = cut / np.maximum(vol, 1e-12) + cut / np.maximum(total - vol, 1e-12)
+    sizes = np.arange(1, n)
+    ok = (sizes >= params.min_points) & (n - sizes >= params.min_points) & (cut <= params.max_cut_weight * np.maximum(links, 1))
+    ok &= ncut <= params.max_ncut
+    for t in np.flatnonzero(ok)[np.argsort(ncut[ok], kind="stable")][:8]:
+        side = rank <= t
+        if _extent(points[side]) < params.min_size or _extent(points[~side]) < params.min_size:
+            continue
+        crossing = (lo <= t) & (hi > t)
+        contact = np.zeros(n, dtype=bool)
+        contact[a[crossing]] = contact[b[crossing]] = True
+        if _supported(height, side, contact, params) and _supported(height, ~side, contact, params):
+            return side
+    return None
+
+
+def cut_contacts(points: np.ndarray, normals: np.ndarray, height: np.ndarray, labels: np.ndarray, a: np.ndarray,
+                 b: np.ndarray, params: CutParams = CutParams()) -> np.ndarray:
+    """Cluster labels (>= 0; -1 none) re-cut at concave contacts.
+
+    ``points`` (N, 3) and outward ``normals`` of the segmented points, ``height`` their height above
+    their support (m), ``labels`` their clusters,
+    (a, b) the links between neighbouring points. Touching clusters are grouped, then each group
+    is bisected while an acceptable concave cut exists (see the module doc); what no cut
+    separated keeps the clusters it had (:func:`_keep_intact`)."""
+    valid = labels >= 0
+    keep = valid[a] & valid[b]
+    a, b = a[keep], b[keep]
+    w = concave_link_weights(points, normals, a, b, params.fold_angle)
+    n = len(points)
+    _, group = connected_components(sparse.coo_matrix((np.ones(len(a)), (a, b)), shape=(n, n)), directed=False)
+    parts: list[np.ndarray] = []
+    stack = [(np.flatnonzero(valid & (group == g)), 0) for g in np.unique(group[valid])]
+    while stack:
+        members, depth = stack.pop()
+        local = np.full(n, -1, dtype=np.int64)
+        local[members] = np.arange(len(members))
+        inside = (local[a] >= 0) & (local[b] >= 0)
+        side = None
+        if depth < params.max_depth:
+            side = _best_cut(len(members), local[a[inside]], local[b[inside]], w[inside], points[members],
+                             height[members], params)
+        if side is None:
+            parts.append(members)
+            continue
+        for part in (members[side], members[~side]):
+            sub = np.full(n, -1, dtype=np.int64)
+            sub[part] = np.arange(len(part))
+            links = (sub[a] >= 0) & (sub[b] >= 0)
+            _, comp = connected_components(sparse.coo_matrix((np.ones(int(links.sum())), (sub[a[links]], sub[b[links]])),
+                                                             shape=(len(part), len(part))), directed=False)
+            for c in np.unique(comp):
+                stack.append((part[comp == c], depth + 1))
+    return _keep_intact(labels, parts, params.intact_share)
+
+
+def _keep_intact(labels: np.ndarray, parts: list[np.ndarray], share: float) -> np.ndarray:
+    """Labels of the final parts. A cluster of the first segmentation with at least ``share`` of
+    its points in one part is kept there as it was (touching objects no cut separated stay apart);
+    the rest of that part, pieces of clusters a cut went through, joins its largest kept cluster,
+    or becomes a new object when none is kept."""
+    size = np.bincount(labels[labels >= 0])
+    out = np.full(len(labels), -1, dtype=np.int64)
+    next_label = int(len(size))
+    for members in parts:
+        own, count = np.unique(labels[members], return_counts=True)
+        kept = own[count >= share * size[own]]
+        if len(kept) == 0:
+            out[members] = next_label
+            next_label += 1
+            continue
+        out[members] = kept[np.argmax(size[kept])]
+        whole = np.isin(labels[members], kept)
+        out[members[whole]] = labels[members[whole]]
+    return out
