@@ -9,6 +9,8 @@ from typing import Callable, Iterable, TypeVar
 
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
+from realsim.alloc import reuse_freed_memory
+
 T = TypeVar("T")
 R = TypeVar("R")
 
@@ -46,7 +48,8 @@ def parallel_map(
                 bar.advance(task)
             return results
         # forkserver: workers never inherit OpenMP state (CoACD, Open3D) that breaks after fork.
-        with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("forkserver")) as pool:
+        with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("forkserver"),
+                                 initializer=reuse_freed_memory) as pool:
             futures = [pool.submit(fn, item) for item in items]
             results = []
             for fut in futures:

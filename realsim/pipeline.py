@@ -22,6 +22,7 @@ import yaml
 from rich.console import Console
 
 from realsim import rerun
+from realsim.alloc import reuse_freed_memory
 from realsim.destination import check_destination
 from realsim.errors import InputError
 from realsim.perception.capture_config import read_capture_config
@@ -165,6 +166,7 @@ def run_pipeline(
     otherwise the pipeline ends before it and the returned Scene is what would be written.
     """
     spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
+    reuse_freed_memory()  # numpy temporaries reuse freed heap instead of fresh page-faulted mmaps
     scene = Scene.unread(source, seed)
     for name, params in plan:
         if name == "write" and not write:

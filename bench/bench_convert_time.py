@@ -1,0 +1,137 @@
+"""Full conversion time per stage, cold: the four mOSD scans, a 1 M-point cloud, a 30-frame RGB-D sweep.
+
+Each input is converted (``realsim.convert``, every stage, written) in its own fresh Python
+process with an empty cache except the Panda's meshes (input-independent, converted once at
+the start), after the libraries are imported (an in-process measure: a long-lived process pays
+imports once). The table shows wall seconds per stage, the total wall and CPU seconds of the
+converting process (workers of a parallel map are not in its CPU), the warm rerun (the same
+conversion again into a new folder: restored from the cache), peak memory, the output size and
+the first hex digits of scene.xml's SHA-256 (byte-identity before/after a change).
+
+    .venv/bin/python bench/bench_convert_time.py [--only test0,cloud1m] [--workers N] [--mesh]
+
+Generated inputs (realsim.synth, seed 0) are written under a temporary folder; ``--keep DIR``
+writes them there once and reuses them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+DATA = Path(__file__).resolve().parents[2] / "shared" / "data"
+STAGE_ORDER = ("load", "planes", "segment", "complete", "objects", "compose", "robot", "settle", "write")
+
+CHILD = r"""
+import hashlib, json, os, sys, time
+from pathlib import Path
+import mujoco, numpy, open3d, scipy, trimesh  # noqa: F401  (imports are not the conversion)
+from realsim.pipeline import convert
+src, out, warm_out = sys.argv[1:4]
+started, cpu = time.perf_counter(), time.process_time()
+scene = convert(src, out)
+wall, cpu = time.perf_counter() - started, time.process_time() - cpu
+started = time.perf_counter()
+convert(src, warm_out)
+warm = time.perf_counter() - started
+hwm = next(int(l.split()[1]) for l in open('/proc/self/status') if l.startswith('VmHWM'))
+size = sum(p.stat().st_size for p in Path(out).rglob('*') if p.is_file())
+print(json.dumps({"timings": scene.timings, "wall": wall, "cpu": cpu, "warm": warm, "peak_mb": hwm // 1024,
+                  "out_mb": size / 1e6, "objects": len(scene.objects),
+                  "sha": hashlib.sha256((Path(out) / 'scene.xml').read_bytes()).hexdigest()}))
+"""
+
+
+def generated_inputs(folder: Path, mesh: bool, data: Path) -> dict[str, Path]:
+    """The counter scene as a 1 M-point cloud, the table scene as a 30-frame sweep (and mesh)."""
+    os.environ.setdefault("REALSIM_YCB_ROOT", str(data / "ycb_google16k"))
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from bench_captures import SCENES
+
+    from realsim.synth import SceneSpec, make_scene, write_mesh, write_point_cloud, write_rgbd_sequence
+
+    out = {"cloud1m": folder / "counter_1m.ply", "rgbd30": folder / "table_seq"}
+    if mesh:
+        out["mesh"] = folder / "table_mesh.glb"
+    if not out["cloud1m"].exists():
+        write_point_cloud(make_scene(SceneSpec(layout="counter", objects=SCENES["counter"], seed=0)), out["cloud1m"], 1_000_000)
+    table = make_scene(SceneSpec(layout="table", objects=SCENES["table"], seed=0))
+    if not (out["rgbd30"] / "odometry.csv").exists():
+        write_rgbd_sequence(table, out["rgbd30"], 30)
+    if mesh and not out["mesh"].exists():
+        write_mesh(table, out["mesh"])
+    return out
+
+
+def robot_cache(folder: Path) -> Path:
+    """A cache holding only the Panda's converted meshes (what every conversion shares)."""
+    root = folder / "robot_cache"
+    if not root.exists():
+        code = "from realsim.robot.model import panda_spec; panda_spec()"
+        subprocess.run([sys.executable, "-c", code], check=True, env={**os.environ, "REALSIM_CACHE": str(root)})
+    return root
+
+
+def convert_cold(name: str, source: Path, work: Path, cache_seed: Path, workers: int | None) -> dict:
+    """Convert ``source`` in a fresh process with a cold cache; the child's JSON report."""
+    run = work / name
+    shutil.copytree(cache_seed, run / "cache")
+    env = {**os.environ, "REALSIM_CACHE": str(run / "cache")}
+    if workers:
+        env["REALSIM_WORKERS"] = str(workers)
+    out = subprocess.run([sys.executable, "-c", CHILD, str(source), str(run / "out"), str(run / "warm")],
+                         capture_output=True, text=True, env=env)
+    if out.returncode:
+        raise RuntimeError(f"{name}: {out.stderr.strip().splitlines()[-1] if out.stderr.strip() else out.returncode}")
+    report: dict = json.loads(out.stdout.strip().splitlines()[-1])
+    return report
+
+
+def print_table(rows: list[tuple[str, dict]]) -> None:
+    head = " ".join(f"{s[:8]:>8s}" for s in STAGE_ORDER)
+    print(f"{'input':8s} {head} {'wall':>6s} {'cpu':>6s} {'warm':>5s} {'peakMB':>6s} {'outMB':>5s} {'obj':>3s}  scene.xml sha256")
+    for name, r in rows:
+        t = r["timings"]
+        cells = " ".join(f"{t.get(s, float('nan')):8.2f}" for s in STAGE_ORDER)
+        print(f"{name:8s} {cells} {r['wall']:6.2f} {r['cpu']:6.2f} {r['warm']:5.2f} {r['peak_mb']:6d} {r['out_mb']:5.1f} "
+              f"{r['objects']:3d}  {r['sha'][:16]}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--only", default="", help="comma-separated input names (test0, test31, test45, test55, cloud1m, rgbd30, mesh)")
+    parser.add_argument("--workers", type=int, default=None, help="REALSIM_WORKERS for the conversions")
+    parser.add_argument("--mesh", action="store_true", help="also the table scene as a merged glTF mesh")
+    parser.add_argument("--data", type=Path, default=DATA, help="the shared data folder (mOSD scans)")
+    parser.add_argument("--keep", type=Path, default=None, help="write the generated inputs here once and reuse them")
+    args = parser.parse_args()
+    only = set(filter(None, args.only.split(",")))
+    with tempfile.TemporaryDirectory() as tmp_name:
+        tmp = Path(tmp_name)
+        inputs_dir = args.keep or tmp / "inputs"
+        inputs_dir.mkdir(parents=True, exist_ok=True)
+        inputs = {f"test{i}": args.data / "pcl_scenes" / "mOSD" / f"test{i}.pcd" for i in (0, 31, 45, 55)}
+        wanted_generated = not only or bool(only & {"cloud1m", "rgbd30", "mesh"})
+        if wanted_generated:
+            inputs.update(generated_inputs(inputs_dir, args.mesh or "mesh" in only, args.data))
+        cache_seed = robot_cache(inputs_dir if args.keep else tmp)
+        rows = []
+        for name, source in inputs.items():
+            if only and name not in only:
+                continue
+            rows.append((name, convert_cold(name, source, tmp, cache_seed, args.workers)))
+            print(f"[{name} done]", flush=True)
+        print_table(rows)
+        digest = hashlib.sha256("".join(r["sha"] for _, r in rows).encode()).hexdigest()[:16]
+        print(f"\nall scene.xml digests: {digest}")
+
+
+if __name__ == "__main__":
+    main()
