@@ -3,7 +3,7 @@
 Each input is converted (``realsim.convert``, every stage, written) in its own fresh Python
 process with an empty cache except the Panda's meshes (input-independent, converted once at
 the start), after the libraries are imported (an in-process measure: a long-lived process pays
-imports once). The table shows wall seconds per stage, the total wall and CPU seconds of the
+imports once). Two tables show wall and CPU seconds per stage, the total wall and CPU seconds of the
 converting process (workers of a parallel map are not in its CPU), the warm rerun (the same
 conversion again into a new folder: restored from the cache), peak memory, the output size and
 the first hex digits of scene.xml's SHA-256 (byte-identity before/after a change).
@@ -33,7 +33,20 @@ CHILD = r"""
 import hashlib, json, os, sys, time
 from pathlib import Path
 import mujoco, numpy, open3d, scipy, trimesh  # noqa: F401  (imports are not the conversion)
+from dataclasses import replace
 from realsim.pipeline import convert
+from realsim.stages import STAGES
+cpu_s = {}
+def timed(name, run):
+    def wrapped(scene, params):
+        started = time.process_time()
+        try:
+            return run(scene, params)
+        finally:
+            cpu_s[name] = time.process_time() - started
+    return wrapped
+for name, stage in list(STAGES.items()):
+    STAGES[name] = replace(stage, run=timed(name, stage.run))
 src, out, warm_out = sys.argv[1:4]
 started, cpu = time.perf_counter(), time.process_time()
 scene = convert(src, out)
@@ -43,7 +56,7 @@ convert(src, warm_out)
 warm = time.perf_counter() - started
 hwm = next(int(l.split()[1]) for l in open('/proc/self/status') if l.startswith('VmHWM'))
 size = sum(p.stat().st_size for p in Path(out).rglob('*') if p.is_file())
-print(json.dumps({"timings": scene.timings, "wall": wall, "cpu": cpu, "warm": warm, "peak_mb": hwm // 1024,
+print(json.dumps({"timings": scene.timings, "cpu_s": cpu_s, "wall": wall, "cpu": cpu, "warm": warm, "peak_mb": hwm // 1024,
                   "out_mb": size / 1e6, "objects": len(scene.objects),
                   "sha": hashlib.sha256((Path(out) / 'scene.xml').read_bytes()).hexdigest()}))
 """
@@ -94,11 +107,11 @@ def convert_cold(name: str, source: Path, work: Path, cache_seed: Path, workers:
     return report
 
 
-def print_table(rows: list[tuple[str, dict]]) -> None:
+def print_table(rows: list[tuple[str, dict]], key: str) -> None:
     head = " ".join(f"{s[:8]:>8s}" for s in STAGE_ORDER)
     print(f"{'input':8s} {head} {'wall':>6s} {'cpu':>6s} {'warm':>5s} {'peakMB':>6s} {'outMB':>5s} {'obj':>3s}  scene.xml sha256")
     for name, r in rows:
-        t = r["timings"]
+        t = r[key]
         cells = " ".join(f"{t.get(s, float('nan')):8.2f}" for s in STAGE_ORDER)
         print(f"{name:8s} {cells} {r['wall']:6.2f} {r['cpu']:6.2f} {r['warm']:5.2f} {r['peak_mb']:6d} {r['out_mb']:5.1f} "
               f"{r['objects']:3d}  {r['sha'][:16]}")
@@ -128,7 +141,10 @@ def main() -> None:
                 continue
             rows.append((name, convert_cold(name, source, tmp, cache_seed, args.workers)))
             print(f"[{name} done]", flush=True)
-        print_table(rows)
+        print("stage wall seconds (the machine's other load counts here)")
+        print_table(rows, "timings")
+        print("\nstage CPU seconds of the converting process")
+        print_table(rows, "cpu_s")
         digest = hashlib.sha256("".join(r["sha"] for _, r in rows).encode()).hexdigest()[:16]
         print(f"\nall scene.xml digests: {digest}")
 

@@ -100,10 +100,13 @@ def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarra
     cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points[ok]))
     cloud.colors = o3d.utility.Vector3dVector(np.clip(colors[ok], 0.0, 1.0))
     voxel = max(float(spacing) if np.isfinite(spacing) else 0.0, params.cloud_min_voxel)
-    thin = cloud.voxel_down_sample(voxel)
-    while 2 * len(thin.points) > params.cloud_max_faces:  # ball pivoting makes about two faces a point
+    lower = points[ok].min(axis=0)  # Open3D's grid starts half a voxel below the cloud's minimum
+    while True:  # the voxel grows until ball pivoting (about two faces a point) fits the face budget
+        if not sample_fills(points[ok], lower, voxel, params.cloud_max_faces / 2):
+            thin = cloud.voxel_down_sample(voxel)
+            if 2 * len(thin.points) <= params.cloud_max_faces:
+                break
         voxel *= 1.25
-        thin = cloud.voxel_down_sample(voxel)
     if len(thin.points) < 50:
         return None
     thin.estimate_normals(o3d.geometry.KDTreeSearchParamHybrid(radius=3 * voxel, max_nn=30))
@@ -115,3 +118,18 @@ def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarra
     rgb = np.asarray(surface.vertex_colors)[faces].mean(axis=1)
     mesh, png = face_colour_atlas(np.asarray(surface.vertices), faces, rgb)
     return Backdrop(mesh, png, 0, int(ok.sum()))
+
+
+SAMPLE_STRIDE = 8  # every 8th point: a cheap lower bound on the voxels the whole cloud fills
+
+
+def sample_fills(points: np.ndarray, lower: np.ndarray, voxel: float, count: float) -> bool:
+    """True when every ``SAMPLE_STRIDE``-th point alone fills more than ``count`` voxels of Open3D's
+    down-sampling grid (origin ``lower - voxel / 2``), so the whole cloud does too: that voxel
+    need not be tried (a margin of 1 % covers rounding at cell borders)."""
+    cells = np.floor((points[::SAMPLE_STRIDE] - (lower - voxel * 0.5)) / voxel).astype(np.int64)
+    if len(cells) <= count:
+        return False
+    span = cells.max(axis=0) + 1
+    flat = (cells[:, 0] * span[1] + cells[:, 1]) * span[2] + cells[:, 2]
+    return len(np.unique(flat)) > 1.01 * count + 10
