@@ -251,6 +251,18 @@ class Row:
     why: str
     sim_s: float
     wall_s: float
+    kind: str = ""  # a miss: "declined" (stopped with a reason, nothing moved), "partly" (stopped after moving something), "missed" (ran, goal not met), "plan"
+
+
+def _miss_kind(rec, start_poses: dict, ok: bool) -> str:
+    """How a sentence missed: the robot declined with its reason before anything moved, stopped
+    part way, or ran to the end without reaching the goal."""
+    if ok:
+        return ""
+    moved = any(math.dist(p0, rec.objects_after.get(n, p0)) > 0.01 for n, p0 in start_poses.items())
+    if rec.error:
+        return "partly" if moved else "declined"
+    return "missed"
 
 
 # ----------------------------------------------------------------------------------------------
@@ -393,10 +405,10 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
         rec = _run_sentence(sim, sentence, planner, seed)
     except InputError as exc:
         ok = refuse and any(w in str(exc) for w in ("ambiguous", "no object", "does not refer", "candidates", "objects in the scene"))
-        return Row(scene, sentence, spec, ok, 0, [], "" if ok else f"refused: {exc}", 0.0, time.perf_counter() - t0)
+        return Row(scene, sentence, spec, ok, 0, [], "" if ok else f"refused: {exc}", 0.0, time.perf_counter() - t0, "" if ok else "plan")
     if refuse:
         return Row(scene, sentence, spec, False, len(rec.calls), [], "acted instead of asking which object", rec.sim_time,
-                   time.perf_counter() - t0)
+                   time.perf_counter() - t0, "plan")
     results = evaluate_all(goals, sim)
     acted = [c for c in rec.actions if c["primitive"] not in ("go_home", "open_gripper", "close_gripper", "move_ee_to")]
     wrong = sum(1 for a in acted if _acted_object(a["call"]) not in movers)
@@ -409,7 +421,7 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
     why = "; ".join(str(r) for r in results if not r.ok)
     if rec.error:
         why = (why + "; " if why else "") + f"stopped: {rec.error}"
-    return Row(scene, sentence, spec, ok, wrong, moved, why, rec.sim_time, time.perf_counter() - t0)
+    return Row(scene, sentence, spec, ok, wrong, moved, why, rec.sim_time, time.perf_counter() - t0, _miss_kind(rec, start_poses, ok))
 
 
 def _run_sentence(sim, sentence: str, planner: str, seed: int):
@@ -446,7 +458,7 @@ def bench_sim(args: argparse.Namespace) -> int:
         try:
             row = run_one(sims[scene], scene, sentence, spec, args.planner, args.seed)
         except (RealsimError, KeyError) as exc:
-            row = Row(scene, sentence, spec, False, 0, [], f"error: {exc}", 0.0, 0.0)
+            row = Row(scene, sentence, spec, False, 0, [], f"error: {exc}", 0.0, 0.0, "plan")
         rows.append(row)
         flag = "ok  " if row.ok else "FAIL"
         print(f"[{i}/{len(suite)}] {flag} {scene}: {sentence!r} -> {spec}"
@@ -461,6 +473,15 @@ def bench_sim(args: argparse.Namespace) -> int:
     for s in scenes:
         rs = [r for r in rows if r.scene == s]
         print(f"{s:12} {len(rs):>9} {sum(r.ok for r in rs):>9} {sum(r.wrong for r in rs):>9} {sum(len(r.collateral) for r in rs):>10}")
+    kinds = {"declined": "declined with a reason before anything moved", "partly": "stopped with a reason after moving something",
+             "missed": "ran to the end, goal not met", "plan": "planned wrong or refused"}
+    print("\nmisses by kind:")
+    for k, text in kinds.items():
+        rs = [r for r in rows if r.kind == k]
+        print(f"  {len(rs):3d} {text}")
+        for r in rs:
+            stop = r.why.split("stopped: ", 1)[-1] if "stopped: " in r.why else r.why
+            print(f"      {r.scene}: {r.sentence!r}: {stop[:160]}")
     print(f"\n{args.planner} planner in the simulation: {n_ok}/{n} sentences reached their goal ({100.0 * n_ok / max(n, 1):.1f}%) "
           f"over {len(scenes)} scenes; wrong-object actions {wrong}; collateral moves > {COLLATERAL * 100:.0f} cm {collateral}; "
           f"{time.perf_counter() - t_start:.0f} s wall in total")

@@ -166,14 +166,19 @@ def between(obj: np.ndarray, a: np.ndarray, b: np.ndarray, touching: set[str] | 
                         f"(<= {allowed:.3f}){_contact_note(touching)}")
 
 
+def moved_tolerance(distance: float) -> tuple[float, float]:
+    """How far a move of ``distance`` m may end off it: (along the direction, sideways), m."""
+    return max(0.02, 0.4 * distance), max(0.03, 0.5 * distance)
+
+
 def moved(start: Sequence[float], end: Sequence[float], direction: Sequence[float], distance: float) -> Relation:
     """An object moved about ``distance`` m along the world xy unit vector ``direction``: within
     max(2 cm, 40 %) along it and at most max(3 cm, half the distance) sideways."""
     ux, uy = float(direction[0]), float(direction[1])
     dx, dy = float(end[0]) - float(start[0]), float(end[1]) - float(start[1])
     along, across = dx * ux + dy * uy, abs(-dx * uy + dy * ux)
-    tol = max(0.02, 0.4 * distance)
-    ok = abs(along - distance) <= tol and across <= max(0.03, 0.5 * distance)
+    tol, sideways = moved_tolerance(distance)
+    ok = abs(along - distance) <= tol and across <= sideways
     return Relation(ok, f"moved {along:.3f} m along (target {distance:.3f} +- {tol:.3f}), {across:.3f} m sideways")
 
 

@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.spatial import cKDTree
 
 from realsim.planner import relations
 from realsim.robot.grasps import frame_from, rotate_about
 from realsim.robot.motion import Motion, Solve
+from realsim.robot.pushing import StrokeParams, first_contact, strokes
 from realsim.robot.queries import box_centre, box_centre_3d
 from realsim.robot.result import ActionResult, PlanFailure
 
@@ -22,6 +22,8 @@ __all__ = ["PushSkill"]
 
 class PushSkill(Motion):
     """push."""
+
+    stroke = StrokeParams()
 
     def push(self, obj: str, direction: ArrayLike, distance: float, max_sim_time: float | None = None) -> ActionResult:
         """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers."""
@@ -37,17 +39,6 @@ class PushSkill(Motion):
             z = bottom + min(pp.contact_height, height / 2) + pp.contact_lift
             if -pp.palm_clearance < bottom + height - (z + pp.palm_height) < pp.palm_catch:  # the palm would catch the top edge and press it down
                 z = max(z, min(bottom + height + pp.palm_clearance - pp.palm_height, bottom + pp.max_contact_fraction * height))
-            centre = np.array([*pts[:, :2].mean(axis=0), z])
-            back = float(((pts - centre) @ d).min())
-            contact = centre + d * (back - pp.standoff)
-            closing = np.array([-d[1], d[0], 0.0])
-            # the closed hand is symmetric: of the two yaws, try the one nearer the current first
-            _, now_rot = self.tcp_pose()
-            # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
-            upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
-            upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
-            leaning = [[rotate_about(np.array([d[1], -d[0], 0.0]), t) @ r for r in upright] for t in (pp.tilt, 0.0, *pp.steep_tilts)]
-            rots = [r for group in leaning for r in group]  # upright when the tilted hand cannot reach, steeper past a tall face
             # the object's footprint swept along the push must not run into another object
             foot = pts[:: max(1, len(pts) // pp.footprint_samples), :2]
             # what rests in or on the object (touching it, centred over its footprint) rides along: not in the way
@@ -55,29 +46,27 @@ class PushSkill(Motion):
             riding = {n for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}
                       if np.all((box_centre(self.object_points(n)) >= lo) & (box_centre(self.object_points(n)) <= hi))}
             others = self._others(obj, skip=riding, above=bottom + pp.ride_margin)
-            if len(others):
-                tree = cKDTree(others)
-                for k in np.linspace(0.0, distance, max(2, int(distance / pp.sweep_step) + 1)):
-                    gap, idx = tree.query(foot + k * d[:2])
-                    if gap.min() < pp.touch_gap and k < distance - pp.nudge:  # a last-centimetre touch nudges, no more
-                        hit = self._owner_of_xy(obj, others[idx[int(np.argmin(gap))]], bottom)
-                        return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove {hit} "
-                                            f"(after {k * 100:.0f} cm)", values={"moved": 0.0})
+            # the asked stroke, else a shorter or askew one that still ends within the asked move's tolerance
+            options = [(u, length) for u, length in strokes(d[:2], distance, self.stroke)
+                       if first_contact(foot, others, u, length, pp.touch_gap, pp.sweep_step, pp.nudge) is None]
+            # strokes that touch nothing before those that nudge a neighbour at their end
+            options.sort(key=lambda o: first_contact(foot, others, o[0], o[1], pp.touch_gap, pp.sweep_step, 0.0) is not None)
+            if not options:
+                hit = first_contact(foot, others, d[:2], distance, pp.touch_gap, pp.sweep_step, pp.nudge)
+                assert hit is not None
+                return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove "
+                                    f"{self._owner_of_xy(obj, others[hit[1]], bottom)} (after {hit[0] * 100:.0f} cm), "
+                                    "and no shorter or askew push within the asked move's tolerance clears it", values={"moved": 0.0})
             self._gripper(0.0)
-            end = contact + d * (distance + pp.standoff)
             pushed = {obj, *riding}
             last: PlanFailure | None = None
-            for rot in rots:
-                try:  # the stroke is planned and checked first: only the hand may touch the pushed object
-                    q_c = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
-                    if not q_c.converged:
-                        raise PlanFailure(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
-                    stroke = self._line(contact, end, rot, rot, q_c.q, solve=self._stroke_solve(pushed, contact, d))
-                    self._check_stroke(pushed, stroke, contact, d)
-                    self._transit(contact, rot, skip=None, q_goal=q_c.q)
+            for u, length in options:
+                ds = np.array([*u, 0.0])
+                try:
+                    rot, stroke = self._plan_stroke(pts, z, ds, length, pushed)
                     break
                 except PlanFailure as exc:
-                    last = exc
+                    last = last or exc  # the first stroke's reason: the one asked, or the nearest to it
             else:
                 raise last or PlanFailure("no push pose")
             self._follow(stroke)  # the checked stroke itself, forearm clear of the pushed object
@@ -85,7 +74,7 @@ class PushSkill(Motion):
             up = np.array([0, 0, pp.retreat_up])
             q_now = self.data.ctrl[self.act].copy()
             cmd_pos, _ = self.ik.fk(q_now)
-            for retreat in (pos - d * pp.retreat_back + up, pos + up, pos - d * pp.retreat_back):
+            for retreat in (pos - ds * pp.retreat_back + up, pos + up, pos - ds * pp.retreat_back):
                 try:  # back off the object; the push itself is judged by how far the object moved
                     self._follow(self._line(cmd_pos, retreat, rot, rot, q_now, solve=lambda p, r, q: self._ik_clear(p, r, q, (), pushed)))
                     break
@@ -97,6 +86,34 @@ class PushSkill(Motion):
             verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
+
+    def _plan_stroke(self, pts: np.ndarray, z: float, d: np.ndarray, distance: float, pushed: set[str]) -> tuple[np.ndarray, list[np.ndarray]]:
+        """(hand rotation, checked joint path) of a stroke pushing ``pts`` by ``distance`` along
+        ``d`` with the fingers at height ``z``, the arm moved to its start; raises PlanFailure."""
+        pp = self.params.push
+        centre = np.array([*pts[:, :2].mean(axis=0), z])
+        contact = centre + d * (float(((pts - centre) @ d).min()) - pp.standoff)
+        closing = np.array([-d[1], d[0], 0.0])
+        # the closed hand is symmetric: of the two yaws, try the one nearer the current first
+        _, now_rot = self.tcp_pose()
+        # tilted so the fingertips lead and the palm trails: tall objects are pushed low, not tipped
+        upright = [frame_from(np.array([0, 0, -1.0]), c) for c in (closing, -closing)]
+        upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
+        leaning = [[rotate_about(np.array([d[1], -d[0], 0.0]), t) @ r for r in upright] for t in (pp.tilt, 0.0, *pp.steep_tilts)]
+        end = contact + d * (distance + pp.standoff)
+        last: PlanFailure | None = None
+        for rot in [r for group in leaning for r in group]:  # upright when the tilted hand cannot reach, steeper past a tall face
+            try:  # the stroke is planned and checked first: only the hand may touch the pushed object
+                q_c = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
+                if not q_c.converged:
+                    raise PlanFailure(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
+                stroke = self._line(contact, end, rot, rot, q_c.q, solve=self._stroke_solve(pushed, contact, d))
+                self._check_stroke(pushed, stroke, contact, d)
+                self._transit(contact, rot, skip=None, q_goal=q_c.q)
+                return rot, stroke
+            except PlanFailure as exc:
+                last = exc
+        raise last or PlanFailure("no push pose")
 
     def _pushed_by(self, pushed: set[str], tcp: np.ndarray, contact: np.ndarray, d: np.ndarray) -> dict[str, np.ndarray]:
         """Where the ``pushed`` objects are (xyz offsets) once the tcp, from ``contact``, is at ``tcp``."""

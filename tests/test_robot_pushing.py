@@ -1,0 +1,46 @@
+"""Push strokes: the asked one first, shorter or askew ones within the move's tolerance, and
+which neighbours a swept footprint shoves (generated footprints)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.planner.relations import moved
+from realsim.robot.pushing import first_contact, strokes
+
+
+def _square(centre: tuple[float, float], half: float, n: int = 30) -> np.ndarray:
+    g = np.linspace(-half, half, n)
+    return np.array([(x, y) for x in g for y in g]) + np.asarray(centre)
+
+
+def test_strokes_start_with_the_asked_one_and_all_end_within_the_tolerance() -> None:
+    d = np.array([0.0, 1.0])
+    options = strokes(d, 0.05)
+    assert np.allclose(options[0][0], d) and options[0][1] == 0.05
+    assert len(options) > 5
+    for u, length in options:  # a stroke followed exactly ends where the goal check accepts it
+        assert moved((0.0, 0.0), tuple(u * length), d, 0.05).ok
+        assert abs(float(np.linalg.norm(u)) - 1.0) < 1e-9
+
+
+def test_a_neighbour_touched_at_the_start_is_shoved_only_when_the_push_runs_into_it() -> None:
+    box = _square((0.0, 0.0), 0.05)
+    neighbour = _square((0.1005, 0.0), 0.05)  # touching the box's +x face
+    # into it: shoved; away from it or along the face they share: no new contact
+    for d, shoved in ((np.array([1.0, 0.0]), True), (np.array([-1.0, 0.0]), False), (np.array([0.0, 1.0]), False)):
+        hit = first_contact(box, neighbour, d, 0.05, 0.002, 0.01, 0.015)
+        assert (hit is not None) == shoved, d
+    hit = first_contact(box, _square((0.13, 0.0), 0.05), np.array([1.0, 0.0]), 0.08, 0.002, 0.01, 0.015)
+    assert hit is not None and 0.02 <= hit[0] <= 0.04  # a 2.5 cm gap closes after 2-3 cm
+
+
+def test_an_askew_stroke_clears_a_neighbour_the_straight_one_runs_into() -> None:
+    box = _square((0.0, 0.0), 0.03)
+    neighbour = _square((-0.05, 0.1), 0.03)  # 4 cm ahead of a push along +y, overlapping the box's path by 1 cm on its -x side
+    d = np.array([0.0, 1.0])
+    assert first_contact(box, neighbour, d, 0.05, 0.002, 0.01, 0.0) is not None
+    clear = [(u, s) for u, s in strokes(d, 0.05) if first_contact(box, neighbour, u, s, 0.002, 0.01, 0.0) is None]
+    full = [u for u, s in clear if abs(float(u[1]) * s - 0.05) < 1e-6]  # the whole 5 cm along: only askew away from it
+    assert full and all(float(u[0]) > 0.0 for u in full)
+    assert any(abs(float(u[0])) < 1e-9 and float(u[1]) * s < 0.04 for u, s in clear)  # or straight, stopping short of it
