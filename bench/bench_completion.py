@@ -9,7 +9,7 @@ completed solid hides something the camera saw farther away (a ray through the p
 the solid more than 1 cm before the captured depth: free space filled), and its collision pieces. ``--all`` covers every
 shared YCB object once per seed (three scenes of five, layouts table, counter, table). Run:
 
-    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline]
+    .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline] [--keep out/completion]
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from scipy.spatial.transform import Rotation
 
 from realsim.perception.pcd_io import read_pcd
 from realsim.pipeline import convert
+from realsim.robot.grasps import narrowest_width, rim_candidates, side_candidates, top_down_candidates
 from realsim.synth import SceneSpec, make_scene, write_organized_view, ycb_root
 
 GRID = 0.002
@@ -69,6 +70,16 @@ def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray
 
 def obb_extents(mesh: trimesh.Trimesh) -> np.ndarray:
     return np.sort(np.asarray(mesh.bounding_box_oriented.primitive.extents, float))[::-1]
+
+
+HAND_FITS = 0.076  # m: narrowest true width the Panda hand closes on (the issue's bar)
+
+
+def declared_graspable(hulls: list[trimesh.Trimesh], surface_z: float, camera_xy: np.ndarray) -> bool:
+    """Whether the robot's grasp planner finds a candidate on the completed shape (surface samples of
+    its pieces): from above, from the side (the camera's side stands in for the robot's), or at a rim."""
+    pts = np.vstack([trimesh.sample.sample_surface(h, 400, seed=0)[0] for h in hulls])
+    return bool(top_down_candidates(pts, surface_z) or side_candidates(pts, surface_z, camera_xy) or rim_candidates(pts, surface_z))
 
 
 CONTAINERS = {"024_bowl", "025_mug", "019_pitcher_base"}  # thin-walled: volume IoU of walls, reported apart
@@ -121,7 +132,9 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         truth.apply_transform(synth_to_realsim)  # the conversion levels and centres the scene its own way
         rows.append({**row, "iou": volume_iou(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
                      "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
-                     "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"])})
+                     "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"]),
+                     "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
+                     "graspable": declared_graspable(hulls, float(solid.bounds[0][2]), np.linalg.inv(world_to_optical)[:2, 3])})
     return rows
 
 
@@ -131,13 +144,15 @@ def main() -> None:
     parser.add_argument("--objects", type=int, default=5)
     parser.add_argument("--all", action="store_true", help="every shared YCB object once per seed (3 scenes of 5)")
     parser.add_argument("--baseline", action="store_true", help="without free-space carving, hollow containers and mirroring")
+    parser.add_argument("--keep", type=Path, default=None, help="write the captures and outputs here (a new folder)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
+        root = args.keep or Path(tmp)
         runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
-        rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, Path(tmp), args.baseline, layout, objects)]
-    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s}  name given")
+        rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, root, args.baseline, layout, objects)]
+    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s}  name given")
     for r in rows:
-        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d}  "
+        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s}  "
               f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''}")
     ious = [r["iou"] for r in rows]
     errs = [r["size_err_mm"] for r in rows if np.isfinite(r["size_err_mm"])]
@@ -148,6 +163,9 @@ def main() -> None:
           f"pixels of seen free space covered: {sum(r.get('free_px', 0) for r in rows)} "
           f"({sum(r.get('free_px', 0) > 0 for r in rows)} objects); collision pieces per object: median {np.median([r.get('pieces', 0) for r in rows]):.0f}, "
           f"total {sum(r.get('pieces', 0) for r in rows)}")
+    fits = [r for r in rows if r.get("fits")]
+    print(f"objects the hand fits in truth (narrowest width <= {1000 * HAND_FITS:.0f} mm): {len(fits)}, "
+          f"declared graspable {sum(bool(r.get('graspable')) for r in fits)}")
 
 
 if __name__ == "__main__":

@@ -26,7 +26,8 @@ class ContainerParams:
     min_depth: float = 0.3  # cavity depth (rim minus floor) as a share of the height that makes it open
     bands: int = 12  # radial bins of the cavity's profile
     sectors: int = 12  # wall pieces around
-    segments: int = 3  # wall pieces up (equal lengths along the profile)
+    segments: int = 3  # wall pieces up: at least this many (when the profile has the points)
+    max_bulge: float = 0.0015  # m: a wall piece's profile strays at most this far from straight (more pieces up where it bends)
     min_wall: float = 0.003  # m
     max_wall_share: float = 0.25  # of the rim radius
     min_floor: float = 0.002  # thinnest bottom (m)
@@ -43,11 +44,18 @@ class OpenContainer:
     floor_z: float
 
 
-def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, min_depth: float) -> float | None:
-    """The height of the cavity floor (the lowest tenth of the points inside the rim) when the
-    observed top is hollow (most of them lie well below the rim), else None."""
-    r = np.linalg.norm(points[:, :2] - centre, axis=1)
+def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, min_depth: float,
+                 camera_xy: np.ndarray | None = None) -> float | None:
+    """The height of the cavity floor when the observed top is hollow (most of the points inside the
+    rim lie well below it), else None: the lowest tenth of the points near the axis, or, when the
+    camera saw too few there (a deep mug seen aslant), of the inside of the far wall (points within
+    the rim on the side away from ``camera_xy``: from outside, the camera cannot see that side below
+    the rim), a floor at least that deep."""
+    rel = points[:, :2] - centre
+    r = np.linalg.norm(rel, axis=1)
     inner, rim = points[r < 0.7 * radius], points[(r > 0.8 * radius) & (r < 1.15 * radius)]
+    if len(inner) < 20 and camera_xy is not None and np.linalg.norm(centre - camera_xy) > 1e-6:
+        inner = points[(r < radius) & (rel @ (centre - camera_xy) > 0)]
     if len(inner) < 20 or len(rim) < 20:
         return None
     rim_z = float(np.percentile(rim[:, 2], 90))
@@ -57,13 +65,25 @@ def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: 
 
 
 def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float, max_rms: float = 0.08,
-              min_arc_deg: float = 240.0) -> tuple[np.ndarray, float] | None:
-    """(centre, radius) of a circular rim seen from above (the top band of the points), or None."""
+              min_arc_deg: float = 240.0, sectors: int = 48) -> tuple[np.ndarray, float] | None:
+    """(centre, radius) of a circular rim seen from above (the top band of the points), or None.
+
+    The circle is fitted to the rim's crest (the highest points of each of ``sectors`` angular
+    sectors), the middle of the wall on every side: the whole band would pull the centre toward the
+    camera, which sees the outside of the near wall and the inside of the far one."""
     rim = points[points[:, 2] >= top_z - 0.15 * (top_z - base_z)]
     if len(rim) < 30:
         return None
     centre, radius, rms = fit_circle(rim[:, :2])
-    if radius > max_radius or rms > max_rms * radius or arc_coverage_deg(rim[:, :2], centre) < min_arc_deg:
+    if radius > max_radius or arc_coverage_deg(rim[:, :2], centre) < min_arc_deg:
+        return None
+    sector = ((np.arctan2(rim[:, 1] - centre[1], rim[:, 0] - centre[0]) + np.pi) / (2 * np.pi) * sectors).astype(np.int64) % sectors
+    order = np.lexsort((-rim[:, 2], sector))
+    rank = np.arange(len(order)) - np.searchsorted(sector[order], sector[order])
+    crest = rim[order[rank < 3]]  # the three highest points of each sector
+    if len(crest) >= 12:
+        centre, radius, rms = fit_circle(crest[:, :2])
+    if radius > max_radius or rms > max_rms * radius:
         return None
     return centre, radius
 
@@ -72,7 +92,8 @@ def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor:
                    camera_xy: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
     """The cavity's surface as heights over radii (r, z), r from the axis to ``radius``: per radial
     bin the median height of the points seen inside the rim (on the side away from the camera, where
-    the camera sees the inner wall), non-decreasing outwards, from ``floor`` up to the rim at ``top_z``."""
+    the camera sees the inner wall), non-decreasing outwards, from ``floor`` up to the rim at ``top_z``;
+    bins nearer the axis than any evidence are the floor (a deep cavity seen only on its wall)."""
     rel = points[:, :2] - centre
     r = np.linalg.norm(rel, axis=1)
     inside = r < radius
@@ -88,7 +109,7 @@ def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor:
         if near.sum() >= 5:
             heights[i] = float(np.median(points[near, 2]))
     good = np.isfinite(heights)
-    heights = np.interp(mids, mids[good], heights[good]) if good.any() else np.full(bins, floor)
+    heights = np.interp(mids, mids[good], heights[good], left=floor) if good.any() else np.full(bins, floor)
     heights = np.clip(np.maximum.accumulate(np.clip(heights, floor, top_z)), floor, top_z)
     return np.concatenate([[0.0], mids, [radius]]), np.concatenate([[heights[0]], heights, [top_z]])
 
@@ -98,6 +119,53 @@ def _offset(r: np.ndarray, z: np.ndarray, wall: float) -> tuple[np.ndarray, np.n
     dr, dz = np.gradient(r), np.gradient(z)
     length = np.maximum(np.hypot(dr, dz), 1e-12)
     return r + wall * dz / length, z - wall * dr / length
+
+
+def _seen_outside(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: float, camera_xy: np.ndarray | None,
+                  bands: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """The outside of the wall where the camera saw it: (heights, radii), per height band the median
+    distance from the axis of the points on the side facing ``camera_xy`` (the near wall's outside,
+    down to the support); None without a camera or such points."""
+    if camera_xy is None or np.linalg.norm(centre - camera_xy) < 1e-6:
+        return None
+    rel = points[:, :2] - centre
+    r = np.linalg.norm(rel, axis=1)
+    near = rel @ ((camera_xy - centre) / np.linalg.norm(camera_xy - centre)) > 0.5 * r
+    edges = np.linspace(base_z, top_z, bands + 1)
+    z, radii = [], []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        band = near & (points[:, 2] >= lo) & (points[:, 2] < hi)
+        if band.sum() >= 5:
+            z.append((lo + hi) / 2)
+            radii.append(float(np.median(r[band])))
+    return (np.array(z), np.array(radii)) if z else None
+
+
+def _bulge(line: np.ndarray) -> float:
+    """Largest distance of the (r, z) polyline's points from the chord joining its ends."""
+    chord = line[-1] - line[0]
+    length = float(np.hypot(*chord))
+    if length < 1e-12:
+        return float(np.max(np.linalg.norm(line - line[0], axis=1)))
+    rel = line - line[0]
+    return float(np.max(np.abs(rel[:, 0] * chord[1] - rel[:, 1] * chord[0])) / length)
+
+
+def _straight_runs(inner: np.ndarray, outer: np.ndarray, max_bulge: float, least: int) -> list[tuple[int, int]]:
+    """Index ranges (i, j) cutting a wall's (r, z) profile (``inner`` and ``outer`` polylines) into
+    runs each nearly straight (neither polyline strays from its chord by more than ``max_bulge``: the
+    convex hull of a run then fills little beyond the wall), at least ``least`` of them when the
+    profile has the points, greedy from the foot."""
+    n = len(inner)
+    step = max(1, (n - 1) // max(least, 1))
+    runs, i = [], 0
+    while i < n - 1:
+        j = min(i + step, n - 1)
+        while j > i + 1 and max(_bulge(inner[i:j + 1]), _bulge(outer[i:j + 1])) > max_bulge:
+            j -= 1
+        runs.append((i, j))
+        i = j
+    return runs
 
 
 def _ring(radius: float, z: float, angles: np.ndarray, centre: np.ndarray) -> np.ndarray:
@@ -116,22 +184,28 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     if not params.enabled:
         return None
     height = top_z - base_z
-    floor = cavity_floor(points, centre, radius, height, params.min_depth)
+    floor = cavity_floor(points, centre, radius, height, params.min_depth, camera_xy)
     if floor is None:
         return None
     cavity = points if seen_inside is None else np.vstack([points, seen_inside])
-    inner = cavity[np.linalg.norm(cavity[:, :2] - centre, axis=1) < 0.7 * radius]
-    floor = min(floor, float(np.percentile(inner[:, 2], 10))) if len(inner) >= 20 else floor
-    floor = float(np.clip(floor, base_z + params.min_floor, top_z - 0.2 * height))
     rim = points[points[:, 2] >= top_z - 0.1 * height]
     rr = np.linalg.norm(rim[:, :2] - centre, axis=1) if len(rim) else np.array([radius])
     wall = float(np.clip(np.percentile(rr, 95) - np.percentile(rr, 5), params.min_wall, params.max_wall_share * radius))
+    inner = cavity[np.linalg.norm(cavity[:, :2] - centre, axis=1) < 0.7 * radius]
+    # the floor where it was seen; unseen (a deep cup seen aslant), the bottom as thick as the wall
+    floor = min(floor, float(np.percentile(inner[:, 2], 10))) if len(inner) >= 20 else base_z + wall
+    floor = float(np.clip(floor, base_z + params.min_floor, top_z - 0.2 * height))
     r_in, z_in = _inner_profile(cavity, centre, radius - wall / 2, floor, top_z, params.bands, camera_xy)
+    seen = _seen_outside(points, centre, base_z, top_z, camera_xy, params.bands)
+
+    def outside(r: np.ndarray, z: np.ndarray) -> np.ndarray:  # no thinner than the wall the camera saw outside
+        return r if seen is None else np.asarray(np.maximum(r, np.interp(z, *seen)))
+
     r_out, z_out = _offset(r_in, z_in, wall)
     r_out[-1], z_out[-1] = r_in[-1] + wall, top_z  # the rim: flat, one wall wide
     wall_part = (z_out > base_z) & (r_out > r_in[1])
-    r_out, z_out = r_out[wall_part], z_out[wall_part]
-    foot = float(r_out[0]) if len(r_out) else radius
+    r_out, z_out = outside(r_out[wall_part], z_out[wall_part]), z_out[wall_part]
+    foot = float(outside(np.array([r_out[0] if len(r_out) else radius]), np.array([base_z]))[0])
     # the visual: revolve the closed profile (axis -> foot -> outer wall -> rim -> inner wall -> floor -> axis)
     line = np.vstack([[0.0, base_z], [foot, base_z], np.column_stack([r_out, z_out]), np.column_stack([r_in[::-1], z_in[::-1]]), [0.0, z_in[0]]])
     visual = trimesh.creation.revolve(line, sections=32)
@@ -143,17 +217,17 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     fine = np.linspace(0.0, 2 * np.pi, 4 * params.sectors + 1)[:-1]
     flat = z_in <= z_in[0] + 0.1 * (top_z - z_in[0])
     floor_r = float(r_in[flat].max()) if flat.any() else foot
-    pieces = [trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre), _ring(max(floor_r, 1e-3), float(z_in[0]), fine, centre)]))]
     wall_r, wall_z = r_in[r_in >= floor_r], z_in[r_in >= floor_r]  # from the floor's edge up to the rim
     out_r, out_z = _offset(wall_r, wall_z, wall)
     out_r[-1], out_z[-1] = wall_r[-1] + wall, top_z
     out_z = np.maximum(out_z, base_z)
-    length = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(wall_r), np.diff(wall_z)))])
-    cuts = np.linspace(0.0, length[-1], params.segments + 1)  # equal lengths along the profile: short where it bends
-    for s0, s1 in zip(cuts[:-1], cuts[1:]):
-        at = np.concatenate([[s0], length[(length > s0) & (length < s1)], [s1]])
-        ring_r = np.concatenate([np.interp(at, length, wall_r), np.interp(at, length, out_r)])
-        ring_z = np.concatenate([np.interp(at, length, wall_z), np.interp(at, length, out_z)])
+    out_r = outside(out_r, out_z)
+    rim_at_floor = float(np.interp(z_in[0], *zip(*sorted(zip(out_z, out_r)))))  # the outside at the floor's height
+    bottom = [_ring(foot, base_z, fine, centre), _ring(max(floor_r, 1e-3), float(z_in[0]), fine, centre),
+              _ring(max(rim_at_floor, 1e-3), float(z_in[0]), fine, centre)]
+    pieces = [trimesh.convex.convex_hull(np.vstack(bottom))]
+    for i, j in _straight_runs(np.column_stack([wall_r, wall_z]), np.column_stack([out_r, out_z]), params.max_bulge, params.segments):
+        ring_r, ring_z = np.concatenate([wall_r[i:j + 1], out_r[i:j + 1]]), np.concatenate([wall_z[i:j + 1], out_z[i:j + 1]])
         for a0, a1 in zip(angles[:-1], angles[1:]):
             arc = np.linspace(a0, a1, 3)
             pieces.append(trimesh.convex.convex_hull(np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(ring_r, ring_z)])))

@@ -15,6 +15,7 @@ from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
+from realsim.completion.parts import merge_container_parts
 from realsim.completion.revolution import complete_revolved
 from realsim.completion.stacking import bottom_up, flatten_top, seat_on, set_shape, sloping_top, top_under
 from realsim.completion.view import DepthView
@@ -28,6 +29,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     labels, points = scene.labels, scene.points
     if points is None:
         return scene
+    merge_container_parts(scene, params.cylinder_max_radius, params.containers)
     by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
     observed: dict[int, np.ndarray] = {}

@@ -1,0 +1,80 @@
+"""Parts of one open round container, segmented as two objects, are completed as one.
+
+Segmentation can split a bowl or a mug where its surface turns away from the camera: the two
+halves of its rim, or its outer wall and its inside seen over the rim. The points of such parts lie
+on one rim circle: the top band of the two together is one ring (a circle, not a filled disc: an open
+top), and each part has points on that circle. Two neighbours that are not one container fail that
+test: two cups side by side have two rims, a box beside a bowl no circle at all, two halves of a
+closed can a filled disc on top, and a fruit lying in a bowl has no points on its rim.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.completion.containers import ContainerParams, round_rim
+from realsim.scene import Scene, SceneObject
+
+NEAR = 0.02  # m: parts whose footprints' bounds lie farther apart are not tested
+RIM_BAND = 0.15  # the rim: the top this share of the height, within this share of the radius of the circle
+MIN_RIM_POINTS = 15  # each part holds at least this many points on the rim circle
+
+
+def _base(scene: Scene, obj: SceneObject, pts: np.ndarray) -> float:
+    return scene.plane(obj.support_id).height if obj.support_id is not None else float(np.min(pts[:, 2]))
+
+
+def one_container(a: np.ndarray, b: np.ndarray, base_z: float, max_radius: float) -> bool:
+    """True when the points ``a`` and ``b`` of two objects are parts of one open round container:
+    together their top band is one circular ring (see :func:`round_rim`), and each has points on it."""
+    union = np.vstack([a, b])
+    top_z = float(np.percentile(union[:, 2], 98))
+    height = top_z - base_z
+    if height <= 0:
+        return False
+    rim = round_rim(union, base_z, top_z, max_radius)
+    if rim is None:
+        return False
+    centre, radius = rim
+    for part in (a, b):
+        on_rim = (part[:, 2] >= top_z - RIM_BAND * height) & (np.abs(np.linalg.norm(part[:, :2] - centre, axis=1) - radius) <= RIM_BAND * radius)
+        if np.count_nonzero(on_rim) < MIN_RIM_POINTS:
+            return False
+    return True
+
+
+def merge_container_parts(scene: Scene, max_radius: float, params: ContainerParams = ContainerParams()) -> list[tuple[int, int]]:
+    """Give the pixels of every object that is a part of the same open round container as another
+    (see :func:`one_container`) that object's id and drop it from ``scene.objects``; the (kept,
+    merged) id pairs. Objects standing on something else, or on different supports, are never merged."""
+    if scene.labels is None or scene.points is None or not params.enabled:
+        return []
+    labels, points = scene.labels, scene.points
+    merged: list[tuple[int, int]] = []
+    changed = True
+    while changed:
+        changed = False
+        objects = [o for o in scene.objects if o.resting_on is None]
+        pts = {o.id: points[labels == o.id] for o in objects}
+        for i, a in enumerate(objects):
+            for b in objects[i + 1:]:
+                pa, pb = pts[a.id], pts[b.id]
+                if a.support_id != b.support_id or len(pa) == 0 or len(pb) == 0:
+                    continue
+                gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
+                if np.any(gap > NEAR) or not one_container(pa, pb, _base(scene, a, pa), max_radius):
+                    continue
+                keep, gone = (a, b) if len(pa) >= len(pb) else (b, a)
+                labels[labels == gone.id] = keep.id
+                keep.point_count += gone.point_count
+                scene.objects = [o for o in scene.objects if o.id != gone.id]
+                for o in scene.objects:
+                    if o.resting_on == gone.id:
+                        o.resting_on = keep.id
+                keep.notes.append(f"joined with object {gone.id}: parts of one open round container (their top is one ring)")
+                merged.append((keep.id, gone.id))
+                changed = True
+                break
+            if changed:
+                break
+    return merged

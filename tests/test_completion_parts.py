@@ -1,0 +1,53 @@
+"""Parts of one open round container are joined; neighbours that are not one container are not
+(generated surfaces: a bowl's wall and floor, cups, a ball)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.completion.containers import round_rim
+from realsim.completion.parts import one_container
+
+
+def _bowl(centre: tuple[float, float], radius: float = 0.07, height: float = 0.055, seed: int = 0) -> np.ndarray:
+    """Points on a bowl's wall (r growing with height, inside and outside a 4 mm wall), floor and
+    rounded lip; every other one of the first 4000 points is on the outside of the wall."""
+    rng = np.random.default_rng(seed)
+    t = rng.uniform(0, 2 * np.pi, 4000)
+    z = rng.uniform(0.005, height, 4000)
+    r = 0.045 + (radius - 0.045) * np.sqrt(z / height) + np.tile([0.002, -0.002], 2000)
+    wall = np.column_stack([centre[0] + r * np.cos(t), centre[1] + r * np.sin(t), z])
+    fr, ft = 0.045 * np.sqrt(rng.random(800)), rng.uniform(0, 2 * np.pi, 800)
+    floor = np.column_stack([centre[0] + fr * np.cos(ft), centre[1] + fr * np.sin(ft), np.full(800, 0.006)])
+    lr, lt = rng.uniform(-0.002, 0.002, 600), rng.uniform(0, 2 * np.pi, 600)  # the lip: rounded, highest mid-wall
+    lip = np.column_stack([centre[0] + (radius + lr) * np.cos(lt), centre[1] + (radius + lr) * np.sin(lt), height + 0.001 * (1 - (lr / 0.002) ** 2)])
+    return np.vstack([wall, floor, lip]) + rng.normal(0, 0.0003, (5400, 3))
+
+
+def test_two_halves_of_a_bowl_are_one_container_and_their_rim_is_its_rim() -> None:
+    bowl = _bowl((0.3, 0.1))
+    left, right = bowl[bowl[:, 0] < 0.3], bowl[bowl[:, 0] >= 0.3]
+    assert round_rim(left, 0.0, 0.055, 0.2) is None  # half a rim is no circle to complete alone
+    assert one_container(left, right, 0.0, 0.2)
+    centre, radius = round_rim(bowl, 0.0, 0.055, 0.2) or (np.zeros(2), 0.0)
+    assert np.linalg.norm(centre - [0.3, 0.1]) < 0.002 and abs(radius - 0.07) < 0.003
+
+
+def test_a_rim_fitted_to_its_crest_is_not_pulled_toward_the_camera() -> None:
+    bowl = _bowl((0.0, 0.0), seed=1)
+    outside = np.zeros(len(bowl), bool)
+    outside[:4000:2] = True
+    inside = ~outside
+    inside[4800:] = True  # the lip is seen all round
+    seen = bowl[((bowl[:, 0] < 0) & outside) | ((bowl[:, 0] >= 0) & inside) | (np.arange(len(bowl)) >= 4800)]  # a camera at -x
+    centre, _ = round_rim(seen, 0.0, 0.055, 0.2) or (np.full(2, np.inf), 0.0)
+    assert np.linalg.norm(centre) < 0.0004  # the whole top band: 0.9 mm toward the camera
+
+
+def test_neighbours_that_are_not_one_container_stay_apart() -> None:
+    a, b = _bowl((0.0, 0.0), seed=2), _bowl((0.155, 0.0), seed=3)
+    assert not one_container(a, b, 0.0, 0.2)  # two bowls side by side: two rims
+    rng = np.random.default_rng(4)
+    d = rng.normal(size=(600, 3))
+    ball = 0.02 * d / np.linalg.norm(d, axis=1, keepdims=True) + [0.0, 0.0, 0.03]
+    assert not one_container(a, ball, 0.0, 0.2)  # a ball lying in the bowl has no point on its rim
