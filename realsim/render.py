@@ -59,17 +59,18 @@ def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width
 PREVIEW_FILE = "preview.png"
 
 
-def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:
+def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720,
+                 model: mujoco.MjModel | None = None) -> Path:
     """Render an output folder (or its scene.xml) at keyframe ``initial`` to ``out_png``.
 
     ``camera`` names a camera of the model (``capture`` is the capture's viewpoint when the
     input was a camera view); None is the overview camera. Unknown cameras are an InputError.
+    ``model`` is the folder's scene.xml already loaded (the writer's compile check), or None.
     """
     from realsim.errors import InputError
 
-
-    xml = scene_xml(scene)
-    model = mujoco.MjModel.from_xml_path(str(xml))
+    if model is None:
+        model = mujoco.MjModel.from_xml_path(str(scene_xml(scene)))
     if camera is not None:
         names = [model.camera(i).name for i in range(model.ncam)]
         if camera not in names:
@@ -86,12 +87,13 @@ def render_scene(scene: Path, out_png: Path, camera: str | None = None, width: i
     return out_png
 
 
-def write_preview(folder: Path, width: int = 640, height: int = 480) -> Path | None:
+def write_preview(folder: Path, width: int = 640, height: int = 480, model: mujoco.MjModel | None = None) -> Path | None:
     """Write ``folder/preview.png`` (overview at keyframe ``initial``); None if rendering is unavailable.
 
     Meant for the end of a conversion: a machine without an offscreen GL context (no EGL/OSMesa)
     still gets its scene, only without the preview. The picture is cached under the folder's
-    content, so a rerun that writes the same files copies it instead of rendering.
+    content, so a rerun that writes the same files copies it instead of rendering. ``model`` is
+    the folder's scene.xml already loaded (not loaded again), or None.
     """
     from realsim.cache import BlobStore, DiskCache, output_key
 
@@ -107,7 +109,7 @@ def write_preview(folder: Path, width: int = 640, height: int = 480) -> Path | N
         out.write_bytes(png)
         return out
     try:
-        render_scene(folder, out, width=width, height=height)
+        render_scene(folder, out, width=width, height=height, model=model)
     except Exception:  # no GL context here: the scene is still valid
         return None
     cache.put(key, BlobStore(cache.root).put(out.read_bytes()))

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from realsim.perception.unique_keys import unique_inverse
+from realsim.perception.unique_keys import distinct_rows, unique_inverse
 
 
 @pytest.mark.parametrize(("n", "low", "high", "dtype"), [
@@ -29,3 +29,12 @@ def test_empty_and_float() -> None:
     uniq, inverse = unique_inverse(np.array([0.5, -1.0, 0.5]))
     np.testing.assert_array_equal(uniq, [-1.0, 0.5])
     np.testing.assert_array_equal(inverse, [1, 0, 1])
+
+
+@pytest.mark.parametrize("spread", [5, 10**6, 2**40])
+def test_distinct_rows(spread: int) -> None:
+    rng = np.random.default_rng(spread)
+    cells = rng.integers(-spread, spread, (20_000, 3), dtype=np.int64)
+    cells[::3] = cells[1::3][: len(cells[::3])]  # repeated rows
+    assert distinct_rows(cells) == len(np.unique(cells, axis=0))
+    assert distinct_rows(cells[:0]) == 0

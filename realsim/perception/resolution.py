@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from realsim.errors import InputError
+from realsim.perception.unique_keys import distinct_rows
 
 UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 MIN_RESOLUTION = 0.003  # m: fine enough for 3 cm objects (10 cells across)
@@ -40,8 +41,7 @@ def point_spacing(points: np.ndarray, seed: int = 0) -> float:
         return float("nan")
     extent = float(np.max(np.percentile(pts, 99, axis=0) - np.percentile(pts, 1, axis=0)))
     cell = max(extent / 100.0, 1e-12)
-    keys = np.unique(np.floor(pts / cell).astype(np.int64), axis=0, return_counts=True)[1]
-    per_cell = float(np.mean(keys))
+    per_cell = len(pts) / distinct_rows(np.floor(pts / cell).astype(np.int64))  # mean points per occupied cell
     spacing = cell / math.sqrt(max(per_cell, 1.0))
     return spacing * math.sqrt(len(pts) / max(finite, 1))
 

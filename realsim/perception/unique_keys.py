@@ -39,3 +39,20 @@ def unique_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     inverse = np.empty(n, dtype=np.intp)
     inverse[order] = np.cumsum(first) - 1
     return uniq, inverse
+
+
+def distinct_rows(cells: np.ndarray) -> int:
+    """``len(np.unique(cells, axis=0))`` for (N, D) integer grid cells, by one flat key per row
+    when the cells' ranges fit an int64 together (numpy's row unique sorts a structured view)."""
+    cells = np.asarray(cells)
+    if len(cells) == 0:
+        return 0
+    lo, hi = cells.min(axis=0).astype(object), cells.max(axis=0).astype(object)
+    spans = [int(h) - int(low) + 1 for low, h in zip(lo, hi)]
+    if cells.dtype.kind not in "iu" or int(np.prod(np.array(spans, dtype=object))) >= 1 << 62:
+        return len(np.unique(cells, axis=0))
+    flat = np.zeros(len(cells), dtype=np.int64)
+    for d, span in enumerate(spans):
+        flat *= span
+        flat += cells[:, d].astype(np.int64) - int(lo[d])
+    return len(np.unique(flat))
