@@ -57,6 +57,8 @@ class Arm:
         self.geometry = SceneGeometry(model, data, self.robot_bodies)
         self._deadline = np.inf
         self.held: str | None = None
+        self.pinch: tuple[str, float] = ("", 0.0)  # kind and width of the pinch holding ``held``
+        self.stood: dict[str, np.ndarray] = {}  # each grasped object's up axis (world) as it stood before the grasp
         self.step_hook: Callable[[mujoco.MjModel, mujoco.MjData], None] | None = None
         self.hook_every = 1  # physics steps between calls of ``step_hook`` (e.g. a video recorder)
         self._steps = 0

@@ -162,7 +162,7 @@ def handle_candidates(pts: np.ndarray, normals: np.ndarray | None, surface_z: fl
                 pos, width = fit
                 if any(np.linalg.norm(pos - c.pos) < 0.006 and abs(float(rot[:, 2] @ c.rot[:, 2])) > 0.95 for c in out):
                     continue
-                score = HANDLE_SCORE + 0.1 * float(-a[2]) + 0.05 * float(a @ away)
+                score = HANDLE_SCORE - 0.1 * abs(float(a[2])) + 0.05 * float(a @ away)
                 out.append(GraspCandidate("handle", pos, rot, width, score))
         if len(out) >= MAX_HANDLE_CANDIDATES:
             break

@@ -145,9 +145,17 @@ class Motion(WorldQueries):
                 raise PlanFailure("the swing across dips below the safe height")
             return p1 + across_q + [*rising[::-1][1:], at_end.q]
 
+        def slant(z: float) -> list[np.ndarray]:
+            """Up and across in one straight line, then down: at the edge of the reach, where the
+            hand cannot rise straight up."""
+            over = np.array([end[0], end[1], z])
+            p1 = self._line(cmd_pos, over, cmd_rot, rot_end, q0)
+            return p1 + self._line(over, end, rot_end, rot_end, p1[-1])
+
         plans: list[Callable[[float], list[np.ndarray]]] = [lambda z: across(z, rot_end)]
         if turn_late:
             plans += [lambda z: across(z, cmd_rot), swing]
+        plans.append(slant)
         last: PlanFailure | None = None
         blocked: PathBlocked | None = None
         ignore = {skip} if skip else set()

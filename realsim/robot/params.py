@@ -41,6 +41,7 @@ class PickParams:
     budget_factor: float = 2.0  # a grasp gets this many max_sim_time budgets
     support_probe: float = 0.01  # m above the object's bottom where its support is looked for
     max_reachable: int = 6  # reachable candidates collected per attempt
+    reach_tilts: tuple[float, ...] = (0.0, -0.3, 0.3, -0.6, 0.6)  # rad the hand leans about the closing axis when no candidate is reachable upright
     manipulability_weight: float = 0.5  # added to a candidate's score per unit manipulability
     lift_wait: float = 0.2  # s after lifting before judging
     retry_lift: float = 0.12  # m backed up after a failed attempt
@@ -62,6 +63,12 @@ class PlaceParams:
     approach_height: float = 0.08  # m above the release pose the transit ends
     surface_probe: float = 0.05  # m above the tallest object the surface below is looked for from
     retreat: float = 0.10  # m lifted after release
+    handle_free: float = 0.015  # m the fingers open past a handle's width to free it (wider, the inner finger shoves the body)
+    handle_back: float = 0.06  # m the hand backs out of a handle's loop along its approach before it lifts
+    stand_tilt: float = 0.09  # rad: a held object tilted further from how it stood is lowered until it stands before release
+    stand_step: float = 0.01  # m the hand lowers per step while the object comes upright on what is below it
+    stand_reach: float = 0.08  # m the hand may lower past the release pose for it
+    stand_gain: float = 0.001  # rad a step must right the object by while it rests on something, or the hand stops lowering
     release_wait: float = 0.4  # s after the retreat before judging
     rest_speed: float = 0.05  # m/s: the released object rests
     max_rock: float = 1.2  # s a released object may rock before it rests
@@ -85,6 +92,7 @@ class PlaceParams:
     between_margin: float = 0.005  # m kept to the other objects (place_between)
     down_radius: float = 0.30  # m around the object searched (place_down)
     down_step: float = 0.03  # m between search rings; six spots per step of radius
+    down_reach: float = 0.75  # m from the robot's base (horizontal) past which a spot is tried only after the nearer ones
     table_tol: float = 0.002  # m: a spot on the static surface
     support_fraction: float = 0.5  # of the way from the object's centre to its footprint's edge that must lie over the support
 

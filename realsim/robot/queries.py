@@ -114,3 +114,9 @@ class WorldQueries(Arm):
     def _centre_xy(self, obj: str) -> np.ndarray:
         """xy centre of ``obj``'s bounding box."""
         return box_centre(self.object_points(obj))
+
+    def _up(self, obj: str) -> np.ndarray:
+        """The world direction of ``obj``'s body z axis."""
+        mujoco.mj_kinematics(self.model, self.data)
+        up: np.ndarray = self.data.xmat[self._body(obj)].reshape(3, 3)[:, 2].copy()
+        return up

@@ -126,6 +126,7 @@ class GraspSkill(Motion):
             ok, why = self.graspability(obj)
             if not ok:
                 return ActionResult("grasp", False, f"not graspable: {why}", values={"graspable": False})
+            self.stood[obj] = self._up(obj)
             for attempt in range(1, attempts + 1):
                 gp = opt.propose()
                 z0 = float(self.object_points(obj)[:, 2].min())
@@ -136,7 +137,7 @@ class GraspSkill(Motion):
                 opt.update(gp, reward)
                 log.append({"attempt": attempt, "params": gp.__dict__, "reward": reward, **info})
                 if reward >= SUCCESS:
-                    self.held = obj
+                    self.held, self.pinch = obj, (str(info.get("kind", "")), float(info.get("width", 0.0)))
                     return ActionResult("grasp", True, "", attempts=attempt, values={"graspable": True, "lifted": info.get("lifted"), "kind": info.get("kind"), "log": log})
                 # reset for the next attempt: open, back up, home
                 self._gripper(GRIPPER_OPEN_CTRL)
@@ -152,15 +153,16 @@ class GraspSkill(Motion):
             return ActionResult("grasp", False, f"no grasp held after {attempts} attempts (last: {last.get('error') or last.get('failure', '')})", attempts=attempts, values={"graspable": True, "log": log})
         return self._run("grasp", body, max_sim_time or self.params.max_sim_time * pk.budget_factor)
 
-    def _attempt(self, obj: str, gp: GraspParams, opt: EpsilonGreedy) -> tuple[float, dict[str, Any]]:
-        """One grasp: the reachable candidates ranked, approach, close, lift; (reward, what happened)."""
+    def _reachable(self, cands: list[GraspCandidate], tilt: float, yaw: float) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
+        """The candidates the hand reaches, turned by ``tilt`` about their closing axis and ``yaw``
+        about their approach, with a straight final approach (at most ``max_reachable``):
+        (candidate, pre-grasp joints, grasp IK)."""
         pk = self.params.pick
-        cands = self._grasp_candidates(obj, gp.height_offset)
-        reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
+        out: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
         q_home = np.array(HOME_ARM)
         for c in cands:
-            rot = rotate_about(c.rot[:, 1], gp.tilt) @ c.rot
-            rot = rotate_about(rot[:, 2], gp.yaw_offset) @ rot
+            rot = rotate_about(c.rot[:, 1], tilt) @ c.rot
+            rot = rotate_about(rot[:, 2], yaw) @ rot
             for flip in (False, True):  # the hand is symmetric: closing axis +y or -y
                 r = rot @ np.diag([-1, -1, 1]) if flip else rot
                 pre = c.pos - r[:, 2] * self.params.pregrasp
@@ -174,12 +176,23 @@ class GraspSkill(Motion):
                     self._line(pre, c.pos, r, r, res_pre.q)
                 except PlanFailure:
                     continue
-                reachable.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + pk.manipulability_weight * res.manipulability), res_pre.q, res))
+                out.append((GraspCandidate(c.kind, c.pos, r, c.width, c.score + pk.manipulability_weight * res.manipulability), res_pre.q, res))
                 break
-            if len(reachable) >= pk.max_reachable:
+            if len(out) >= pk.max_reachable:
+                break
+        return out
+
+    def _attempt(self, obj: str, gp: GraspParams, opt: EpsilonGreedy) -> tuple[float, dict[str, Any]]:
+        """One grasp: the reachable candidates ranked, approach, close, lift; (reward, what happened)."""
+        pk = self.params.pick
+        cands = self._grasp_candidates(obj, gp.height_offset)
+        reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
+        for lean in pk.reach_tilts:  # none reachable as planned (the far edge of the reach): the hand leans about the closing axis
+            reachable = self._reachable(cands, gp.tilt + lean, gp.yaw_offset)
+            if reachable:
                 break
         if not reachable:
-            raise PlanFailure(f"none of {len(cands)} grasp candidates is reachable")
+            raise PlanFailure(f"none of {len(cands)} grasp candidates is reachable, upright or leaning up to {max(map(abs, pk.reach_tilts)):.1f} rad")
         reachable.sort(key=lambda x: -x[0].score)
         opt.n_candidates = len(reachable)
         first = min(gp.candidate, len(reachable) - 1)

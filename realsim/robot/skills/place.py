@@ -7,7 +7,7 @@ from numpy.typing import ArrayLike
 
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
-from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, spots, top_area
+from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, free_first, free_radius, narrowest, spots, top_area
 from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult
 from realsim.robot.skills.release import Cavity, Keepout, Release
@@ -72,12 +72,36 @@ class PlaceSkills(Release):
                 return self._place(obj, near, np.nan, "place_in", lambda: self._in_zone(obj, zone), Keepout(self._others(obj), soft=True))
             cp = self.object_points(container)
             centre, r_in = cavity_centre(cp)
-            near = spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring)
+            others = self._others(obj, {container}, above=float(cp[:, 2].min()) + self.params.place.in_bottom_margin)
+            inside = others[np.linalg.norm(others - centre, axis=1) < r_in]  # what already lies in it: its free part first
+            full = self.crowded(obj, container)
+            if full is not None:
+                return ActionResult("place_in", False, full)
+            near = free_first(spots(centre, max(0.0, r_in - r), self.base_pos[:2], self.release.ring), inside)
             return self._place(obj, near, np.nan, "place_in", lambda: relations.inside(
                 self.object_points(obj), self.object_points(container), self.geometry.touching(obj), container),
-                Keepout(self._others(obj, {container}, above=float(cp[:, 2].min()) + self.params.place.in_bottom_margin), soft=True),
+                Keepout(others, soft=True),
                 cavity=Cavity(container, centre, r_in, float(cp[:, 2].max())))
         return self._run("place_in", body, max_sim_time)
+
+    def crowded(self, obj: str, container: str) -> str | None:
+        """Why ``obj`` cannot go into body ``container``, or None: what already lies in it rises to
+        the rim and the largest free part of the opening is narrower than ``obj`` at its narrowest."""
+        if self._zone(container) is not None:
+            return None
+        cp = self.object_points(container)
+        centre, r_in = cavity_centre(cp)
+        blockers = self._others(obj, {container}, above=float(cp[:, 2].max()) - self.params.place.rim_margin)
+        blockers = blockers[np.linalg.norm(blockers - centre, axis=1) < r_in]
+        if not len(blockers):
+            return None
+        room, need = 2 * free_radius(centre, r_in, blockers), narrowest(self.object_points(obj))
+        if room >= need:
+            return None
+        held = sorted({n for n in self.object_names() if n not in (obj, container)
+                       and float(np.linalg.norm(box_centre(self.object_points(n)) - centre)) < r_in})
+        return (f"{container} already holds {', '.join(held)}: the largest free part of its opening is {room * 100:.1f} cm across, "
+                f"{obj} is {need * 100:.1f} cm at its narrowest")
 
     def place_beside(self, obj: str, ref: str, side: str = "next", gap: float | None = None,
                      max_sim_time: float | None = None) -> ActionResult:
@@ -168,5 +192,6 @@ class PlaceSkills(Release):
                                               <= self.geometry.surface_below(xy + off, top, exclude=obj, static_only=True) + pl.table_tol for off in ring)]
             if not near:
                 return ActionResult("place_down", False, f"no free table surface within {pl.down_radius * 100:.0f} cm of {obj}")
+            near.sort(key=lambda xy: float(np.linalg.norm(xy - self.base_pos[:2])) > pl.down_reach)  # spots out of easy reach last
             return self._place(obj, near, np.nan, "place_down", lambda: _on_table(self.geometry.touching(obj)), Keepout(self._others(obj)))
         return self._run("place_down", body, max_sim_time)

@@ -20,6 +20,7 @@ from realsim.robot.motion import Motion
 from realsim.robot.placing import footprint_radius, long_axis, release_poses, underside
 from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult, PlanFailure
+from realsim.robot.squeeze import close_ctrl
 
 __all__ = ["Cavity", "Keepout", "Release"]
 
@@ -79,23 +80,26 @@ class Release(Motion):
         if self.held != obj or not self.holding(obj):
             return ActionResult(name, False, f"{obj} is not held (grasp it first)")
         pl = self.params.place
-        pts = self.object_points(obj)
-        tcp, rot = self.tcp_pose()
-        rel = pts - tcp  # the object relative to the tcp: it turns with the hand
-        axis = long_axis(pts)
-        start = {id(xy): turn for xy, turn in zip(candidates, turns or [])}
-        poses: list[Pose] = [(xy, yaw + start.get(id(xy), 0.0), drop, 0.0) for xy, yaw, drop in
-                             release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))]
-        lean = self._lean_poses(obj, rel, axis, cavity) if cavity is not None else []
+        tcp, rot0 = self.tcp_pose()
+        rel0 = self.object_points(obj) - tcp  # the object relative to the tcp: it turns with the hand
+        fix = self._upright(obj)
+        frames = ([(rel0 @ fix.T, fix @ rot0)] if fix is not None else []) + [(rel0, rot0)]
+        tries: list[tuple[Pose, np.ndarray, np.ndarray, np.ndarray]] = []
         last: PlanFailure | None = None
-        if cavity is not None and footprint_radius(rel) > cavity.radius and not lean:
-            last = PlanFailure(f"{obj} is longer than {cavity.name}'s opening and, {self._mass(obj) * 1000:.0f} g leaning on the rim of "
-                               f"{self._mass(cavity.name) * 1000:.0f} g, would tip it over")
-        if keepout is not None and len(keepout.xy):
-            poses = self._clear_poses(poses, keepout, rel, rot, axis)
-            lean = self._clear_poses(lean, keepout, rel, rot, axis) if lean else []
-        poses += lean
-        for k, (xy, yaw, drop, tilt) in enumerate(poses):
+        for rel, rot in frames:  # the hand turned so the object stands as it stood first, then as it hangs
+            axis = long_axis(rel)
+            start = {id(xy): turn for xy, turn in zip(candidates, turns or [])}
+            poses: list[Pose] = [(xy, yaw + start.get(id(xy), 0.0), drop, 0.0) for xy, yaw, drop in
+                                 release_poses(candidates, self.release, limit=keepout is None or not len(keepout.xy))]
+            lean = self._lean_poses(obj, rel, axis, cavity) if cavity is not None else []
+            if cavity is not None and footprint_radius(rel) > cavity.radius and not lean:
+                last = PlanFailure(f"{obj} is longer than {cavity.name}'s opening and, {self._mass(obj) * 1000:.0f} g leaning on the rim of "
+                                   f"{self._mass(cavity.name) * 1000:.0f} g, would tip it over")
+            if keepout is not None and len(keepout.xy):
+                poses = self._clear_poses(poses, keepout, rel, rot, axis)
+                lean = self._clear_poses(lean, keepout, rel, rot, axis) if lean else []
+            tries += [(pose, rel, rot, axis) for pose in poses + lean]
+        for k, ((xy, yaw, drop, tilt), rel, rot, axis) in enumerate(tries):
             turn = self._turn(yaw, tilt, axis)
             r_goal, moved = turn @ rot, rel @ turn.T
             tcp_xy = xy - box_centre(moved)
@@ -116,17 +120,13 @@ class Release(Motion):
             except PlanFailure as exc:
                 last = exc
         else:
-            raise PlanFailure(f"no release pose reachable ({len(poses)} tried: spots, hand yaws, tilts, heights; last: {last})")
+            raise PlanFailure(f"no release pose reachable ({len(tries)} tried: spots, hand yaws, tilts, heights; last: {last})")
         if self._slipped(obj):
             self.held = None
             return ActionResult(name, False, f"{obj} slipped out of the hand on the way", values={"release_pose": k})
-        self._gripper(GRIPPER_OPEN_CTRL)
-        self.held = None
-        pos, _ = self.tcp_pose()
-        try:
-            self._straight(pos + np.array([0, 0, pl.retreat]))
-        except PlanFailure:
-            pass
+        if not tilt:
+            self._stand(obj)
+        self._let_go()
         self._wait(pl.release_wait)
         dof = self.model.jnt_dofadr[self.model.body(obj).jntadr[0]]
         resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < pl.rest_speed
@@ -140,6 +140,60 @@ class Release(Motion):
         ok = verdict.ok and resting
         reason = "" if ok else (f"not {_WORDS[name]} after release: {verdict.measured}" if not verdict.ok else "object still moving")
         return ActionResult(name, ok, reason, values=values)
+
+    def _let_go(self) -> None:
+        """Open and back off. A handle's fingers open only enough to free it and leave its loop the
+        way they came in (opened wide or lifted, the finger inside the loop tips the object over);
+        other pinches open fully and lift."""
+        pl = self.params.place
+        kind, width = self.pinch
+        self.held, self.pinch = None, ("", 0.0)
+        pos, rot = self.tcp_pose()
+        if kind == "handle":
+            self._gripper(close_ctrl(self.model, self.grip_act, width + pl.handle_free, 0.0))
+            try:
+                self._straight(pos - rot[:, 2] * pl.handle_back)
+            except PlanFailure:
+                pass
+            pos, _ = self.tcp_pose()
+        self._gripper(GRIPPER_OPEN_CTRL)
+        try:
+            self._straight(pos + np.array([0, 0, pl.retreat]))
+        except PlanFailure:
+            pass
+
+    def _upright(self, obj: str) -> np.ndarray | None:
+        """The turn of the hand (world rotation) that sets the held ``obj`` up as it stood before the
+        grasp, when it hangs tilted further than ``stand_tilt`` in the hand; else None."""
+        up0 = self.stood.get(obj)
+        if up0 is None or self._tilt(obj) <= self.params.place.stand_tilt:
+            return None
+        up = self._up(obj)
+        axis = np.cross(up, up0)
+        return rotate_about(axis, float(np.arctan2(np.linalg.norm(axis), up @ up0)))
+
+    def _tilt(self, obj: str) -> float:
+        """How far (rad) the held ``obj`` is tilted from how it stood before it was grasped."""
+        up0 = self.stood.get(obj)
+        return 0.0 if up0 is None else float(np.arccos(np.clip(self._up(obj) @ up0, -1.0, 1.0)))
+
+    def _stand(self, obj: str) -> None:
+        """Lower the hand while the held ``obj`` hangs tilted in it (swung in the pinch while carried)
+        until it stands on what lies below it as it stood before the grasp: released tilted, it
+        topples. Stops when it no longer comes upright, or at ``stand_reach`` below the release pose."""
+        pl = self.params.place
+        tilt, lowered = self._tilt(obj), 0.0
+        while tilt > pl.stand_tilt and lowered < pl.stand_reach:
+            pos, _ = self.ik.fk(self.data.ctrl[self.act].copy())
+            try:
+                self._straight(pos - np.array([0.0, 0.0, pl.stand_step]), clear_but={obj})
+            except PlanFailure:
+                return
+            lowered += pl.stand_step
+            now = self._tilt(obj)
+            if now > tilt - pl.stand_gain and self.geometry.touching(obj) - {relations.ROBOT}:
+                return  # it rests on something and no longer rights itself: pressing further shoves it
+            tilt = now
 
     @staticmethod
     def _turn(yaw: float, tilt: float, axis: np.ndarray) -> np.ndarray:
