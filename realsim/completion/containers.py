@@ -125,13 +125,14 @@ def _seen_outside(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: 
                   bands: int) -> tuple[np.ndarray, np.ndarray] | None:
     """The outside of the wall where the camera saw it: (heights, radii), per height band the median
     distance from the axis of the points on the side facing ``camera_xy`` (the near wall's outside,
-    down to the support); None without a camera or such points."""
+    from a tenth of the height up: lower, points of the support may have been taken for the object's);
+    None without a camera or such points."""
     if camera_xy is None or np.linalg.norm(centre - camera_xy) < 1e-6:
         return None
     rel = points[:, :2] - centre
     r = np.linalg.norm(rel, axis=1)
     near = rel @ ((camera_xy - centre) / np.linalg.norm(camera_xy - centre)) > 0.5 * r
-    edges = np.linspace(base_z, top_z, bands + 1)
+    edges = np.linspace(base_z + 0.1 * (top_z - base_z), top_z, bands + 1)
     z, radii = [], []
     for lo, hi in zip(edges[:-1], edges[1:]):
         band = near & (points[:, 2] >= lo) & (points[:, 2] < hi)
@@ -199,7 +200,7 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     seen = _seen_outside(points, centre, base_z, top_z, camera_xy, params.bands)
 
     def outside(r: np.ndarray, z: np.ndarray) -> np.ndarray:  # no thinner than the wall the camera saw outside
-        return r if seen is None else np.asarray(np.maximum(r, np.interp(z, *seen)))
+        return r if seen is None else np.asarray(np.maximum(r, np.interp(z, *seen, left=0.0, right=0.0)))
 
     r_out, z_out = _offset(r_in, z_in, wall)
     r_out[-1], z_out[-1] = r_in[-1] + wall, top_z  # the rim: flat, one wall wide

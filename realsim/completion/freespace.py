@@ -86,28 +86,33 @@ def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
     return np.asarray(opt[:, :2] / opt[:, 2:3])
 
 
-def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int) -> tuple[np.ndarray, float, float]:
+def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int, keep_top: bool = False) -> tuple[np.ndarray, float, float]:
     """The best cut as a world half-space ``n . x <= c`` (and its cost): a plane among the fixed
     directions (see :func:`_directions`), or one through the camera centre (a line in the image that
-    trims the piece's silhouette)."""
+    trims the piece's silhouette). ``keep_top``: no cut may face up (it would take off the top
+    something stands on)."""
     ray = bad.mean(axis=0) - view.camera
-    n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples)
+    normals = _directions(ray / np.linalg.norm(ray))
+    n, c, cost = _best_cut(inside, bad, normals[normals[:, 2] <= 1e-6] if keep_top else normals, samples)
     t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
     n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples)
     if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
         k = np.array([n2[0], n2[1], -c2])
         a, b = view.world_to_optical[:3, :3], view.world_to_optical[:3, 3]
-        return a.T @ k, float(-k @ b), cost2
+        world = a.T @ k
+        if not keep_top or world[2] <= 1e-6 * np.linalg.norm(world):
+            return world, float(-k @ b), cost2
     return n, c, cost
 
 
 def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float, seed: int = 0,
-                       splits: int = 2) -> list[trimesh.Trimesh]:
+                       splits: int = 2, keep_top: bool = False) -> list[trimesh.Trimesh]:
     """``piece`` (convex, world frame) cut until none of its surface samples lies nearer the camera
     than the captured depth at its pixel by more than ``tolerance``: convex pieces, none when next
     to nothing is left (a piece standing in seen free space). A cut that would lose more than
     MAX_CUT_LOSS of the piece (its hull bridges a concave side the camera saw) splits it in two
-    halves across its longest extent instead, each clipped in turn (at most ``splits`` times deep)."""
+    halves across its longest extent instead, each clipped in turn (at most ``splits`` times deep).
+    ``keep_top``: the piece's top holds something up; no cut faces up (see :func:`_cut`)."""
     volume = piece.volume
     for _ in range(MAX_CUTS):
         surface = _samples(piece, seed)
@@ -118,14 +123,14 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         inside = np.vstack([voxel_centres(piece, step), surface[~bad]])
         if len(inside) > INSIDE_SAMPLES:
             inside = inside[np.random.default_rng(seed).choice(len(inside), INSIDE_SAMPLES, replace=False)]
-        n, c, _ = _cut(view, inside, surface[bad], len(surface))
+        n, c, _ = _cut(view, inside, surface[bad], len(surface), keep_top)
         lost = float(np.mean(inside @ n > c)) if np.isfinite(c) else 0.0
         if splits > 0 and lost > MAX_CUT_LOSS and bad.mean() < 0.5 and np.max(piece.extents) > MIN_SPLIT:
             axis = np.zeros(3)
             axis[int(np.argmax(piece.extents))] = 1.0
             middle = float(np.median(inside @ axis))
             halves = [clip_convex(piece, sign * axis, sign * middle) for sign in (1.0, -1.0)]
-            return [c for h in halves if h is not None for c in clip_to_free_space(h, view, tolerance, seed, splits - 1)]
+            return [c for h in halves if h is not None for c in clip_to_free_space(h, view, tolerance, seed, splits - 1, keep_top)]
         if not np.isfinite(c):  # no cut is worth its loss
             return [] if bad.mean() > 0.5 else [piece]
         cut = clip_convex(piece, -n, -c)
@@ -135,10 +140,12 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
     return [piece]
 
 
-def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float) -> tuple[list[trimesh.Trimesh], float]:
-    """Every piece clipped to the free space (pieces left empty dropped), and the share of volume removed."""
-    splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
-    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits)]
+def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float,
+                keep_top: bool = False) -> tuple[list[trimesh.Trimesh], float]:
+    """Every piece clipped to the free space (pieces left empty dropped), and the share of volume
+    removed; ``keep_top``: no cut faces up, and no piece is split (something stands on its top)."""
+    splits = 2 if len(pieces) <= 2 and not keep_top else 0  # a shape already in many pieces is cut, not split further
+    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits, keep_top=keep_top)]
     before = sum(p.volume for p in pieces)
     return out, (1.0 - sum(p.volume for p in out) / before) if before > 0 else 0.0
 
@@ -160,9 +167,11 @@ def free_space_tolerance(view: DepthView, params: CompletionParams, points: np.n
     return max(params.free_space_sigmas * sigma, params.free_space_min_tolerance)
 
 
-def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, tolerance: float, params: CompletionParams) -> None:
+def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, tolerance: float, params: CompletionParams,
+                           supporters: set[int] | None = None) -> None:
     """Clip every completed object's collision pieces to the free space (see :func:`clip_to_free_space`);
-    an object's single hull is also its visual, so that is clipped with it."""
+    an object's single hull is also its visual, so that is clipped with it. Objects in ``supporters``
+    hold another on their top: no cut of theirs faces up, so that top stays where it was."""
     for obj in objects:
         if not obj.collision:
             continue
@@ -170,7 +179,7 @@ def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, toleranc
         world = [p.copy() for p in obj.collision]
         for p in world:
             p.apply_translation(base)
-        clipped, share = clip_pieces(world, view, tolerance)
+        clipped, share = clip_pieces(world, view, tolerance, keep_top=obj.id in (supporters or set()))
         if not clipped or (share <= 0.0 and len(clipped) == len(world)):
             continue
         hull = trimesh.convex.convex_hull(np.vstack([p.vertices for p in clipped]))

@@ -135,7 +135,7 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     part_overlapping(solid, done, observed, params, pieces)
     if view is not None and params.clip_free_space:
         supporters = {o.resting_on for o in order if o.resting_on is not None}  # their flat tops keep what stands on them level
-        keep_out_of_free_space([o for o in order if o.id not in supporters], view, tolerance, params)
+        keep_out_of_free_space(order, view, tolerance, params, supporters)
     for obj in order:
         if obj.resting_on is None and params.balance_margin > 0:
             brace(obj, params.balance_margin)
