@@ -49,3 +49,20 @@ def test_long_axis_follows_the_footprint() -> None:
         pts = local @ np.array([[c, s, 0], [-s, c, 0], [0, 0, 1]]) + [0.4, -0.1, 0.75]
         axis = long_axis(pts)
         assert abs(float(axis @ [c, s])) == pytest.approx(1.0, abs=1e-3)  # either end
+
+
+def test_the_free_part_of_an_occupied_opening() -> None:
+    from realsim.robot.placing import free_first, free_radius, narrowest
+
+    ang = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    can = 0.034 * np.column_stack([np.cos(ang), np.sin(ang)])  # a can's outline in the middle of a 7 cm opening (its inside counts as filled)
+    assert free_radius(np.zeros(2), 0.07, []) == pytest.approx(0.07, abs=0.004)
+    assert free_radius(np.zeros(2), 0.07, [can]) == pytest.approx(0.018, abs=0.004)  # the ring around it
+    assert free_radius(np.zeros(2), 0.07, [can + [0.036, 0.0]]) == pytest.approx(0.036, abs=0.004)  # pushed to one side
+    near = spots(np.zeros(2), 0.03, np.array([0.0, -1.0]))
+    ordered = free_first(near, can + [0.036, 0.0])
+    assert ordered[0][0] == pytest.approx(-0.027, abs=1e-6)  # the spot farthest from it first
+    assert free_first(near, np.zeros((0, 2))) == near
+    rng = np.random.default_rng(3)
+    rod = rng.uniform([-0.1, -0.02, 0.0], [0.1, 0.02, 0.03], (3000, 3))
+    assert narrowest(rod) == pytest.approx(0.04, abs=0.002)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
+from scipy.spatial import ConvexHull, Delaunay, QhullError, cKDTree
 
 
 @dataclass(frozen=True)
@@ -84,6 +84,39 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
             ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
             out += ringed
     return out
+
+
+def free_first(spot_list: list[np.ndarray], occupied_xy: np.ndarray) -> list[np.ndarray]:
+    """``spot_list`` ordered by the distance to the nearest of ``occupied_xy`` (what already lies
+    in a container), farthest first: the free part of the cavity before the rest; unchanged when
+    nothing is there."""
+    if not len(occupied_xy) or not spot_list:
+        return spot_list
+    gap = cKDTree(occupied_xy).query(np.asarray(spot_list))[0]
+    return [spot_list[i] for i in np.argsort(-gap, kind="stable")]
+
+
+def free_radius(centre: np.ndarray, r_in: float, blockers: list[np.ndarray], cell: float = 0.004) -> float:
+    """Radius of the largest circle within a container's opening (``centre``, inner radius
+    ``r_in``) clear of the ``blockers`` (xy points of each thing already in it that rises to the
+    rim; a thing's footprint hull counts as filled)."""
+    g = np.arange(-r_in, r_in + cell / 2, cell)
+    grid = np.array(np.meshgrid(g, g)).reshape(2, -1).T
+    grid = grid[np.linalg.norm(grid, axis=1) <= r_in] + np.asarray(centre)
+    room = r_in - np.linalg.norm(grid - centre, axis=1)
+    for b in blockers:
+        room = np.minimum(room, cKDTree(b).query(grid)[0])
+        try:
+            room[Delaunay(b).find_simplex(grid) >= 0] = 0.0
+        except (QhullError, ValueError):
+            pass  # too few points for a hull: their distance alone counts
+    return float(max(room.max(), 0.0))
+
+
+def narrowest(pts: np.ndarray) -> float:
+    """The object's footprint width across its long axis (m)."""
+    a = long_axis(pts)
+    return float(np.ptp(pts[:, :2] @ np.array([-a[1], a[0]])))
 
 
 def underside(pts: np.ndarray, cell: float) -> np.ndarray:

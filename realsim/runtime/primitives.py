@@ -137,6 +137,8 @@ class ProgramAPI:
 
     def place_in(self, obj: str, container: str) -> ActionResult:
         obj, container = self._obj(obj), self._obj(container)
+        if (full := self.robot.crowded(obj, container)) is not None:
+            return self._record(ActionResult("place_in", False, full), f"place_in({obj!r}, {container!r})")  # said before grasping
         fail = self._ensure_held(obj, "place_in")
         if fail is not None:
             return fail

@@ -91,15 +91,19 @@ class PlaceSkills(Release):
             return None
         cp = self.object_points(container)
         centre, r_in = cavity_centre(cp)
-        blockers = self._others(obj, {container}, above=float(cp[:, 2].max()) - self.params.place.rim_margin)
-        blockers = blockers[np.linalg.norm(blockers - centre, axis=1) < r_in]
-        if not len(blockers):
+        high = float(cp[:, 2].max()) - self.params.place.rim_margin
+        blockers: dict[str, np.ndarray] = {}
+        for n in self.object_names():
+            p = self.object_points(n) if n not in (obj, container) else np.zeros((0, 3))
+            p = p[(p[:, 2] > high) & (np.linalg.norm(p[:, :2] - centre, axis=1) < r_in), :2]
+            if len(p):
+                blockers[n] = p
+        if not blockers:
             return None
-        room, need = 2 * free_radius(centre, r_in, blockers), narrowest(self.object_points(obj))
+        room, need = 2 * free_radius(centre, r_in, list(blockers.values())), narrowest(self.object_points(obj))
         if room >= need:
             return None
-        held = sorted({n for n in self.object_names() if n not in (obj, container)
-                       and float(np.linalg.norm(box_centre(self.object_points(n)) - centre)) < r_in})
+        held = sorted(blockers)
         return (f"{container} already holds {', '.join(held)}: the largest free part of its opening is {room * 100:.1f} cm across, "
                 f"{obj} is {need * 100:.1f} cm at its narrowest")
 

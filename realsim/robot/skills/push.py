@@ -47,10 +47,8 @@ class PushSkill(Motion):
                       if np.all((box_centre(self.object_points(n)) >= lo) & (box_centre(self.object_points(n)) <= hi))}
             others = self._others(obj, skip=riding, above=bottom + pp.ride_margin)
             # the asked stroke, else a shorter or askew one that still ends within the asked move's tolerance
-            options = [(u, length) for u, length in strokes(d[:2], distance, self.stroke)
-                       if first_contact(foot, others, u, length, pp.touch_gap, pp.sweep_step, pp.nudge) is None]
-            # strokes that touch nothing before those that nudge a neighbour at their end
-            options.sort(key=lambda o: first_contact(foot, others, o[0], o[1], pp.touch_gap, pp.sweep_step, 0.0) is not None)
+            options = [(u, length) for i, (u, length) in enumerate(strokes(d[:2], distance, self.stroke))  # another stroke touches nothing at all
+                       if first_contact(foot, others, u, length, pp.touch_gap, pp.sweep_step, pp.nudge if i == 0 else 0.0) is None]
             if not options:
                 hit = first_contact(foot, others, d[:2], distance, pp.touch_gap, pp.sweep_step, pp.nudge)
                 assert hit is not None
