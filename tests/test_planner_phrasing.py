@@ -178,6 +178,20 @@ def test_where_a_thing_is_now_names_it_never_the_place() -> None:
         RulePlanner().plan("take the strawberry out of the bowl", CLUTTER)
 
 
+@pytest.mark.parametrize(("sentence", "calls"), [
+    ("the banana and the strawberry both go in the bowl", ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("the cans all go next to the bowl", ["place_beside('obj1_soda_can', 'obj6_bowl', 'next')", "place_beside('obj2_soda_can', 'obj6_bowl', 'next')"]),
+    ("hey could you lift the banana up a bit", ["grasp('obj7_banana')"]),
+    ("raise the green cube slightly", ["grasp('obj5_cube')"]),
+    ("could u grab the strawberry plz", ["grasp('obj8_strawberry')"]),
+    ("put the banana in the bowl & the strawberry next to it", ["place_in('obj7_banana', 'obj6_bowl')", "place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+])
+def test_floating_quantifiers_vague_lifts_and_texting(sentence: str, calls: list[str]) -> None:
+    """Said by people, not written to the grammar: "both"/"all" after the things, "up a bit" after
+    a lift (one height), "u"/"plz"/"&"."""
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == calls
+
+
 def test_both_joins_a_list() -> None:
     plan = RulePlanner().plan("please place both the banana and the strawberry in the bowl", CLUTTER)
     assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]

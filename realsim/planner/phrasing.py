@@ -26,6 +26,7 @@ _THINGS = r"(?:anything|everything|something|(?:any of )?the other (?:thing|obje
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
                          r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
                          rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
+_TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -70,6 +71,8 @@ def clean(command: str) -> str:
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
     text = _VOCATIVE.sub(" ", text)
+    for short, word in _TEXTING.items():  # "could u grab the can pls"
+        text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     # "to the mug's left": to the left of the mug; "side by side": next to each other
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
@@ -80,6 +83,9 @@ def clean(command: str) -> str:
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
+    # a floating quantifier: "the cans all go in the bowl", "the mug and the can both go ..."
+    text = re.sub(r"\b((?:them|they|the [a-z]+(?: [a-z]+)?)) (?:both|all|each)(?= (?:go|goes|belong|belongs|need|needs|should|must|have"
+                  r"|has|in|into|inside|on|onto|next|beside|behind|to)\b)", r"\1", text)
     text = re.sub(r"\bout of (?:the|my|your|our) way\b", " ", text)  # "get the banana out of the way, put it ...": take it
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
     text = re.sub(r"(?<!the )(?<!far )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)

@@ -26,7 +26,7 @@ from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is
 from realsim.planner.reference import Context
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, other_side, repeat, swap
 from realsim.planner.types import ObjectInfo, Plan
-from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, name_words, norm, singular
+from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, VAGUE_DISTANCES, name_words, norm, singular
 
 DEFAULT_PUSH = 0.10  # m, when no distance is given
 HELP = (
@@ -171,6 +171,9 @@ def _take(rest: str, p: Parser) -> Step:
     # "lift the cube 5 cm": a lift has one height (about 10 cm); the number does not name the object
     rest = re.sub(r"\s+(?:up )?(?:by )?(?:about |around )?\d+(?:\.\d+)? ?(?:cm|mm|centimet(?:er|re)s?|millimet(?:er|re)s?|inch(?:es)?)"
                   r"(?: up| high| off the table| into the air| in the air)?$", "", rest)
+    # "lift the mug up a bit", "raise the can slightly": a lift has one height, a vague amount too
+    vague = "|".join(re.escape(w) for w in sorted(VAGUE_DISTANCES, key=len, reverse=True))
+    rest = re.sub(rf"(?:\s+up)?\s+(?:{vague})(?:\s+(?:up|higher|off the table))?$", "", rest)
     objs = _objs(rest, p)
     if len(objs) > 1:  # "take the banana and the strawberry and put them in the bowl": the put carries them
         p.ctx.set(objs)
