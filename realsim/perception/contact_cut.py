@@ -7,7 +7,9 @@ less the more it folds inward (the LCCP criterion on point normals oriented like
 they lie in): two objects pressed together meet in a concave crease all along their contact,
 so the cheapest cut follows it, whichever clusters the first segmentation made of them. A cut
 is kept only when the links it crosses are mostly concave and both sides are object-sized, so
-a convex object is never cut and pieces of one object split at a convex or flat seam join.
+a convex object is never cut.
+Objects that touch over a small patch (a mug's side against a bowl's rim) show little fold but
+a narrow neck between two large sides, which the cut also takes.
 """
 
 from __future__ import annotations
@@ -31,6 +33,8 @@ class CutParams:
 
     fold_angle: float = 25.0  # a fold this sharp weighs a link exp(-1)
     max_cut_weight: float = 0.35  # the links a kept cut crosses weigh at most this on average
+    neck_ratio: float = 1.0  # or they are this few per square root of the smaller side's points (a narrow
+    # contact: its length is small beside that side's size, whatever the density)
     max_ncut: float = 0.2  # and its normalized-cut value is at most this
     min_size: float = 0.02  # m: each side's largest extent is at least this
     min_points: int = 5  # and it holds at least this many points
@@ -107,8 +111,9 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
     total = degree.sum()
     ncut = cut / np.maximum(vol, 1e-12) + cut / np.maximum(total - vol, 1e-12)
     sizes = np.arange(1, n)
-    ok = (sizes >= params.min_points) & (n - sizes >= params.min_points) & (cut <= params.max_cut_weight * np.maximum(links, 1))
-    ok &= ncut <= params.max_ncut
+    folded = cut <= params.max_cut_weight * np.maximum(links, 1)
+    necked = links <= params.neck_ratio * np.sqrt(np.minimum(sizes, n - sizes))
+    ok = (sizes >= params.min_points) & (n - sizes >= params.min_points) & (folded | necked) & (ncut <= params.max_ncut)
     for t in np.flatnonzero(ok)[np.argsort(ncut[ok], kind="stable")][:8]:
         side = rank <= t
         if _extent(points[side]) < params.min_size or _extent(points[~side]) < params.min_size:
@@ -180,3 +185,4 @@ def _keep_intact(labels: np.ndarray, parts: list[np.ndarray], share: float) -> n
         whole = np.isin(labels[members], kept)
         out[members[whole]] = labels[members[whole]]
     return out
+
