@@ -27,7 +27,7 @@ class ContainerParams:
     bands: int = 12  # radial bins of the cavity's profile
     sectors: int = 12  # wall pieces around
     segments: int = 3  # wall pieces up: at least this many (when the profile has the points)
-    max_bulge: float = 0.0015  # m: a wall piece's profile strays at most this far from straight (more pieces up where it bends)
+    max_bulge: float = 0.003  # m: a wall piece's profile strays at most this far from straight (more pieces up where it bends)
     min_wall: float = 0.003  # m
     max_wall_share: float = 0.25  # of the rim radius
     min_floor: float = 0.002  # thinnest bottom (m)
@@ -158,7 +158,7 @@ def _straight_runs(inner: np.ndarray, outer: np.ndarray, max_bulge: float, least
     convex hull of a run then fills little beyond the wall), at least ``least`` of them when the
     profile has the points, greedy from the foot."""
     n = len(inner)
-    step = max(1, (n - 1) // max(least, 1))
+    step = max(1, -(-(n - 1) // max(least, 1)))  # ceil: ``least`` runs on a straight profile
     runs, i = [], 0
     while i < n - 1:
         j = min(i + step, n - 1)
