@@ -2,7 +2,7 @@
 
 For each object, ``--trials`` seeded random placements on a 1.0 x 0.7 m table at 0.75 m; the
 Panda (placed by ``choose_robot_pose``) grasps the object and places it into a marked 20 x 20 cm
-zone on the same table. Prints one row per object: grasp success, place success, attempts,
+zone on the same table (with ``--anywhere``: a zone at a seeded random spot on the table). Prints one row per object: grasp success, place success, attempts,
 simulated and wall time; then the totals and the objects declared not graspable.
 
     MENAGERIE_ROOT=../shared/data python bench/bench_pick_place.py [--trials 5] [--jobs 2] [--objects mug,bowl]
@@ -49,12 +49,18 @@ def _rect(c, size) -> np.ndarray:
     return np.array([[c[0] - hx, c[1] - hy], [c[0] + hx, c[1] - hy], [c[0] + hx, c[1] + hy], [c[0] - hx, c[1] + hy]])
 
 
-def build_scene(folder: Path, trial: int, seed: int) -> tuple[Scene, str]:
+def build_scene(folder: Path, trial: int, seed: int, anywhere: bool = False) -> tuple[Scene, str, np.ndarray]:
+    """The object at a seeded random pose and the zone (fixed, or with ``anywhere`` at a seeded
+    random spot on the table): (scene, object name, zone centre)."""
     prep = prepare_object(folder / "textured.obj")
     rng = np.random.default_rng([seed, trial, sum(map(ord, folder.name))])
+    zone = np.array(ZONE_CENTRE)
+    if anywhere:  # anywhere on the table the zone fits, 2 cm inside its edges
+        zone = rng.uniform([-TABLE_SIZE[0] / 2 + ZONE_HALF + 0.02, -TABLE_SIZE[1] / 2 + ZONE_HALF + 0.02],
+                           [TABLE_SIZE[0] / 2 - ZONE_HALF - 0.02, TABLE_SIZE[1] / 2 - ZONE_HALF - 0.02])
     while True:
         xy = rng.uniform([-0.3, -0.2], [0.3, 0.2])
-        if np.linalg.norm(xy - np.array(ZONE_CENTRE)) > ZONE_HALF + 0.5 * float(np.max(prep.size[:2])) + 0.05:
+        if np.linalg.norm(xy - zone) > ZONE_HALF + 0.5 * float(np.max(prep.size[:2])) + 0.05:
             break
     yaw = float(rng.uniform(-np.pi, np.pi))
     label = prep.label
@@ -69,17 +75,17 @@ def build_scene(folder: Path, trial: int, seed: int) -> tuple[Scene, str]:
     floor = SupportPlane(0, "floor", np.array([0, 0, 1.0]), 0.0, _rect((0, 0), (3, 3)), np.zeros(2), np.array([3.0, 3.0]), 0.0, 0, observed=False)
     table = SupportPlane(1, "table", np.array([0, 0, 1.0]), TABLE_Z, _rect((0, 0), TABLE_SIZE), np.zeros(2), np.array(TABLE_SIZE), 0.0, 1000)
     scene = compose_scene(Scene(capture=cap, seed=seed, planes=[floor, table], objects=[obj]))
-    scene.spec.worldbody.add_geom(name="target_zone", type=mujoco.mjtGeom.mjGEOM_BOX, pos=[ZONE_CENTRE[0], ZONE_CENTRE[1], TABLE_Z + 0.0005],
+    scene.spec.worldbody.add_geom(name="target_zone", type=mujoco.mjtGeom.mjGEOM_BOX, pos=[zone[0], zone[1], TABLE_Z + 0.0005],
                                   size=[ZONE_HALF, ZONE_HALF, 0.0005], group=2, contype=0, conaffinity=0, rgba=[0.1, 0.8, 0.2, 0.5])
-    add_robot(scene, extra_targets=[np.array([ZONE_CENTRE[0], ZONE_CENTRE[1], TABLE_Z + 0.2])])
+    add_robot(scene, extra_targets=[np.array([zone[0], zone[1], TABLE_Z + 0.2])])
     settle_scene(scene)
-    return scene, name
+    return scene, name, zone
 
 
-def run_trial(job: tuple[str, int, int]) -> dict:
-    folder_name, trial, seed = job
+def run_trial(job: tuple[str, int, int, bool]) -> dict:
+    folder_name, trial, seed, anywhere = job
     t0 = time.perf_counter()
-    scene, name = build_scene(YCB / folder_name, trial, seed)
+    scene, name, zone = build_scene(YCB / folder_name, trial, seed, anywhere)
     t_build = time.perf_counter() - t0
     model = scene.spec.compile()
     data = mujoco.MjData(model)
@@ -95,7 +101,7 @@ def run_trial(job: tuple[str, int, int]) -> dict:
         "object": folder_name, "trial": trial, "graspable": graspable, "grasp": grasp.success, "place": bool(place and place.success),
         "attempts": grasp.attempts, "sim_time": data.time, "wall": wall, "build": t_build,
         "reason": grasp.reason if not grasp.success else ("" if place and place.success else (place.reason if place else "")),
-        "kind": grasp.values.get("kind"),
+        "kind": grasp.values.get("kind"), "zone": zone.tolist(),
     }
 
 
@@ -105,6 +111,7 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--jobs", type=int, default=min(2, os.cpu_count() or 1))
     ap.add_argument("--objects", default="", help="comma-separated substrings of object folder names")
+    ap.add_argument("--anywhere", action="store_true", help="each trial's zone at a seeded random spot on the table (the robot placed to reach it)")
     ap.add_argument("--verbose", action="store_true")
     args = ap.parse_args()
     folders = sorted(p.name for p in YCB.iterdir() if (p / "textured.obj").is_file())
@@ -113,7 +120,7 @@ def main() -> int:
         folders = [f for f in folders if any(k in f for k in keys)]
     for f in folders:  # warm the asset cache once, serially
         prepare_object(YCB / f / "textured.obj")
-    jobs = [(f, t, args.seed) for f in folders for t in range(args.trials)]
+    jobs = [(f, t, args.seed, args.anywhere) for f in folders for t in range(args.trials)]
     t0 = time.perf_counter()
     if args.jobs > 1:
         with get_context("spawn").Pool(args.jobs) as pool:
@@ -123,7 +130,7 @@ def main() -> int:
     total_wall = time.perf_counter() - t0
     if args.verbose:
         for r in rows:
-            print(f"  {r['object']:<22} t{r['trial']} grasp={r['grasp']!s:<5} place={r['place']!s:<5} att={r['attempts']} kind={r['kind']} sim={r['sim_time']:.1f}s {r['reason']}")
+            print(f"  {r['object']:<22} t{r['trial']} grasp={r['grasp']!s:<5} place={r['place']!s:<5} att={r['attempts']} kind={r['kind']} zone=({r['zone'][0]:+.2f},{r['zone'][1]:+.2f}) sim={r['sim_time']:.1f}s {r['reason']}")
     print(f"{'object':<22} {'grasp':>7} {'place':>7} {'attempts':>9} {'sim s':>7} {'wall s':>7}  notes")
     not_graspable: dict[str, str] = {}
     holdable_rows = []
