@@ -152,3 +152,16 @@ def test_determinism(scene: Scene) -> None:
     b, pose_b, data_b = _pick_and_place(scene, seed=3)
     assert [r.success for r in a] == [r.success for r in b]
     assert np.array_equal(pose_a, pose_b) and np.array_equal(data_a.qpos, data_b.qpos)
+
+
+def test_a_held_object_hanging_tilted_is_turned_back_to_how_it_stood(scene: Scene) -> None:
+    model, data = loaded(scene)
+    robot = Robot(model, data)
+    up = robot._up("box_a")
+    assert robot._upright("box_a") is None  # never grasped: nothing to compare with
+    tilted = np.array([np.sin(np.radians(25.0)), 0.0, np.cos(np.radians(25.0))])
+    robot.stood["box_a"] = tilted  # it stood tilted 25 degrees from how it is now
+    fix = robot._upright("box_a")
+    assert fix is not None and np.allclose(fix @ up, tilted, atol=1e-9) and np.allclose(fix @ fix.T, np.eye(3), atol=1e-9)
+    robot.stood["box_a"] = np.array([np.sin(np.radians(3.0)), 0.0, np.cos(np.radians(3.0))])
+    assert robot._upright("box_a") is None  # within stand_tilt: released as it hangs

@@ -81,3 +81,6 @@ def test_a_lidded_mug_is_lifted_and_carried_by_its_handle() -> None:
     assert res.values["kind"] == "handle" and res.values["lifted"] > 0.04
     placed = robot.place_in("lidded_mug", "target_zone")  # carried by the handle without slipping out
     assert placed.success, placed.reason
+    up = data.xmat[model.body("lidded_mug").id].reshape(3, 3)[:, 2]
+    assert up[2] > np.cos(np.radians(5.0))  # set down standing, let go without tipping it: the fingers backed out of the loop
+    assert not robot.geometry.touching("lidded_mug") & {"robot"}
