@@ -90,13 +90,10 @@ def test_a_completed_box_covers_no_pixel_the_camera_saw_past_and_keeps_what_is_t
     solid = _true_volume_points(truth)
     kept = np.mean(_inside(clipped, solid))
     assert kept >= 0.9 * np.mean(_inside([naive], solid)) and share < 0.15  # the cuts took free space, little of the box
-    held, _ = clip_pieces([hull], view, tolerance, keep_top=True)  # something stands on it: no cut faces up
-    assert max(p.bounds[1][2] for p in held) == pytest.approx(hull.bounds[1][2], abs=1e-6)  # the top it stands on kept
-    planes = np.column_stack([hull.face_normals, np.einsum("fk,fk->f", hull.face_normals, hull.triangles[:, 0])])
-    for p in held:  # every face looking up is one of the hull's own: no new cut faces up
-        up = p.face_normals[:, 2] > 1e-3
-        new = np.column_stack([p.face_normals[up], np.einsum("fk,fk->f", p.face_normals[up], p.triangles[up, 0])])
-        assert np.all(np.min(np.abs(new[:, None, :] - planes[None, :, :]).max(axis=2), axis=1) < 1e-4)
+    top = hull.bounds[1][2]
+    stands = pts[pts[:, 2] >= top - 0.01] + [0, 0, 0.0005]  # the base of something standing on all its top
+    held, _ = clip_pieces([hull], view, tolerance, keep=stands)
+    assert np.mean(_inside(held, stands - [0, 0, 0.001])) >= 0.99  # no cut took the top from under it (without keep: 87 %)
     assert _covered_pixels(held, view) <= 0.1 * naive_px
     assert np.mean(_inside(held, solid)) >= 0.9 * np.mean(_inside([naive], solid))
 

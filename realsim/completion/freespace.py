@@ -15,12 +15,14 @@ from __future__ import annotations
 
 import numpy as np
 import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.completion.view import DepthView
+from realsim.geometry import inside_convex_polygon
 from realsim.scene import SceneObject, SupportPlane
 
 MAX_CUTS = 6
@@ -63,7 +65,8 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     return np.vstack([piece.vertices, pts])
 
 
-def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int) -> tuple[np.ndarray, float, float]:
+def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int,
+              keep: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
     """The cut (normal, offset: keep ``n . x <= c``) minimising the share of ``inside`` lost plus
     MISS_WEIGHT times the share of the ``samples`` surface samples left seen through (``bad``), and
     that cost (the cost of no cut when no cut is better)."""
@@ -74,6 +77,8 @@ def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples:
     kept = np.searchsorted((pi + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right").reshape(cuts.shape, order="F")
     lost = 1.0 - (kept - len(pi) * np.arange(normals.shape[0])) / max(len(pi), 1)
     cost = lost + MISS_WEIGHT * np.arange(len(pb))[:, None] / samples
+    if keep is not None and len(keep):  # a cut must leave every ``keep`` point on the kept side
+        cost = np.where(cuts >= (keep @ normals.T).max(axis=0)[None, :], cost, np.inf)
     k, j = np.unravel_index(int(np.argmin(cost)), cost.shape)
     if cost[k, j] >= MISS_WEIGHT * len(bad) / samples:
         return normals[0], np.inf, MISS_WEIGHT * len(bad) / samples
@@ -86,33 +91,30 @@ def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
     return np.asarray(opt[:, :2] / opt[:, 2:3])
 
 
-def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int, keep_top: bool = False) -> tuple[np.ndarray, float, float]:
+def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int, keep: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
     """The best cut as a world half-space ``n . x <= c`` (and its cost): a plane among the fixed
     directions (see :func:`_directions`), or one through the camera centre (a line in the image that
-    trims the piece's silhouette). ``keep_top``: no cut may face up (it would take off the top
-    something stands on)."""
+    trims the piece's silhouette); either leaves the ``keep`` points (what stands on the piece) kept."""
     ray = bad.mean(axis=0) - view.camera
-    normals = _directions(ray / np.linalg.norm(ray))
-    n, c, cost = _best_cut(inside, bad, normals[normals[:, 2] <= 1e-6] if keep_top else normals, samples)
+    n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples, keep)
     t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
-    n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples)
+    n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples,
+                              None if keep is None else _image(view, keep))
     if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
         k = np.array([n2[0], n2[1], -c2])
         a, b = view.world_to_optical[:3, :3], view.world_to_optical[:3, 3]
-        world = a.T @ k
-        if not keep_top or world[2] <= 1e-6 * np.linalg.norm(world):
-            return world, float(-k @ b), cost2
+        return a.T @ k, float(-k @ b), cost2
     return n, c, cost
 
 
 def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float, seed: int = 0,
-                       splits: int = 2, keep_top: bool = False) -> list[trimesh.Trimesh]:
+                       splits: int = 2, keep: np.ndarray | None = None) -> list[trimesh.Trimesh]:
     """``piece`` (convex, world frame) cut until none of its surface samples lies nearer the camera
     than the captured depth at its pixel by more than ``tolerance``: convex pieces, none when next
     to nothing is left (a piece standing in seen free space). A cut that would lose more than
     MAX_CUT_LOSS of the piece (its hull bridges a concave side the camera saw) splits it in two
     halves across its longest extent instead, each clipped in turn (at most ``splits`` times deep).
-    ``keep_top``: the piece's top holds something up; no cut faces up (see :func:`_cut`)."""
+    ``keep``: points no cut may take off (the base of what stands on the piece, see :func:`_cut`)."""
     volume = piece.volume
     for _ in range(MAX_CUTS):
         surface = _samples(piece, seed)
@@ -123,14 +125,14 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         inside = np.vstack([voxel_centres(piece, step), surface[~bad]])
         if len(inside) > INSIDE_SAMPLES:
             inside = inside[np.random.default_rng(seed).choice(len(inside), INSIDE_SAMPLES, replace=False)]
-        n, c, _ = _cut(view, inside, surface[bad], len(surface), keep_top)
+        n, c, _ = _cut(view, inside, surface[bad], len(surface), keep)
         lost = float(np.mean(inside @ n > c)) if np.isfinite(c) else 0.0
         if splits > 0 and lost > MAX_CUT_LOSS and bad.mean() < 0.5 and np.max(piece.extents) > MIN_SPLIT:
             axis = np.zeros(3)
             axis[int(np.argmax(piece.extents))] = 1.0
             middle = float(np.median(inside @ axis))
             halves = [clip_convex(piece, sign * axis, sign * middle) for sign in (1.0, -1.0)]
-            return [c for h in halves if h is not None for c in clip_to_free_space(h, view, tolerance, seed, splits - 1, keep_top)]
+            return [c for h in halves if h is not None for c in clip_to_free_space(h, view, tolerance, seed, splits - 1, keep)]
         if not np.isfinite(c):  # no cut is worth its loss
             return [] if bad.mean() > 0.5 else [piece]
         cut = clip_convex(piece, -n, -c)
@@ -141,11 +143,11 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
 
 
 def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float,
-                keep_top: bool = False) -> tuple[list[trimesh.Trimesh], float]:
+                keep: np.ndarray | None = None) -> tuple[list[trimesh.Trimesh], float]:
     """Every piece clipped to the free space (pieces left empty dropped), and the share of volume
-    removed; ``keep_top``: no cut faces up, and no piece is split (something stands on its top)."""
-    splits = 2 if len(pieces) <= 2 and not keep_top else 0  # a shape already in many pieces is cut, not split further
-    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits, keep_top=keep_top)]
+    removed; ``keep``: points no cut may take off (something stands on it there)."""
+    splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
+    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits, keep=keep)]
     before = sum(p.volume for p in pieces)
     return out, (1.0 - sum(p.volume for p in out) / before) if before > 0 else 0.0
 
@@ -167,11 +169,24 @@ def free_space_tolerance(view: DepthView, params: CompletionParams, points: np.n
     return max(params.free_space_sigmas * sigma, params.free_space_min_tolerance)
 
 
+def _holds(pieces: list[trimesh.Trimesh], xy: np.ndarray) -> bool:
+    """Whether the footprint of ``pieces`` (world frame) still lies under all the points ``xy``."""
+    verts = np.vstack([p.vertices for p in pieces])[:, :2]
+    try:
+        polygon = verts[ConvexHull(verts).vertices]
+    except (QhullError, ValueError):
+        return False
+    return bool(np.all(inside_convex_polygon(xy, polygon, 0.0)))
+
+
 def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, tolerance: float, params: CompletionParams,
-                           supporters: set[int] | None = None) -> None:
+                           supporters: dict[int, np.ndarray] | None = None) -> None:
     """Clip every completed object's collision pieces to the free space (see :func:`clip_to_free_space`);
-    an object's single hull is also its visual, so that is clipped with it. Objects in ``supporters``
-    hold another on their top: no cut of theirs faces up, so that top stays where it was."""
+    an object's single hull is also its visual, so that is clipped with it. ``supporters``: objects
+    holding another on their top, with the points of what stands there (its base): no cut of theirs
+    takes those off, so that top stays where it was under them, and a clip that would leave them
+    beyond the supporter's footprint is not made (the shape stays as completed)."""
+    supporters = supporters or {}
     for obj in objects:
         if not obj.collision:
             continue
@@ -179,8 +194,10 @@ def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, toleranc
         world = [p.copy() for p in obj.collision]
         for p in world:
             p.apply_translation(base)
-        clipped, share = clip_pieces(world, view, tolerance, keep_top=obj.id in (supporters or set()))
+        clipped, share = clip_pieces(world, view, tolerance, keep=supporters.get(obj.id))
         if not clipped or (share <= 0.0 and len(clipped) == len(world)):
+            continue
+        if obj.id in supporters and not _holds(clipped, supporters[obj.id][:, :2]):
             continue
         hull = trimesh.convex.convex_hull(np.vstack([p.vertices for p in clipped]))
         if obj.visual is None or obj.visual is obj.collision[0]:  # a single hull is its own visual: the clipped pieces' hull
