@@ -200,7 +200,7 @@ class GraspSkill(Motion):
         for k, (cand, _, _) in enumerate(reachable[first:] + reachable[:first]):
             try:  # a path that cannot be planned moves nothing: try the next candidate
                 self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None)
-                self._straight(cand.pos, cand.rot)
+                self._straight(cand.pos, cand.rot, clear_but={obj})  # the open fingers come down clear of the neighbours
                 break
             except PlanFailure:
                 if k == len(reachable) - 1:
