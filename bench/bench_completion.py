@@ -6,7 +6,9 @@ converted object holding most of its pixels. Per object: volume IoU of the compl
 its composed pose) with the true mesh (occupancy on a 2 mm grid), the oriented size error (sorted
 extents of the oriented bounding boxes), whether it was found once, and the pixels where the
 completed solid hides something the camera saw farther away (a ray through the pixel centre hits
-the solid more than 1 cm before the captured depth: free space filled), and its collision pieces. ``--all`` covers every
+the solid more than 1 cm before the captured depth: free space filled), its collision pieces, whether
+the hand fits it in truth (narrowest width <= 76 mm) and the grasp planner finds a grasp on the
+completed shape, and for the bowl, mug and pitcher whether a 3 cm ball dropped in stays inside. ``--all`` covers every
 shared YCB object once per seed (three scenes of five, layouts table, counter, table). Run:
 
     .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline] [--keep out/completion]
@@ -18,6 +20,7 @@ import argparse
 import json
 import tempfile
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import open3d as o3d
@@ -25,6 +28,7 @@ import trimesh
 from scipy.spatial.transform import Rotation
 
 from realsim.perception.pcd_io import read_pcd
+from realsim.physics.sim_checks import ball_in_container_test
 from realsim.pipeline import convert
 from realsim.robot.grasps import narrowest_width, rim_candidates, side_candidates, top_down_candidates
 from realsim.synth import SceneSpec, make_scene, write_organized_view, ycb_root
@@ -122,6 +126,9 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         rec = next(o for o in record["objects"] if o["id"] == best)
         hulls = [trimesh.load(out / "assets" / f"{rec['name']}_collision_{i}.stl") for i in range(64)
                  if (out / "assets" / f"{rec['name']}_collision_{i}.stl").is_file()]
+        local = trimesh.util.concatenate(hulls)  # object frame: base at z = 0
+        ball = (ball_in_container_test(SimpleNamespace(hulls=hulls, solid=local, size=local.extents))["inside"]  # type: ignore[arg-type]
+                if obj.name in CONTAINERS else None)
         pose = np.eye(4)
         pose[:3, :3] = Rotation.from_quat(np.roll(rec["quat_wxyz"], -1)).as_matrix()
         pose[:3, 3] = rec["position"]
@@ -133,7 +140,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         rows.append({**row, "iou": volume_iou(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
                      "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"]),
-                     "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
+                     "ball": ball, "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
                      "graspable": declared_graspable(hulls, float(solid.bounds[0][2]), np.linalg.inv(world_to_optical)[:2, 3])})
     return rows
 
@@ -150,9 +157,9 @@ def main() -> None:
         root = args.keep or Path(tmp)
         runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
         rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, root, args.baseline, layout, objects)]
-    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s}  name given")
+    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s} {'ball':>4s}  name given")
     for r in rows:
-        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s}  "
+        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s} {'-' if r.get('ball') is None else 'in' if r['ball'] else 'out':>4s}  "
               f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''}")
     ious = [r["iou"] for r in rows]
     errs = [r["size_err_mm"] for r in rows if np.isfinite(r["size_err_mm"])]

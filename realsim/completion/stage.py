@@ -134,11 +134,12 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     separate_neighbours(solid, done, observed, params, pieces)
     part_overlapping(solid, done, observed, params, pieces)
     if view is not None and params.clip_free_space:
-        held: dict[int, list[np.ndarray]] = {}  # a supporter's top keeps what stands on it level: those bases
+        held: dict[int, list[np.ndarray]] = {}  # a supporter keeps what stands on it level (those bases) and what was seen of it
         for o in order:
             if o.resting_on is not None and o.collision:
                 low = np.vstack([p.vertices for p in o.collision]) + o.position
-                held.setdefault(o.resting_on, []).append(low[low[:, 2] <= low[:, 2].min() + 0.002])
+                seen = observed[o.resting_on]
+                held.setdefault(o.resting_on, [seen[:: max(1, len(seen) // 2000)]]).append(low[low[:, 2] <= low[:, 2].min() + 0.002])
         keep_out_of_free_space(order, view, tolerance, params, {k: np.vstack(v) for k, v in held.items()})
     for obj in order:
         if obj.resting_on is None and params.balance_margin > 0:
