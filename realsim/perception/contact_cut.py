@@ -42,6 +42,7 @@ class CutParams:
     rest_fraction: float = 0.35  # ... and rests on the other only if they meet in its lowest part of its height
     max_depth: int = 4  # bisections per group
     intact_share: float = 0.8  # a first cluster with this share of its points in one final part stays as it was
+    confirm_share: float = 0.97  # ... and with this share it keeps the rest of its points too
 
 
 def concave_link_weights(points: np.ndarray, normals: np.ndarray, a: np.ndarray, b: np.ndarray,
@@ -163,17 +164,19 @@ def cut_contacts(points: np.ndarray, normals: np.ndarray, height: np.ndarray, la
                                                              shape=(len(part), len(part))), directed=False)
             for c in np.unique(comp):
                 stack.append((part[comp == c], depth + 1))
-    return _keep_intact(labels, parts, params.intact_share)
+    return _keep_intact(labels, parts, params.intact_share, params.confirm_share)
 
 
-def _keep_intact(labels: np.ndarray, parts: list[np.ndarray], share: float) -> np.ndarray:
+def _keep_intact(labels: np.ndarray, parts: list[np.ndarray], share: float, confirm: float) -> np.ndarray:
     """Labels of the final parts. A cluster of the first segmentation with at least ``share`` of
     its points in one part is kept there as it was (touching objects no cut separated stay apart);
     the rest of that part, pieces of clusters a cut went through, joins its largest kept cluster,
-    or becomes a new object when none is kept."""
+    or becomes a new object when none is kept. A cluster with at least ``confirm`` of its points
+    in one part keeps all of them."""
     size = np.bincount(labels[labels >= 0])
     out = np.full(len(labels), -1, dtype=np.int64)
     next_label = int(len(size))
+    sure: list[int] = []
     for members in parts:
         own, count = np.unique(labels[members], return_counts=True)
         kept = own[count >= share * size[own]]
@@ -184,5 +187,10 @@ def _keep_intact(labels: np.ndarray, parts: list[np.ndarray], share: float) -> n
         out[members] = kept[np.argmax(size[kept])]
         whole = np.isin(labels[members], kept)
         out[members[whole]] = labels[members[whole]]
+        sure.extend(own[count >= confirm * size[own]].tolist())
+    # a cluster the cuts confirm but for a sliver keeps that sliver too: along a boundary it
+    # found, the patch-level segmentation is surer than single points
+    confirmed = np.isin(labels, sure)
+    out[confirmed] = labels[confirmed]
     return out
 

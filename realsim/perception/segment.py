@@ -227,18 +227,20 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
     return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
 
 
-def _point_outward(points: np.ndarray, normals: np.ndarray, patch_outward: np.ndarray, resolution: float | None,
-                   params: SegmentParams, context: np.ndarray | None) -> np.ndarray:
-    """Each point's normal on its outward side: what the point itself sees where that decides (a
-    cloud fine enough, :mod:`realsim.perception.visibility`), else its patch's outward side (a
-    patch straddling a contact has one side for two surfaces)."""
-    out = _orient(normals, -patch_outward)
+def _point_outward(points: np.ndarray, normals: np.ndarray, resolution: float | None, params: SegmentParams,
+                   context: np.ndarray | None) -> np.ndarray | None:
+    """Each point's normal on its outward side for a cloud at most ``contact_cut_cell`` fine (else
+    None): what the point itself sees where that decides (a cloud finer still,
+    :mod:`realsim.perception.visibility`), else the side it was given (its patch's)."""
     cell = _spacing(points)
-    if (resolution if resolution is not None else cell) > params.visibility_cell:
-        return out
-    seen = visibility_score(points if context is None else np.vstack([points, context]), points, out, cell,
+    working = resolution if resolution is not None else cell
+    if working > params.contact_cut_cell:
+        return None
+    if working > params.visibility_cell:
+        return normals
+    seen = visibility_score(points if context is None else np.vstack([points, context]), points, normals, cell,
                             5 * params.orientation_radius)
-    return out * np.where(seen <= -2, -1.0, 1.0)[:, None]
+    return normals * np.where(seen <= -2, -1.0, 1.0)[:, None]
 
 
 def _spacing(points: np.ndarray) -> float:
@@ -331,9 +333,11 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
-        point_normals = _point_outward(points[ids], normals[ids], nrm[part], resolution, params, context)
-        cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points, stand_height=params.stack_min_height)
-        obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
+        point_normals = _point_outward(points[ids], _orient(normals[ids], -nrm[part]), resolution, params, context)
+        if point_normals is not None:  # a coarse cloud's point normals span whole small objects: no cut
+            cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
+                            stand_height=params.stack_min_height)
+            obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
         obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]

@@ -41,6 +41,8 @@ class SegmentParams:
     color_edge: float | None = None  # segments whose mean RGB differ more do not join directly (None: off;
     # on textured real objects any useful threshold splits objects, see bench)
     max_concave_fraction: float = 0.5  # regions whose border is more concave than this stay apart
+    contact_cut_cell: float = 0.015  # m: clouds this fine re-cut touching clusters at concave folds
+    # (realsim.perception.contact_cut); coarser, a point's normal spans half a small object
     # objects
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
