@@ -94,9 +94,12 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
     context = scene.points[walls][:: max(1, int(round((resolution / (scene.capture.point_spacing or resolution)) ** 2)))]
-    result = segment_objects(centres, colors, scene.planes, None, at_resolution(params, resolution), seed=scene.seed,
-                             resolution=resolution, context=context)
     noise = _noise(scene, params)
+    working = at_resolution(params, resolution)
+    if resolution < 2 * noise:  # neighbours' offsets are mostly noise: a fold cannot be told at one cell
+        working = dataclasses.replace(working, contact_cut_cell=0.0)
+    result = segment_objects(centres, colors, scene.planes, None, working, seed=scene.seed,
+                             resolution=resolution, context=context)
     result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
     _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
