@@ -84,9 +84,11 @@ class Release(Motion):
         rel0 = self.object_points(obj) - tcp  # the object relative to the tcp: it turns with the hand
         fix = self._upright(obj)
         frames = ([(rel0 @ fix.T, fix @ rot0)] if fix is not None else []) + [(rel0, rot0)]
+        if cavity is not None:  # a container's walls hold the object as it hangs; the hand turned back comes second
+            frames.reverse()
         tries: list[tuple[Pose, np.ndarray, np.ndarray, np.ndarray]] = []
         last: PlanFailure | None = None
-        for rel, rot in frames:  # the hand turned so the object stands as it stood first, then as it hangs
+        for rel, rot in frames:  # the hand turned so the object stands as it stood, and as it hangs
             axis = long_axis(rel)
             start = {id(xy): turn for xy, turn in zip(candidates, turns or [])}
             poses: list[Pose] = [(xy, yaw + start.get(id(xy), 0.0), drop, 0.0) for xy, yaw, drop in
