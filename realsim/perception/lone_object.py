@@ -42,13 +42,13 @@ def _mesh_shape(path: str, mtime_ns: int) -> tuple[float, bool]:
     try:
         mesh = trimesh.load(path, force="mesh", process=False)
         bounds = mesh.bounds
-    except Exception:
+        if bounds is None or not np.all(np.isfinite(bounds)) or len(mesh.faces) == 0:
+            return 0.0, False
+        extent = float(np.max(bounds[1] - bounds[0]))
+        mesh.merge_vertices(merge_tex=True, merge_norm=True)
+        _, uses = np.unique(np.sort(mesh.edges, axis=1), axis=0, return_counts=True)
+        parts = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
+        area = np.bincount(parts, weights=mesh.area_faces)
+    except Exception:  # unreadable or absurd geometry: not an object (the scan path says what is wrong)
         return 0.0, False
-    if bounds is None or not np.all(np.isfinite(bounds)) or len(mesh.faces) == 0:
-        return 0.0, False
-    mesh.merge_vertices(merge_tex=True, merge_norm=True)
-    _, uses = np.unique(np.sort(mesh.edges, axis=1), axis=0, return_counts=True)
-    parts = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
-    area = np.bincount(parts, weights=mesh.area_faces)
-    one_body = bool((uses == 2).mean() >= 0.99 and area.max() >= 0.995 * area.sum())
-    return float(np.max(bounds[1] - bounds[0])), one_body
+    return extent, bool((uses == 2).mean() >= 0.99 and area.max() >= 0.995 * area.sum())
