@@ -12,6 +12,7 @@ from numpy.typing import ArrayLike
 
 from realsim.planner import relations
 from realsim.robot.grasps import frame_from, rotate_about
+from realsim.robot.ik import IKResult
 from realsim.robot.motion import Motion, Solve
 from realsim.robot.pushing import StrokeParams, first_contact, strokes
 from realsim.robot.queries import box_centre, box_centre_3d
@@ -58,10 +59,11 @@ class PushSkill(Motion):
             self._gripper(0.0)
             pushed = {obj, *riding}
             last: PlanFailure | None = None
+            solved: dict[tuple[float, ...], IKResult] = {}  # contact IK per (contact, hand rotation): strokes of one direction share it
             for u, length in options:
                 ds = np.array([*u, 0.0])
                 try:
-                    rot, stroke = self._plan_stroke(pts, z, ds, length, pushed)
+                    rot, stroke = self._plan_stroke(pts, z, ds, length, pushed, solved)
                     break
                 except PlanFailure as exc:
                     last = last or exc  # the first stroke's reason: the one asked, or the nearest to it
@@ -85,9 +87,11 @@ class PushSkill(Motion):
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
 
-    def _plan_stroke(self, pts: np.ndarray, z: float, d: np.ndarray, distance: float, pushed: set[str]) -> tuple[np.ndarray, list[np.ndarray]]:
+    def _plan_stroke(self, pts: np.ndarray, z: float, d: np.ndarray, distance: float, pushed: set[str],
+                     solved: dict[tuple[float, ...], IKResult]) -> tuple[np.ndarray, list[np.ndarray]]:
         """(hand rotation, checked joint path) of a stroke pushing ``pts`` by ``distance`` along
-        ``d`` with the fingers at height ``z``, the arm moved to its start; raises PlanFailure."""
+        ``d`` with the fingers at height ``z``, the arm moved to its start; raises PlanFailure.
+        ``solved`` keeps the contact IK of earlier strokes (keyed by contact and rotation)."""
         pp = self.params.push
         centre = np.array([*pts[:, :2].mean(axis=0), z])
         contact = centre + d * (float(((pts - centre) @ d).min()) - pp.standoff)
@@ -102,9 +106,14 @@ class PushSkill(Motion):
         last: PlanFailure | None = None
         for rot in [r for group in leaning for r in group]:  # upright when the tilted hand cannot reach, steeper past a tall face
             try:  # the stroke is planned and checked first: only the hand may touch the pushed object
-                q_c = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
+                key = tuple(np.round(np.concatenate([contact, rot.ravel()]), 5))
+                if key not in solved:
+                    solved[key] = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
+                q_c = solved[key]
                 if not q_c.converged:
                     raise PlanFailure(f"push contact {np.round(contact, 3).tolist()} unreachable ({q_c.reason})")
+                if not self._ik(end, rot, q_c.q).converged:  # one solve rules out a stroke the arm cannot finish
+                    raise PlanFailure(f"push end {np.round(end, 3).tolist()} out of reach")
                 stroke = self._line(contact, end, rot, rot, q_c.q, solve=self._stroke_solve(pushed, contact, d))
                 self._check_stroke(pushed, stroke, contact, d)
                 self._transit(contact, rot, skip=None, q_goal=q_c.q)
