@@ -39,7 +39,7 @@ sys.path.insert(0, str(REPO / "tests"))
 os.environ.setdefault("MENAGERIE_ROOT", str(REPO.parent / "shared" / "data"))
 os.environ.setdefault("MUJOCO_GL", "egl")
 
-from commands_heldout import HELDOUT, HELDOUT2, HELDOUT3, HELDOUT4, HELDOUT5, HELDOUT6  # noqa: E402
+from commands_heldout import HELDOUT, HELDOUT2, HELDOUT_SETS  # noqa: E402
 
 from realsim.errors import InputError, RealsimError  # noqa: E402
 from realsim.planner import ClaudePlanner, RulePlanner, run  # noqa: E402
@@ -490,13 +490,35 @@ def bench_sim(args: argparse.Namespace) -> int:
 
 def _suite(args: argparse.Namespace) -> list[tuple[str, str, str]]:
     """The sentences ``--set`` chooses: the suite, a held-out batch, or all."""
-    return {"suite": SUITE, "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3,
-            "heldout4": HELDOUT4, "heldout5": HELDOUT5, "heldout6": HELDOUT6, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
+    return {"suite": SUITE, **HELDOUT_SETS, "all": SUITE + HELDOUT + HELDOUT2}[args.set]
+
+
+def _same_goal(a, b, tol: float = 0.005) -> bool:
+    """Two goals of one kind on the same objects with the same side, direction and distance
+    (numbers within ``tol``: a plan rounds positions to the millimetre)."""
+    import dataclasses
+
+    if type(a) is not type(b):
+        return False
+    for f in dataclasses.fields(a):
+        if not f.compare:
+            continue
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, (int, float)) and isinstance(y, (int, float)):
+            if abs(x - y) > tol:
+                return False
+        elif isinstance(x, tuple) and isinstance(y, tuple):
+            if len(x) != len(y) or any(abs(u - v) > tol for u, v in zip(x, y)):
+                return False
+        elif x != y:
+            return False
+    return True
 
 
 def bench_plans(args: argparse.Namespace) -> int:
     """Plan every sentence of :data:`SUITE` on its scene (no physics): a plan is right when it
-    refuses exactly the "refuse" sentences and otherwise acts on exactly the objects the goal moves."""
+    refuses exactly the "refuse" sentences and otherwise acts on exactly the objects the goal moves,
+    with every expected goal (relation, side, direction, distance) among the plan's goals."""
     import re
 
     from realsim.planner import make_planner
@@ -513,7 +535,7 @@ def bench_plans(args: argparse.Namespace) -> int:
             sims[scene] = Sim.load(make_scene(scene, root))
         sim = sims[scene]
         try:
-            _, movers = expected_goals(spec, sim)
+            goals, movers = expected_goals(spec, sim)
         except KeyError as exc:  # the scene as built today names its objects otherwise
             print(f"  NO GOAL {scene}: {sentence!r}: {exc}")
             skipped += 1
@@ -523,12 +545,15 @@ def bench_plans(args: argparse.Namespace) -> int:
             acted = (set(plan.calls.acted_on()) if plan.calls is not None
                      else set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program)))
             ok, got = spec != "refuse" and acted == movers, ", ".join(sorted(acted)) or "nothing"
+            missing = sorted(g.describe() for g in goals if not any(_same_goal(g, h) for h in plan.goals))
+            if ok and missing:  # the right objects, but another relation, side, direction or distance
+                ok, got = False, f"{got}; goals {sorted(g.describe() for g in plan.goals)} lack {missing}"
         except InputError as exc:
             ok, got = spec == "refuse", f"refused: {exc}"
         right += ok
         if not ok:
             print(f"  WRONG {scene}: {sentence!r} -> {got[:160]} (expected {spec})")
-    print(f"{args.planner} planner: {right}/{len(suite)} plans right (refusals and acted-on objects) over {len(sims)} scenes"
+    print(f"{args.planner} planner: {right}/{len(suite)} plans right (refusals, acted-on objects and goals) over {len(sims)} scenes"
           + (f"; {skipped} sentences name objects this build of their scene does not have" if skipped else ""))
     return 0
 
@@ -575,7 +600,7 @@ def main() -> int:
     ap.add_argument("--scene", action="append", help="--sim: only this scene (repeatable)")
     ap.add_argument("--limit", type=int, default=0, help="--sim: only the first N sentences")
     ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--set", default="suite", choices=["suite", "heldout", "heldout2", "heldout3", "heldout4", "heldout5", "heldout6", "all"],
+    ap.add_argument("--set", default="suite", choices=["suite", *HELDOUT_SETS, "all"],
                     help="--plans/--sim: the suite, a held-out batch (bench/commands_heldout.py), or all")
     args = ap.parse_args()
     if args.plans:

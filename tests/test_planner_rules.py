@@ -178,6 +178,10 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("put the left can in the bowl and the banana on the table", ["place_in('obj1_soda_can', 'obj6_bowl')", "place_down('obj7_banana')"]),
     ("push the left can 5 cm forward and then push the other one back 5 cm",
      ["push('obj1_soda_can', 'forward', 0.05)", "push('obj2_soda_can', 'back', 0.05)"]),
+    ("move the can on the left next to the banana", ["place_beside('obj1_soda_can', 'obj7_banana', 'next')"]),
+    ("the banana: lift it", ["grasp('obj7_banana')"]),
+    ("i want the banana in the bowl and the strawberry too",
+     ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
 ]
 
 
@@ -221,3 +225,12 @@ def test_left_and_right_follow_the_robot_heading() -> None:
     assert [c.text() for c in plan.calls] == ["grasp('obj2_can')"]
     with pytest.raises(InputError, match="ambiguous.*level"):  # facing +x both are equally far left
         RulePlanner().plan("grab the left can", cans)
+
+
+def test_a_pushed_container_keeps_what_it_holds_checked() -> None:
+    """Pushing the bowl after filling it carries the banana along: "inside" is still checked;
+    moving the bowl by hand afterwards is not a state the command promised."""
+    pushed = RulePlanner().plan("put the banana in the bowl, then push the bowl 5 cm left", CLUTTER)
+    assert any(isinstance(g, Inside) for g in pushed.goals)
+    lifted = RulePlanner().plan("put the banana in the bowl, then pick up the bowl", CLUTTER)
+    assert not any(isinstance(g, Inside) for g in lifted.goals)

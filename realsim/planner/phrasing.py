@@ -67,7 +67,7 @@ def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
     text = re.sub(r"[!?]+", ".", text)
-    text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*", ", ", text)  # a dash between phrases: a pause, as a comma
+    text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
     text = _VOCATIVE.sub(" ", text)
@@ -123,12 +123,14 @@ def split_command(command: str) -> list[str]:
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part):
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
-            if verb and verb.group(0) in PUT and rel and rel_re.search(f" {part} "):
-                clauses.append(f"{verb.group(0)} {part}")  # "put the can in the bowl and the mug on the box"
-            elif verb and verb.group(0) in PUT and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
+            # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
+            put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
+            if put is not None and rel and rel_re.search(f" {part} "):
+                clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
+            elif put is not None and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
-                clauses.append(f"{verb.group(0)} {obj} {clauses[-1][rel.start():].strip()}")
+                clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())
             else:
                 clauses[-1] = f"{clauses[-1]} and {part}"
         else:

@@ -90,13 +90,19 @@ def _final_goals(steps: list[Step]) -> list[Goal]:
             if isinstance(g, AtHome):
                 if not any(s.moves_robot and not any(isinstance(h, AtHome) for h in s.goals) for s in later):
                     goals.append(g)
-            elif getattr(g, "obj", None) not in later_objects and not _disturbed(g, later_objects):
+            elif getattr(g, "obj", None) not in later_objects and not _disturbed(g, later):
                 goals.append(g)
     return goals
 
 
-def _disturbed(goal: Goal, later_objects: set[str]) -> bool:
-    """A relation to an object that a later step moves is not checked (it was true when made)."""
+def _disturbed(goal: Goal, later: list[Step]) -> bool:
+    """A relation to an object that a later step moves is not checked (it was true when made),
+    except what a pushed container or support carries along ("... then push the bowl")."""
+    later_objects = {o for s in later for o in s.objects}
+    if isinstance(goal, (Inside, On)):
+        pushed = {c.args[0] for s in later for c in s.calls if c.name == "push" and c.args}
+        handled = {c.args[0] for s in later for c in s.calls if c.name != "push" and c.args}
+        later_objects -= pushed - handled
     refs = [getattr(goal, a, None) for a in ("container", "support", "ref", "a", "b")]
     return any(r in later_objects for r in refs if r)
 
@@ -219,6 +225,8 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
         if (not obj_phrase or not target_phrase or _starts_with_relation(target_phrase)
                 or (kind == "to" and re.search(r"\b(?:left|right|front|back|side|top|edge)\b.*\bof\b", target_phrase))):
             continue  # "move the banana over next to the can": "over" is a particle here
+        if _SPOT.match(target_phrase) and _starts_with_relation(_SPOT.sub("", target_phrase, count=1).strip()):
+            continue  # "move the box on the left next to the mug": "on the left" says which box
         try:
             return _relation(obj_phrase, kind, target_phrase, p, verb)
         except InputError as exc:
@@ -226,6 +234,9 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
     if last_error is not None:
         raise last_error
     return None
+
+
+_SPOT = re.compile(r"(?:the )?(?:far |very )?(?:left|right|middle|centre|center|front|back|end|edge|corner)(?: side| end| hand side| edge)?\b")
 
 
 def _starts_with_relation(text: str) -> bool:
