@@ -7,6 +7,8 @@ refused.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -16,6 +18,7 @@ from realsim.robot.ik import IKResult
 from realsim.robot.motion import Motion, Solve
 from realsim.robot.pushing import StrokeParams, first_contact, strokes
 from realsim.robot.queries import box_centre, box_centre_3d
+from realsim.robot.reach import ReachBound
 from realsim.robot.result import ActionResult, PlanFailure
 
 __all__ = ["PushSkill"]
@@ -25,6 +28,11 @@ class PushSkill(Motion):
     """push."""
 
     stroke = StrokeParams()
+
+    @functools.cached_property
+    def reach(self) -> ReachBound:
+        """The arm's reach by geometry: a stroke it rules out needs no IK."""
+        return ReachBound.of(self.ik)
 
     def push(self, obj: str, direction: ArrayLike, distance: float, max_sim_time: float | None = None) -> ActionResult:
         """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers."""
@@ -106,6 +114,10 @@ class PushSkill(Motion):
         last: PlanFailure | None = None
         for rot in [r for group in leaning for r in group]:  # upright when the tilted hand cannot reach, steeper past a tall face
             try:  # the stroke is planned and checked first: only the hand may touch the pushed object
+                past = max(self.reach.excess(contact, rot), self.reach.excess(end, rot))
+                if past > 0:  # by geometry, before any IK: the wrist cannot stretch that far
+                    raise PlanFailure(f"push end {np.round(end, 3).tolist()} out of reach (the wrist would be "
+                                      f"{past * 100:.0f} cm past the arm's longest stretch)")
                 key = tuple(np.round(np.concatenate([contact, rot.ravel()]), 5))
                 if key not in solved:
                     solved[key] = self._ik_clear(contact, rot, np.array(self.ik.home), hand_may_touch=pushed)
