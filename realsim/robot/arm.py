@@ -25,6 +25,7 @@ from realsim.robot.world import SceneGeometry
 __all__ = ["Arm"]
 
 QUINTIC_PEAK = 1.875  # peak speed of the quintic time scaling, in units of the mean speed
+QUINTIC_ACCEL = 5.7735  # its peak acceleration, in units of distance over duration squared
 
 
 class Arm:
@@ -109,7 +110,7 @@ class Arm:
         if total < 1e-6:
             return
         cum = np.concatenate([[0.0], np.cumsum(seg)])
-        duration = max(QUINTIC_PEAK * total / self.params.max_joint_speed, self.params.min_segment_time)
+        duration = max(QUINTIC_PEAK * total / self.params.max_joint_speed, self.params.min_segment_time, self._carry_time(pts))
         start = self.data.time
         while True:
             t = min((self.data.time - start) / duration, 1.0)
@@ -122,6 +123,11 @@ class Arm:
             self._step()
         if settle:
             self._settle()
+
+    def _carry_time(self, pts: np.ndarray) -> float:
+        """The shortest duration (s) of a trajectory through joint points ``pts`` that what the hand
+        holds allows (0 here: nothing limits it; the grasp skill bounds the carry's acceleration)."""
+        return 0.0
 
     def _follow_corners(self, corners: list[np.ndarray]) -> None:
         """Track a joint polyline through its ``corners`` (a planned transit): a quintic time scaling

@@ -51,6 +51,7 @@ class PickParams:
     lift_reward: float = 0.4  # reward for a full lift (scaled by the height reached)
     statics_weight: float = 0.3  # taken off a pinch's score per unit of torque needed over torque held
     squeeze_safety: float = 2.0  # the gripper squeezes this many times what the pinch's statics need
+    carry_accel: tuple[float, float] = (1.0, 4.0)  # m/s2: the least and most peak acceleration of a carried object's pinch
 
 
 @dataclass(frozen=True)

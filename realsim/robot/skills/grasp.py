@@ -9,6 +9,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from realsim.robot.arm import QUINTIC_ACCEL
 from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, grasp_candidates, narrowest_width, rotate_about, twist_check
 from realsim.robot.handles import handle_candidates
 from realsim.robot.ik import IKResult
@@ -140,6 +141,7 @@ class GraspSkill(Motion):
                     self.held, self.pinch = obj, (str(info.get("kind", "")), float(info.get("width", 0.0)))
                     return ActionResult("grasp", True, "", attempts=attempt, values={"graspable": True, "lifted": info.get("lifted"), "kind": info.get("kind"), "log": log})
                 # reset for the next attempt: open, back up, home
+                self.held, self.pinch = None, ("", 0.0)
                 self._gripper(GRIPPER_OPEN_CTRL)
                 pos, _ = self.tcp_pose()
                 try:
@@ -151,7 +153,29 @@ class GraspSkill(Motion):
                     return ActionResult("grasp", False, f"{obj} fell off its support", attempts=attempt, values={"log": log})
             last = log[-1] if log else {}
             return ActionResult("grasp", False, f"no grasp held after {attempts} attempts (last: {last.get('error') or last.get('failure', '')})", attempts=attempts, values={"graspable": True, "log": log})
-        return self._run("grasp", body, max_sim_time or self.params.max_sim_time * pk.budget_factor)
+        res = self._run("grasp", body, max_sim_time or self.params.max_sim_time * pk.budget_factor)
+        if not res.success:
+            self.held, self.pinch = None, ("", 0.0)
+        return res
+
+    def _carry_time(self, pts: np.ndarray) -> float:
+        """A held object is carried no faster than its pinch holds it: the tcp's peak acceleration
+        (quintic time scaling over the tcp's path through joint points ``pts``) stays where the
+        inertial torque, mass x acceleration x the lever from the pinch to the centre of mass, fits
+        in what the pinch resists beyond the weight's own torque (:func:`twist_check` at the
+        gripper's present squeeze), within ``carry_accel``."""
+        obj, (kind, width) = self.held, self.pinch
+        if obj is None or not kind:
+            return 0.0
+        b, (lo, hi) = self._body(obj), self.params.pick.carry_accel
+        tcp, rot = self.tcp_pose()
+        mujoco.mj_comPos(self.model, self.data)
+        com, mass = self.data.subtree_com[b].copy(), float(self.model.body_subtreemass[b])
+        force = pad_force(self.model, self.grip_act, width, float(self.data.ctrl[self.grip_act]))
+        _, need, can = twist_check(GraspCandidate(kind, tcp, rot, width, 0.0), com, mass, self._friction(b), force)
+        accel = float(np.clip((can - need) / (mass * max(float(np.linalg.norm(com - tcp)), 1e-3)), lo, hi))
+        path = np.array([self.ik.fk(q)[0] for q in pts])
+        return float(np.sqrt(QUINTIC_ACCEL * np.linalg.norm(np.diff(path, axis=0), axis=1).sum() / accel))
 
     def _reachable(self, cands: list[GraspCandidate], tilt: float, yaw: float) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
         """The candidates the hand reaches, turned by ``tilt`` about their closing axis and ``yaw``
@@ -206,6 +230,7 @@ class GraspSkill(Motion):
                 if k == len(reachable) - 1:
                     raise
         self._gripper(self._close_ctrl(obj, cand))
+        self.held, self.pinch = obj, (cand.kind, cand.width)  # the lift moves as this pinch allows (:meth:`_carry_time`)
         touching = self._contacts_with(obj)
         z_before = float(self.object_points(obj)[:, 2].min())
         pos, _ = self.tcp_pose()
