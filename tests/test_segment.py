@@ -352,3 +352,22 @@ def test_mug_with_a_handle_in_a_cloud_is_one_object() -> None:
     result = segment_objects(points, None, [_table()], None, SegmentParams(), seed=0)
     assert len(np.unique(result.labels[result.labels > 0])) == 1
     assert matched_ious(result.labels, gt)[0] > 0.85
+
+
+def test_small_pieces_gather_only_into_an_object_sized_whole() -> None:
+    """Three small pieces linked in a chain (none object-sized) join when together they reach the
+    size; two small pieces that stay under it keep apart; a piece beside a large one joins it."""
+    from realsim.perception.segment import absorb_small
+
+    def chain(sizes: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        labels = np.repeat(np.arange(len(sizes)), sizes)
+        a = np.arange(len(labels) - 1)
+        return labels, a, a + 1
+
+    labels, a, b = chain([30, 50, 40])  # one object seen as three pieces
+    assert len(np.unique(absorb_small(labels, a, b, 100, among_small=True))) == 1
+    assert len(np.unique(absorb_small(labels, a, b, 100))) == 3  # without gathering they stay
+    labels, a, b = chain([30, 40])  # together still under the size: left as they were
+    assert len(np.unique(absorb_small(labels, a, b, 100, among_small=True))) == 2
+    labels, a, b = chain([30, 500, 40])
+    assert len(np.unique(absorb_small(labels, a, b, 100, among_small=True))) == 1

@@ -78,11 +78,27 @@ def _pair_counts(la: np.ndarray, lb: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return keys // base, keys % base, counts
 
 
-def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int = 3) -> np.ndarray:
+def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int = 3,
+                 among_small: bool = False) -> np.ndarray:
     """Give each segment smaller than ``min_size`` to the neighbour it shares most links with.
 
     ``labels`` are segment indices (>= 0) of the linked points; segments with no neighbour stay.
+    With ``among_small``, small segments whose neighbours are all small then gather, each in its
+    best larger neighbour, where together they reach ``min_size`` (an object seen small is all
+    pieces, none of which is an object by itself); smaller gatherings stay as they were.
     """
+    out = _absorb(labels, a, b, min_size, passes, False)
+    if among_small:
+        gathered = _absorb(out, a, b, min_size, passes, True)
+        whole = np.bincount(gathered)[gathered] >= min_size
+        out = np.where(whole, gathered, out + int(gathered.max(initial=0)) + 1)
+    return np.unique(out, return_inverse=True)[1].ravel()
+
+
+def _absorb(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int,
+            among_small: bool) -> np.ndarray:
+    """:func:`absorb_small`'s passes; ``among_small``: a small segment with no large neighbour
+    joins its best larger (small) one."""
     labels = labels.copy()
     for _ in range(passes):
         size = np.bincount(labels)
@@ -94,6 +110,11 @@ def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int
         dst = np.concatenate([j, i])
         cnt = np.concatenate([c, c]).astype(np.float64)
         keep = small[src] & ~small[dst]
+        if among_small:
+            has_large = np.zeros(len(size), dtype=bool)
+            has_large[src[keep]] = True
+            larger = (size[dst] > size[src]) | ((size[dst] == size[src]) & (dst > src))
+            keep |= small[src] & small[dst] & ~has_large[src] & larger
         if not keep.any():
             break
         src, dst, cnt = src[keep], dst[keep], cnt[keep]
@@ -103,7 +124,7 @@ def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int
         target = np.arange(len(size))
         target[src[first]] = dst[first]
         labels = target[labels]
-    return np.unique(labels, return_inverse=True)[1].ravel()
+    return labels
 
 
 def segment_normals(points: np.ndarray, labels: np.ndarray, n_seg: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -328,7 +349,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         convex &= np.linalg.norm(col[si] - col[sj], axis=1) < params.color_edge
     cos = np.clip((nrm[si] * nrm[sj]).sum(axis=1), -1, 1)
     obj = merge_regions(n_seg, si, sj, cnt[contact], convex, np.argsort(-cos, kind="stable"), params.max_concave_fraction)[part]
-    obj = absorb_small(obj, la, lb, params.absorb_points)
+    obj = absorb_small(obj, la, lb, params.absorb_points, among_small=organized)
     size = np.bincount(obj)
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
