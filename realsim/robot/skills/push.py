@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike
 from realsim.planner import relations
 from realsim.robot.grasps import frame_from, rotate_about
 from realsim.robot.ik import IKResult
-from realsim.robot.motion import Motion, Solve
+from realsim.robot.motion import Motion, PathBlocked, Solve
 from realsim.robot.pushing import StrokeParams, first_contact, strokes
 from realsim.robot.queries import box_centre, box_centre_3d
 from realsim.robot.reach import ReachBound
@@ -111,7 +111,7 @@ class PushSkill(Motion):
         upright.sort(key=lambda r: -float(np.trace(now_rot.T @ r)))
         leaning = [[rotate_about(np.array([d[1], -d[0], 0.0]), t) @ r for r in upright] for t in (pp.tilt, 0.0, *pp.steep_tilts)]
         end = contact + d * (distance + pp.standoff)
-        last: PlanFailure | None = None
+        failures: list[PlanFailure] = []
         for rot in [r for group in leaning for r in group]:  # upright when the tilted hand cannot reach, steeper past a tall face
             try:  # the stroke is planned and checked first: only the hand may touch the pushed object
                 past = max(self.reach.excess(contact, rot), self.reach.excess(end, rot))
@@ -131,8 +131,9 @@ class PushSkill(Motion):
                 self._transit(contact, rot, skip=None, q_goal=q_c.q)
                 return rot, stroke
             except PlanFailure as exc:
-                last = exc
-        raise last or PlanFailure("no push pose")
+                failures.append(exc)
+        # the reason to give: a hand pose that reaches but whose arm would touch something says more than one out of reach
+        raise next((f for f in failures if isinstance(f, PathBlocked)), failures[0] if failures else PlanFailure("no push pose"))
 
     def _pushed_by(self, pushed: set[str], tcp: np.ndarray, contact: np.ndarray, d: np.ndarray) -> dict[str, np.ndarray]:
         """Where the ``pushed`` objects are (xyz offsets) once the tcp, from ``contact``, is at ``tcp``."""
@@ -150,4 +151,4 @@ class PushSkill(Motion):
         for q in path:
             hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, self._pushed_by(pushed, self.ik.fk(q)[0], contact, d))
             if hits:
-                raise PlanFailure(f"the arm would touch {', '.join(sorted(hits))} while pushing")
+                raise PathBlocked(f"the arm would touch {', '.join(sorted(hits))} while pushing")
