@@ -182,6 +182,20 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("the banana: lift it", ["grasp('obj7_banana')"]),
     ("i want the banana in the bowl and the strawberry too",
      ["place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]),
+    # locators, negation and comparatives say which object; they are never a place
+    ("pick up the can closest to the bowl", ["grasp('obj2_soda_can')"]),
+    ("pick up the fruit that is not the banana", ["grasp('obj8_strawberry')"]),
+    ("lift the can that isn't on the left", ["grasp('obj2_soda_can')"]),
+    ("grab the can more to the right", ["grasp('obj2_soda_can')"]),
+    ("put the reddish cube in the bowl", ["place_in('obj3_cube', 'obj6_bowl')"]),
+    ("put the cans on either side of the bowl", ["place_beside('obj1_soda_can', 'obj6_bowl', 'left')", "place_beside('obj2_soda_can', 'obj6_bowl', 'right')"]),
+    # pushes toward or away from another object, passives, arrows, fractions of a unit
+    ("push the strawberry 3 cm toward the bowl", ["push('obj8_strawberry', 'right', 0.03)"]),
+    ("nudge the banana away from the bowl", ["push('obj7_banana', 'forward', 0.1)"]),
+    ("push the green cube half an inch left", ["push('obj5_cube', 'left', 0.013)"]),
+    ("could the banana be moved into the bowl?", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("banana -> bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("do me a favor and pick up the strawberry by its top and hold it", ["grasp('obj8_strawberry')"]),
 ]
 
 

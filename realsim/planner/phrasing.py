@@ -17,7 +17,8 @@ FILLERS = (
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
-    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets",
+    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
+    r"when you (?:get|have) a (?:chance|moment|sec|second|minute)",
 )
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
 _VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
@@ -46,6 +47,8 @@ AGAIN = re.compile(r"(?:do (?:that|it|this|so|the same)(?: thing)? (?:again|once
                    r"|(?:and )?(?:once more|one more time|again))")
 
 RELATIONS: tuple[tuple[str, str], ...] = (
+    ("on either side of", "sides"), ("on both sides of", "sides"), ("on each side of", "sides"), ("to either side of", "sides"),
+    ("either side of", "sides"), ("on opposite sides of", "sides"),
     ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
     ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
     ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
@@ -69,6 +72,9 @@ def clean(command: str) -> str:
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
+    text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*", " to ", text)  # "mug -> bowl": where it goes
+    text = re.sub(r"\s+by (?:its|the|their) (?:handle|rim|top|side|edge|body|lid|middle)s?\b", "", text)  # the grasp is the robot's choice
+    text = re.sub(r"\s+and (?:hold|keep) (?:it|them|holding it|holding them)(?: up| there| in the air| steady| still)?(?=$|[.,;!?])", "", text)
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
     text = _VOCATIVE.sub(" ", text)
     for short, word in _TEXTING.items():  # "could u grab the can pls"
@@ -125,7 +131,9 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
-            if put is not None and rel and rel_re.search(f" {part} "):
+            if re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
+                clauses[-1] = f"{clauses[-1]} {part}"
+            elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
             elif put is not None and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
@@ -236,6 +244,12 @@ def rephrase(clause: str) -> str:
         # "i want the mug by the bowl": put it there; "i want the banana": give it to me
         placed = _PLACE_WORD.search(f" {rest} ")
         return f"put {rest}" if placed else f"hand me {rest}"
+    m = re.match(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:picked up|lifted|raised)$", c)
+    if m:  # "could the can be picked up"
+        return f"pick up {m.group(1)}"
+    m = re.match(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:moved|pushed|shifted|slid|put|placed|set|dropped|stacked|transferred)\b\s*(.+)$", c)
+    if m:  # "could the mug be moved into the bowl"
+        return f"move {m.group(1)} {m.group(2)}"
     m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
     if m:  # "the box needs to be moved 5 cm forward"
         return f"move {m.group(1)} {m.group(2)}"

@@ -37,10 +37,11 @@ def distance(text: str) -> float | None:
     for phrase, value in sorted(VAGUE_DISTANCES.items(), key=lambda kv: -len(kv[0])):
         if re.search(rf"\b{re.escape(phrase)}\b", text):
             return value
-    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|{_NUM_ALT}|a)\s*(?:and a half\s*)?({_UNIT_ALT})\b", text)
+    m = re.search(rf"(?<![a-z0-9.])(\d+(?:\.\d+)?|\.\d+|half(?: of)? an?|{_NUM_ALT}|a)\s*(?:and a half\s*)?({_UNIT_ALT})\b", text)
     if not m:
         return None
     raw, unit = m.group(1), m.group(2)
+    raw = "half" if raw.startswith("half") else raw  # "half an inch"
     value = {"a": 1.0, "half": 0.5}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
     if "and a half" in m.group(0):
         value += 0.5

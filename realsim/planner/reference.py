@@ -40,6 +40,9 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is )?in front of", "front"),
     (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
 )
+_TO_ME = r"(?: (?:to|from) (?:me|you|the robot|yourself))?"
+_COMPARATIVES = ((rf"(?:closer|nearer){_TO_ME}", "nearest"), (rf"(?:further|farther)(?: away)?{_TO_ME}", "farthest"),
+                 (r"(?:more|further|farther) (?:to the )?left", "leftmost"), (r"(?:more|further|farther) (?:to the )?right", "rightmost"))
 TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
 # robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
 EXTREMES: dict[str, tuple[int, float]] = {
@@ -212,6 +215,12 @@ class Resolver:
         if m:
             excluded = self.resolve(m.group(2), Context(), allow_plural=True)
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)])
+        m = re.fullmatch(r"(.+?)\s+(?:(?:that|which|who)\s+)?(?:(?:is|are|s)\s+)?(?:not|isnt|arent)\s+(.+)", text)
+        if m:  # "the fruit that is not the banana", "the can that isn't red", "the cube not on the plate"
+            noun_phrase = re.match(r"(?:the|a|an|that|this) ", m.group(2))
+            negated = m.group(2) if noun_phrase else f"{m.group(1)} that is {m.group(2)}"
+            excluded = self.resolve(negated, Context(), allow_plural=True, loose=True)
+            return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)], allow_plural=allow_plural)
         return self._single_phrase(text, phrase, ctx, want, exclude, allow_plural, loose)
 
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
@@ -222,6 +231,10 @@ class Resolver:
         if m and all(w in COLOR_WORDS or w in BIG or w in SMALL for w in m.group(2).split()):
             text = f"{m.group(2)} {m.group(1)}"  # "the cube that is red": the red cube
         text = re.sub(r"^(?:whichever|whatever|which ever|the one of the|one of the) (.+?) (?:is|are|that is|that are) ", r"\1 ", text)
+        # a comparative with nothing to compare to but the speaker: "the can that is closer", "the one more to the left"
+        for pattern, extreme in _COMPARATIVES:
+            text = re.sub(rf"^(.+?) (?:that is |that s |thats |which is |is |are )?{pattern}$", rf"{extreme} \1", text)
+        text = re.sub(r"^(?:closer|nearer) (?!to )", "nearest ", re.sub(r"^(?:farther|further) (?!from )", "farthest ", text))
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(closest|nearest|closer|nearer)(?: to)?|(?:farthest|furthest|further|farther)(?: away)? from)"

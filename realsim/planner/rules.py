@@ -19,16 +19,16 @@ import re
 from collections.abc import Sequence
 
 from realsim.errors import InputError
-from realsim.planner.goals import DIRECTIONS, AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, Moved, NextTo, On, OnTable, Placed, SideOf
+from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
-from realsim.planner.pushes import NOT_OBJECT, TAIL, distance, has_direction, is_push
+from realsim.planner.push_clause import TOWARD, push_clause, push_relative
+from realsim.planner.pushes import distance, is_push
 from realsim.planner.reference import Context
-from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, other_side, repeat, swap
+from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.types import ObjectInfo, Plan
-from realsim.planner.vocab import DIRECTION_WORDS, GENERIC, VAGUE_DISTANCES, name_words, norm, singular
+from realsim.planner.vocab import GENERIC, VAGUE_DISTANCES, name_words, norm, singular
 
-DEFAULT_PUSH = 0.10  # m, when no distance is given
 HELP = (
     "the offline planner understands: pick up X; put X in/on/next to/left of/behind/between Y; put X on the table; "
     "put X back/down; push X left/right/forward/back (by N cm); open/close the drawer; open/close the gripper; go home "
@@ -137,8 +137,11 @@ def _clause(clause: str, p: Parser) -> Step:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
     # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
     by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest))
+    m = TOWARD.fullmatch(rest) if verb in PUSH else None
+    if m and (verb not in PUT or "from" in m.group(2) or distance(rest) is not None):
+        return push_relative(m, distance(rest), p)  # "push the mug toward the bowl"; "slide X toward Y" puts it next to Y
     if (verb in PUSH or by) and is_push(rest):
-        return _push(rest, p, clause)
+        return push_clause(rest, p, clause)
     if verb in ("hand me", "give me", "pass me", "bring me"):
         return _take(rest, p)
     if verb in PUT:
@@ -165,13 +168,6 @@ def _verb(c: str) -> tuple[str | None, str]:
     return None, c
 
 
-def _objs(phrase: str, p: Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list:
-    phrase = re.sub(rf"{PARTICLES}$", "", " " + phrase).strip()
-    phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
-    objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
-    return objs
-
-
 def _take(rest: str, p: Parser) -> Step:
     rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it)$", "", rest)
     # "lift the cube 5 cm": a lift has one height (about 10 cm); the number does not name the object
@@ -180,7 +176,7 @@ def _take(rest: str, p: Parser) -> Step:
     # "lift the mug up a bit", "raise the can slightly": a lift has one height, a vague amount too
     vague = "|".join(re.escape(w) for w in sorted(VAGUE_DISTANCES, key=len, reverse=True))
     rest = re.sub(rf"(?:\s+up)?\s+(?:{vague})(?:\s+(?:up|higher|off the table))?$", "", rest)
-    objs = _objs(rest, p)
+    objs = objects_named(rest, p)
     if len(objs) > 1:  # "take the banana and the strawberry and put them in the bowl": the put carries them
         p.ctx.set(objs)
         return Step([], [], (), moves_robot=False,
@@ -207,7 +203,7 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
                   r"|its (?:original |old |starting )?(?:place|spot|position))$",
                   " back", rest)
     if verb == "stack" and not _find_relation(rest):  # "stack the cubes": a tower, the biggest at the bottom
-        objs = _objs(rest, p)
+        objs = objects_named(rest, p)
         if len(objs) < 2:
             raise InputError(f"stack {rest!r} on what? name a second object; {p.resolver.listing()}")
         return each_other(objs, "on", p)
@@ -215,7 +211,7 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
     if verb in ("put back", "put down", "set down", "lay down") and not _find_relation(rest):
         m = re.fullmatch(r"(.+)", rest)
     if m and not _relation_tail(rest):
-        objs = _objs(m.group(1), p)
+        objs = objects_named(m.group(1), p)
         p.ctx.set(objs)
         return Step([Call("place", (o.name, [round(v, 3) for v in o.position])) for o in objs],
                      [Placed(o.name, (round(o.position[0], 3), round(o.position[1], 3))) for o in objs], tuple(o.name for o in objs))
@@ -225,6 +221,8 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
         if (not obj_phrase or not target_phrase or _starts_with_relation(target_phrase)
                 or (kind == "to" and re.search(r"\b(?:left|right|front|back|side|top|edge)\b.*\bof\b", target_phrase))):
             continue  # "move the banana over next to the can": "over" is a particle here
+        if re.search(r"\b(?:closest|nearest|closer|nearer|farthest|furthest|farther|further|next|close|near|(?:that|which) (?:is|s))$", obj_phrase):
+            continue  # "pick up the can closest to the bowl": a locator that says which can
         if _SPOT.match(target_phrase) and _starts_with_relation(_SPOT.sub("", target_phrase, count=1).strip()):
             continue  # "move the box on the left next to the mug": "on the left" says which box
         try:
@@ -251,7 +249,7 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
     target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
     target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
     if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):
-        objs = _objs(obj_phrase, p)
+        objs = objects_named(obj_phrase, p)
         p.ctx.set(objs)
         calls, goals = [], []
         for o in objs:
@@ -262,15 +260,23 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
         refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
         if len(refs) != 2:
             raise InputError(f"between needs two objects; {target_phrase!r} names {len(refs)}")
-        objs = [o for o in _objs(obj_phrase, p) if o.name not in {r.name for r in refs}]
+        objs = [o for o in objects_named(obj_phrase, p) if o.name not in {r.name for r in refs}]
         if not objs:
             raise InputError(f"cannot put an object between itself and another; {p.resolver.listing()}")
         p.ctx.set(objs)
         a, b = refs
         return Step([Call("place_between", (o.name, a.name, b.name)) for o in objs],
                      [Between(o.name, a.name, b.name) for o in objs], tuple(o.name for o in objs))
+    if kind == "sides":  # "the cans on either side of the mug": the one on the left goes left
+        ref = _target(target_phrase, obj_phrase, p, None)
+        pair = sorted((o for o in objects_named(obj_phrase, p) if o.name != ref.name), key=lambda o: -p.resolver.robot_xy(o)[1])
+        if len(pair) != 2:
+            raise InputError(f"either side of {ref.name} takes two objects; {obj_phrase!r} names {len(pair)}")
+        p.ctx.set(pair)
+        return Step([Call("place_beside", (o.name, ref.name, s)) for o, s in zip(pair, ("left", "right"))],
+                    [SideOf(o.name, ref.name, s) for o, s in zip(pair, ("left", "right"))], tuple(o.name for o in pair))
     if EACH_OTHER.fullmatch(target_phrase) and kind in ("next", "on", "to"):  # "put the cans next to each other"
-        return each_other(_objs(obj_phrase, p), "on" if kind == "on" else "next", p)
+        return each_other(objects_named(obj_phrase, p), "on" if kind == "on" else "next", p)
     want = {"in": "container", "on": "support"}.get(kind)
     if target_phrase in ("there", "that place", "the same place", "the same spot"):
         if p.ctx.place is None:
@@ -279,7 +285,7 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
     else:
         target = _target(target_phrase, obj_phrase, p, want)
     p.ctx.place = target
-    objs = _objs(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
+    objs = objects_named(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
     if len(objs) > 1:
         objs = [o for o in objs if o.name != target.name]
     elif objs[0].name == target.name:
@@ -335,7 +341,7 @@ def _articulate(verb: str, phrase: str, p: Parser) -> Step:
     if words and words[-1] in ("drawer", "door", "cabinet") and not any(w in o.affordances for o in p.objects for w in (want,)):
         raise InputError(f"the scene has no {want}; {p.resolver.listing()}")
     try:
-        objs = _objs(phrase, p, want=want)
+        objs = objects_named(phrase, p, want=want)
     except InputError:
         objs = [o for o in p.objects if want in o.affordances]
         if len(objs) != 1:
@@ -349,31 +355,3 @@ def _articulate(verb: str, phrase: str, p: Parser) -> Step:
 
 # ----------------------------------------------------------------------------------------------
 # pushes (the words: realsim.planner.pushes) and swaps
-
-
-def _push(rest: str, p: Parser, clause: str) -> Step:
-    objs, tail, first_error = None, "", None
-    for cut in [*TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
-        obj_phrase = rest[: cut.start()].strip() if cut else rest
-        if not obj_phrase or NOT_OBJECT.search(obj_phrase) or (cut is not None and not has_direction(rest[cut.start():])):
-            continue
-        try:
-            objs = _objs(obj_phrase, p)
-        except InputError as exc:
-            first_error = first_error or exc
-            continue
-        tail = rest[cut.start():] if cut else ""
-        break
-    if objs is None:
-        raise first_error or InputError(f"push what? {clause!r}; {HELP}")
-    direction = None
-    for phrase in sorted(DIRECTION_WORDS, key=len, reverse=True):
-        if re.search(rf"(?<![a-z]){re.escape(phrase)}(?![a-z])", tail):
-            direction = DIRECTION_WORDS[phrase]
-            break
-    if direction is None:
-        raise InputError(f"which way? say left, right, forward or back in {clause!r}")
-    dist = distance(tail) or DEFAULT_PUSH
-    p.ctx.set(objs)
-    return Step([Call("push", (o.name, direction, round(dist, 3))) for o in objs],
-                 [Moved(o.name, DIRECTIONS[direction], round(dist, 3)) for o in objs], tuple(o.name for o in objs))

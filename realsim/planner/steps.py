@@ -15,11 +15,12 @@ from dataclasses import dataclass, field, replace
 
 from realsim.errors import InputError
 from realsim.planner.goals import Goal, Moved, NextTo, On, Placed
+from realsim.planner.phrasing import PARTICLES
 from realsim.planner.program import Call
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import ObjectInfo
 
-__all__ = ["EACH_OTHER", "SWAP", "Parser", "Step", "each_other", "other_side", "repeat", "swap"]
+__all__ = ["EACH_OTHER", "SWAP", "Parser", "Step", "each_other", "objects_named", "other_side", "repeat", "swap"]
 
 
 @dataclass
@@ -98,3 +99,12 @@ def each_other(objs: list[ObjectInfo], kind: str, p: Parser) -> Step:
     first, rest = objs[0], objs[1:]
     return Step([Call("place_beside", (o.name, first.name, "next")) for o in rest],
                 [NextTo(o.name, first.name) for o in rest], tuple(o.name for o in rest))
+
+
+
+def objects_named(phrase: str, p: Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list[ObjectInfo]:
+    """The objects a phrase names, with a trailing particle ("up", "over") and a leading "up/back/down" dropped."""
+    phrase = re.sub(rf"{PARTICLES}$", "", " " + phrase).strip()
+    phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
+    objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
+    return objs

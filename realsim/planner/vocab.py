@@ -16,7 +16,10 @@ COLORS: dict[str, tuple[float, float, float]] = {
     "white": (0.95, 0.95, 0.95), "gray": (0.5, 0.5, 0.5), "brown": (0.45, 0.3, 0.15),
 }
 COLOR_WORDS: dict[str, str] = {**{c: c for c in COLORS}, "grey": "gray", "silver": "gray", "gold": "yellow", "golden": "yellow",
-                               "beige": "brown", "tan": "brown", "violet": "purple", "crimson": "red", "navy": "blue", "maroon": "red"}
+                               "beige": "brown", "tan": "brown", "violet": "purple", "crimson": "red", "navy": "blue", "maroon": "red",
+                               "reddish": "red", "greenish": "green", "bluish": "blue", "blueish": "blue", "yellowish": "yellow",
+                               "orangish": "orange", "orangey": "orange", "purplish": "purple", "pinkish": "pink", "blackish": "black",
+                               "whitish": "white", "greyish": "gray", "grayish": "gray", "brownish": "brown"}
 
 BIG = ("big", "large", "bigger", "larger", "biggest", "largest", "huge", "giant", "tall", "taller", "tallest", "high", "long", "longer", "longest")
 SMALL = ("small", "smaller", "smallest", "little", "tiny", "mini", "short", "shorter", "shortest", "low")
