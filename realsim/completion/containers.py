@@ -42,6 +42,7 @@ class OpenContainer:
     outer: trimesh.Trimesh  # the convex outer solid (for stacking, carving and neighbours)
     wall: float
     floor_z: float
+    outside: tuple[np.ndarray, np.ndarray]  # the outer wall's radius over height (heights ascending, radii)
 
 
 def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, min_depth: float,
@@ -89,11 +90,13 @@ def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float
 
 
 def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor: float, top_z: float, bins: int,
-                   camera_xy: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
-    """The cavity's surface as heights over radii (r, z), r from the axis to ``radius``: per radial
-    bin the median height of the points seen inside the rim (on the side away from the camera, where
-    the camera sees the inner wall), non-decreasing outwards, from ``floor`` up to the rim at ``top_z``;
-    bins nearer the axis than any evidence are the floor (a deep cavity seen only on its wall)."""
+                   camera_xy: np.ndarray | None, shift: float = 0.0, wall: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """The cavity's surface as a polyline (r, z) from the axis up to the rim at (``radius``, ``top_z``),
+    both non-decreasing: per radial bin the median height of the points seen inside the rim (on the
+    side away from the camera, where the camera sees the inner wall), bins nearer the axis than any
+    evidence the floor (a deep cavity seen only on its wall), and per height band the median radius
+    of those points (a steep wall, straight down to the floor below the lowest band seen). The seen surface is moved ``shift`` outwards; ``radius`` is the
+    rim's (the middle of its crest), the cavity ends half a ``wall`` inside it."""
     rel = points[:, :2] - centre
     r = np.linalg.norm(rel, axis=1)
     inside = r < radius
@@ -111,7 +114,18 @@ def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor:
     good = np.isfinite(heights)
     heights = np.interp(mids, mids[good], heights[good], left=floor) if good.any() else np.full(bins, floor)
     heights = np.clip(np.maximum.accumulate(np.clip(heights, floor, top_z)), floor, top_z)
-    return np.concatenate([[0.0], mids, [radius]]), np.concatenate([[heights[0]], heights, [top_z]])
+    # a steep wall puts all its points in one radial bin: it is sampled by height too (its radius per band)
+    levels = np.linspace(heights[0], top_z, bins + 1)
+    walls = [(float(np.median(r[band])), (lo + hi) / 2) for lo, hi in zip(levels[:-1], levels[1:])
+             if (band := inside & (points[:, 2] >= lo) & (points[:, 2] < hi)).sum() >= 5]
+    walls += walls[:1] and [(walls[0][0], float(heights[0]))]  # unseen below its lowest band, the wall goes straight down
+    rz = np.vstack([np.column_stack([mids, heights]), np.array(walls).reshape(-1, 2)])
+    rz = rz[np.lexsort((rz[:, 0], rz[:, 1]))]  # up the wall: by height, then outwards
+    edge = radius - wall / 2
+    rz[:, 0] = np.clip(np.maximum.accumulate(rz[:, 0]) + shift, 0.0, edge)
+    keep = np.r_[True, np.any(np.abs(np.diff(rz, axis=0)) > 0.5e-3, axis=1)]  # no points on top of each other
+    rz = rz[keep]
+    return np.concatenate([[0.0], rz[:, 0], [edge]]), np.concatenate([[rz[0, 1]], rz[:, 1], [top_z]])
 
 
 def _offset(r: np.ndarray, z: np.ndarray, wall: float) -> tuple[np.ndarray, np.ndarray]:
@@ -119,6 +133,21 @@ def _offset(r: np.ndarray, z: np.ndarray, wall: float) -> tuple[np.ndarray, np.n
     dr, dz = np.gradient(r), np.gradient(z)
     length = np.maximum(np.hypot(dr, dz), 1e-12)
     return r + wall * dz / length, z - wall * dr / length
+
+
+def _side_radii(points: np.ndarray, centre: np.ndarray, camera_xy: np.ndarray, facing: float, edges: np.ndarray) -> np.ndarray:
+    """Per height band (``edges``) the median distance from the axis of the points on the side facing
+    the camera (``facing`` 1: the near wall's outside) or away from it (-1: the far wall's inside seen
+    over the rim); NaN where a band holds fewer than five."""
+    rel = points[:, :2] - centre
+    r = np.linalg.norm(rel, axis=1)
+    side = facing * (rel @ ((camera_xy - centre) / np.linalg.norm(camera_xy - centre))) > 0.5 * r
+    out = np.full(len(edges) - 1, np.nan)
+    for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+        band = side & (points[:, 2] >= lo) & (points[:, 2] < hi)
+        if band.sum() >= 5:
+            out[i] = float(np.median(r[band]))
+    return out
 
 
 def _seen_outside(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: float, camera_xy: np.ndarray | None,
@@ -129,17 +158,25 @@ def _seen_outside(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: 
     None without a camera or such points."""
     if camera_xy is None or np.linalg.norm(centre - camera_xy) < 1e-6:
         return None
-    rel = points[:, :2] - centre
-    r = np.linalg.norm(rel, axis=1)
-    near = rel @ ((camera_xy - centre) / np.linalg.norm(camera_xy - centre)) > 0.5 * r
     edges = np.linspace(base_z + 0.1 * (top_z - base_z), top_z, bands + 1)
-    z, radii = [], []
-    for lo, hi in zip(edges[:-1], edges[1:]):
-        band = near & (points[:, 2] >= lo) & (points[:, 2] < hi)
-        if band.sum() >= 5:
-            z.append((lo + hi) / 2)
-            radii.append(float(np.median(r[band])))
-    return (np.array(z), np.array(radii)) if z else None
+    radii = _side_radii(points, centre, camera_xy, 1.0, edges)
+    good = np.isfinite(radii)
+    return ((edges[:-1] + edges[1:])[good] / 2, radii[good]) if good.any() else None
+
+
+def seen_wall(points: np.ndarray, centre: np.ndarray, floor: float, top_z: float, camera_xy: np.ndarray | None,
+              bands: int) -> float | None:
+    """How much farther from the axis the camera saw the near wall's outside than the far wall's
+    inside, at the same heights (median over the bands, between the cavity floor and the rim, where
+    both were seen): the wall's thickness, less twice any error of the axis along the line of sight
+    (which moves the two sides' radii oppositely). None without a camera or bands seen on both sides."""
+    if camera_xy is None or np.linalg.norm(centre - camera_xy) < 1e-6 or top_z <= floor:
+        return None
+    height = top_z - floor
+    edges = np.linspace(floor + 0.15 * height, top_z - 0.15 * height, bands + 1)
+    diff = _side_radii(points, centre, camera_xy, 1.0, edges) - _side_radii(points, centre, camera_xy, -1.0, edges)
+    diff = diff[np.isfinite(diff)]
+    return float(np.median(diff)) if len(diff) >= 2 else None
 
 
 def _bulge(line: np.ndarray) -> float:
@@ -196,7 +233,12 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     # the floor where it was seen; unseen (a deep cup seen aslant), the bottom as thick as the wall
     floor = min(floor, float(np.percentile(inner[:, 2], 10))) if len(inner) >= 20 else base_z + wall
     floor = float(np.clip(floor, base_z + params.min_floor, top_z - 0.2 * height))
-    r_in, z_in = _inner_profile(cavity, centre, radius - wall / 2, floor, top_z, params.bands, camera_xy)
+    shift = 0.0
+    sides = seen_wall(cavity, centre, floor, top_z, camera_xy, params.bands)
+    if sides is not None:  # the seen sides set the wall (the rim band's spread also holds its slope and the noise)
+        wall = float(np.clip(sides, params.min_wall, params.max_wall_share * radius))
+        shift = min(0.0, (sides - wall) / 2)  # thinner than the least wall: that wall centred between the two sides
+    r_in, z_in = _inner_profile(cavity, centre, radius, floor, top_z, params.bands, camera_xy, shift, wall)
     seen = _seen_outside(points, centre, base_z, top_z, camera_xy, params.bands)
 
     def outside(r: np.ndarray, z: np.ndarray) -> np.ndarray:  # no thinner than the wall the camera saw outside
@@ -204,7 +246,8 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
 
     r_out, z_out = _offset(r_in, z_in, wall)
     r_out[-1], z_out[-1] = r_in[-1] + wall, top_z  # the rim: flat, one wall wide
-    wall_part = (z_out > base_z) & (r_out > r_in[1])
+    resting = z_out <= base_z + params.min_floor  # the outside of the bottom, on the support: the foot reaches its edge
+    wall_part = ~resting & (r_out > max(float(r_in[1]), float(r_out[resting].max()) if resting.any() else 0.0))
     r_out, z_out = outside(r_out[wall_part], z_out[wall_part]), z_out[wall_part]
     foot = float(outside(np.array([r_out[0] if len(r_out) else radius]), np.array([base_z]))[0])
     # the visual: revolve the closed profile (axis -> foot -> outer wall -> rim -> inner wall -> floor -> axis)
@@ -233,4 +276,6 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
             arc = np.linspace(a0, a1, 3)
             pieces.append(trimesh.convex.convex_hull(np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(ring_r, ring_z)])))
     outer = trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre)] + [_ring(float(x), float(zz), fine, centre) for x, zz in zip(r_out, z_out)]))
-    return OpenContainer(pieces, visual, outer, wall, float(z_in[0]))
+    order = np.argsort(np.concatenate([[base_z], z_out]), kind="stable")
+    profile = (np.concatenate([[base_z], z_out])[order], np.concatenate([[foot], r_out])[order])
+    return OpenContainer(pieces, visual, outer, wall, float(z_in[0]), profile)

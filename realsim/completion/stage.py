@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 import trimesh
 
@@ -10,6 +12,7 @@ from realsim.completion.carving import carve, carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_bands, complete_hull, complete_slabs
 from realsim.completion.freespace import free_drops, free_space_tolerance, keep_out_of_free_space
+from realsim.completion.handles import handle_pieces
 from realsim.completion.hull import fast_hull
 from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
@@ -88,6 +91,10 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
             base_centre = np.array([rim[0][0], rim[0][1], base_z])
             hollow.add(obj.id)
             kind = f"open container: revolved profile, hollow with a {1000 * container.wall:.0f} mm wall, cavity floor {1000 * (container.floor_z - base_z):.0f} mm up"
+            handle = handle_pieces(pts, rim[0], container.outside, view.camera[:2] if view is not None else None)
+            if handle:
+                parts, visual = [*parts, *handle], cast(trimesh.Trimesh, trimesh.util.concatenate([visual, *handle]))
+                kind = f"{kind}, with the handle it was seen with ({len(handle)} pieces)"
         elif revolved is not None and revolved.straight:
             if view is not None:
                 mesh, carved = carve_free_space(mesh, view, base_z, pts[pts[:, 2] <= top_z], params, own=obj.id)
