@@ -72,3 +72,17 @@ def test_sides_facing_across_a_crack_see_out_of_it() -> None:
     centres = np.array([[0.06, 0.03, 0.03], [0.075, 0.03, 0.045]])
     outward = np.array([[1.0, 0, 0], [-1.0, 0, 0]])  # a faces +x towards b, b faces -x towards a
     assert (visibility_score(pts, centres, outward, step, 0.3) > 0).all()
+
+
+def test_grouped_points_of_a_cup_keep_their_sides() -> None:
+    """Scored in groups two cells across, every point of a cup's wall gets the side it gets alone
+    (the wall's outside and inside fall in different groups by their normals' octants)."""
+    step = 0.004
+    pts = _cup(0.04, 0.09, step)
+    wall = pts[pts[:, 2] > 0.02][::3]
+    outward = np.c_[wall[:, :2] / np.linalg.norm(wall[:, :2], axis=1, keepdims=True), np.zeros(len(wall))]
+    for normals in (outward, -outward):
+        alone = visibility_score(pts, wall, normals, step, 0.3)
+        grouped = visibility_score(pts, wall, normals, step, 0.3, group=2 * step)
+        assert len(grouped) == len(wall)
+        assert (np.sign(grouped) == np.sign(alone)).mean() > 0.95

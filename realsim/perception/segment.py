@@ -259,8 +259,9 @@ def _point_outward(points: np.ndarray, normals: np.ndarray, resolution: float | 
         return None
     if working > params.visibility_cell:
         return normals
+    # neighbours two cells apart that face one way see alike: one ray cast for them
     seen = visibility_score(points if context is None else np.vstack([points, context]), points, normals, cell,
-                            5 * params.orientation_radius)
+                            5 * params.orientation_radius, group=2 * cell)
     return normals * np.where(seen <= -2, -1.0, 1.0)[:, None]
 
 
