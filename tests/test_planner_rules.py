@@ -196,6 +196,10 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("could the banana be moved into the bowl?", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("banana -> bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("do me a favor and pick up the strawberry by its top and hold it", ["grasp('obj8_strawberry')"]),
+    # an exception said after the place; objects by the scene's numbering
+    ("put all the fruit in the bowl except the banana", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("put every cube in the bowl besides the blue one", ["place_in('obj3_cube', 'obj6_bowl')", "place_in('obj5_cube', 'obj6_bowl')"]),
+    ("pick up object 7", ["grasp('obj7_banana')"]),
 ]
 
 

@@ -168,6 +168,8 @@ class Resolver:
                 best = max(best, 1.5)
             elif head in KINDS and head in self.kinds_of(o):
                 best = max(best, 1.4)  # a member of the kind, below a synonym ("dish": the bowl before the mug)
+        if best >= 1.5 and any(s in name for s in SYNONYMS.get(nouns[-1], ()) for name in primary):
+            best += 0.01  # a synonym of its own label breaks a tie of aliases every can shares ("spam": the potted meat)
         return best
 
     # --- the phrase -------------------------------------------------------------------------
@@ -192,6 +194,12 @@ class Resolver:
             if text in SINGULAR_PRONOUNS and len(ctx.last) > 1 and text not in ("it", "one"):
                 return list(ctx.last)
             return list(ctx.last)
+        m = re.fullmatch(r"(?:obj|object|item|thing|number|no)\s*#?\s*(\d+)", text)  # "object 3", "obj4": the scene's numbering
+        if m:
+            numbered = [o for o in self.objects if re.match(rf"obj{int(m.group(1))}(?:_|$)", o.name) and o.name not in exclude]
+            if not numbered:
+                raise InputError(f"there is no object {m.group(1)}; {self.listing()}")
+            return numbered
         m = re.fullmatch(r"(?:that |this )?same (.+)", text)  # "that same cube": the cube just named
         if m and ctx.last and m.group(1) not in ("one", "ones", "thing", "object"):
             return self.resolve(m.group(1), Context(), want=want, exclude=[o.name for o in self.objects if o not in ctx.last])
@@ -211,7 +219,7 @@ class Resolver:
                     if o not in out:
                         out.append(o)
             return out
-        m = re.fullmatch(r"(.+?)\s+(?:except(?: for)?|but(?: not)?|other than|apart from)\s+(.+)", text)
+        m = re.fullmatch(r"(.+?)\s+(?:except(?: for)?|but(?: not)?|other than|apart from|besides|excluding|save for|not including)\s+(.+)", text)
         if m:
             excluded = self.resolve(m.group(2), Context(), allow_plural=True)
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)])

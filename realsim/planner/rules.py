@@ -246,6 +246,8 @@ def _relation_tail(rest: str) -> bool:
 
 
 def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: str) -> Step:
+    target_phrase, *exception = re.split(r"\s+(?=(?:except|but not|other than|apart from|save for|excluding|besides)\s)", target_phrase, maxsplit=1)
+    obj_phrase = f"{obj_phrase} {exception[0]}" if exception else obj_phrase  # "all the fruit in the bowl except the banana"
     target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
     target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
     if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):

@@ -36,6 +36,9 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "dish": ("plate", "bowl"), "plate": ("dish",), "bottle": ("jar",), "jar": ("bottle",), "ball": ("sphere",),
     "bin": ("basket", "container"), "basket": ("bin",), "pen": ("marker",), "marker": ("pen",), "jug": ("pitcher",),
     "pitcher": ("jug",), "drill": ("power drill",), "cleanser": ("bleach",), "bleach": ("cleanser",),
+    # brand names people use for the thing
+    "spam": ("meat",), "clorox": ("bleach",), "coke": ("soda", "can"), "cheezit": ("cracker",), "jello": ("gelatin",),
+    "lego": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",),
 }
 # words naming a kind of object rather than one: they select by the size table's record
 KINDS: dict[str, tuple[str, ...]] = {
