@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+import fcntl
 import os
 from pathlib import Path
-from typing import Iterator
+from typing import Callable, Iterator
 
 import pytest
 
 os.environ.setdefault("MUJOCO_GL", "egl")
+if os.environ.get("PYTEST_XDIST_WORKER"):  # the xdist workers already fill the cores: no pools inside them
+    os.environ.setdefault("REALSIM_WORKERS", "1")
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO.parent / "shared" / "data"
@@ -43,6 +47,33 @@ def _test_cache(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.Mo
         monkeypatch.setenv("REALSIM_CACHE", str(tmp_path_factory.mktemp("realsim-cache")))
 
 
+def built_once(factory: pytest.TempPathFactory, key: str, build: Callable[[Path], object]) -> Path:
+    """The folder ``build(folder)`` writes, built once per test run for all modules that ask for
+    ``key`` (under pytest-xdist, once across the workers: the first to ask builds it under a file
+    lock, the others wait for it). It is built with an empty realsim cache of its own, so it is
+    the same whichever module asks first. Read only: a test that changes it works on a copy."""
+    base = factory.getbasetemp()
+    shared = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base  # xdist: <run>/popen-gwN
+    pointer = shared / f"built-{key}.path"
+    with open(shared / f"built-{key}.lock", "w") as lock, pytest.MonkeyPatch.context() as mp:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if pointer.is_file():
+            return Path(pointer.read_text())
+        root = factory.mktemp(f"built-{key}")
+        mp.setenv("REALSIM_CACHE", str(root / "cache"))
+        build(root / key)
+        assert (root / key).is_dir(), f"building {key} wrote nothing"
+        pointer.write_text(str(root / key))
+        return root / key
+
+
+def converted_scan(factory: pytest.TempPathFactory, name: str) -> Path:
+    """The mOSD scan ``name`` converted with the defaults (the Panda placed, seed 0), once per run."""
+    from realsim.pipeline import convert
+
+    return built_once(factory, f"mosd-{name}", lambda out: convert(MOSD / f"{name}.pcd", out))
+
+
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "shared_cache: the test uses its module's realsim cache instead of its own")
 
@@ -53,6 +84,9 @@ def _warp_accepts_every_written_scene(tmp_path_factory: pytest.TempPathFactory) 
     and constraint sizes the scene records) and those sizes hold the contacts at keyframe
     ``initial``. Scenes a test broke on purpose (they no longer compile) are not counted."""
     yield
+    scenes = sorted(tmp_path_factory.getbasetemp().rglob("scene.xml"))
+    if not scenes:  # importing MuJoCo Warp takes seconds: not for a run that wrote no scene
+        return
     from realsim.physics.throughput import warp_available
 
     if not warp_available():
@@ -65,7 +99,7 @@ def _warp_accepts_every_written_scene(tmp_path_factory: pytest.TempPathFactory) 
 
     seen: set[str] = set()
     failures: list[str] = []
-    for xml in sorted(tmp_path_factory.getbasetemp().rglob("scene.xml")):
+    for xml in scenes:
         meta = xml.with_name("scene.json")
         digest = hashlib.sha256(xml.read_bytes()).hexdigest()
         if not meta.is_file() or digest in seen:

@@ -1,7 +1,8 @@
 """`realsim export`: self-contained MJCF (scene and per object) and USD stages of real scenes.
 
-Two scenes are converted once per module with the real pipeline and the Panda: a Kinect scan
-(mOSD test45) and a capture folder of two YCB objects on an assumed table.
+Two scenes converted with the real pipeline and the Panda: a Kinect scan (mOSD test45, converted
+once per run and shared with test_scan_conversion) and a capture folder of two YCB objects on an
+assumed table.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from conftest import MOSD, YCB
+from conftest import YCB, converted_scan
 from realsim import cli
 
 YCB_OBJECTS = ("077_rubiks_cube", "061_foam_brick")
@@ -31,8 +32,7 @@ def scenes(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         for file in ("textured.obj", "textured.mtl"):
             shutil.copyfile(YCB / name / file, capture / "objects" / name / file)
     (capture / "capture.yaml").write_text("support: {size: [1.0, 0.7], height: 0.75}\n")
-    out = {"scan": root / "scan", "ycb": root / "ycb"}
-    assert cli.main(["convert", str(MOSD / "test45.pcd"), "-o", str(out["scan"]), "-q"]) == 0
+    out = {"scan": converted_scan(tmp_path_factory, "test45"), "ycb": root / "ycb"}  # the scan: read only
     assert cli.main(["convert", str(capture), "-o", str(out["ycb"]), "-q"]) == 0
     return out
 

@@ -10,7 +10,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from conftest import MOSD, PCL
+from conftest import MOSD, PCL, converted_scan
 from realsim.composition.settle import rest_check
 from realsim.metrics import matched_iou, mosd_object_ids, plane_error
 from realsim.perception.pcd_io import read_pcd
@@ -21,12 +21,8 @@ SCENES = ["test0", "test31", "test45", "test55"]
 
 @pytest.fixture(scope="module")
 def converted(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
-    root = tmp_path_factory.mktemp("scans")
-    out = {}
-    for name in SCENES:
-        convert(MOSD / f"{name}.pcd", root / name)
-        out[name] = root / name
-    return out
+    """The four scans converted once per run (test_export reads test45 too): read only."""
+    return {name: converted_scan(tmp_path_factory, name) for name in SCENES}
 
 
 def _world_points(scene_json: dict, raw: np.ndarray) -> np.ndarray:
