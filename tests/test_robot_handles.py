@@ -9,8 +9,10 @@ import trimesh
 
 from realsim.procedural.parts import Shape, arc, cylinder, to_trimesh, tube, vessel
 from realsim.robot import Robot
+from realsim.robot.arm import QUINTIC_ACCEL
 from realsim.robot.grasps import GraspCandidate, frame_from, grasp_candidates, twist_check
 from realsim.robot.handles import handle_candidates, pinch_fit
+from realsim.robot.model import HOME_ARM
 from realsim.scene import SceneObject
 from tests.test_robot import TABLE_Z, build, loaded
 
@@ -79,8 +81,13 @@ def test_a_lidded_mug_is_lifted_and_carried_by_its_handle() -> None:
     res = robot.grasp("lidded_mug")
     assert res.success, res.reason
     assert res.values["kind"] == "handle" and res.values["lifted"] > 0.04
+    lo, hi = robot.params.pick.carry_accel  # carried no faster than the handle pinch holds: the tcp's peak acceleration within the bounds
+    path = np.array([data.ctrl[robot.act], HOME_ARM])
+    length = float(np.linalg.norm(robot.ik.fk(path[1])[0] - robot.ik.fk(path[0])[0]))
+    assert np.sqrt(QUINTIC_ACCEL * length / hi) - 1e-9 <= robot._carry_time(path) <= np.sqrt(QUINTIC_ACCEL * length / lo) + 1e-9
     placed = robot.place_in("lidded_mug", "target_zone")  # carried by the handle without slipping out
     assert placed.success, placed.reason
     up = data.xmat[model.body("lidded_mug").id].reshape(3, 3)[:, 2]
     assert up[2] > np.cos(np.radians(5.0))  # set down standing, let go without tipping it: the fingers backed out of the loop
     assert not robot.geometry.touching("lidded_mug") & {"robot"}
+    assert robot._carry_time(path) == 0.0  # nothing held: the joint speed alone times a move
