@@ -252,3 +252,26 @@ def test_a_pushed_container_keeps_what_it_holds_checked() -> None:
     assert any(isinstance(g, Inside) for g in pushed.goals)
     lifted = RulePlanner().plan("put the banana in the bowl, then pick up the bowl", CLUTTER)
     assert not any(isinstance(g, Inside) for g in lifted.goals)
+
+
+@pytest.mark.parametrize("sentence", [
+    "don't put the banana in the bowl",
+    "do not pick up the strawberry",
+    "is the banana in the bowl?",
+    "which can is closer?",
+    "what is in the bowl",
+])
+def test_prohibitions_and_questions_are_never_carried_out(sentence: str) -> None:
+    with pytest.raises(InputError):
+        RulePlanner().plan(sentence, CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "kept"), [
+    ("put the banana in the bowl, not the strawberry", "obj8_strawberry"),
+    ("put the banana in the bowl but don't put the strawberry in it", "obj8_strawberry"),
+    ("put the banana in the bowl and don't touch the left can", "obj1_soda_can"),
+])
+def test_what_is_not_to_be_done_keeps_its_object_still(sentence: str, kept: str) -> None:
+    plan = RulePlanner().plan(sentence, CLUTTER)
+    assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')"]
+    assert kept not in plan.program.split("\n", 1)[-1]

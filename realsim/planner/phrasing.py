@@ -18,7 +18,7 @@ FILLERS = (
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
-    r"when you (?:get|have) a (?:chance|moment|sec|second|minute)",
+    r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
 _VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
@@ -66,6 +66,10 @@ RELATIONS: tuple[tuple[str, str], ...] = (
 SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
 
 
+# a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
+QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b)")
+
+
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
@@ -108,11 +112,13 @@ def split_command(command: str) -> list[str]:
     a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
     text = _in_order(clean(command))
     text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
+    text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to)\b)", ", ", text)  # "..., but don't put the mug in it"
     parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
     parts = [re.sub(rf"^you (?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you put in the bowl"
+    parts = [_prohibition(p, verb_re) for p in parts]
     parts = _partitive(parts)
     topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
     verb = verb_re.match(parts[1]) if topic else None
@@ -131,7 +137,9 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
-            if re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
+            if _AVOID.match(part):  # "..., and don't touch the mug": a constraint of its own
+                clauses.append(part)
+            elif re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
@@ -148,6 +156,23 @@ def split_command(command: str) -> list[str]:
 
 _AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|try not to|avoid|(?:be )?careful not to|without)"
                     r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing)?(?: over| down| into)? (.+)$")
+
+
+def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
+    """"don't put the mug in the bowl", "not the banana": what is not to be done keeps its object
+    still ("dont touch the mug"); it never becomes the action."""
+    m = re.match(r"(?:but )?not (.+)$", part)
+    if m and not verb_re.match(m.group(1)):
+        return f"dont touch {m.group(1)}"
+    m = re.match(r"(?:please )?(?:dont|don t|do not|never|no need to)\s+(.+)$", part)
+    if not m or _AVOID.match(part):
+        return part
+    verb = verb_re.match(m.group(1))
+    rest = m.group(1)[verb.end():].strip() if verb else m.group(1)
+    rest = re.sub(r"^(?:up|down|back|over)\s+", "", rest)
+    cut = [i for i in (re.search(rf"\s{re.escape(w)}\s", f" {rest} ") for w, _ in RELATIONS) if i]
+    obj = f" {rest} "[: min(i.start() for i in cut)].strip() if cut else rest
+    return f"dont touch {obj}" if obj else part
 
 
 def avoided(clause: str) -> tuple[str, str]:

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
+from realsim.planner.phrasing import AGAIN, ALL_VERBS, QUESTION, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import distance, is_push
@@ -53,6 +53,8 @@ class RulePlanner:
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
     """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
+    if QUESTION.match(command.strip().lower()):
+        raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
