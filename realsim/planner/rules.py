@@ -20,7 +20,7 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.phrasing import AGAIN, ALL_VERBS, QUESTION, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
+from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, QUESTION, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import distance, is_push
