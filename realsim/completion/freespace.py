@@ -65,24 +65,43 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     return np.vstack([piece.vertices, pts])
 
 
+def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray) -> np.ndarray:
+    """Per cut (K, N) how many of the ``pi`` projections (n, N) of its column lie at or below it."""
+    pi = np.sort(pi, axis=0)
+    span = 2.0 * max(float(np.abs(pi).max()), float(np.abs(cuts).max())) + 1.0  # columns apart: one sorted array
+    shift = span * np.arange(pi.shape[1])
+    kept = np.searchsorted((pi + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right").reshape(cuts.shape, order="F")
+    return np.asarray(kept - len(pi) * np.arange(pi.shape[1]))
+
+
 def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int,
               keep: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
     """The cut (normal, offset: keep ``n . x <= c``) minimising the share of ``inside`` lost plus
     MISS_WEIGHT times the share of the ``samples`` surface samples left seen through (``bad``), and
-    that cost (the cost of no cut when no cut is better)."""
-    pi, pb = np.sort(inside @ normals.T, axis=0), np.sort(bad @ normals.T, axis=0)
-    cuts = pb - 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)  # just below each bad sample: it and everything beyond are cut
-    span = 2.0 * max(float(np.abs(pi).max()), float(np.abs(cuts).max())) + 1.0  # columns apart: one sorted array
-    shift = span * np.arange(normals.shape[0])
-    kept = np.searchsorted((pi + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right").reshape(cuts.shape, order="F")
-    lost = 1.0 - (kept - len(pi) * np.arange(normals.shape[0])) / max(len(pi), 1)
-    cost = lost + MISS_WEIGHT * np.arange(len(pb))[:, None] / samples
-    if keep is not None and len(keep):  # a cut must leave every ``keep`` point on the kept side
-        cost = np.where(cuts >= (keep @ normals.T).max(axis=0)[None, :], cost, np.inf)
+    that cost (the cost of no cut when no cut is better). Only cuts leaving few enough bad samples to
+    beat the best cut that leaves none are weighed (leaving each costs MISS_WEIGHT / samples)."""
+    pi, pb = inside @ normals.T, bad @ normals.T
+    width = 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)
+    limit = (keep @ normals.T).max(axis=0)[None, :] if keep is not None and len(keep) else None
+    none = MISS_WEIGHT * len(bad) / samples
+
+    def costs(cuts: np.ndarray) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
+        kept = (pi[:, None, :] <= cuts[None]).sum(axis=0) if len(cuts) <= 8 else _kept_by_sorting(pi, cuts)
+        cost = 1.0 - kept / max(len(pi), 1) + MISS_WEIGHT * np.arange(len(cuts))[:, None] / samples
+        return cost if limit is None else np.where(cuts >= limit, cost, np.inf)  # leave every ``keep`` point
+
+    first = costs(pb.min(axis=0)[None, :] - width)
+    rows = min(len(pb), int(np.floor(min(float(first.min()), none) * samples / MISS_WEIGHT)) + 1)
+    if rows > 1:
+        low = np.partition(pb, rows - 1, axis=0)[:rows] if rows < len(pb) else pb
+        cost = costs(np.sort(low, axis=0) - width)
+    else:
+        cost = first
     k, j = np.unravel_index(int(np.argmin(cost)), cost.shape)
-    if cost[k, j] >= MISS_WEIGHT * len(bad) / samples:
-        return normals[0], np.inf, MISS_WEIGHT * len(bad) / samples
-    return normals[j], float(cuts[k, j]), float(cost[k, j])
+    if cost[k, j] >= none:
+        return normals[0], np.inf, none
+    cut = np.sort(pb[:, j])[k] - width[j]
+    return normals[j], float(cut), float(cost[k, j])
 
 
 def _image(view: DepthView, points: np.ndarray) -> np.ndarray:

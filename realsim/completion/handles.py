@@ -2,7 +2,7 @@
 
 Revolving the visible profile leaves out what lies off the circle of each height band: the points
 the camera saw beyond the body's outside by more than a wall's width, gathered on one side of it,
-are its handle. The camera sees one side of it; a handle is symmetric about the vertical plane
+are its handle when enough of them stand a centimetre beyond the body's widest radius. The camera sees one side of it; a handle is symmetric about the vertical plane
 through the body's axis and its own middle, and the extreme angle its seen points reach away from
 the camera is where the line of sight grazes it (the occluding contour lies in that plane), so
 the seen points are mirrored about that plane. The handle is cut into height bands, each the hull
@@ -22,6 +22,7 @@ MIN_POINTS = 30  # fewer points off the body are noise, not a handle
 GAP = 0.006  # m: a point this much beyond the body's outside is off the body
 SECTOR_DEG = 60.0  # a handle's points lie within this angle of their median direction
 BANDS = 4  # height bands of a handle (the top and bottom ones join the body)
+REACH = 0.01  # m: a handle reaches this far beyond the body's widest radius
 
 
 def _wrap(angle: np.ndarray) -> np.ndarray:
@@ -44,6 +45,9 @@ def handle_pieces(points: np.ndarray, centre: np.ndarray, outside: tuple[np.ndar
     middle = float(np.angle(np.mean(np.exp(1j * angle[off]))))
     off &= np.abs(_wrap(angle - middle)) < np.radians(SECTOR_DEG / 2)
     if off.sum() < MIN_POINTS:
+        return []
+    reach = (np.linalg.norm(rel, axis=1) - np.maximum(body, float(np.max(outside[1]))))[off]
+    if np.count_nonzero(reach > REACH) < MIN_POINTS:  # a lip or a bulge the profile missed, not a handle
         return []
     handle = points[off]
     # the mirror plane: the angle farthest from the camera's side the seen points reach

@@ -82,7 +82,8 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         container = None
         rim = round_rim(pts, base_z, top_z, params.cylinder_max_radius) if params.containers.enabled else None
         if rim is not None:
-            within = (np.linalg.norm(points[:, :2] - rim[0], axis=1) < rim[1]) & (points[:, 2] > base_z) & (points[:, 2] < top_z)
+            within = (np.linalg.norm(points[:, :2] - rim[0], axis=1) < rim[1]) & (points[:, 2] < top_z)
+            within &= points[:, 2] > base_z + params.containers.min_wall  # lower: the support seen under a flaring wall
             container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, params.containers,
                                                 view.camera[:2] if view is not None else None, points[within & ~mask])
         carved = 0.0
