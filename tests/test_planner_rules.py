@@ -200,6 +200,10 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("put all the fruit in the bowl except the banana", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
     ("put every cube in the bowl besides the blue one", ["place_in('obj3_cube', 'obj6_bowl')", "place_in('obj5_cube', 'obj6_bowl')"]),
     ("pick up object 7", ["grasp('obj7_banana')"]),
+    # how it sits by the target is not part of the object's name; a bare side is a move
+    ("put the banana 10 cm to the left of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'left')"]),
+    ("set the strawberry down on the table right behind the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+    ("put the banana to the right a bit", ["push('obj7_banana', 'right', 0.05)"]),
 ]
 
 
@@ -260,8 +264,9 @@ def test_a_pushed_container_keeps_what_it_holds_checked() -> None:
     "is the banana in the bowl?",
     "which can is closer?",
     "what is in the bowl",
+    "put the banana 40 cm to the left of the bowl",
 ])
-def test_prohibitions_and_questions_are_never_carried_out(sentence: str) -> None:
+def test_prohibitions_questions_and_places_too_far_are_refused(sentence: str) -> None:
     with pytest.raises(InputError):
         RulePlanner().plan(sentence, CLUTTER)
 

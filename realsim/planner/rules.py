@@ -138,7 +138,8 @@ def _clause(clause: str, p: Parser) -> Step:
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
     # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
-    by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest))
+    by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest)
+                          or re.search(r"\bto the (?:left|right)(?: side)?(?: a bit| a little| slightly)?$", rest))  # "put the mug to the left"
     m = TOWARD.fullmatch(rest) if verb in PUSH else None
     if m and (verb not in PUT or "from" in m.group(2) or distance(rest) is not None):
         return push_relative(m, distance(rest), p)  # "push the mug toward the bowl"; "slide X toward Y" puts it next to Y
@@ -250,6 +251,7 @@ def _relation_tail(rest: str) -> bool:
 def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: str) -> Step:
     target_phrase, *exception = re.split(r"\s+(?=(?:except|but not|other than|apart from|save for|excluding|besides)\s)", target_phrase, maxsplit=1)
     obj_phrase = f"{obj_phrase} {exception[0]}" if exception else obj_phrase  # "all the fruit in the bowl except the banana"
+    obj_phrase = _beside_measure(obj_phrase, kind)
     target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
     target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
     if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):
@@ -313,6 +315,22 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
             calls.append(Call("place_beside", (o.name, target.name, side)))
             goals.append(SideOf(o.name, target.name, side))
     return Step(calls, goals, tuple(o.name for o in objs))
+
+
+_MEASURE = re.compile(r"\s+(?:(?:about |around |roughly |some )?(\d+(?:\.\d+)?|a few|a couple of) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+                      r"|a (?:bit|little|tad)(?: more)?|slightly|directly|just|diagonally|immediately|straight|somewhere"
+                      rf"|(?:down )?(?:on|onto) {SURFACES}|down)$")
+
+
+def _beside_measure(obj_phrase: str, kind: str) -> str:
+    """The object phrase without how it sits by the target ("the mug 10 cm | to the left of the
+    bowl", "the mug down on the table | behind the box"); a side relation allows at most 15 cm."""
+    while m := _MEASURE.search(obj_phrase):
+        if m.group(1) and kind not in ("in", "on") and distance(m.group(0)) is not None and (distance(m.group(0)) or 0.0) > 0.15:
+            raise InputError(f"a place beside an object is at most 15 cm from it, not {m.group(0).strip()}; "
+                             "to move something a distance say 'move X N cm left'")
+        obj_phrase = obj_phrase[: m.start()]
+    return obj_phrase
 
 
 def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) -> ObjectInfo:
