@@ -66,7 +66,7 @@ class PushSkill(Motion):
                                     "and no shorter or askew push within the asked move's tolerance clears it", values={"moved": 0.0})
             self._gripper(0.0)
             pushed = {obj, *riding}
-            last: PlanFailure | None = None
+            failures: list[PlanFailure] = []
             solved: dict[tuple[float, ...], IKResult] = {}  # contact IK per (contact, hand rotation): strokes of one direction share it
             for u, length in options:
                 ds = np.array([*u, 0.0])
@@ -74,9 +74,9 @@ class PushSkill(Motion):
                     rot, stroke = self._plan_stroke(pts, z, ds, length, pushed, solved)
                     break
                 except PlanFailure as exc:
-                    last = last or exc  # the first stroke's reason: the one asked, or the nearest to it
+                    failures.append(exc)
             else:
-                raise last or PlanFailure("no push pose")
+                raise _refusal(failures)
             self._follow(stroke)  # the checked stroke itself, forearm clear of the pushed object
             pos, _ = self.tcp_pose()
             up = np.array([0, 0, pp.retreat_up])
@@ -152,3 +152,15 @@ class PushSkill(Motion):
             hits = self.geometry.robot_hits(self.qadr, q, (), pushed, self.hand_bodies, self._pushed_by(pushed, self.ik.fk(q)[0], contact, d))
             if hits:
                 raise PathBlocked(f"the arm would touch {', '.join(sorted(hits))} while pushing")
+
+
+def _refusal(failures: list[PlanFailure]) -> PlanFailure:
+    """Why no stroke can be made: the first stroke's reason (the one asked, or the nearest to
+    it), and when only another stroke reached the object, what stopped that one."""
+    if not failures:
+        return PlanFailure("no push pose")
+    first = failures[0]
+    blocked = next((f for f in failures[1:] if isinstance(f, PathBlocked)), None)
+    if isinstance(first, PathBlocked) or blocked is None:
+        return first
+    return PlanFailure(f"{first}; a shorter or askew stroke: {blocked}")
