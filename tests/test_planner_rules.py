@@ -204,6 +204,15 @@ PEOPLE: list[tuple[str, list[str]]] = [
     ("put the banana 10 cm to the left of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'left')"]),
     ("set the strawberry down on the table right behind the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
     ("put the banana to the right a bit", ["push('obj7_banana', 'right', 0.05)"]),
+    # talk around the command, texting, a dropped object, a plural swap, superlatives said long
+    ("ugh this table is a mess, could you drop the strawberry in the bowl", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("the banana looks lonely over there, can you move it next to the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("so there's a bowl and a banana here, I'd like the banana in the bowl if that's ok", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("mv grn cube 3cm fwd", ["push('obj5_cube', 'forward', 0.03)"]),
+    ("take the strawberry and put next to the banana", ["grasp('obj8_strawberry')", "place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("swap the soda cans", ["place_beside('obj1_soda_can', 'obj2_soda_can', 'right')", "place('obj2_soda_can', [0.4, 0.2, 0.06])",
+                            "place('obj1_soda_can', [0.4, -0.1, 0.06])"]),
+    ("push whatever is furthest to the right a bit forward", ["push('obj5_cube', 'forward', 0.05)"]),
 ]
 
 
@@ -265,6 +274,7 @@ def test_a_pushed_container_keeps_what_it_holds_checked() -> None:
     "which can is closer?",
     "what is in the bowl",
     "put the banana 40 cm to the left of the bowl",
+    "good afternoon, i'm having a lovely day",
 ])
 def test_prohibitions_questions_and_places_too_far_are_refused(sentence: str) -> None:
     with pytest.raises(InputError):

@@ -11,6 +11,8 @@ import re
 from realsim.planner.vocab import singular
 
 FILLERS = (
+    r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)",
+    r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
     r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
@@ -18,7 +20,9 @@ FILLERS = (
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
-    r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
+    r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
+    r"if that works", r"many thanks", r"thanks a lot",
+    r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
 _VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
@@ -27,7 +31,10 @@ _THINGS = r"(?:anything|everything|something|(?:any of )?the other (?:thing|obje
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
                          r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
                          rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
-_TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and"}
+_TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
+            "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
+            "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
+            "w": "with", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -87,6 +94,9 @@ def clean(command: str) -> str:
     # "to the mug's left": to the left of the mug; "side by side": next to each other
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
+    text = re.sub(r"\b(?:(?:the )?(?:furthest|farthest|most) (?:to the |on the )?|(?:on |to )?the (?:far|very) )(left|right)\b", r"the \1most", text)
+    text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
     text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
@@ -122,7 +132,8 @@ def split_command(command: str) -> list[str]:
     parts = _partitive(parts)
     topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
     verb = verb_re.match(parts[1]) if topic else None
-    if topic and not verb_re.match(topic) and not _has_relation(_bare(topic)) and not _AVOID.match(topic):
+    statement = re.search(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b", topic)  # an aside
+    if topic and not statement and not verb_re.match(topic) and not _has_relation(_bare(topic)) and not _AVOID.match(topic):
         if verb and re.search(r"\b(?:it|them)\b", parts[1]):
             # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
             parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
@@ -132,7 +143,7 @@ def split_command(command: str) -> list[str]:
             parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
-        if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part):
+        if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part):
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does

@@ -168,7 +168,7 @@ class Resolver:
                 best = max(best, 1.5)
             elif head in KINDS and head in self.kinds_of(o):
                 best = max(best, 1.4)  # a member of the kind, below a synonym ("dish": the bowl before the mug)
-        if best >= 1.5 and any(s in name for s in SYNONYMS.get(nouns[-1], ()) for name in primary):
+        if best >= 1.5 and any(s in name for w in nouns for s in SYNONYMS.get(w, ()) for name in primary):
             best += 0.01  # a synonym of its own label breaks a tie of aliases every can shares ("spam": the potted meat)
         return best
 

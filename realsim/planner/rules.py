@@ -19,6 +19,7 @@ import re
 from collections.abc import Sequence
 
 from realsim.errors import InputError
+from realsim.planner.asides import is_aside
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, QUESTION, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
@@ -61,6 +62,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     p = Parser(objects, robot_yaw)
     steps: list[Step] = []
     kept: dict[str, str] = {}  # objects the command says not to touch, and how it named them
+    asides: list[InputError] = []  # clauses that were talk around the command ("ugh my desk is a mess")
     for c in clauses:
         c, phrase = avoided(c)
         if phrase:  # the robot keeps clear of every object it is not asked to move; a named one it must not move at all
@@ -68,7 +70,14 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
             kept |= {o.name: phrase for o in named}
             p.ctx.set(named)
         if c:
-            steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
+            try:
+                steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
+            except InputError as exc:
+                if not is_aside(c, p):
+                    raise
+                asides.append(exc)
+    if asides and not steps and not kept:
+        raise asides[0]
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
@@ -201,6 +210,8 @@ def _find_relation(rest: str) -> list[tuple[int, int, str]]:
 
 def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
     rest = re.sub(r"\s+(?:again|once more)$", "", rest)  # "set it down again"
+    if p.ctx.last and _starts_with_relation(re.sub(r"^(?:down|back|over) ", "", rest)):
+        rest = f"it {rest}"  # "take the can and put next to the box": the object just named
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
     rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
                   r"|its (?:original |old |starting )?(?:place|spot|position))$",

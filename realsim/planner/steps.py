@@ -48,7 +48,7 @@ class Parser:
 
 
 SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|locations) of| where| places of)?"
-                  r" (.+?) and (.+?)(?: (?:are|is|around|over|places|positions|spots|sit))*")
+                  r" (.+?)(?: and (.+?))?(?: (?:are|is|around|over|places|positions|spots|sit))*")
 EACH_OTHER = re.compile(r"(?:each other|one another|one other|together)")
 
 
@@ -58,11 +58,18 @@ def _away_side(p: Parser, a: ObjectInfo, b: ObjectInfo) -> str:
     return ("left" if bl > al else "right") if abs(bl - al) >= abs(bf - af) else ("behind" if bf > af else "front")
 
 
-def swap(a_phrase: str, b_phrase: str, p: Parser) -> Step:
+def swap(a_phrase: str, b_phrase: str | None, p: Parser) -> Step:
     """Each object where the other was: the first steps aside (beyond the second, away from its
-    own spot), the second goes to the first's spot, then the first to the second's."""
-    a = p.resolver.resolve(a_phrase, p.ctx, allow_plural=False)[0]
-    b = p.resolver.resolve(b_phrase, Context(p.ctx.last), exclude=[a.name], allow_plural=False)[0]
+    own spot), the second goes to the first's spot, then the first to the second's. Without
+    ``b_phrase``, ``a_phrase`` names both ("swap the soda cans")."""
+    if b_phrase is None:
+        pair = objects_named(a_phrase, p)
+        if len(pair) != 2:
+            raise InputError(f"a swap takes two objects; {a_phrase!r} names {len(pair)}; {p.resolver.listing()}")
+        a, b = pair
+    else:
+        a = p.resolver.resolve(a_phrase, p.ctx, allow_plural=False)[0]
+        b = p.resolver.resolve(b_phrase, Context(p.ctx.last), exclude=[a.name], allow_plural=False)[0]
     side = _away_side(p, a, b)
     pa, pb = [round(v, 3) for v in a.position], [round(v, 3) for v in b.position]
     p.ctx.set([a, b])

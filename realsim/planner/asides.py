@@ -1,0 +1,42 @@
+"""Asides: what people say around a command that is not a command ("ugh my desk is a mess, ...",
+"good afternoon", "the spam is in the way of everything, could you move it ...").
+
+An aside is only skipped when another clause of the same sentence is a command, so a sentence
+of asides alone is still refused. A statement about one object ("the white box looks messy
+there") makes that object what a later "it" means.
+"""
+
+from __future__ import annotations
+
+import re
+
+from realsim.errors import InputError
+from realsim.planner.steps import Parser
+from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
+
+__all__ = ["is_aside"]
+
+_OPENER = r"(?:(?:ok|okay|so|ugh|hey|oh|well|um|hmm|haha|lol|alright|right)\s+)*"
+_STATEMENT = re.compile(rf"{_OPENER}(.+?) (?:is|are|s|looks|look|seems|seem|was|were|keeps|sits|has been|got|needs|need)\b")
+
+
+def _scene_words(p: Parser) -> set[str]:
+    words = {w for o in p.objects for t in (o.label, o.name, *o.aliases) for w in name_words(t)}
+    return words - set(GENERIC) - set(COLOR_WORDS)
+
+
+def is_aside(clause: str, p: Parser) -> bool:
+    """Whether a clause the planner could not read is talk around the command: a statement whose
+    subject is one scene object (that object becomes "it"), or words naming no scene object."""
+    if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look)\b", clause):
+        return True  # "so there's a bowl and a mug here": what the speaker sees
+    m = _STATEMENT.match(clause)
+    if m:
+        try:
+            subject = p.resolver.resolve(m.group(1), p.ctx, allow_plural=False)
+        except InputError:
+            subject = []
+        if subject:
+            p.ctx.set(subject)
+            return True
+    return not any(singular(w) in _scene_words(p) for w in clause.split())
