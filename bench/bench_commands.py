@@ -505,7 +505,7 @@ def _same_goal(a, b, tol: float = 0.005) -> bool:
             continue
         x, y = getattr(a, f.name), getattr(b, f.name)
         if isinstance(x, (int, float)) and isinstance(y, (int, float)):
-            if abs(x - y) > (0.02 if f.name == "distance" else tol):  # a push's distance: the simulation's tolerance
+            if abs(x - y) > (0.02 if f.name == "distance" else tol) + 1e-9:  # a push's distance: the simulation's tolerance
                 return False
         elif isinstance(x, tuple) and isinstance(y, tuple):
             if len(x) != len(y) or any(abs(u - v) > tol for u, v in zip(x, y)):

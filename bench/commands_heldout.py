@@ -426,7 +426,68 @@ HELDOUT8: list[tuple[str, str, str]] = [
     ("scan55", "push the thing farthest away a bit to the left", "moved second_from_left_yellow_object left 0.05"),
 ]
 
+# Written on 2026-11-25 by another engineer who never read the planner (only the object lists), as six
+# people speak to a voice assistant (no punctuation, corrections, hesitations); recorded before any change for it.
+HELDOUT9: list[tuple[str, str, str]] = [
+    # kitchen
+    ("kitchen", "uh can you like grab the banana and drop it in the bowl", "in banana bowl"),
+    ("kitchen", "alright class now the robot is going to place the tomato soup can behind the cracker box", "behind tomato_soup_can cracker_box"),
+    ("kitchen", "soup can in the mug no no in the bowl quick", "in tomato_soup_can bowl"),
+    ("kitchen", "shift the cracker box a little to the left", "moved cracker_box left 0.05"),
+    ("kitchen", "robot please banana you take up and then put back same place", "at banana"),
+    ("kitchen", "dear could you put the apple in the bowl for me", "refuse"),
+    # pantry
+    ("pantry", "okay so like put the spam next to the rubiks cube", "next potted_meat_can rubiks_cube"),
+    ("pantry", "for this next step the robot will set the large marker behind the mustard bottle", "behind large_marker mustard_bottle"),
+    ("pantry", "mustard grab the mustard and just hold it", "lift mustard_bottle"),
+    ("pantry", "push the rubiks cube back toward you uh five centimetres", "moved rubiks_cube back 0.05"),
+    ("pantry", "please the cube with many colors put on right side of the brick", "right rubiks_cube foam_brick"),
+    ("pantry", "would you swap the mustard with that little red foam brick please", "swapped mustard_bottle foam_brick"),
+    # mugbowl
+    ("mugbowl", "put the mug like right next to the bowl", "next mug bowl"),
+    ("mugbowl", "now watch the robot move the bowl so it sits to the right of the mug", "right bowl mug"),
+    ("mugbowl", "bowl bowl slide it back toward me", "moved bowl back 0.1"),
+    ("mugbowl", "push the mug left about ten centimetres", "moved mug left 0.1"),
+    ("mugbowl", "robot go to home position please", "home"),
+    ("mugbowl", "oh could you put the mug in the bowl no sorry just pick up the bowl", "lift bowl"),
+    # fruitcans
+    ("fruitcans", "yo drop the spam in the bowl", "in potted_meat_can bowl"),
+    ("fruitcans", "watch closely everyone the robot will set the rubiks cube between the bowl and the potted meat can", "between rubiks_cube bowl potted_meat_can"),
+    ("fruitcans", "the can grab the can quick", "refuse"),
+    ("fruitcans", "move the tomato soup can to the left ten centimetres", "moved tomato_soup_can left 0.1"),
+    ("fruitcans", "please the red fruit put in front of the banana", "front strawberry banana"),
+    ("fruitcans", "now dear put the soup can uh the tomato one behind the bowl please", "behind tomato_soup_can bowl"),
+    # textkitchen
+    ("textkitchen", "uh lift the cereal box like up", "lift cereal_box"),
+    ("textkitchen", "the robot will now put the left soda can into the bowl", "in soda_can@left bowl"),
+    ("textkitchen", "cereal box move it right a bit", "moved cereal_box right 0.05"),
+    ("textkitchen", "take the soda can on the right and put it behind the cereal box", "behind soda_can@right cereal_box"),
+    ("textkitchen", "excuse me robot the can put in the bowl please", "refuse"),
+    ("textkitchen", "could you fetch the soda can that is further away and set it next to the mug", "next soda_can@back mug"),
+    # textblocks
+    ("textblocks", "uh put the leftmost cube on the plate", "on cube@green plate"),
+    ("textblocks", "the green cube goes to the right of the red cube no wait the blue cube", "right cube@blue cube@red"),
+    ("textblocks", "the cube grab the cube quick", "refuse"),
+    ("textblocks", "put the green cube between the red cube and the blue cube", "between cube@green cube@red cube@blue"),
+    ("textblocks", "please the blue block put left of the green block", "left cube@blue cube@green"),
+    ("textblocks", "move the plate a little bit back towards the robot dear", "moved plate back 0.05"),
+    # scan45
+    ("scan45", "grab the red can", "lift red_can"),
+    ("scan45", "now the robot will place the small white object next to the red cracker box", "next small_white_object red_cracker_box"),
+    ("scan45", "white can the white can move it over", "refuse"),
+    ("scan45", "move the tall white can left five centimetres", "moved left_tall_white_can left 0.05"),
+    ("scan45", "please the big white thing push to right a little", "moved big_white_object right 0.05"),
+    ("scan45", "could you put the right white can behind the red cracker box", "behind right_white_can red_cracker_box"),
+    # scan55
+    ("scan55", "uh put the grey object next to the white box", "next grey_object white_box"),
+    ("scan55", "now class the robot will pick up the tall white can", "lift tall_white_can"),
+    ("scan55", "the yellow thing move it quick", "refuse"),
+    ("scan55", "slide the medium white object forward ten centimetres", "moved medium_white_object forward 0.1"),
+    ("scan55", "please small white object put left of the white box", "left small_white_object white_box"),
+    ("scan55", "could you put the second yellow one from the left uh the second from left yellow object in front of the red box", "front second_from_left_yellow_object red_box"),
+]
+
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
-    "heldout5": HELDOUT5, "heldout6": HELDOUT6, "heldout7": HELDOUT7, "heldout8": HELDOUT8,
+    "heldout5": HELDOUT5, "heldout6": HELDOUT6, "heldout7": HELDOUT7, "heldout8": HELDOUT8, "heldout9": HELDOUT9,
 }

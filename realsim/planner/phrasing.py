@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+from realsim.planner import speech
 from realsim.planner.vocab import singular
 
 FILLERS = (
@@ -19,7 +20,7 @@ FILLERS = (
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
-    r"now", r"well", r"um+", r"uh+", r"so", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
+    r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
     r"if that works", r"many thanks", r"thanks a lot",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
@@ -80,6 +81,7 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
+    text = speech.repair(text, _VERB_START, _RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
@@ -260,6 +262,11 @@ def _relation_start(text: str) -> bool:
     return bool(re.match(rf"(?:{'|'.join(re.escape(w) for w in words)})\b", text))
 
 
+_VERB_START = re.compile(rf"(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+_VERB_ANYWHERE = re.compile(rf"(?<![a-z]){_VERB_START.pattern}")
+_RELATION_AT = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0])) if w not in ('by', 'over'))})\b")
+
+
 def rephrase(clause: str) -> str:
     """The imperative a clause without a leading verb means, or the clause unchanged: a wish
     ("i like X next to Y" -> "put X next to Y"; "i need X moved 5 cm left" -> "move X 5 cm left"),
@@ -292,4 +299,6 @@ def rephrase(clause: str) -> str:
     m = _GOES.match(c)
     if m and _relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"
-    return f"put {c}" if _has_relation(" ".join(c.split()[1:])) else c
+    if _has_relation(" ".join(c.split()[1:])) and not _VERB_ANYWHERE.search(c):
+        return f"put {c}"
+    return speech.object_first(c, _VERB_ANYWHERE) or c  # "the red fruit put in front of the banana"

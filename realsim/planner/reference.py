@@ -184,6 +184,9 @@ class Resolver:
             return [min(pool, key=lambda o: (round(self.robot_xy(o)[0], 3), -self.robot_xy(o)[1]))]
         text = re.sub(r"^(?:(?:the|a|an|my|your|our)\s+)+", "", text).strip()
         text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
+        m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
+        if m and not {singular(w) for w in m.group(2).split()} & {w for names in self._words.values() for n in names for w in n}:
+            text = m.group(1)
         if not text:
             raise InputError(f"which object? nothing named in {phrase.strip()!r}; {self.listing()}")
         if re.fullmatch(r"(?:far |very )?(?:left|right|front|back|middle|center|centre|end|side|top|bottom)(?: side| end| hand side)?", text):
@@ -234,6 +237,9 @@ class Resolver:
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
                        allow_plural: bool, loose: bool = False) -> list[ObjectInfo]:
         cands = [o for o in self.objects if o.name not in exclude]
+        verbatim = [o for o in cands if text in (norm(o.label), " ".join(name_words(o.name)))]
+        if len(verbatim) == 1:  # the scene's own name said word for word ("the second from left yellow object")
+            return verbatim
         text = re.sub(r"^(?:whichever|whatever)(?: one| thing)? (?:is|s) (?:the )?(\w+est|\w+most)$", r"\1 thing", text)  # "whatever is tallest"
         m = re.fullmatch(r"(.+?) (?:that is|that s|thats|which is|that are|which are|is|are) ((?:\w+ )?\w+)", text)
         if m and all(w in COLOR_WORDS or w in BIG or w in SMALL for w in m.group(2).split()):

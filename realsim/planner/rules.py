@@ -214,8 +214,9 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
         rest = f"it {rest}"  # "take the can and put next to the box": the object just named
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
     rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
-                  r"|its (?:original |old |starting )?(?:place|spot|position))$",
-                  " back", rest)
+                  r"|its (?:original |old |starting )?(?:place|spot|position)|(?:the )?same (?:place|spot|position))$",
+                  " back", f" {rest}").strip()
+    rest = "it back" if rest == "back" else rest  # "put back (in the) same place": the object just named
     if verb == "stack" and not _find_relation(rest):  # "stack the cubes": a tower, the biggest at the bottom
         objs = objects_named(rest, p)
         if len(objs) < 2:

@@ -1,0 +1,29 @@
+"""Speech repairs: what the speaker took back is replaced, narration and fillers go."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("banana in the mug no no in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("put the strawberry in the bowl no sorry just pick up the banana", ["grasp('obj7_banana')"]),
+    ("put the left can uh the right can in the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
+    ("now the robot will put the banana in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("robot go home please", ["go_home()"]),
+    ("bowl bowl push it forward", ["push('obj6_bowl', 'forward', 0.1)"]),
+    ("put the banana like right next to the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("please the red cube put on the blue cube", ["place_on('obj3_cube', 'obj4_cube')"]),
+    ("push the banana back toward you uh five centimetres", ["push('obj7_banana', 'back', 0.05)"]),
+])
+def test_spoken_commands(sentence: str, lines: list[str]) -> None:
+    assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
+
+
+def test_a_repair_that_could_replace_two_things_is_asked_about() -> None:
+    with pytest.raises(InputError, match="either"):
+        RulePlanner().plan("put the red cube on the blue cube no wait the green cube", CLUTTER)
