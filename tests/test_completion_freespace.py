@@ -115,3 +115,18 @@ def test_the_scanned_bowl_is_one_hollow_piece_set_that_holds_a_ball() -> None:
     assert _covered_pixels(pieces, view, beside=mine.reshape(view.depth.shape)) <= 20  # off its outline
     x, y, z = drop_ball(pieces, np.array([centre[0] + 0.02, centre[1], top + 0.05]), floor_z=table)
     assert np.hypot(x - centre[0], y - centre[1]) < radius and table < z - 0.015 < bowl.floor_z + 0.01  # resting on the cavity floor
+
+
+def test_the_free_space_cuts_keep_what_the_camera_saw_of_the_object() -> None:
+    view, points, mine, truth, table, tolerance = _capture("003_cracker_box", seed=1)
+    pts = points[mine]
+    ray = pts.mean(axis=0) - view.camera
+    side = np.cross(ray, [0.0, 0.0, 1.0])
+    side *= 0.03 / np.linalg.norm(side)  # a wrong guess: the box 3 cm wider across the line of sight
+    guess = complete_hull(np.vstack([pts, pts + side]), table, float(np.percentile(pts[:, 2], 98)))[0]
+    seen = pts[:: max(1, len(pts) // 2000)]
+    inward = seen + (tolerance + 0.0005) * (guess.centroid - seen) / np.linalg.norm(guess.centroid - seen, axis=1, keepdims=True)
+    kept, _ = clip_pieces([guess], view, tolerance, seen=seen)
+    assert np.mean(_inside(kept, inward)) >= 0.99  # no cut takes off more than the noise of a face the camera saw
+    beside = mine.reshape(view.depth.shape)
+    assert _covered_pixels(kept, view, beside=beside) <= 0.05 * _covered_pixels([guess], view, beside=beside)  # the guess is cut

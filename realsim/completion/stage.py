@@ -148,7 +148,8 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
                 low = np.vstack([p.vertices for p in o.collision]) + o.position
                 seen = observed[o.resting_on]
                 held.setdefault(o.resting_on, [seen[:: max(1, len(seen) // 2000)]]).append(low[low[:, 2] <= low[:, 2].min() + 0.002])
-        keep_out_of_free_space(order, view, tolerance, params, {k: np.vstack(v) for k, v in held.items()})
+        keep_out_of_free_space(order, view, tolerance, params, {k: np.vstack(v) for k, v in held.items()},
+                               {k: v[:: max(1, len(v) // 2000)] for k, v in observed.items()})
     for obj in order:
         if obj.resting_on is None and params.balance_margin > 0:
             brace(obj, params.balance_margin)
