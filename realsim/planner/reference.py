@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from realsim.errors import InputError
-from realsim.planner import relations
+from realsim.planner import relations, vocab
 from realsim.planner.attributes import colors_of, left_order, pts, ranked_by_size, relation_holds
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -40,9 +40,6 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is )?in front of", "front"),
     (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
 )
-_TO_ME = r"(?: (?:to|from) (?:me|you|the robot|yourself))?"
-_COMPARATIVES = ((rf"(?:closer|nearer){_TO_ME}", "nearest"), (rf"(?:further|farther)(?: away)?{_TO_ME}", "farthest"),
-                 (r"(?:more|further|farther) (?:to the )?left", "leftmost"), (r"(?:more|further|farther) (?:to the )?right", "rightmost"))
 TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
 # robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
 EXTREMES: dict[str, tuple[int, float]] = {
@@ -246,7 +243,7 @@ class Resolver:
             text = f"{m.group(2)} {m.group(1)}"  # "the cube that is red": the red cube
         text = re.sub(r"^(?:whichever|whatever|which ever|the one of the|one of the) (.+?) (?:is|are|that is|that are) ", r"\1 ", text)
         # a comparative with nothing to compare to but the speaker: "the can that is closer", "the one more to the left"
-        for pattern, extreme in _COMPARATIVES:
+        for pattern, extreme in vocab.COMPARATIVES:
             text = re.sub(rf"^(.+?) (?:that is |that s |thats |which is |is |are )?{pattern}$", rf"{extreme} \1", text)
         text = re.sub(r"^(?:closer|nearer) (?!to )", "nearest ", re.sub(r"^(?:farther|further) (?!from )", "farthest ", text))
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"

@@ -66,6 +66,10 @@ TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "apple": ("red", "green"), "lime": ("green",), "pear": ("green", "yellow"), "orange": ("orange",), "plum": ("purple",),
     "mustard": ("yellow",), "ketchup": ("red",), "carrot": ("orange",),
 }
+_TO_ME = r"(?: (?:to|from) (?:me|you|the robot|yourself))?"
+# a comparative said of one object with nothing to compare it to but the speaker: its extreme
+COMPARATIVES = ((rf"(?:closer|nearer){_TO_ME}", "nearest"), (rf"(?:further|farther)(?: away)?{_TO_ME}", "farthest"),
+                (r"(?:more|further|farther) (?:to the )?left", "leftmost"), (r"(?:more|further|farther) (?:to the )?right", "rightmost"))
 GENERIC = ("thing", "object", "item", "stuff", "one", "piece")
 
 DIRECTION_WORDS: dict[str, str] = {
