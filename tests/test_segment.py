@@ -36,9 +36,9 @@ def mosd_results() -> dict[str, tuple[SegmentResult, np.ndarray, float]]:
     for name in SCENES:
         scene = detect_planes(load_capture(MOSD / f"{name}.pcd"))
         gt = np.where(scene.annotations >= 20, scene.annotations // 10, 0)
-        t0 = time.perf_counter()
+        t0 = time.process_time()  # CPU seconds: other processes on the machine do not count
         result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, SegmentParams(), seed=0)
-        out[name] = (result, gt, time.perf_counter() - t0)
+        out[name] = (result, gt, time.process_time() - t0)
         assert np.all(result.labels[~np.isfinite(scene.points).all(axis=1)] == 0)
     return out
 
