@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+import threading
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -17,6 +18,11 @@ from realsim import llm  # noqa: E402
 
 @pytest.fixture
 def server(monkeypatch: pytest.MonkeyPatch) -> Iterator[MessagesServer]:
+    # a conversion that passed its manifest deadline leaves its calls running (they still cost and
+    # count); in a test worker they may belong to an earlier test: let them end before counting
+    for thread in threading.enumerate():
+        if thread.name.startswith("claude-manifest"):
+            thread.join(timeout=60)
     with MessagesServer() as srv:
         monkeypatch.setenv("ANTHROPIC_API_KEY", "sk-test-local")
         monkeypatch.setenv("ANTHROPIC_BASE_URL", srv.base_url)  # the SDK's own variable
