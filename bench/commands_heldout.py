@@ -487,7 +487,68 @@ HELDOUT9: list[tuple[str, str, str]] = [
     ("scan55", "could you put the second yellow one from the left uh the second from left yellow object in front of the red box", "front second_from_left_yellow_object red_box"),
 ]
 
+# Written on 2026-11-25 by a third engineer who never read the planner (only the object lists), as six
+# people write in a lab chat window; measured after every planner change of that day, no change made for it.
+HELDOUT10: list[tuple[str, str, str]] = [
+    # kitchen
+    ("kitchen", "soup can -> bowl.", "in tomato_soup_can bowl"),
+    ("kitchen", "Could you please move the tomato soup can so that it sits to the left of the cracker box?", "left tomato_soup_can cracker_box"),
+    ("kitchen", "yo grab the apple and dunk it in the bowl 🏀 ez", "refuse"),
+    ("kitchen", "Lay please the banana between the cup and the cracker box.", "between banana mug cracker_box"),
+    ("kitchen", "Pick up the yellow banana at the front left and put it down in front of the red cracker box on the right.", "front banana cracker_box"),
+    ("kitchen", "Grab the banana. Hold it up for a sec. OK, now put it back where it was.", "at banana"),
+    # pantry
+    ("pantry", "rubiks cube: place left of spam can", "left rubiks_cube potted_meat_can"),
+    ("pantry", "I'd like you to swap the positions of the foam brick and the mustard bottle, please.", "swapped foam_brick mustard_bottle"),
+    ("pantry", "lift the marker up bro, hold it up high 🙌", "lift large_marker"),
+    ("pantry", "Put the brick of foam next to the can of meat, please.", "next foam_brick potted_meat_can"),
+    ("pantry", "Take the yellow mustard bottle on the far right and place it between the black marker at the front left and the blue Spam can at the back.", "between mustard_bottle large_marker potted_meat_can"),
+    ("pantry", "Pick up the Spam can. Put it in front of the Rubik's cube. Then go home.", "front potted_meat_can rubiks_cube; home"),
+    # mugbowl
+    ("mugbowl", "mug: push 10 cm left", "moved mug left 0.1"),
+    ("mugbowl", "I'd like the bowl moved about 15 centimetres to the right, please.", "moved bowl right 0.15"),
+    ("mugbowl", "lift the bowl up like a trophy 🏆 lets gooo", "lift bowl"),
+    ("mugbowl", "Place the bowl before the cup, please.", "front bowl mug"),
+    ("mugbowl", "Push the red mug at the front right toward the red bowl at the back until it sits right next to the bowl.", "next mug bowl"),
+    ("mugbowl", "Pick up the bowl. Now put it down again where it was. Then go home.", "at bowl; home"),
+    # fruitcans
+    ("fruitcans", "strawberry into bowl.", "in strawberry bowl"),
+    ("fruitcans", "Would you please swap the strawberry and the Rubik's cube?", "swapped strawberry rubiks_cube"),
+    ("fruitcans", "yo put the can in the bowl fr 🥫", "refuse"),
+    ("fruitcans", "Put the banana at the side of the can of tomato.", "next banana tomato_soup_can"),
+    ("fruitcans", "Take the blue Spam can on the right and place it between the red bowl on the left and the Rubik's cube at the front center.", "between potted_meat_can bowl rubiks_cube"),
+    ("fruitcans", "Pick up the soup can. Put it in the bowl. Actually no, take it out again and set it back down where it was.", "at tomato_soup_can"),
+    # textkitchen
+    ("textkitchen", "lift left soda can.", "lift soda_can@left"),
+    ("textkitchen", "Please put the soda can on the right next to the cereal box.", "next soda_can@right cereal_box"),
+    ("textkitchen", "grab the soda can and yeet it into the mug lmao 🥤", "refuse"),
+    ("textkitchen", "Shove the cereal box a little bit to the right, please.", "moved cereal_box right 0.05"),
+    ("textkitchen", "Take the red soda can at the back, the one nearer the middle, and put it down in front of the white bowl on the right.", "front soda_can@back bowl"),
+    ("textkitchen", "See the two red cans? Take the one closer to you. Put it in the bowl. Then go home.", "in soda_can@front bowl; home"),
+    # textblocks
+    ("textblocks", "red cube onto plate.", "on cube@red plate"),
+    ("textblocks", "Could you please stack the blue cube on top of the green cube?", "on cube@blue cube@green"),
+    ("textblocks", "put the yellow cube on the plate pls 🟨", "refuse"),
+    ("textblocks", "Put the cube green between the cube red and the cube blue.", "between cube@green cube@red cube@blue"),
+    ("textblocks", "Take the blue cube, the middle one of the three cubes, and place it behind the white plate on the right.", "behind cube@blue plate"),
+    ("textblocks", "Grab the green cube and put it on the plate. Then push the red cube a little to the left.", "on cube@green plate; moved cube@red left 0.05"),
+    # scan45
+    ("scan45", "pick small white object, place left of red can.", "left small_white_object red_can"),
+    ("scan45", "Please pick up the tall white can on the left and hold it.", "lift left_tall_white_can"),
+    ("scan45", "bruh move the red cracker box like 5cm to the right 👉", "moved red_cracker_box right 0.05"),
+    ("scan45", "Place the red can behind the high white can.", "behind red_can left_tall_white_can"),
+    ("scan45", "Take the shorter white can, the one on the right, and put it down next to the red cracker box on the far right.", "next right_white_can red_cracker_box"),
+    ("scan45", "Pick up the white can. Then put it next to the red can.", "refuse"),
+    # scan55
+    ("scan55", "tall white can -> next to red box.", "next tall_white_can red_box"),
+    ("scan55", "Could you please pick up the blue box and then put it back exactly where it was?", "at blue_box"),
+    ("scan55", "grab the yellow thing and drop it by the red box lol 💛", "refuse"),
+    ("scan55", "Move the cylinder orange a little to the right.", "moved orange_cylinder right 0.05"),
+    ("scan55", "Take the small white object at the very front on the right and place it next to the white box just behind it.", "next small_white_object white_box"),
+    ("scan55", "Find the red box. Push it a little further away from you. Then go back home.", "moved red_box forward 0.05; home"),
+]
+
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
-    "heldout5": HELDOUT5, "heldout6": HELDOUT6, "heldout7": HELDOUT7, "heldout8": HELDOUT8, "heldout9": HELDOUT9,
+    "heldout5": HELDOUT5, "heldout6": HELDOUT6, "heldout7": HELDOUT7, "heldout8": HELDOUT8, "heldout9": HELDOUT9, "heldout10": HELDOUT10,
 }

@@ -19,6 +19,11 @@ from realsim.planner import RulePlanner
     ("put the banana like right next to the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
     ("please the red cube put on the blue cube", ["place_on('obj3_cube', 'obj4_cube')"]),
     ("push the banana back toward you uh five centimetres", ["push('obj7_banana', 'back', 0.05)"]),
+    ("banana: push 5 cm left", ["push('obj7_banana', 'left', 0.05)"]),
+    ("put the strawberry at the side of the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    ("pick up the left can of soda", ["grasp('obj1_soda_can')"]),
+    ("strawberry -> next to the banana", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("lift the bowl up bro lets gooo", ["grasp('obj6_bowl')"]),
 ])
 def test_spoken_commands(sentence: str, lines: list[str]) -> None:
     assert [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls] == lines
@@ -27,3 +32,10 @@ def test_spoken_commands(sentence: str, lines: list[str]) -> None:
 def test_a_repair_that_could_replace_two_things_is_asked_about() -> None:
     with pytest.raises(InputError, match="either"):
         RulePlanner().plan("put the red cube on the blue cube no wait the green cube", CLUTTER)
+
+
+def test_an_undo_keeps_what_it_undoes() -> None:
+    """"..., actually no, take it out again": "it" is what was just put in, and the last word wins."""
+    calls = [c.text() for c in RulePlanner().plan(
+        "pick up the banana. put it in the bowl. actually no, take it out again and put it back exactly where it was", CLUTTER).calls]
+    assert calls[0] == "grasp('obj7_banana')" and calls[-1] == "place('obj7_banana', [0.65, 0.0, 0.02])"

@@ -12,7 +12,7 @@ from realsim.planner import speech
 from realsim.planner.vocab import singular
 
 FILLERS = (
-    r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)",
+    r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
@@ -55,7 +55,7 @@ AGAIN = re.compile(r"(?:do (?:that|it|this|so|the same)(?: thing)? (?:again|once
                    r"|(?:and )?(?:once more|one more time|again))")
 
 RELATIONS: tuple[tuple[str, str], ...] = (
-    ("on either side of", "sides"), ("on both sides of", "sides"), ("on each side of", "sides"), ("to either side of", "sides"),
+    ("at the side of", "next"), ("by the side of", "next"), ("on either side of", "sides"), ("on both sides of", "sides"), ("on each side of", "sides"), ("to either side of", "sides"),
     ("either side of", "sides"), ("on opposite sides of", "sides"),
     ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
     ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
@@ -85,7 +85,9 @@ def clean(command: str) -> str:
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
+    text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?=(?:next to|in|into|on|onto|behind|left of|right of|in front of|between|beside)\b)", " ", text)
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*", " to ", text)  # "mug -> bowl": where it goes
+    text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+)", r"\2 \1", text)  # "the can of tomato"
     text = re.sub(r"\s+by (?:its|the|their) (?:handle|rim|top|side|edge|body|lid|middle)s?\b", "", text)  # the grasp is the robot's choice
     text = re.sub(r"\s+and (?:hold|keep) (?:it|them|holding it|holding them)(?: up| there| in the air| steady| still)?(?=$|[.,;!?])", "", text)
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
@@ -139,7 +141,8 @@ def split_command(command: str) -> list[str]:
         if verb and re.search(r"\b(?:it|them)\b", parts[1]):
             # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
             parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
-        elif verb and _relation_start(parts[1][verb.end():].strip()):  # "the banana, put in the bowl": the verb's object
+        elif verb and (_relation_start(parts[1][verb.end():].strip())  # "the banana, put in the bowl": the verb's object
+                       or re.match(r"(?:\d+|a bit|a little|slightly|left|right|forward|back|up|down)\b", parts[1][verb.end():].strip())):
             parts = [f"{verb.group(0)} {topic} {parts[1][verb.end():].strip()}", *parts[2:]]
         elif _relation_start(parts[1]):
             parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes

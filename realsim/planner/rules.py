@@ -213,7 +213,7 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
     if p.ctx.last and _starts_with_relation(re.sub(r"^(?:down|back|over) ", "", rest)):
         rest = f"it {rest}"  # "take the can and put next to the box": the object just named
     # "put X back" / "put X down" / "set X down" with no place: where it was, or where it is now
-    rest = re.sub(r"\s+(?:back )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
+    rest = re.sub(r"\s+(?:back )?(?:exactly |precisely |right |just )?(?:to |in |into |on )?(?:where (?:it|they) (?:was|were|came from|belongs?|started)|where (?:you|i) (?:found|got|took) (?:it|them)(?: from)?"
                   r"|its (?:original |old |starting )?(?:place|spot|position)|(?:the )?same (?:place|spot|position))$",
                   " back", f" {rest}").strip()
     rest = "it back" if rest == "back" else rest  # "put back (in the) same place": the object just named

@@ -46,7 +46,8 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
         weak = bool(_WEAK.fullmatch(m.group(1)))
         said = re.sub(r"^(?:just|rather|instead|actually)\s+", "", after)
         if verb.match(said) and not weak:  # "put the mug in the bowl no sorry just pick up the bowl"
-            return said
+            # "..., actually no, take it out again": an undo of what was done, so what was done stays
+            return f"{before}, {said}" if re.search(r"\b(?:it|them)\b", said) else said
         if relation.match(said):  # "the soup can in the mug no no in the bowl"
             places = list(relation.finditer(before))
             if places:
