@@ -8,7 +8,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
-from realsim.completion.hull import fast_hull
+from realsim.completion.hull import solid_hull
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
@@ -154,13 +154,8 @@ def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: Completi
         g = slice(start, end)
         pts = np.vstack([np.column_stack([group_xy[g], z_lo[g]]), np.column_stack([group_xy[g], z_hi[g]]),
                          observed[obs_tiles == group_tile[start]]])
-        if len(pts) < 4:
-            continue
-        try:
-            piece = fast_hull(pts)
-        except QhullError:
-            continue
-        if piece.volume > 1e-9:
+        piece = solid_hull(pts)
+        if piece is not None:
             pieces.append(piece)
     return pieces or None
 

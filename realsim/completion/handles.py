@@ -14,9 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 import trimesh
-from scipy.spatial import QhullError
 
-from realsim.completion.hull import fast_hull
+from realsim.completion.hull import solid_hull
 
 MIN_POINTS = 30  # fewer points off the body are noise, not a handle
 GAP = 0.006  # m: a point this much beyond the body's outside is off the body
@@ -72,10 +71,7 @@ def handle_pieces(points: np.ndarray, centre: np.ndarray, outside: tuple[np.ndar
             r = np.maximum(np.linalg.norm(rel_b, axis=1), 1e-9)
             inner = np.interp(pts[:, 2], *outside) - GAP / 2  # a little into the wall: welded
             pts = np.vstack([pts, np.column_stack([centre + rel_b * (inner / r)[:, None], pts[:, 2]])])
-        try:
-            piece = fast_hull(pts)
-        except QhullError:
-            continue
-        if piece.volume > 1e-9:
+        piece = solid_hull(pts)
+        if piece is not None:
             pieces.append(piece)
     return pieces

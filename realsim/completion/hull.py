@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import trimesh
-from scipy.spatial import ConvexHull
+from scipy.spatial import ConvexHull, QhullError
 
 
 def fast_hull(points: np.ndarray) -> trimesh.Trimesh:
@@ -17,3 +17,15 @@ def fast_hull(points: np.ndarray) -> trimesh.Trimesh:
     faces[flip] = faces[flip][:, ::-1]
     used, faces = np.unique(faces, return_inverse=True)
     return trimesh.Trimesh(v[used], faces.reshape(-1, 3), process=False)
+
+
+def solid_hull(points: np.ndarray) -> trimesh.Trimesh | None:
+    """The convex hull of ``points`` when it encloses a volume, else None (fewer than 4 points,
+    flat, or vanishing)."""
+    if len(points) < 4:
+        return None
+    try:
+        hull = fast_hull(points)
+    except QhullError:
+        return None
+    return hull if hull.volume > 1e-9 else None
