@@ -83,15 +83,17 @@ def top_is_rectangle(points: np.ndarray, top_z: float, height: float, min_fill: 
     return float(hull.volume) / max(float(np.prod(extents)), 1e-12) >= min_fill
 
 
-def shape_word(size: np.ndarray, points: np.ndarray, axis_xy: np.ndarray, cylinder: bool, prism: bool) -> tuple[str, str, bool, bool]:
+def shape_word(size: np.ndarray, points: np.ndarray, axis_xy: np.ndarray, cylinder: bool, prism: bool,
+               open_top: bool = False) -> tuple[str, str, bool, bool]:
     """(shape word, adjective, cylinder, prism) of a completed scan object: ``cylinder`` / ``prism``
     from its solid (:func:`realsim.understanding.shape_label.is_cylinder`, ``is_prism``),
-    ``points`` observed (world), ``axis_xy`` the centre of its base."""
+    ``points`` observed (world), ``axis_xy`` the centre of its base; ``open_top`` when the
+    completion already built it as an open container (its cavity seen over the rim)."""
     size = np.asarray(size, float)
     width, height = float(max(size[0], size[1])), float(size[2])
     if cylinder:
         ratio = height / max(width, 1e-6)
-        hollow = len(points) > 0 and is_hollow(points, np.asarray(axis_xy, float), width / 2, height)
+        hollow = open_top or len(points) > 0 and is_hollow(points, np.asarray(axis_xy, float), width / 2, height)
         if ratio < 0.25:
             return "disc", "", cylinder, prism
         if hollow:
@@ -106,12 +108,12 @@ def shape_word(size: np.ndarray, points: np.ndarray, axis_xy: np.ndarray, cylind
 
 
 def offline_name(size: np.ndarray, points: np.ndarray, rgb: np.ndarray, axis_xy: np.ndarray, cylinder: bool,
-                 prism: bool) -> tuple[Name, list[tuple[str, float]]]:
+                 prism: bool, open_top: bool = False) -> tuple[Name, list[tuple[str, float]]]:
     """The colour+shape name of one object (or colour+category when the shape is a box or round and
     the size-table fit among categories of that shape is unambiguous)."""
     colours = dominant_colours(rgb)
     colour = colours[0][0]
-    word, adjective, cylinder, prism = shape_word(size, points, axis_xy, cylinder, prism)
+    word, adjective, cylinder, prism = shape_word(size, points, axis_xy, cylinder, prism, open_top)
     ranked = ranked_labels(size, cylinder, prism=prism) if (cylinder or prism) else []
     dims = " x ".join(f"{v * 1000:.0f}" for v in size)
     if ranked and ranked[0].distance <= CATEGORY_MAX_DISTANCE and (len(ranked) == 1 or ranked[1].distance - ranked[0].distance >= CATEGORY_MARGIN):

@@ -177,7 +177,7 @@ class Understanding:
             if "open container" in completed or "as a cylinder" in completed:  # fitted round from its visible profile,
                 cylinder, prism = True, False  # whatever carving and cutting from its neighbours did to its fill
             name, cols = offline_name(size, pts[np.all(np.isfinite(pts), axis=1)], rgb[np.all(np.isfinite(rgb), axis=1)], o.position[:2],
-                                      cylinder, prism)
+                                      cylinder, prism, open_top="open container" in completed)
             names.append(name)
             colours.append(cols)
             volumes.append(float(abs(o.visual.volume)) if o.visual is not None and o.visual.is_volume else float(np.prod(o.size)))
