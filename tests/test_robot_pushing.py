@@ -1,12 +1,15 @@
 """Push strokes: the asked one first, shorter or askew ones within the move's tolerance, and
-which neighbours a swept footprint shoves (generated footprints)."""
+which neighbours a swept footprint shoves (generated footprints); what may ride along a push."""
 
 from __future__ import annotations
 
 import numpy as np
+from test_robot import box_object, build, loaded
 
 from realsim.planner.relations import moved
+from realsim.robot import Robot
 from realsim.robot.pushing import first_contact, strokes
+from realsim.runtime.primitives import carried
 
 
 def _square(centre: tuple[float, float], half: float, n: int = 30) -> np.ndarray:
@@ -44,3 +47,22 @@ def test_an_askew_stroke_clears_a_neighbour_the_straight_one_runs_into() -> None
     full = [u for u, s in clear if abs(float(u[1]) * s - 0.05) < 1e-6]  # the whole 5 cm along: only askew away from it
     assert full and all(float(u[0]) > 0.0 for u in full)
     assert any(abs(float(u[0])) < 1e-9 and float(u[1]) * s < 0.04 for u, s in clear)  # or straight, stopping short of it
+
+
+def test_what_the_command_put_in_or_on_an_object_may_ride_along_and_nothing_else() -> None:
+    put = {"mug": "bowl", "cube": "mug", "can": "plate"}
+    assert carried(put, "bowl") == {"mug", "cube"}
+    assert carried(put, "mug") == {"cube"} and carried(put, "box") == set()
+    assert carried({"a": "b", "b": "a"}, "a") == {"b"}  # a stale loop ends
+
+
+def test_a_push_that_would_carry_an_object_stacked_on_it_is_refused_before_moving() -> None:
+    base = box_object(1, "base_box", (0.05, 0.0), (0.12, 0.12, 0.06), mass=0.4)
+    top = box_object(2, "top_box", (0.05, 0.0), (0.05, 0.05, 0.04), mass=0.1)
+    top.position[2] += 0.06  # resting on the base box
+    model, data = loaded(build([base, top]))
+    robot = Robot(model, data)
+    start = data.qpos.copy()
+    res = robot.push("base_box", (1.0, 0.0), 0.05)
+    assert not res.success and "top_box rests on base_box" in res.reason
+    assert np.allclose(data.qpos, start)  # refused before anything moved

@@ -31,6 +31,19 @@ from realsim.runtime.sim import Sim
 from realsim.scene_format import jsonable
 
 
+def carried(put: dict[str, str], obj: str) -> set[str]:
+    """What ``put`` (object -> what it was put in or on) has in or on ``obj``, and in or on those in turn."""
+    out: set[str] = set()
+    todo = [obj]
+    while todo:
+        base = todo.pop()
+        for o, t in put.items():
+            if t == base and o not in out and o != obj:
+                out.add(o)
+                todo.append(o)
+    return out
+
+
 def _vec(value: Any, n: int, what: str) -> np.ndarray:
     try:
         arr = np.asarray(value, dtype=float).ravel()
@@ -47,6 +60,7 @@ class ProgramAPI:
     def __init__(self, sim: Sim):
         self.sim = sim
         self.actions: list[dict[str, Any]] = []
+        self.put: dict[str, str] = {}  # object -> what this program put it in or on (a push of that may carry it along)
 
     @property
     def robot(self) -> Robot:  # the sim may be reset between runs: always the current robot
@@ -62,6 +76,13 @@ class ProgramAPI:
             "sim_time": round(float(res.sim_time), 4), "attempts": int(res.attempts),
             "values": _jsonable({k: v for k, v in res.values.items() if k != "log"}),
         })
+        return res
+
+    def _placed(self, res: ActionResult, obj: str, target: str | None) -> ActionResult:
+        """Note where a place left ``obj`` (in or on ``target``, else on the table)."""
+        self.put.pop(obj, None)
+        if res.success and target is not None:
+            self.put[obj] = target
         return res
 
     def _obj(self, name: Any) -> str:
@@ -108,7 +129,7 @@ class ProgramAPI:
             return self._record(ActionResult("grasp", True, "already held", values={"lifted": None}), f"grasp({obj!r})")
         if self.robot.held and self.robot.held != obj:
             return self._record(ActionResult("grasp", False, f"the hand holds {self.robot.held}; place it first"), f"grasp({obj!r})")
-        return self._record(self.robot.grasp(obj), f"grasp({obj!r})")
+        return self._placed(self._record(self.robot.grasp(obj), f"grasp({obj!r})"), obj, None)
 
     def _ensure_held(self, obj: str, name: str) -> ActionResult | None:
         """Grasp ``obj`` unless held; a failed grasp becomes the failure of primitive ``name``."""
@@ -126,14 +147,14 @@ class ProgramAPI:
         if fail is not None:
             return fail
         target = np.array([p[0], p[1], np.nan])  # lowered onto whatever lies below
-        return self._record(self.robot.place(obj, target), f"place({obj!r}, {np.round(p, 3).tolist()})")
+        return self._placed(self._record(self.robot.place(obj, target), f"place({obj!r}, {np.round(p, 3).tolist()})"), obj, None)
 
     def place_on(self, obj: str, target: str) -> ActionResult:
         obj, target = self._obj(obj), self._obj(target)
         fail = self._ensure_held(obj, "place_on")
         if fail is not None:
             return fail
-        return self._record(self.robot.place_on(obj, target), f"place_on({obj!r}, {target!r})")
+        return self._placed(self._record(self.robot.place_on(obj, target), f"place_on({obj!r}, {target!r})"), obj, target)
 
     def place_in(self, obj: str, container: str) -> ActionResult:
         obj, container = self._obj(obj), self._obj(container)
@@ -142,7 +163,7 @@ class ProgramAPI:
         fail = self._ensure_held(obj, "place_in")
         if fail is not None:
             return fail
-        return self._record(self.robot.place_in(obj, container), f"place_in({obj!r}, {container!r})")
+        return self._placed(self._record(self.robot.place_in(obj, container), f"place_in({obj!r}, {container!r})"), obj, container)
 
     def place_beside(self, obj: str, ref: str, side: str = "next") -> ActionResult:
         obj, ref = self._obj(obj), self._obj(ref)
@@ -153,21 +174,21 @@ class ProgramAPI:
         if fail is not None:
             return fail
         side = side.strip().lower()
-        return self._record(self.robot.place_beside(obj, ref, side), f"place_beside({obj!r}, {ref!r}, {side!r})")
+        return self._placed(self._record(self.robot.place_beside(obj, ref, side), f"place_beside({obj!r}, {ref!r}, {side!r})"), obj, None)
 
     def place_between(self, obj: str, a: str, b: str) -> ActionResult:
         obj, a, b = self._obj(obj), self._obj(a), self._obj(b)
         fail = self._ensure_held(obj, "place_between")
         if fail is not None:
             return fail
-        return self._record(self.robot.place_between(obj, a, b), f"place_between({obj!r}, {a!r}, {b!r})")
+        return self._placed(self._record(self.robot.place_between(obj, a, b), f"place_between({obj!r}, {a!r}, {b!r})"), obj, None)
 
     def place_down(self, obj: str) -> ActionResult:
         obj = self._obj(obj)
         fail = self._ensure_held(obj, "place_down")
         if fail is not None:
             return fail
-        return self._record(self.robot.place_down(obj), f"place_down({obj!r})")
+        return self._placed(self._record(self.robot.place_down(obj), f"place_down({obj!r})"), obj, None)
 
     def push(self, obj: str, direction: Any, distance: float) -> ActionResult:
         obj = self._obj(obj)
@@ -186,7 +207,7 @@ class ProgramAPI:
             raise ValueError(f"push distance {dist} m is out of range (0 to {primitives.MAX_PUSH:g} m)")
         if self.robot.held:
             return self._record(ActionResult("push", False, f"the hand holds {self.robot.held}; place it first"), f"push({obj!r})")
-        return self._record(self.robot.push(obj, d, dist), f"push({obj!r}, {direction!r}, {dist:.3f})")
+        return self._record(self.robot.push(obj, d, dist, carry=carried(self.put, obj)), f"push({obj!r}, {direction!r}, {dist:.3f})")
 
     def open_drawer(self, obj: str) -> ActionResult:
         obj = self._obj(obj)

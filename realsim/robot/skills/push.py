@@ -8,6 +8,7 @@ refused.
 from __future__ import annotations
 
 import functools
+from collections.abc import Iterable
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -34,8 +35,11 @@ class PushSkill(Motion):
         """The arm's reach by geometry: a stroke it rules out needs no IK."""
         return ReachBound.of(self.ik)
 
-    def push(self, obj: str, direction: ArrayLike, distance: float, max_sim_time: float | None = None) -> ActionResult:
-        """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers."""
+    def push(self, obj: str, direction: ArrayLike, distance: float, max_sim_time: float | None = None,
+             carry: Iterable[str] = ()) -> ActionResult:
+        """Push ``obj`` horizontally along ``direction`` by ``distance`` with the closed fingers.
+        What rests in or on ``obj`` rides along: only the objects named in ``carry`` may (the ones the
+        command itself put there); another one riding on it is refused, as it would be moved too."""
         d = np.array([*np.asarray(direction, float)[:2], 0.0])
         d /= np.linalg.norm(d)
         pp = self.params.push
@@ -54,6 +58,11 @@ class PushSkill(Motion):
             lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
             riding = {n for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}
                       if np.all((box_centre(self.object_points(n)) >= lo) & (box_centre(self.object_points(n)) <= hi))}
+            stray = sorted(riding - set(carry))
+            if stray:
+                return ActionResult("push", False, f"{', '.join(stray)} {'rests' if len(stray) == 1 else 'rest'} on {obj}: pushing {obj} "
+                                    f"would carry {'it' if len(stray) == 1 else 'them'} along; take {'it' if len(stray) == 1 else 'them'} "
+                                    "off first or say to push both", values={"moved": 0.0})
             others = self._others(obj, skip=riding, above=bottom + pp.ride_margin)
             # the asked stroke, else a shorter or askew one that still ends within the asked move's tolerance
             options = [(u, length) for i, (u, length) in enumerate(strokes(d[:2], distance, self.stroke))  # another stroke touches nothing at all
