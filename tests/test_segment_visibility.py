@@ -86,3 +86,27 @@ def test_grouped_points_of_a_cup_keep_their_sides() -> None:
         grouped = visibility_score(pts, wall, normals, step, 0.3, group=2 * step)
         assert len(grouped) == len(wall)
         assert (np.sign(grouped) == np.sign(alone)).mean() > 0.95
+
+
+def test_empty_blocks_are_skipped_without_changing_counts() -> None:
+    """Rays jump over blocks with no occupied cell; the counts equal a march through every cell."""
+    from realsim.perception.visibility import _escapes, _Occupancy
+
+    rng = np.random.default_rng(5)
+    # a checkerboard of 16-cell blocks: scattered cells (1..14 into their block, so that the
+    # dilation stays inside it) in every other block, empty blocks between them
+    blocks = np.array([(i, j, k) for i in range(5) for j in range(5) for k in range(5) if (i + j + k) % 2 == 0])
+    local = rng.integers(1, 15, size=(len(blocks), 20, 3))
+    occupied = _Occupancy((blocks[:, None, :] * 16 + local).reshape(-1, 3))
+    origin = rng.uniform(-10.0, 90.0, size=(400, 3))
+    dirs = escape_directions()
+    reach_cells = 90.0
+
+    def plain(o: np.ndarray, d: np.ndarray) -> bool:
+        ijk = np.floor(o + np.arange(0.0, reach_cells + 1e-9)[:, None] * d).astype(np.int64)
+        return not occupied.data[occupied.flat(ijk)].any()
+
+    expected = np.array([sum(plain(o, d) for d in dirs) for o in origin])
+    counts = _escapes(occupied, origin, dirs, 1.0, reach_cells)
+    assert np.array_equal(counts, expected)
+    assert 0 < expected.mean() < len(dirs)  # some rays blocked, some free

@@ -93,12 +93,13 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
     graph = sparse.coo_matrix((np.r_[w, w], (np.r_[a, b], np.r_[b, a])), shape=(n, n)).tocsr()
     degree = np.asarray(graph.sum(axis=1)).ravel()
     scale = 1.0 / np.sqrt(np.maximum(degree, 1e-12))
-    norm_adj = sparse.diags(scale) @ graph @ sparse.diags(scale)
-    try:  # the two largest eigenvectors of D^-1/2 W D^-1/2; the second is the Fiedler direction
-        _, vecs = eigsh(norm_adj, k=2, which="LA", v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
-    except ArpackNoConvergence:
+    laplacian = (sparse.identity(n) - sparse.diags(scale) @ graph @ sparse.diags(scale)).tocsc()
+    try:  # the two smallest eigenvectors of I - D^-1/2 W D^-1/2 (shift-invert: a near cut has an
+        # eigenvalue close to 0, where plain Lanczos converges slowly); the second is the Fiedler direction
+        vals, vecs = eigsh(laplacian, k=2, sigma=-1e-3, which="LM", v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
+    except (ArpackNoConvergence, RuntimeError):
         return None
-    order = np.argsort(vecs[:, 0] * scale, kind="stable")
+    order = np.argsort(vecs[:, int(np.argmax(vals))] * scale, kind="stable")
     rank = np.empty(n, dtype=np.int64)
     rank[order] = np.arange(n)
     lo, hi = np.minimum(rank[a], rank[b]), np.maximum(rank[a], rank[b])

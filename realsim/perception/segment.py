@@ -25,7 +25,7 @@ from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
-from realsim.perception.visibility import visibility_score
+from realsim.perception.visibility import OccupancyGrid, visibility_score
 from realsim.scene import SupportPlane
 
 __all__ = ["SegmentParams", "SegmentResult", "assign_supports", "filter_by_size", "segment_objects"]
@@ -222,11 +222,11 @@ def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, count
 
 
 def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
-                           radius: float, step: float, cell: float | None, context: np.ndarray | None = None) -> np.ndarray:
+                           radius: float, step: float, grid: OccupancyGrid | None) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
     cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
-    With a ``cell`` (the cloud's resolution, fine enough), patches are oriented by what each side
+    With a ``grid`` (the cloud's occupancy at its resolution, fine enough), patches are oriented by what each side
     sees (:mod:`realsim.perception.visibility`) where that decides: at a contact between two
     objects the free space in front of a side is the other object's. Near-horizontal surfaces
     face up: scans see tops, and an object stacked on a top fills the space above it."""
@@ -239,8 +239,8 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
         score += np.asarray(behind, float) - np.asarray(ahead, float)
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
-    if cell is not None:
-        seen = visibility_score(points if context is None else np.vstack([points, context]), centroids, normals, cell, 5 * radius)
+    if grid is not None:
+        seen = visibility_score(grid, centroids, normals, grid.cell, 5 * radius)
         sign = np.where(np.abs(seen) >= 2, np.sign(seen), sign)
     # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
     level = np.abs(normals[:, 2]) > 0.7
@@ -248,20 +248,17 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
     return np.where(sign[:, None] == 0, fallback, normals * sign[:, None])
 
 
-def _point_outward(points: np.ndarray, normals: np.ndarray, resolution: float | None, params: SegmentParams,
-                   context: np.ndarray | None) -> np.ndarray | None:
-    """Each point's normal on its outward side for a cloud at most ``contact_cut_cell`` fine (else
-    None): what the point itself sees where that decides (a cloud finer still,
-    :mod:`realsim.perception.visibility`), else the side it was given (its patch's)."""
-    cell = _spacing(points)
-    working = resolution if resolution is not None else cell
+def _point_outward(points: np.ndarray, normals: np.ndarray, working: float, params: SegmentParams,
+                   grid: OccupancyGrid | None) -> np.ndarray | None:
+    """Each point's normal on its outward side for a cloud whose ``working`` resolution is at most
+    ``contact_cut_cell`` (else None): what the point itself sees where that decides (a cloud
+    with a ``grid``, :mod:`realsim.perception.visibility`), else the side it was given (its patch's)."""
     if working > params.contact_cut_cell:
         return None
-    if working > params.visibility_cell:
+    if grid is None:
         return normals
     # neighbours two cells apart that face one way see alike: one ray cast for them
-    seen = visibility_score(points if context is None else np.vstack([points, context]), points, normals, cell,
-                            5 * params.orientation_radius, group=2 * cell)
+    seen = visibility_score(grid, points, normals, grid.cell, 5 * params.orientation_radius, group=2 * grid.cell)
     return normals * np.where(seen <= -2, -1.0, 1.0)[:, None]
 
 
@@ -302,6 +299,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     if fg.sum() < params.min_object_points:
         return SegmentResult(labels)
     organized = grid_shape is not None and grid_shape[0] * grid_shape[1] == n
+    grid: OccupancyGrid | None = None  # unorganized clouds fine enough: their occupancy, for visibility
+    working = float("inf")
     if organized:
         normals = grid_normals(points, fg, grid_shape, params.normal_window, params.jump_distance)
         a, b = grid_links(fg, grid_shape)
@@ -335,9 +334,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         away_seg = -np.stack([np.bincount(part, normals[ids, i], minlength=n_seg) for i in range(3)], axis=1)
     else:
         cell = _spacing(points[ids])  # voxel centres lie closer than their voxels: a finer, still closed grid
-        fine = (resolution if resolution is not None else cell) <= params.visibility_cell
-        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance,
-                                     cell if fine else None, context)
+        working = resolution if resolution is not None else cell
+        if working <= params.visibility_cell:  # fine enough to see which side of a patch is open
+            grid = OccupancyGrid(points[ids] if context is None else np.vstack([points[ids], context]), cell)
+        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance, grid)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 
@@ -355,7 +355,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
-        point_normals = _point_outward(points[ids], _orient(normals[ids], -nrm[part]), resolution, params, context)
+        point_normals = _point_outward(points[ids], _orient(normals[ids], -nrm[part]), working, params, grid)
         if point_normals is not None:  # a coarse cloud's point normals span whole small objects: no cut
             cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
                             stand_height=params.stack_min_height)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["escape_directions", "visibility_score"]
+__all__ = ["OccupancyGrid", "escape_directions", "visibility_score"]
 
 
 def escape_directions(azimuths: int = 8, elevations: tuple[float, ...] = (0.0, 30.0, 60.0)) -> np.ndarray:
@@ -44,17 +44,18 @@ class _Occupancy:
         self.lookup[blocks[:, 0], blocks[:, 1], blocks[:, 2]] = np.arange(len(blocks))
         self.data = np.zeros((len(blocks) + 1) << (3 * self.SHIFT), dtype=bool)
         for d in near:
-            self.data[self._flat(cells + d)] = True
+            self.data[self.flat(cells + d)] = True
+        # stored blocks the dilation left free read as the empty block: rays skip them whole
+        per = 1 << (3 * self.SHIFT)
+        used = np.r_[self.data[:-per].reshape(-1, per).any(axis=1), False]
+        self.lookup = np.where(used, np.arange(len(used)), self.empty)[self.lookup]
 
-    def _flat(self, ijk: np.ndarray) -> np.ndarray:
+    def flat(self, ijk: np.ndarray) -> np.ndarray:
+        """Index of each cell (M, 3) into ``data``; cells in no stored block index the empty block."""
         s, m = self.SHIFT, (1 << self.SHIFT) - 1
         b = np.clip((ijk >> s) - self.lo, 0, self.top)
         ids = self.lookup[b[:, 0], b[:, 1], b[:, 2]]
         return (ids << (3 * s)) | ((ijk[:, 0] & m) << (2 * s)) | ((ijk[:, 1] & m) << s) | (ijk[:, 2] & m)
-
-    def __call__(self, ijk: np.ndarray) -> np.ndarray:
-        """Whether each cell (M, 3) is occupied."""
-        return self.data[self._flat(ijk)]
 
 
 def _unique_rows(ijk: np.ndarray) -> np.ndarray:
@@ -67,34 +68,86 @@ def _unique_rows(ijk: np.ndarray) -> np.ndarray:
     return np.stack([key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF], axis=1) + lo
 
 
+def _block_table(occupied: _Occupancy, origin: np.ndarray, reach_cells: float) -> tuple[np.ndarray, np.ndarray, int]:
+    """The block look-up, padded to hold every block a ray from ``origin`` can reach within
+    ``reach_cells``, flattened: (table, strides, key offset); a block's id is
+    ``table[(ijk >> SHIFT) @ strides + offset]``, with no clipping."""
+    margin = int(np.ceil((reach_cells + 2) / (1 << occupied.SHIFT))) + 1
+    blocks = np.floor(origin).astype(np.int64) >> occupied.SHIFT
+    lo = np.minimum(blocks.min(axis=0, initial=0), occupied.lo) - margin
+    hi = np.maximum(blocks.max(axis=0, initial=0), occupied.lo + occupied.top) + margin
+    shape = hi - lo + 1
+    table = np.full(tuple(shape), occupied.empty, dtype=np.int64)
+    at = occupied.lo - lo
+    top = occupied.top + 1
+    table[at[0]:at[0] + top[0], at[1]:at[1] + top[1], at[2]:at[2] + top[2]] = occupied.lookup
+    strides = np.array([shape[1] * shape[2], shape[2], 1])
+    return table.ravel(), strides, int(-(lo * strides).sum())
+
+
 def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: float, reach: float) -> np.ndarray:
-    """Per origin (grid units): how many rays travel ``reach`` without meeting an occupied cell."""
-    steps = np.arange(0.0, reach / cell + 1e-9, 1.0)
+    """Per origin (grid units): how many rays travel ``reach`` without meeting an occupied cell.
+
+    Each ray is sampled at every whole cell length along it; a sample in an empty block jumps to
+    the first sample beyond that block (a line leaves a box once), so the samples tested, and the
+    counts, are those of a march through every cell."""
+    last = float(np.floor(reach / cell + 1e-9))
+    s, size = occupied.SHIFT, 1 << occupied.SHIFT
+    m = size - 1
+    table, strides, offset = _block_table(occupied, origin, last)
     count = np.zeros(len(origin), dtype=np.int64)
     for d in dirs:
-        live, start = np.arange(len(origin)), origin
-        for t in steps:  # only the rays still free are marched on
-            if len(live) == 0:
-                break
-            free = ~occupied(np.floor(start + t * d).astype(np.int64))
-            live, start = live[free], start[free]
-        count[live] += 1
+        live, start, t = np.arange(len(origin)), origin, np.zeros(len(origin))
+        while len(live):  # only the rays still free are marched on
+            ijk = np.floor(start + t[:, None] * d).astype(np.int64)
+            block = ijk >> s
+            ids = table[block @ strides + offset]
+            flat = (ids << (3 * s)) | ((ijk[:, 0] & m) << (2 * s)) | ((ijk[:, 1] & m) << s) | (ijk[:, 2] & m)
+            nxt = t + 1.0
+            skip = np.flatnonzero(ids == occupied.empty)
+            if len(skip):
+                corner = block[skip] << s
+                leave = np.full(len(skip), np.inf)
+                for axis in np.flatnonzero(d):  # the first whole step past the block's far face
+                    if d[axis] > 0:
+                        step = np.ceil((corner[:, axis] + size - start[skip, axis]) / d[axis])
+                    else:
+                        step = np.floor((corner[:, axis] - start[skip, axis]) / d[axis]) + 1.0
+                    leave = np.minimum(leave, step)
+                nxt[skip] = np.maximum(leave, nxt[skip])
+            free = ~occupied.data[flat]
+            out = free & (nxt > last)
+            count[live[out]] += 1
+            free &= ~out
+            live, start, t = live[free], start[free], nxt[free]
     return count
 
 
-def visibility_score(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, cell: float, reach: float,
+class OccupancyGrid:
+    """The cells (side ``cell``, m) of a point set, dilated by one: built once, cast into many times."""
+
+    def __init__(self, points: np.ndarray, cell: float) -> None:
+        self.cell = cell
+        self.lo = points.min(axis=0) - 2 * cell
+        self.occupied = _Occupancy(np.floor((points - self.lo) / cell).astype(np.int64))
+
+
+def visibility_score(points: np.ndarray | OccupancyGrid, centroids: np.ndarray, normals: np.ndarray, cell: float, reach: float,
                      offset: float = 2.5, group: float = 0.0) -> np.ndarray:
     """Rays escaping from ``offset`` cells in front of each patch minus rays escaping from behind
     it: positive when ``normals`` point to the side the patch was seen from (the more open one;
     a thin wall, a cup's, seen from both sides, faces its more open side). With ``group`` (m),
     patches in one cube of that side whose normals share an octant share one score, that of their
-    mean (two sides of a thin wall keep theirs)."""
+    mean (two sides of a thin wall keep theirs). ``points`` may be an :class:`OccupancyGrid` of
+    side ``cell`` built before (one grid for several calls)."""
     inverse = None
     if group > 0 and len(centroids):
         centroids, normals, inverse = _grouped(centroids, normals, group)
-    lo = points.min(axis=0) - 2 * cell
-    occupied = _Occupancy(np.floor((points - lo) / cell).astype(np.int64))
-    base = (centroids - lo) / cell
+    grid = points if isinstance(points, OccupancyGrid) else OccupancyGrid(points, cell)
+    if grid.cell != cell:
+        raise ValueError(f"occupancy grid of {grid.cell} m cells scored at {cell} m")
+    occupied = grid.occupied
+    base = (centroids - grid.lo) / cell
     dirs = escape_directions()
     ahead = _escapes(occupied, base + offset * normals, dirs, cell, reach)
     behind = _escapes(occupied, base - offset * normals, dirs, cell, reach)
