@@ -119,3 +119,34 @@ def test_support_top_is_seen_from_above() -> None:
     assert image[:, : w // 2 - 2, 0].min() > 0.8 and image[:, w // 2 + 2:, 2].min() > 0.8  # the hidden disc filled from around it
     left = np.asarray(top.vertices)[:, 0] < -0.1
     assert (uv[left, 0] < 0.5).all() and (uv[~left & (np.asarray(top.vertices)[:, 0] > 0.1), 0] > 0.5).all()
+
+
+def test_support_top_follows_the_captured_surface() -> None:
+    """A table seen sagging (a slow dip of 8 mm, with 2 mm noise) gets a textured top at the heights
+    the camera saw, within a few mm (the flat plane is 8 mm off at the dip); under an object, where
+    nothing of the table was seen, the nearest seen height continues."""
+    from realsim.composition.appearance import CaptureImage, follow_captured_surface, support_top
+    from realsim.composition.layout import declared_support
+    from realsim.perception.intrinsics import Intrinsics
+
+    plane = declared_support(None)  # 1.2 x 0.8 m at 0.75 m, centred at the origin
+    rng = np.random.default_rng(5)
+    h, w = 200, 300
+    x, y = np.meshgrid(np.linspace(-0.6, 0.6, w), np.linspace(-0.4, 0.4, h))
+
+    def sag(px: np.ndarray, py: np.ndarray) -> np.ndarray:
+        return -0.008 * np.exp(-((px - 0.2) ** 2 + py**2) / (2 * 0.15**2))
+
+    z = plane.height + sag(x, y) + rng.normal(0.0, 0.002, x.shape)
+    world = np.stack([x, y, z], axis=-1)
+    mask = np.hypot(x + 0.3, y) > 0.08  # an object hid a disc of the table
+    image = CaptureImage(np.zeros((h, w, 3), np.uint8), np.zeros((h, w), int), world, Intrinsics(300.0, 300.0, 150.0, 100.0, w, h), np.eye(4))
+    flat = support_top(plane, 0.03, 0.0005)
+    top = follow_captured_surface(flat, plane, image, mask, 0.0005)
+    v = np.asarray(top.vertices)
+    truth = plane.height + sag(v[:, 0], v[:, 1]) + 0.0005
+    assert np.abs(np.asarray(flat.vertices)[:, 2] - truth).max() > 0.0075
+    assert np.abs(v[:, 2] - truth).max() < 0.003
+    assert np.array_equal(np.asarray(top.faces), np.asarray(flat.faces))
+    none = follow_captured_surface(flat, plane, image, np.zeros((h, w), bool), 0.0005)
+    assert np.array_equal(np.asarray(none.vertices), np.asarray(flat.vertices))  # nothing seen: the plane

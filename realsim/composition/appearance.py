@@ -34,6 +34,7 @@ class AppearanceParams:
     support_cell: float = 0.03  # grid cell of a support's textured top (m)
     support_tolerance: float = 0.012  # a pixel within this of a support plane, inside its polygon, is the support (m)
     top_lift: float = 0.0005  # the textured top sits this far above the collision top (m)
+    follow_surface: bool = True  # the textured top follows the captured surface's height (else flat on the fitted plane)
     margin_px: int = 2
 
 
@@ -166,6 +167,34 @@ def support_top(plane: SupportPlane, cell: float, lift: float) -> trimesh.Trimes
     a, b, cc, d = idx[:-1, :-1].ravel(), idx[:-1, 1:].ravel(), idx[1:, 1:].ravel(), idx[1:, :-1].ravel()
     faces = np.vstack([np.column_stack([a, b, cc]), np.column_stack([a, cc, d])])
     return trimesh.Trimesh(verts, faces, process=False)
+
+
+def follow_captured_surface(top: trimesh.Trimesh, plane: SupportPlane, image: CaptureImage, mask: np.ndarray, lift: float,
+                            min_pixels: int = 10) -> trimesh.Trimesh:
+    """``top`` (a grid over the support, see :func:`support_top`) with every vertex at the height the
+    camera saw the support around it: the median height of the ``mask`` pixels nearer that vertex than
+    any other (a sensor's slow depth distortions and a sagging top show; the pixel noise does not),
+    plus ``lift``. A vertex with fewer than ``min_pixels`` takes the height of the nearest one with
+    enough (under the objects, beyond the view); none with enough: ``top`` unchanged. Visual only:
+    the collision top stays the fitted plane."""
+    from scipy.spatial import cKDTree
+
+    verts = np.asarray(top.vertices, float)
+    seen = image.world[mask]
+    if len(seen) < min_pixels or len(verts) == 0:
+        return top
+    _, node = cKDTree(verts[:, :2]).query(seen[:, :2])
+    order = np.lexsort((seen[:, 2], node))
+    node_sorted, z_sorted = node[order], seen[order, 2]
+    ids, start, count = np.unique(node_sorted, return_index=True, return_counts=True)
+    enough = count >= min_pixels
+    if not enough.any():
+        return top
+    ids, median = ids[enough], z_sorted[start[enough] + count[enough] // 2]
+    _, nearest = cKDTree(verts[ids, :2]).query(verts[:, :2])
+    out = verts.copy()
+    out[:, 2] = median[nearest] + lift
+    return trimesh.Trimesh(out, np.asarray(top.faces), process=False)
 
 
 def top_view_texture(plane: SupportPlane, top: trimesh.Trimesh, xy: np.ndarray, rgb: np.ndarray, texel: float = 0.005,

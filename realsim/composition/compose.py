@@ -21,6 +21,7 @@ from realsim.composition.appearance import (
     capture_image,
     capture_intrinsics,
     colour_object_from_points,
+    follow_captured_surface,
     projected_texture,
     support_mask,
     support_top,
@@ -251,8 +252,9 @@ def add_capture_camera(spec: mujoco.MjSpec, scene: Scene) -> None:
 
 
 def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImage, params: ComposeParams,
-                           assets: dict[str, bytes]) -> dict[int, list[float]]:
-    """Textured tops of the observed supports and the backdrop; returns the supports' mean colours."""
+                           assets: dict[str, bytes], lows: dict[int, float]) -> dict[int, list[float]]:
+    """Textured tops of the observed supports (following the captured surface; the lowest height of
+    each in ``lows``) and the backdrop; returns the supports' mean colours."""
     exclude = np.isin(image.labels, [o.id for o in scene.objects])
     colours: dict[int, list[float]] = {}
     for plane in scene.planes:
@@ -263,6 +265,9 @@ def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImag
             continue
         exclude |= mask
         top = support_top(plane, params.appearance.support_cell, params.appearance.top_lift)
+        if params.appearance.follow_surface:
+            top = follow_captured_surface(top, plane, image, mask, params.appearance.top_lift)
+        lows[plane.id] = float(top.vertices[:, 2].min()) - params.appearance.top_lift
         result = projected_texture(image, mask, image.pixels(top.vertices), params.appearance.margin_px)
         if result is None:
             continue
@@ -324,16 +329,21 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     assets: dict[str, bytes] = {}
     image = capture_image(scene) if params.appearance.enabled else None
     slabs: dict[int, list[float]] = {}
+    lows: dict[int, float] = {}
     if image is not None:
         for obj in scene.objects:
             texture_object(obj, image, params.appearance)
-        slabs = _add_captured_surfaces(spec, scene, image, params, assets)
+        slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
     elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
         if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
             for obj in scene.objects:
                 colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
         slabs = _add_cloud_surfaces(spec, scene, params, assets)
     add_arena(spec, scene, params.arena, slabs)
+    for pid, low in lows.items():  # a captured top dipping below its plane: the slab under it sinks with it (else it hides the dip)
+        slab, dip = spec.geom(f"support{pid}_visual"), scene.plane(pid).height - low
+        if slab is not None and dip > 0 and slab.size[2] > dip:
+            slab.pos[2], slab.size[2] = slab.pos[2] - dip / 2, slab.size[2] - dip / 2
     articulations = scene.articulations  # child name -> joint (realsim.text)
     object_sites = scene.object_sites  # body name -> {site: [x, y, z]} (realsim.text)
     bodies: dict[str, mujoco.MjsBody] = {}
