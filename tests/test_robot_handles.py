@@ -81,6 +81,12 @@ def test_a_lidded_mug_is_lifted_and_carried_by_its_handle() -> None:
     res = robot.grasp("lidded_mug")
     assert res.success, res.reason
     assert res.values["kind"] == "handle" and res.values["lifted"] > 0.04
+    assert model.opt.noslip_iterations == robot.params.arm.hold_noslip  # held: static friction, no creep
+    body = model.body("lidded_mug").id
+    before = data.site_xmat[robot.tcp].reshape(3, 3).T @ data.xmat[body].reshape(3, 3)
+    robot._wait(1.0)  # the hand still: the weight's torque on the pinch must not turn the mug in the fingers
+    after = data.site_xmat[robot.tcp].reshape(3, 3).T @ data.xmat[body].reshape(3, 3)
+    assert np.degrees(np.arccos(np.clip((np.trace(before.T @ after) - 1) / 2, -1, 1))) < 0.5
     lo, hi = robot.params.pick.carry_accel  # carried no faster than the handle pinch holds: the tcp's peak acceleration within the bounds
     path = np.array([data.ctrl[robot.act], HOME_ARM])
     length = float(np.linalg.norm(robot.ik.fk(path[1])[0] - robot.ik.fk(path[0])[0]))
@@ -91,3 +97,4 @@ def test_a_lidded_mug_is_lifted_and_carried_by_its_handle() -> None:
     assert up[2] > np.cos(np.radians(5.0))  # set down standing, let go without tipping it: the fingers backed out of the loop
     assert not robot.geometry.touching("lidded_mug") & {"robot"}
     assert robot._carry_time(path) == 0.0  # nothing held: the joint speed alone times a move
+    assert model.opt.noslip_iterations == 0  # let go: the scene's own solver setting again

@@ -19,6 +19,7 @@ class ArmParams:
     default_grip_force: float = 70.0  # N when the gripper's force range is unset
     home_lift_margin: float = 0.05  # m below the home height from which go_home lifts first
     home_tol: float = 0.02  # rad joint error accepted at home
+    hold_noslip: int = 10  # noslip iterations while an object is held: static friction holds it without the soft contacts' creep
 
 
 @dataclass(frozen=True)
@@ -84,6 +85,9 @@ class PlaceParams:
     beside_step: float = 0.03  # m between spots sideways off the line, for a named side
     side_slack: float = 0.02  # m off the line past the two half widths that a named side allows (relations.side_of)
     beside_margin: float = 0.015  # m kept inside that allowance
+    side_overlap: float = 0.01  # m of the reference's extent along a named side the object may overlap (relations.side_of)
+    overlap_margin: float = 0.01  # m kept inside that overlap (a released object settles a few mm)
+    overlap_step: float = 0.01  # m between spots nearer than beside_along, down to that least gap
     beside_turns: tuple[float, ...] = (0.0, 1.5707963)  # rad the object may be turned for a named side (a long one across)
     turn_cost: float = 0.02  # m of spot cost per rad turned
     level_probe: float = 0.3  # m above the reference's bottom the surface is looked for from
