@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import sparse
 from scipy.sparse.csgraph import connected_components
-from scipy.sparse.linalg import ArpackNoConvergence, eigsh
+from scipy.sparse.linalg import ArpackNoConvergence, LinearOperator, eigsh, splu
 from scipy.spatial import cKDTree
 
 from realsim.perception.object_relations import base_height
@@ -94,9 +94,13 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
     degree = np.asarray(graph.sum(axis=1)).ravel()
     scale = 1.0 / np.sqrt(np.maximum(degree, 1e-12))
     laplacian = (sparse.identity(n) - sparse.diags(scale) @ graph @ sparse.diags(scale)).tocsc()
+    shift = -1e-3
     try:  # the two smallest eigenvectors of I - D^-1/2 W D^-1/2 (shift-invert: a near cut has an
         # eigenvalue close to 0, where plain Lanczos converges slowly); the second is the Fiedler direction
-        vals, vecs = eigsh(laplacian, k=2, sigma=-1e-3, which="LM", v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
+        lu = splu((laplacian - shift * sparse.identity(n)).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                  options={"SymmetricMode": True})  # symmetric positive definite: a symmetric ordering, no pivoting
+        inverse = LinearOperator((n, n), matvec=lu.solve, dtype=np.float64)
+        vals, vecs = eigsh(laplacian, k=2, sigma=shift, which="LM", OPinv=inverse, v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
     except (ArpackNoConvergence, RuntimeError):
         return None
     order = np.argsort(vecs[:, int(np.argmax(vals))] * scale, kind="stable")
