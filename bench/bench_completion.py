@@ -12,6 +12,7 @@ completed shape, and for the bowl, mug and pitcher whether a 3 cm ball dropped i
 shared YCB object once per seed (three scenes of five, layouts table, counter, table). Run:
 
     .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline] [--keep out/completion]
+        [--overrides '{"complete": {...}}']
 """
 
 from __future__ import annotations
@@ -124,14 +125,17 @@ def all_objects(seed: int) -> list[tuple[str, tuple[str, ...]]]:
 
 
 def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layout: str = "table",
-            objects: tuple[str, ...] | None = None) -> list[dict]:
+            objects: tuple[str, ...] | None = None, overrides: dict | None = None) -> list[dict]:
     scene = make_scene(SceneSpec(layout=layout, objects=objects, n_objects=n_objects, stacked=True, touching=True, seed=seed))
     tag = f"{layout}{seed}_{'-'.join(o[:3] for o in objects or ())}"
     capture = root / f"seed{tag}"
     capture.mkdir(parents=True)
     form = write_organized_view(scene, capture / "view.pcd", seed=seed)
     out = root / f"out{tag}"
-    convert(capture / "view.pcd", out, overrides={"robot": {"enabled": False}, **(BASELINE if baseline else {})})
+    stages: dict = {"robot": {"enabled": False}, **(BASELINE if baseline else {})}
+    for stage, values in (overrides or {}).items():
+        stages[stage] = {**stages.get(stage, {}), **values}
+    convert(capture / "view.pcd", out, overrides=stages)
     record = json.loads((out / "scene.json").read_text())
     synth_to_realsim = np.asarray(record["capture"]["input_to_world"]) @ np.linalg.inv(np.asarray(form["capture_to_world"]))
     labels = np.load(out / "labels.npy")
@@ -178,11 +182,12 @@ def main() -> None:
     parser.add_argument("--all", action="store_true", help="every shared YCB object once per seed (3 scenes of 5)")
     parser.add_argument("--baseline", action="store_true", help="without free-space carving, hollow containers and mirroring")
     parser.add_argument("--keep", type=Path, default=None, help="write the captures and outputs here (a new folder)")
+    parser.add_argument("--overrides", type=json.loads, default=None, help="stage parameters as JSON, as realsim.convert takes them (an A/B in one tree)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
         runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
-        rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, root, args.baseline, layout, objects)]
+        rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides)]
     print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'F@5mm':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s} {'ball':>4s}  name given")
     for r in rows:
         print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r.get('f5', 0.0):5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s} {'-' if r.get('ball') is None else 'in' if r['ball'] else 'out':>4s}  "

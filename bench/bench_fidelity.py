@@ -7,7 +7,7 @@ within 1 cm, colour PSNR and SSIM (:mod:`realsim.fidelity`). Also printed: conve
 process), output folder size, settling drift (the rest check after the keyframe), how far an object
 moved while settling (completed pose to keyframe ``initial``, the largest), object collision pieces (mesh files). Run:
 
-    .venv/bin/python bench/bench_fidelity.py [--scans test0 test55] [--keep out/fidelity]
+    .venv/bin/python bench/bench_fidelity.py [--scans test0 test55] [--keep out/fidelity] [--overrides '{"complete": {...}}']
 """
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ def folder_mb(folder: Path) -> float:
     return sum(p.stat().st_size for p in folder.rglob("*") if p.is_file()) / 1e6
 
 
-def measure(name: str, out: Path) -> dict:
+def measure(name: str, out: Path, overrides: dict | None = None) -> dict:
     path = DATA / f"{name}.pcd"
     started = time.perf_counter()
-    convert(path, out)
+    convert(path, out, overrides=overrides)
     seconds = time.perf_counter() - started
     record = json.loads((out / "scene.json").read_text())
     data = read_pcd(path)
@@ -59,10 +59,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scans", nargs="*", default=SCANS)
     parser.add_argument("--keep", type=Path, default=None, help="write the outputs (and <scan>_fidelity.png: render and capture side by side) here")
+    parser.add_argument("--overrides", type=json.loads, default=None, help="stage parameters as JSON, as realsim.convert takes them (an A/B in one tree)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
-        rows = [measure(name, root / name) for name in args.scans]
+        rows = [measure(name, root / name, args.overrides) for name in args.scans]
     print(f"{'scan':8s} {'pixels':>7s} {'depth med mm':>12s} {'<=1cm %':>8s} {'PSNR dB':>8s} {'SSIM':>6s} | {'convert s':>9s} {'MB':>6s} {'drift mm':>8s} {'settle mm':>9s} {'robot px':>8s} {'pieces':>6s}")
     for r in rows:
         f = r["fid"]

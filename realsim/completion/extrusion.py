@@ -64,13 +64,20 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
     edges = np.linspace(lo, hi, count + 1)
     edges[0], edges[-1] = float(s.min()), float(s.max())
     margin = 0.1 * (edges[1] - edges[0])
+    slabs = [(s >= a - margin) & (s <= b + margin) for a, b in zip(edges[:-1], edges[1:])]
+    filled = [i for i, inside in enumerate(slabs) if inside.sum() >= 8]
     pieces = []
-    for a, b in zip(edges[:-1], edges[1:]):
-        inside = (s >= a - margin) & (s <= b + margin)
-        if inside.sum() < 8:
-            continue
+    for i in filled:
         try:
-            pieces.append(complete_hull(kept[inside], base_z, top_z, fast=True, drops=droppable[inside])[0])
+            pieces.append(complete_hull(kept[slabs[i]], base_z, top_z, fast=True, drops=droppable[slabs[i]])[0])
+        except (QhullError, ValueError):
+            continue
+    for i, j in zip(filled[:-1], filled[1:]):  # a hidden middle (seen on both sides): bridged between the facing ends
+        if j - i < 2:
+            continue
+        face = ((s >= s[slabs[i]].max() - 2 * margin) & slabs[i]) | ((s <= s[slabs[j]].min() + 2 * margin) & slabs[j])
+        try:
+            pieces.append(complete_hull(kept[face], base_z, top_z, fast=True, drops=droppable[face])[0])
         except (QhullError, ValueError):
             continue
     if len(pieces) < 2:

@@ -47,3 +47,5 @@ class CompletionParams:
     balance_margin: float = 0.005  # m: a completed base must hold the centre of mass this far inside its polygon
     base_clearance: float = 0.0005  # gap left between the base and what it stands on (m)
     min_points: int = 30
+    join_fragments: bool = True  # a noise fragment seen beyond an occluder joins the object on its other side (camera views)
+    fragment_max_gap: float = 0.1  # m: the longest hidden middle between a fragment and its object

@@ -11,6 +11,7 @@ from realsim.completion.balance import brace
 from realsim.completion.carving import carve, carve_free_space, carve_pieces
 from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_bands, complete_hull, complete_slabs
+from realsim.completion.fragments import join_occluded_fragments
 from realsim.completion.freespace import free_drops, free_space_tolerance, keep_out_of_free_space
 from realsim.completion.handles import handle_pieces
 from realsim.completion.hull import fast_hull
@@ -40,6 +41,8 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     pieces: dict[int, list[trimesh.Trimesh]] = {}
     view = DepthView.of(scene) if params.carve else None
     tolerance = free_space_tolerance(view, params, points, scene.planes) if view is not None else 0.0
+    if view is not None and params.join_fragments:  # before anything reads the labels: a fragment is its object's points
+        join_occluded_fragments(scene, view, tolerance, params.min_points, params.fragment_max_gap)
     if view is not None and params.denoise_window > 1:  # shapes from the surfaces, not the noise's extremes
         smooth = view.denoised(params.denoise_window)
         points, view = view.moved_to(smooth, points), smooth
