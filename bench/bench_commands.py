@@ -228,13 +228,16 @@ SUITE: list[tuple[str, str, str]] = [
     ("scan45", "grab the bottle", "refuse"),
     # --- a cluttered converted scan (mOSD test55, 15 objects named by colour and shape)
     ("scan55", "pick up the red box", "lift red_box"),
-    ("scan55", "grab the grey thing", "lift grey_object"),
-    ("scan55", "put the red box next to the grey object", "next red_box grey_object"),
+    # 'the grey object' was obj12_grey_object at (0.03, 0.35) in builds up to 2792723; builds since join it with the
+    # white part beside it into one open container, obj13_white_cylinder (named white, measured blue): no object of
+    # today's build is grey by name, three are by measurement, so the phrase names no one object: refuse.
+    ("scan55", "grab the grey thing", "refuse"),
+    ("scan55", "put the red box next to the grey object", "refuse"),
     ("scan55", "lift the tall white can", "lift tall_white_can"),
     ("scan55", "push the red box 5 cm to the right", "moved red_box right 0.05"),
-    ("scan55", "take the grey object and put it in front of the red box", "front grey_object red_box"),
+    ("scan55", "take the grey object and put it in front of the red box", "refuse"),
     ("scan55", "grab the yellow object", "refuse"),
-    ("scan55", "move the grey object a little to the left", "moved grey_object left 0.05"),
+    ("scan55", "move the grey object a little to the left", "refuse"),
     ("scan55", "pick up the white box, then go home", "lift white_box"),
     ("scan55", "could you put the red box on the green thing", "on red_box green_object"),
 ]

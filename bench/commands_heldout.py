@@ -4,6 +4,9 @@ Written after the rule planner and its 153-sentence suite, without reading the p
 grammar, in the voices of different people (polite, terse, chatty, verbless, "X goes in Y"),
 over the same scenes; each sentence carries its own expected goal in the suite's goal words.
 The figure *before* any planner change was recorded with these sentences as first written.
+Goal keys follow the scenes as built today (sentences never change): test45's red cracker box is
+``red_box`` and test55's medium white object ``big_white_object`` (same bodies, renamed by later
+builds, checked against a 2792723 build); test55's grey object no longer exists alone (refuse).
 """
 
 from __future__ import annotations
@@ -100,8 +103,9 @@ HELDOUT: list[tuple[str, str, str]] = [
     ("scan55", "put the green object next to the red box", "next green_object red_box"),
     ("scan55", "grab the box", "refuse"),
     ("scan55", "pick up the purple thing", "refuse"),
-    ("scan55", "push the grey one forward 4 cm", "moved grey_object forward 0.04"),
-    ("scan55", "the blue box goes next to the grey thing", "next blue_box grey_object"),
+    # 'the grey object': joined into obj13_white_cylinder since 2792723 (see bench_commands.py): refuse.
+    ("scan55", "push the grey one forward 4 cm", "refuse"),
+    ("scan55", "the blue box goes next to the grey thing", "refuse"),
 ]
 
 # A second batch, written after the planner changes that the first batch led to and measured
@@ -410,15 +414,16 @@ HELDOUT8: list[tuple[str, str, str]] = [
     ("scan45", "pick up the red can", "lift red_can"),
     ("scan45", "Please put the small white object on the big white object.", "on small_white_object big_white_object"),
     ("scan45", "slide the big white obj 10cm to the left", "moved big_white_object left 0.1"),
-    ("scan45", "Could you kindly place the tall white can next to the red cracker box, please?", "next left_tall_white_can red_cracker_box"),
+    ("scan45", "Could you kindly place the tall white can next to the red cracker box, please?", "next left_tall_white_can red_box"),
     ("scan45", "hey, the white box looks messy there, can you push it a little bit forward", "moved white_box forward 0.05"),
     ("scan45", "white can left of red can", "refuse"),
-    ("scan45", "pick up the right white can, put it in front of the red cracker box, then go home", "front right_white_can red_cracker_box; home"),
-    ("scan45", "the thing on the far right, push it a bit toward me", "moved red_cracker_box back 0.05"),
+    ("scan45", "pick up the right white can, put it in front of the red cracker box, then go home", "front right_white_can red_box; home"),
+    ("scan45", "the thing on the far right, push it a bit toward me", "moved red_box back 0.05"),
     # scan55
     ("scan55", "pick up the red box", "lift red_box"),
     ("scan55", "Please put the tall white can next to blue box.", "next tall_white_can blue_box"),
-    ("scan55", "push grey object 5cm fwd", "moved grey_object forward 0.05"),
+    # 'the grey object': joined into obj13_white_cylinder since 2792723 (see bench_commands.py): refuse.
+    ("scan55", "push grey object 5cm fwd", "refuse"),
     ("scan55", "Would you please move the orange cylinder a little to the right? Many thanks.", "moved orange_cylinder right 0.05"),
     ("scan55", "there's a lot of stuff on this table haha, could you grab the green object and set it behind the red box", "behind green_object red_box"),
     ("scan55", "yellow thing left of blue box", "refuse"),
@@ -473,16 +478,17 @@ HELDOUT9: list[tuple[str, str, str]] = [
     ("textblocks", "move the plate a little bit back towards the robot dear", "moved plate back 0.05"),
     # scan45
     ("scan45", "grab the red can", "lift red_can"),
-    ("scan45", "now the robot will place the small white object next to the red cracker box", "next small_white_object red_cracker_box"),
+    ("scan45", "now the robot will place the small white object next to the red cracker box", "next small_white_object red_box"),
     ("scan45", "white can the white can move it over", "refuse"),
     ("scan45", "move the tall white can left five centimetres", "moved left_tall_white_can left 0.05"),
     ("scan45", "please the big white thing push to right a little", "moved big_white_object right 0.05"),
-    ("scan45", "could you put the right white can behind the red cracker box", "behind right_white_can red_cracker_box"),
+    ("scan45", "could you put the right white can behind the red cracker box", "behind right_white_can red_box"),
     # scan55
-    ("scan55", "uh put the grey object next to the white box", "next grey_object white_box"),
+    # 'the grey object': joined into obj13_white_cylinder since 2792723 (see bench_commands.py): refuse.
+    ("scan55", "uh put the grey object next to the white box", "refuse"),
     ("scan55", "now class the robot will pick up the tall white can", "lift tall_white_can"),
     ("scan55", "the yellow thing move it quick", "refuse"),
-    ("scan55", "slide the medium white object forward ten centimetres", "moved medium_white_object forward 0.1"),
+    ("scan55", "slide the medium white object forward ten centimetres", "moved big_white_object forward 0.1"),
     ("scan55", "please small white object put left of the white box", "left small_white_object white_box"),
     ("scan55", "could you put the second yellow one from the left uh the second from left yellow object in front of the red box", "front second_from_left_yellow_object red_box"),
 ]
@@ -535,9 +541,9 @@ HELDOUT10: list[tuple[str, str, str]] = [
     # scan45
     ("scan45", "pick small white object, place left of red can.", "left small_white_object red_can"),
     ("scan45", "Please pick up the tall white can on the left and hold it.", "lift left_tall_white_can"),
-    ("scan45", "bruh move the red cracker box like 5cm to the right 👉", "moved red_cracker_box right 0.05"),
+    ("scan45", "bruh move the red cracker box like 5cm to the right 👉", "moved red_box right 0.05"),
     ("scan45", "Place the red can behind the high white can.", "behind red_can left_tall_white_can"),
-    ("scan45", "Take the shorter white can, the one on the right, and put it down next to the red cracker box on the far right.", "next right_white_can red_cracker_box"),
+    ("scan45", "Take the shorter white can, the one on the right, and put it down next to the red cracker box on the far right.", "next right_white_can red_box"),
     ("scan45", "Pick up the white can. Then put it next to the red can.", "refuse"),
     # scan55
     ("scan55", "tall white can -> next to red box.", "next tall_white_can red_box"),

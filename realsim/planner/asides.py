@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
+from realsim.planner.phrasing import VERB_START
 from realsim.planner.steps import Parser
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
 
@@ -27,8 +28,13 @@ def _scene_words(p: Parser) -> set[str]:
 
 def is_aside(clause: str, p: Parser) -> bool:
     """Whether a clause the planner could not read is talk around the command: a statement whose
-    subject is one scene object (that object becomes "it"), or words naming no scene object."""
-    if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look)\b", clause):
+    subject is one scene object (that object becomes "it"), or words naming no scene object. An
+    instruction broken off before its place ("put it in the, um"), or naming a place, is never talk."""
+    if VERB_START.match(clause) and (re.search(r"\b(?:the|a|an|in|into|on|onto|to|of|next to|behind|beside)$", clause)
+                                     or re.search(r"\b(?:in|into|on|onto|inside|next to|behind|beside|in front of|left of|right of) the\b", clause)):
+        return False  # "drop it in the white bowl": a place the planner could not find is no aside either
+    if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look|(?:see|watch|notice|look at) (?:how|what|if|whether)"
+                rf"|let s see|lets see|has|have|had|does|did)\b", clause):
         return True  # "so there's a bowl and a mug here": what the speaker sees
     m = _STATEMENT.match(clause)
     if m:

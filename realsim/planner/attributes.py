@@ -25,6 +25,29 @@ def colors_of(o: ObjectInfo) -> set[str]:
     return out
 
 
+def usual_colour_pick(nouns: list[str], objs: list[ObjectInfo]) -> list[ObjectInfo]:
+    """The one of ``objs`` whose colour is the usual colour of the kind ``nouns`` name ("the
+    cracker box" between a white and a red box: the red one), else ``objs`` unchanged."""
+    usual = {c for w in nouns for c in TYPICAL_COLORS.get(w, ())}
+    hits = [o for o in objs if colors_of(o) & usual]
+    return hits if len(hits) == 1 else objs
+
+
+# hues a measured colour is easily named as instead (a yellow box measured orange)
+NEIGHBOUR_HUES = {"yellow": ("orange",), "orange": ("yellow", "red"), "red": ("orange", "pink"), "pink": ("red", "purple"),
+                  "purple": ("pink", "blue"), "blue": ("purple",), "white": ("gray",), "gray": ("white", "black"), "black": ("gray",)}
+
+
+def neighbour_colour_pick(scored: list[tuple[ObjectInfo, float]], colors: list[str]) -> list[tuple[ObjectInfo, float]]:
+    """When the noun names one object outright and its colour is not the said one: it, if its
+    measured colour is a neighbouring hue ("the yellow cereal box" measured orange); else none
+    (of several cubes, "the purple cube" is none of them)."""
+    named = [(o, s) for o, s in scored if s >= 1.5]
+    hits = [(o, s) for o, s in named if len(named) == 1 and o.color and all(
+        any(n in colors_of(o) for n in (c, *NEIGHBOUR_HUES.get(c, ()))) for c in colors)]
+    return hits if len(hits) == 1 else []
+
+
 def nth(k: int) -> str:
     """"second" for 2."""
     return {1: "first", 2: "second", 3: "third", 4: "fourth", 5: "fifth"}.get(k, f"{k}th")

@@ -12,11 +12,14 @@ from realsim.planner import speech
 from realsim.planner.vocab import singular
 
 FILLERS = (
+    r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
+    r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
-    r"will you", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
+    r"will you", r"you may", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
@@ -35,17 +38,17 @@ _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|car
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
-            "w": "with", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
+            "w": "with", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
            "getting": "get", "returning": "return", "placing it": "place it"}
 TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
-        "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve")
+        "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest")
-PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge")
+       "move", "shift", "slide", "drag", "stand", "rest", "translate")
+PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
@@ -75,19 +78,21 @@ SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table to
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
-QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b)")
+QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
+                      r"| (?:you|you'?re|you are|that'?s|that is|it'?s|it is|all that'?s) (?:done|finished)\b)")
 
 
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
-    text = speech.repair(text, _VERB_START, _RELATION_AT)
+    text = speech.repair(text, VERB_START, _RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?=(?:next to|in|into|on|onto|behind|left of|right of|in front of|between|beside)\b)", " ", text)
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*", " to ", text)  # "mug -> bowl": where it goes
-    text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+)", r"\2 \1", text)  # "the can of tomato"
+    text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+(?: (?!(?:and|then|in|into|on|onto|to|next|behind|from|for|please)\b)\w+)?)",
+                  r"\2 \1", text)  # "the can of tomato", "a tin of tomato soup"
     text = re.sub(r"\s+by (?:its|the|their) (?:handle|rim|top|side|edge|body|lid|middle)s?\b", "", text)  # the grasp is the robot's choice
     text = re.sub(r"\s+and (?:hold|keep) (?:it|them|holding it|holding them)(?: up| there| in the air| steady| still)?(?=$|[.,;!?])", "", text)
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
@@ -96,8 +101,16 @@ def clean(command: str) -> str:
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     # "to the mug's left": to the left of the mug; "side by side": next to each other
+    text = re.sub(r"\b(?:(?:to|toward|towards) )?(?:the |your )?(?:robot|franka|panda)'?s (left|right)\b", r"to the \1", text)  # its own
+    text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\bto (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of"
+    text = re.sub(r"\b(behind|beside|inside) of\b", r"\1", text)
+    text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
+    text = re.sub(r"\ball the way (?:on|at) (?:the )?(left|right)\b", r"on the far \1", text)
+    text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
+                  r"\1 the robot", text)  # the robot's base
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
     text = re.sub(r"\b(?:(?:the )?(?:furthest|farthest|most) (?:to the |on the )?|(?:on |to )?the (?:far|very) )(left|right)\b", r"the \1most", text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
@@ -105,6 +118,9 @@ def clean(command: str) -> str:
     text = _CONSTRAINT.sub(" ", text)
     text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
+    text = re.sub(r"\bso (?:that )?(?:i|we|you|everyone|the class|the kids|they|people)(?: all)? (?:can|could|may|will) (?:see|watch|look at|check)"
+                  r"(?: it| them)?\b", " ", text)  # what it is for, not what to do
+    text = re.sub(r"\bmore (?:close|near)\b", "closer", text)
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
     # a floating quantifier: "the cans all go in the bowl", "the mug and the can both go ..."
@@ -125,8 +141,10 @@ def split_command(command: str) -> list[str]:
     """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
     a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
     text = _in_order(clean(command))
-    text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s )?done|when (?:that s |you re )?done)\b", ",", text)
+    text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s |you )?done"
+                  r"|when (?:that s |you re |you )?(?:done|finished)|(?:but )?(?:in|at|by) the end)\b", ",", text)
     text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to)\b)", ", ", text)  # "..., but don't put the mug in it"
+    text = _run_on(text)
     parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
@@ -153,12 +171,18 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
-            if _AVOID.match(part):  # "..., and don't touch the mug": a constraint of its own
+            if _AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
                 clauses.append(part)
+            elif _AMOUNT.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far
+                clauses[-1] = f"{clauses[-1]} {part}"
+            elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
+                clauses[-1] = f"{clauses[-1]} {m.group(1)}"  # "pick up the green cube, the one furthest from you": which one
             elif re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
+            elif _SAYS.match(part):  # "..., my eyes aren't what they used to be": a remark of its own
+                clauses.append(part)
             elif put is not None and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
@@ -168,6 +192,33 @@ def split_command(command: str) -> list[str]:
         else:
             clauses.append(part)
     return clauses
+
+
+_AMOUNT = re.compile(r"(?:by )?(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)")
+_NOT_BEFORE_VERB = {"and", "then", "to", "you", "i", "we", "please", "dont", "not", "can", "could", "will", "would", "should", "must", "also",
+                    "just", "me", "or", "so", "first", "firstly", "next", "second", "secondly", "finally", "lastly", "after", "afterwards",
+                    "now", "let", "lets", "go", "help", "never", "gonna", "wanna"}
+
+
+def _run_on(text: str) -> str:
+    """A pause before a verb and "it" that the speaker did not mark ("grab the green one put it on
+    the red one"): a clause boundary."""
+    verbs = "|".join(re.escape(v) for v in sorted(PUT + PUSH + TAKE, key=len, reverse=True))
+    return re.sub(rf"(?<=[a-z])(\s+)(?=(?:{verbs}) (?:it|them)\b)",
+                  lambda m: ", " if text[: m.start()].split()[-1] not in _NOT_BEFORE_VERB else m.group(1), text)
+
+
+_SAYS = re.compile(r"(?:my|our|i|we|you|they|he|she|this|these|those|there)\b.*\b(?:is|are|arent|isnt|was|were|am|have|has|had|can|cant"
+                   r"|used to|looks?|seems?)\b")
+_AXIS = {"+x": "forward", "-x": "back", "+y": "left", "-y": "right"}
+
+
+def _axes(text: str) -> str:
+    """A roboticist's axes in the robot's frame ("5 cm in -y", "along +x"): the way they point;
+    "i.e. ..." after it only says the same again."""
+    text = re.sub(r"(?:\b(?:in|along|toward|towards|in the)\s+)?(?<![\w+-])([+-])\s?([xy])\b(?: (?:direction|axis))?",
+                  lambda m: _AXIS[m.group(1) + m.group(2)], text)
+    return re.sub(r",?\s*\b(?:i\.?\s?e\.?|in other words)(?=[\s,])[^.;]*", "", text)
 
 
 _AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|try not to|avoid|(?:be )?careful not to|without)"
@@ -183,6 +234,8 @@ def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
     m = re.match(r"(?:please )?(?:dont|don t|do not|never|no need to)\s+(.+)$", part)
     if not m or _AVOID.match(part):
         return part
+    if re.fullmatch(r"(?:place|put|set|drop|release|let go of|lay) (?:it|them)(?: down| back)?", m.group(1)):
+        return ""  # "grasp the mug and hold it. do not place it": it stays in the hand
     verb = verb_re.match(m.group(1))
     rest = m.group(1)[verb.end():].strip() if verb else m.group(1)
     rest = re.sub(r"^(?:up|down|back|over)\s+", "", rest)
@@ -229,8 +282,10 @@ _PARTICIPLE = re.compile(r"^(.+?)\s+(?:moved|put|placed|pushed|pulled|slid|shift
 _PLACE_WORD = re.compile(r"\s(?:" + "|".join(re.escape(w) for w, k in RELATIONS if k != "to") + r")\s")
 _ASK = re.compile(r"^(?:(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)|i (?:ll |will )?take)\s+(.+)$")
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
+_MODAL_WORDS = r"(?:should|needs to|need to|has to|have to|must|will|would|is to|ought to|is supposed to)"
+_WILL_BE = re.compile(rf"^.+? {_MODAL_WORDS} (?:have |be |go |end up |stay )")
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
-_GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)"
+_GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"
                    r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
 
 
@@ -265,8 +320,8 @@ def _relation_start(text: str) -> bool:
     return bool(re.match(rf"(?:{'|'.join(re.escape(w) for w in words)})\b", text))
 
 
-_VERB_START = re.compile(rf"(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
-_VERB_ANYWHERE = re.compile(rf"(?<![a-z]){_VERB_START.pattern}")
+VERB_START = re.compile(rf"(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
+_VERB_ANYWHERE = re.compile(rf"(?<![a-z]){VERB_START.pattern}")
 _RELATION_AT = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0])) if w not in ('by', 'over'))})\b")
 
 
@@ -299,6 +354,12 @@ def rephrase(clause: str) -> str:
     m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
     if m:  # "the box needs to be moved 5 cm forward"
         return f"move {m.group(1)} {m.group(2)}"
+    m = re.match(rf"^(.+?) (?:{_MODAL} )?(?:have )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange) (?:places|positions|spots)$", c)
+    if m:  # "the red can and the white can should have traded places"
+        return f"swap {m.group(1)}"
+    m = re.match(rf"^(.+?) (?:{_MODAL} )?(?:be|end up|stay|go)? ?(?:right )?back (?:where (?:it|they) (?:is|are|was|were|started)(?: now)?|in (?:its|their) (?:place|spot))$", c)
+    if m:  # "at the end it should be right back where it is now"
+        return f"put {m.group(1)} back"
     m = _GOES.match(c)
     if m and _relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"

@@ -20,8 +20,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from realsim.errors import InputError
-from realsim.planner import relations, vocab
-from realsim.planner.attributes import colors_of, left_order, pts, ranked_by_size, relation_holds
+from realsim.planner import noun_phrase, vocab
+from realsim.planner.attributes import colors_of, left_order, neighbour_colour_pick, ranked_by_size, relation_holds, usual_colour_pick
+from realsim.planner.ordering import EXTREMES, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
@@ -40,13 +41,6 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is )?in front of", "front"),
     (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
 )
-TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
-# robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
-EXTREMES: dict[str, tuple[int, float]] = {
-    "leftmost": (1, 1.0), "left most": (1, 1.0), "left": (1, 1.0), "rightmost": (1, -1.0), "right most": (1, -1.0), "right": (1, -1.0),
-    "farthest": (0, 1.0), "furthest": (0, 1.0), "far": (0, 1.0), "back": (0, 1.0), "rear": (0, 1.0), "backmost": (0, 1.0),
-    "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0), "front": (0, -1.0), "frontmost": (0, -1.0),
-}
 
 
 # words in a scene's own names that describe rather than name ("obj3_left_tall_white_can"):
@@ -179,8 +173,7 @@ class Resolver:
         if m and not re.search(r"\band\b|,", text):  # "a can", "one of the cans": any one will do, the nearest
             pool = self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True)
             return [min(pool, key=lambda o: (round(self.robot_xy(o)[0], 3), -self.robot_xy(o)[1]))]
-        text = re.sub(r"^(?:(?:the|a|an|my|your|our)\s+)+", "", text).strip()
-        text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
+        text = noun_phrase.normalize(text)
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
         if m and not {singular(w) for w in m.group(2).split()} & {w for names in self._words.values() for n in names for w in n}:
             text = m.group(1)
@@ -191,8 +184,6 @@ class Resolver:
         if text in SINGULAR_PRONOUNS or text in PLURAL_PRONOUNS:
             if not ctx.last:
                 raise InputError(f"{phrase.strip()!r} does not refer to anything yet; name the object; {self.listing()}")
-            if text in SINGULAR_PRONOUNS and len(ctx.last) > 1 and text not in ("it", "one"):
-                return list(ctx.last)
             return list(ctx.last)
         m = re.fullmatch(r"(?:obj|object|item|thing|number|no)\s*#?\s*(\d+)", text)  # "object 3", "obj4": the scene's numbering
         if m:
@@ -209,7 +200,10 @@ class Resolver:
             if not noun:
                 raise InputError(f"'the other one' does not refer to anything yet; {self.listing()}")
             taken = {o.name for o in ctx.last}
-            return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False)
+            rest = [o for o in self.objects if o.name not in {*exclude, *taken}]
+            if not m.group(1) and len(rest) == 1 and len(ctx.last) == 1:  # "put it inside the other one": of two, the one not taken
+                return rest
+            return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False, loose=loose)
         text = re.sub(r"^both (?:of )?(?=.+\s+and\s+)", "", text)  # "both the banana and the strawberry": a list
         parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
         if len(parts) > 1 and allow_plural:
@@ -225,8 +219,8 @@ class Resolver:
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)])
         m = re.fullmatch(r"(.+?)\s+(?:(?:that|which|who)\s+)?(?:(?:is|are|s)\s+)?(?:not|isnt|arent)\s+(.+)", text)
         if m:  # "the fruit that is not the banana", "the can that isn't red", "the cube not on the plate"
-            noun_phrase = re.match(r"(?:the|a|an|that|this) ", m.group(2))
-            negated = m.group(2) if noun_phrase else f"{m.group(1)} that is {m.group(2)}"
+            np_said = re.match(r"(?:the|a|an|that|this) ", m.group(2))
+            negated = m.group(2) if np_said else f"{m.group(1)} that is {m.group(2)}"
             excluded = self.resolve(negated, Context(), allow_plural=True, loose=True)
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *(o.name for o in excluded)], allow_plural=allow_plural)
         return self._single_phrase(text, phrase, ctx, want, exclude, allow_plural, loose)
@@ -248,6 +242,7 @@ class Resolver:
         text = re.sub(r"^(?:closer|nearer) (?!to )", "nearest ", re.sub(r"^(?:farther|further) (?!from )", "farthest ", text))
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
+        located = False
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(closest|nearest|closer|nearer)(?: to)?|(?:farthest|furthest|further|farther)(?: away)? from)"
                          r" (?!(?:to )?(?:me|you|the robot)$)(.+)", text)
         if m:
@@ -259,16 +254,20 @@ class Resolver:
                 m = re.fullmatch(rf"(.+?)\s+{pattern}\s+(?!the (?:left|right|far left|far right|front|back|middle|center|centre|end)(?: side| end)?$)(.+)", text)
                 if m and not re.fullmatch(r"(?:the )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?|me|you|the robot", m.group(2)):
                     try:  # every object the reference may mean: the relation itself may tell them apart
-                        refs = self.resolve(m.group(2), Context(), allow_plural=True, loose=True)
+                        refs = self.resolve(m.group(2), Context(ctx.last), allow_plural=True, loose=True)
                     except InputError:
                         continue
                     text = m.group(1)
                     rels = ("in", "on") if rel == "from" else (rel,)
                     cands = [o for o in cands if any(o.name != r.name and relation_holds(k, o, r, self.forward, self.left)
                                                      for r in refs for k in rels)]
+                    located = len(cands) == 1  # the relation alone says which
                     break
-        # positional locators: "on the left", "in the back", "closest to you", "in the middle"
-        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
+        # positional locators: "at the front on the right" (a corner), "on the left", "in the back", "closest to you", "in the middle"
+        m = re.fullmatch(r"(.+?)\s+(?:at|in|on) the (?:very )?(front|back)(?: corner)?(?:,? (?:on|to|at) the)? (?:far )?(left|right)(?: corner| side)?", text)
+        if m:
+            text, order = m.group(1), ("corner", (m.group(2), m.group(3)))
+        m = None if m else re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
                          r"|(closest|nearest|closer|nearer) to (?:me|you|the robot)|(farthest|furthest|farther|further)(?: away)? from (?:me|you|the robot))", text)
         if m:
             text = m.group(1)
@@ -329,13 +328,13 @@ class Resolver:
             matching = [(o, s) for o, s in scored if set(colors) <= colors_of(o) and (s >= 1.5 or not named)]
             pool = [(o, s) for o, s in scored if s >= 1.5] if named else scored
             if not any(colors_of(o) for o, _ in pool):
-                if not named:
+                if not named and not located:
                     raise InputError(f"the scene does not say which object is {colors[0]}: {', '.join(describe(o) for o, _ in scored)}; "
                                      "name it another way")
                 # the noun names it and no candidate's colour is recorded: the colour word cannot tell them
                 # apart, so it is not checked ("the red brick" with one brick whose texture is missing)
                 matching = pool
-            scored = matching
+            scored = matching or (neighbour_colour_pick(pool, colors) if named else [])
             if not scored:
                 raise InputError(f"no {' '.join(colors)} object matches {phrase.strip()!r}; {self.listing()}")
         if not scored:
@@ -350,7 +349,7 @@ class Resolver:
         if sizes and len(found) > 1:
             found = ranked_by_size(found, sizes[-1])[: quantity or 1]
         if order is not None and len(found) > 1:
-            found = self._ordered(found, order, ordinal, phrase)
+            found = ordered(found, order, ordinal, phrase, self.robot_xy, self._distinguish)
         elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:
             raise InputError(f"there is no {phrase.strip()!r}: only {len(found)} such object(s)")
         if plural:
@@ -358,35 +357,12 @@ class Resolver:
                 raise InputError(f"{phrase.strip()!r}: the scene has {len(found)}, not {quantity}: "
                                  f"{', '.join(describe(o) for o in found)}")
             return found
+        if len(found) > 1 and not colors:  # "the cracker box" between a white and a red box: a cracker box is red
+            found = usual_colour_pick(nouns, found)
         if len(found) > 1 and not loose:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
                              "say which one (colour, size, left/right, or the body name)")
         return found
-
-    def _ordered(self, found: list[ObjectInfo], order: tuple[str, object], ordinal: int | None, phrase: str) -> list[ObjectInfo]:
-        kind, arg = order
-        if kind in ("near", "far"):  # the gap to the reference, its distance breaking ties
-            ref = arg
-            assert isinstance(ref, ObjectInfo)
-            pick = min if kind == "near" else max
-            return [pick(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
-        if kind == "middle":
-            ys = sorted(found, key=lambda o: self.robot_xy(o)[1])
-            if len(ys) % 2 == 0:
-                raise InputError(f"{phrase.strip()!r}: there is no middle one of {len(ys)}: {', '.join(self._distinguish(ys))}")
-            return [ys[len(ys) // 2]]
-        axis, sign = EXTREMES[str(arg)]
-        ranked = sorted(found, key=lambda o: -sign * self.robot_xy(o)[axis])
-        k = 1 if ordinal is None else ordinal
-        if k == -1:
-            return [ranked[-1]]
-        if k > len(ranked):
-            raise InputError(f"there is no {phrase.strip()!r}: only {len(ranked)} such objects")
-        pick = ranked[k - 1]
-        ties = [o for o in ranked if o is not pick and abs(self.robot_xy(o)[axis] - self.robot_xy(pick)[axis]) < TIE]
-        if ties:  # level with another along that direction: which one is meant is not clear
-            raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish([pick, *ties]))} are level; say which one")
-        return [pick]
 
     def _distinguish(self, objs: list[ObjectInfo]) -> list[str]:
         """Each candidate with its colour, size and position word among the others."""

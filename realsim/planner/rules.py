@@ -125,7 +125,7 @@ def _disturbed(goal: Goal, later: list[Step]) -> bool:
 def _clause(clause: str, p: Parser) -> Step:
     c = " ".join(clause.split())
     if re.fullmatch(r"(?:(?:go|return|move|come|head|get)(?: back)?(?: to)?(?: (?:the|your))? (?:home|start|starting|rest|resting|initial|ready)"
-                    r"(?: position| pose| posture| point| spot)?|reset(?: yourself| the arm| arm)?|home|go back|return|retract(?: the arm)?"
+                    r"(?: position| pose| posture| point| spot)?|reset(?: yourself| the arm| arm)?|home(?: it| the arm| yourself)?|(?:go back and )?(?:have|take) a (?:rest|break)|go back|return|retract(?: the arm)?"
                     r"|(?:go|move|return|come) home)", c):
         return Step([Call("go_home")], [AtHome()])
     m = re.fullmatch(r"(open|close|shut) (?:the |your )?(?:gripper|hand|fingers|claw)|release(?: it| that| the object)?|let (?:it )?go(?: of it)?|drop it|let go of (.+)", c)
@@ -143,7 +143,10 @@ def _clause(clause: str, p: Parser) -> Step:
         c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
-        verb, rest = _verb(rephrase(c))
+        said = rephrase(c)
+        if m := SWAP.fullmatch(said):  # "the can and the box should have traded places"
+            return swap(m.group(1), m.group(2), p)
+        verb, rest = _verb(said)
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
     # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
@@ -181,7 +184,7 @@ def _verb(c: str) -> tuple[str | None, str]:
 
 
 def _take(rest: str, p: Parser) -> Step:
-    rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it)$", "", rest)
+    rest = re.sub(r"\s+(?:up|off the table|from the table|up high|in the air|into the air|and hold it|at (?:lift|that|this|the same|full) height)$", "", rest)
     # "lift the cube 5 cm": a lift has one height (about 10 cm); the number does not name the object
     rest = re.sub(r"\s+(?:up )?(?:by )?(?:about |around )?\d+(?:\.\d+)? ?(?:cm|mm|centimet(?:er|re)s?|millimet(?:er|re)s?|inch(?:es)?)"
                   r"(?: up| high| off the table| into the air| in the air)?$", "", rest)

@@ -12,10 +12,11 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
+from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
 __all__ = ["object_first", "repair"]
 
-_MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|no|sorry|wait|i mean|uh+|um+|er+|erm)(?=[\s,])")
+_MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
                         r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|it)\s+"
@@ -27,6 +28,8 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     """``text`` (lower case, punctuation kept) with what the speaker took back replaced by what
     they said instead; ``verb`` / ``relation`` match a command verb / a place at a text's start."""
     text = re.sub(r"\b(\w+)(?: \1\b)+", r"\1", text)  # "bowl bowl", "no no"
+    text = re.sub(r"\b((?:\w+ ){1,3}\w+)(?:\s*[,-]\s*\1\b)+", r"\1", text)  # "the blue box, the blue box"
+    text = homophones(text, verb)
     text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike\b(?! (?:to|this|that)\b)", " ", text)  # "put it like right there"
     text = " ".join(text.split())
     for _ in range(4):
@@ -44,7 +47,7 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
         if not before or not after:
             continue
         weak = bool(_WEAK.fullmatch(m.group(1)))
-        said = re.sub(r"^(?:just|rather|instead|actually)\s+", "", after)
+        said = re.sub(r"^(?:(?:just|rather|instead|actually|make (?:that|it)|i meant?)\s+)+", "", after)
         if verb.match(said) and not weak:  # "put the mug in the bowl no sorry just pick up the bowl"
             # "..., actually no, take it out again": an undo of what was done, so what was done stays
             return f"{before}, {said}" if re.search(r"\b(?:it|them)\b", said) else said
@@ -52,14 +55,72 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             places = list(relation.finditer(before))
             if places:
                 return f"{before[: places[-1].start()].rstrip()} {said}"
-        start = max([m.end() for m in verb.finditer(before)] + [m.end() for m in relation.finditer(before)], default=0)
+        places = [r for r in relation.finditer(before) if not _POSITION.match(before, r.end())]  # "on the right" says which
+        start = max([m.end() for m in verb.finditer(before)] + [r.end() for r in places], default=0)
         if re.match(r"(?:the|that|this|a|an)\s", said) and re.match(r"\s*(?:the|that|this|a|an)\s", before[start:]):
+            said = _continued(said, verb, relation)
             if re.search(r"(?:^|\s)(?:the|that|this|a|an)\s", before[:start]) and not weak:  # which of two does it replace?
-                raise InputError(f"{text!r}: '{said}' could replace either thing named before it; say the whole command again")
-            return f"{before[:start].rstrip()} {said}".strip()  # "put the soup can uh the tomato one behind the bowl"
+                return _contrast(before, said, text, verb, relation)
+            return f"{before[:start].rstrip()} {_one_as(said, before[start:])}".strip()  # "put the soup can uh the tomato one behind the bowl"
         if weak:
             return f"{before} {after}"
     return text
+
+
+_POSITION = re.compile(r"\s+(?:the )?(?:far |very )?(?:left|right|front|back|middle|center|centre)\b")
+_HOMOPHONES = ((r"\b(?:too|two)\b(?= (?:the )?(?:left|right|front|back|side|top)\b)", "to"),  # "move it two the left"
+               (r"\bfor\b(?= (?:cm|mm|centimet|millimet|inch))", "four"))  # "for centimeters"
+
+
+def homophones(text: str, verb: re.Pattern[str]) -> str:
+    """Words speech-to-text writes for others that sound the same: "two the left", "for
+    centimeters", "than go home" (then, before a command verb)."""
+    for pattern, word in _HOMOPHONES:
+        text = re.sub(pattern, word, text)
+    return re.sub(rf"\bthan (?={verb.pattern})", "then ", text)
+
+
+def _continued(said: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
+    """A repaired object phrase and the rest of the command it interrupted, without the pause
+    between them ("the red can, behind the box" -> "the red can behind the box")."""
+    m = re.match(r"([^,;.]+?)\s*[,;-]+\s*(.+)", said)
+    if m and not verb.match(m.group(2)) and not re.match(r"(?:then|and)\b", m.group(2)):
+        return f"{m.group(1)} {m.group(2)}"
+    return said
+
+
+def _noun_phrases(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> list[tuple[int, int]]:
+    """(start, end) of each noun phrase opened by a determiner, up to a place word, a verb or a pause."""
+    out = []
+    for m in re.finditer(r"(?:^|(?<=\s))(?:the|that|this|a|an)\s", text):
+        end = m.end()
+        while end < len(text) and text[end] not in ",;." and not (text[end - 1] == " " and (relation.match(text, end) or verb.match(text, end))):
+            end += 1
+        out.append((m.start(), end))
+    return out
+
+
+def _contrast(before: str, said: str, text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
+    """Which earlier phrase a repair such as "make that the green one" replaces: the one phrase
+    whose kind of modifier it contrasts (a colour for a colour, a size for a size); else the
+    speaker is asked."""
+    def classes(phrase: str) -> set[str]:
+        words = set(phrase.split())
+        return {c for c, vocab in (("colour", COLOR_WORDS), ("size", (*BIG, *SMALL))) if words & set(vocab)}
+
+    said_np = next(iter(_noun_phrases(said, verb, relation)), (0, len(said)))
+    wanted = classes(said[said_np[0]:said_np[1]])
+    hits = [(a, b) for a, b in _noun_phrases(before, verb, relation) if wanted and wanted & classes(before[a:b])]
+    if len(hits) != 1 or not re.search(r"\bone\b", said):
+        raise InputError(f"{text!r}: '{said}' could replace either thing named before it; say the whole command again")
+    a, b = hits[0]
+    return f"{before[:a]}{_one_as(said[said_np[0]:said_np[1]].strip(), before[a:b])} {before[b:].strip()}".strip()
+
+
+def _one_as(said: str, replaced: str) -> str:
+    """"the green one" replacing "the blue cube": the green cube (its noun taken from what it replaces)."""
+    head = re.sub(r"\s+(?:on|in|at|to) the\b.*$|[^a-z ].*$", "", replaced.strip()).split()
+    return re.sub(r"\bone\b", head[-1], said, count=1) if len(head) > 1 and head[-1] != "one" else said
 
 
 def object_first(clause: str, verb: re.Pattern[str]) -> str | None:

@@ -62,6 +62,15 @@ def swap(a_phrase: str, b_phrase: str | None, p: Parser) -> Step:
     """Each object where the other was: the first steps aside (beyond the second, away from its
     own spot), the second goes to the first's spot, then the first to the second's. Without
     ``b_phrase``, ``a_phrase`` names both ("swap the soda cans")."""
+    split = re.fullmatch(r"(.+?) (?:in|an|n|end) (.+)", a_phrase) if b_phrase is None else None
+    if split:  # "swap the cube in the can": speech-to-text's "and", when the phrase names no two objects itself
+        try:
+            if len(objects_named(a_phrase, p)) == 2:
+                split = None
+        except InputError:
+            pass
+    if split:
+        a_phrase, b_phrase = split.group(1), split.group(2)
     if b_phrase is None:
         pair = objects_named(a_phrase, p)
         if len(pair) != 2:
@@ -111,7 +120,7 @@ def each_other(objs: list[ObjectInfo], kind: str, p: Parser) -> Step:
 
 def objects_named(phrase: str, p: Parser, want: str | None = None, exclude: Sequence[str] = ()) -> list[ObjectInfo]:
     """The objects a phrase names, with a trailing particle ("up", "over") and a leading "up/back/down" dropped."""
-    phrase = re.sub(rf"{PARTICLES}$", "", " " + phrase).strip()
+    phrase = re.sub(rf"(?<!the){PARTICLES}$", "", " " + phrase).strip()  # "the thing in the back" keeps its "back"
     phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
     objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
     return objs

@@ -38,7 +38,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "pitcher": ("jug",), "drill": ("power drill",), "cleanser": ("bleach",), "bleach": ("cleanser",),
     # brand names people use for the thing
     "spam": ("meat",), "clorox": ("bleach",), "coke": ("soda", "can"), "cheezit": ("cracker",), "jello": ("gelatin",),
-    "lego": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",),
+    "lego": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",), "puck": ("cylinder", "disk", "disc"),
 }
 # words naming a kind of object rather than one: they select by the size table's record
 KINDS: dict[str, tuple[str, ...]] = {
@@ -64,7 +64,7 @@ for _shape, _kind in (("cylindrical", "cylinder"), ("boxy", "square"), ("rectang
 TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),
     "apple": ("red", "green"), "lime": ("green",), "pear": ("green", "yellow"), "orange": ("orange",), "plum": ("purple",),
-    "mustard": ("yellow",), "ketchup": ("red",), "carrot": ("orange",),
+    "mustard": ("yellow",), "ketchup": ("red",), "carrot": ("orange",), "cracker": ("red",), "spam": ("blue",),
 }
 _TO_ME = r"(?: (?:to|from) (?:me|you|the robot|yourself))?"
 # a comparative said of one object with nothing to compare it to but the speaker: its extreme

@@ -1,0 +1,59 @@
+"""Which of several objects an order picks: an extreme ("the leftmost"), an ordinal ("the second
+from the right"), the middle one, the one nearest or farthest from a reference, or a corner ("at
+the front on the right": first along both directions). Directions are the robot's.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+from realsim.errors import InputError
+from realsim.planner import relations
+from realsim.planner.attributes import pts
+from realsim.planner.types import ObjectInfo
+
+__all__ = ["EXTREMES", "TIE", "ordered"]
+
+TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
+# robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
+EXTREMES: dict[str, tuple[int, float]] = {
+    "leftmost": (1, 1.0), "left most": (1, 1.0), "left": (1, 1.0), "rightmost": (1, -1.0), "right most": (1, -1.0), "right": (1, -1.0),
+    "farthest": (0, 1.0), "furthest": (0, 1.0), "far": (0, 1.0), "back": (0, 1.0), "rear": (0, 1.0), "backmost": (0, 1.0),
+    "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0), "front": (0, -1.0), "frontmost": (0, -1.0),
+}
+
+
+def ordered(found: list[ObjectInfo], order: tuple[str, object], ordinal: int | None, phrase: str,
+            robot_xy: Callable[[ObjectInfo], tuple[float, float]], distinguish: Callable[[list[ObjectInfo]], list[str]]) -> list[ObjectInfo]:
+    """The one of ``found`` that ``order`` (kind, argument) picks; ``robot_xy`` gives an object's
+    (forward, left) in the robot's frame, ``distinguish`` lists candidates for an error."""
+    kind, arg = order
+    if kind in ("near", "far"):  # the gap to the reference, its distance breaking ties
+        ref = arg
+        assert isinstance(ref, ObjectInfo)
+        choose = min if kind == "near" else max
+        return [choose(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
+    if kind == "middle":
+        ys = sorted(found, key=lambda o: robot_xy(o)[1])
+        if len(ys) % 2 == 0:
+            raise InputError(f"{phrase.strip()!r}: there is no middle one of {len(ys)}: {', '.join(distinguish(ys))}")
+        return [ys[len(ys) // 2]]
+    if kind == "corner":  # "at the front on the right": first along both ways, else not clear
+        assert isinstance(arg, tuple)
+        firsts = [ordered(found, ("extreme", w), None, phrase, robot_xy, distinguish)[0] for w in arg]
+        if firsts[0] is not firsts[1]:
+            raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(distinguish(firsts))}; say which one")
+        return [firsts[0]]
+    axis, sign = EXTREMES[str(arg)]
+    ranked = sorted(found, key=lambda o: -sign * robot_xy(o)[axis])
+    k = 1 if ordinal is None else ordinal
+    if k == -1:
+        return [ranked[-1]]
+    if k > len(ranked):
+        raise InputError(f"there is no {phrase.strip()!r}: only {len(ranked)} such objects")
+    pick = ranked[k - 1]
+    ties = [o for o in ranked if o is not pick and abs(robot_xy(o)[axis] - robot_xy(pick)[axis]) < TIE]
+    if ties:  # level with another along that direction: which one is meant is not clear
+        raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(distinguish([pick, *ties]))} are level; say which one")
+    return [pick]
