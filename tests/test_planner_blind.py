@@ -31,6 +31,9 @@ def calls(sentence: str, objects: list[ObjectInfo] = CLUTTER) -> list[str]:
     ("pick up the banana and hold it. do not put it down", ["grasp('obj7_banana')"]),
     ("grab the green cube put it in the bowl", ["grasp('obj5_cube')", "place_in('obj5_cube', 'obj6_bowl')"]),
     ("put the strawberry to behind of the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+    ("pick up the thing sitting in front of the banana", ["grasp('obj6_bowl')"]),
+    ("ok class, which one is farthest from you? pick that one up", ["grasp('obj7_banana')"]),
+    ("see the two cans? put the one on the right in the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
 ])
 def test_blind_batch_classes(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines

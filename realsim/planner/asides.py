@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.phrasing import VERB_START
+from realsim.planner.phrasing import VERB_START, WHICH_ONE
 from realsim.planner.steps import Parser
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
 
@@ -36,6 +36,13 @@ def is_aside(clause: str, p: Parser) -> bool:
     if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look|(?:see|watch|notice|look at) (?:how|what|if|whether)"
                 rf"|let s see|lets see|has|have|had|does|did)\b", clause):
         return True  # "so there's a bowl and a mug here": what the speaker sees
+    m = WHICH_ONE.fullmatch(clause)
+    if m:  # "which one is farthest from you?": the answer is what "that one" means next
+        try:
+            p.ctx.set(p.resolver.resolve(f"the {m.group(1)} {m.group(2)}", p.ctx, allow_plural=False))
+        except InputError:
+            return False
+        return True
     m = _STATEMENT.match(clause)
     if m:
         try:

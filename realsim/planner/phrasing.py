@@ -177,6 +177,8 @@ def split_command(command: str) -> list[str]:
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
                 clauses[-1] = f"{clauses[-1]} {m.group(1)}"  # "pick up the green cube, the one furthest from you": which one
+            elif WHICH_ONE.match(part):  # "..., which one is farthest from you? pick that one up": a question of its own
+                clauses.append(part)
             elif re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
@@ -283,6 +285,7 @@ _PLACE_WORD = re.compile(r"\s(?:" + "|".join(re.escape(w) for w, k in RELATIONS 
 _ASK = re.compile(r"^(?:(?:can|could|may|might|shall) i (?:please )?(?:have|get|grab|borrow|take|see)|i (?:ll |will )?take)\s+(.+)$")
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL_WORDS = r"(?:should|needs to|need to|has to|have to|must|will|would|is to|ought to|is supposed to)"
+WHICH_ONE = re.compile(r"(?:which|what) (one|\w+) (?:is|s) (.+)")
 _WILL_BE = re.compile(rf"^.+? {_MODAL_WORDS} (?:have |be |go |end up |stay )")
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
 _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"
@@ -297,11 +300,11 @@ def _bare(phrase: str) -> str:
 
 
 def _partitive(parts: list[str]) -> list[str]:
-    """"of the two sodas, pick up the one on the left": "one" is a soda, and the opening names no
-    object of its own."""
+    """"of the two sodas, pick up the one on the left", "see the two red cans? take the one closer
+    to you": "one" is a soda (a can), and the opening names no object of its own."""
     if len(parts) < 2:
         return parts
-    m = re.fullmatch(r"(?:of|out of|among|from among) (?:all )?(?:the |these |those )?(?:two |three |four |both )?([a-z ]+)", parts[0])
+    m = re.fullmatch(r"(?:of|out of|among|from among|(?:you )?see|look at|notice) (?:all )?(?:the |these |those )?(?:two |three |four |both )?([a-z ]+)", parts[0])
     if not m or not re.search(r"\bone\b", parts[1]):
         return parts
     noun = singular(m.group(1).split()[-1])

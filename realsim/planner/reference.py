@@ -34,7 +34,7 @@ PLURAL_PRONOUNS = {"them", "they", "those", "these", "both", "both of them", "al
 LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is |that |which |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:on top of|on)", "on"),
-    (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in)", "in"),
+    (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in(?! front of\b))", "in"),
     (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
     (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
     (r"(?:that is |thats |which is )?behind", "behind"),
