@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 
-from realsim.robot.placing import ReleaseParams, footprint_ring, long_axis, release_poses, spots, underside
+from realsim.robot.params import PlaceParams
+from realsim.robot.placing import ReleaseParams, footprint_ring, long_axis, release_poses, side_spots, spots, underside
 
 
 def test_footprint_ring_reaches_half_way_to_the_edge_in_every_direction() -> None:
@@ -66,3 +68,24 @@ def test_the_free_part_of_an_occupied_opening() -> None:
     rng = np.random.default_rng(3)
     rod = rng.uniform([-0.1, -0.02, 0.0], [0.1, 0.02, 0.03], (3000, 3))
     assert narrowest(rod) == pytest.approx(0.04, abs=0.002)
+
+
+def _disc(centre: tuple[float, float], radius: float) -> np.ndarray:
+    """Points filling a disc (rings 5 mm apart, 64 points each, one on every axis)."""
+    ang = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+    pts = [(rr * np.cos(a) + centre[0], rr * np.sin(a) + centre[1], 0.0) for rr in np.linspace(0.0, radius, int(radius / 0.005) + 1) for a in ang]
+    return np.array(pts)
+
+
+def test_side_spots_reach_down_to_the_least_gap_the_relation_accepts_off_a_round_corner() -> None:
+    pl = PlaceParams()
+    bowl, mug = _disc((0.0, 0.0), 0.08), _disc((0.3, 0.3), 0.045)
+    d = np.array([1.0, 0.0])
+    cands = side_spots(mug, bowl, d, pl.beside_gap, pl)
+    assert np.allclose(cands[0][1], [0.08 + pl.beside_gap + 0.045, 0.0], atol=2e-3)  # straight out at the asked gap first
+    gaps = np.array([xy[0] - 0.045 - 0.08 for _, xy in cands])
+    assert gaps.min() == pytest.approx(pl.overlap_margin - pl.side_overlap, abs=2e-3)  # never nearer than the relation accepts
+    tree = cKDTree(bowl[:, :2])
+    near = [xy for (_, xy), g in zip(cands, gaps) if g < min(pl.beside_along) + pl.beside_gap - 1e-6]
+    clear = [xy for xy in near if tree.query(_disc(tuple(xy), 0.045)[:, :2])[0].min() >= 0.01]
+    assert clear and all(abs(xy[1]) > 0.02 for xy in clear)  # the nearer spots that clear the bowl lie off the line, past its round corner

@@ -103,6 +103,18 @@ class Motion(WorldQueries):
         self._check_clear(path, ignore=ignore)
         self._follow(path)
 
+    def _checked_line(self, start: np.ndarray, end: np.ndarray, rot: np.ndarray, q_seed: np.ndarray,
+                      ignore: set[str]) -> tuple[np.ndarray, list[np.ndarray]]:
+        """(posture at ``start``, joint path to ``end``) of a straight tcp line at rotation ``rot`` on
+        which the arm and the held object touch nothing but ``ignore``, planned and checked before
+        the arm moves (``q_seed``: the IK branch to start from); raises PlanFailure."""
+        at_start = self._ik_clear(start, rot, q_seed, ignore)
+        if not at_start.converged:
+            raise PlanFailure(f"target {np.round(start, 3).tolist()} unreachable ({at_start.reason})")
+        path = self._line(start, end, rot, rot, at_start.q, solve=lambda p, r, qi: self._ik_clear(p, r, qi, ignore))
+        self._check_clear(path, ignore=ignore, start=at_start.q)
+        return at_start.q, path
+
     def _transit(self, end: np.ndarray, rot_end: np.ndarray, skip: str | None = None, below_tcp: float = 0.0, turn_late: bool = False,
                  q_goal: np.ndarray | None = None) -> None:
         """Lift to a safe height, traverse, descend to ``end`` (straight lines, IK-checked); when such
@@ -164,7 +176,10 @@ class Motion(WorldQueries):
                 try:
                     path = plan(z)
                     if q_goal is not None and np.abs(path[-1] - q_goal).max() > mp.goal_posture_tol:
-                        path.append(np.asarray(q_goal, float))  # into the vetted posture (another IK branch)
+                        q_end, q_to = path[-1], np.asarray(q_goal, float)  # into the vetted posture (another IK branch): one move, checked every joint_check_step
+                        n = max(1, int(np.ceil(np.abs(q_to - q_end).max() / mp.joint_check_step)))
+                        self._check_clear([q_end + f * (q_to - q_end) for f in np.linspace(1 / n, 1.0, n)], ignore=ignore, start=q_end)
+                        path.append(q_to)
                     self._check_clear(path, ignore=ignore)
                 except PathBlocked as exc:
                     last = blocked = exc

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import ConvexHull, Delaunay, QhullError, cKDTree
 
+from realsim.robot.params import PlaceParams
+
 
 @dataclass(frozen=True)
 class ReleaseParams:
@@ -84,6 +86,22 @@ def spots(centre: np.ndarray, slack: float, base_xy: np.ndarray, ring: int = 6) 
             ringed.sort(key=lambda p: float(np.linalg.norm(p - base_xy)))
             out += ringed
     return out
+
+
+def side_spots(o: np.ndarray, r: np.ndarray, d: np.ndarray, gap: float, pl: PlaceParams) -> list[tuple[float, np.ndarray]]:
+    """(cost, xy) of spots for the object ``o``'s centre on the unit ``d`` side of ``r`` (points):
+    over the side relation's sector (nearer or further out, down to the least gap it accepts,
+    off the line as far as it allows), the spot ``gap`` straight out first."""
+    perp = np.array([-d[1], d[0]])
+    oc = (o[:, :2].min(axis=0) + o[:, :2].max(axis=0)) / 2
+    rc = (r[:, :2].min(axis=0) + r[:, :2].max(axis=0)) / 2
+    base = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max())
+    allowed = float(np.ptp(r[:, :2] @ perp) + np.ptp(o[:, :2] @ perp)) / 2 + pl.side_slack - pl.beside_margin
+    lats = [0.0] + [sgn * k * pl.beside_step for k in range(1, int(allowed / pl.beside_step) + 1) for sgn in (1.0, -1.0)]
+    least = pl.overlap_margin - pl.side_overlap - gap  # a little into r's extent: beside a round corner, off the line
+    alongs = [*pl.beside_along, *(np.arange(min(pl.beside_along) - pl.overlap_step, least, -pl.overlap_step).tolist() + [least]
+                                   if least < min(pl.beside_along) else [])]
+    return [(abs(along) + abs(lat), rc + d * (base + gap + along) + perp * lat) for along in alongs for lat in lats]
 
 
 def free_first(spot_list: list[np.ndarray], occupied_xy: np.ndarray) -> list[np.ndarray]:

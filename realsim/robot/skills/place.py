@@ -7,7 +7,7 @@ from numpy.typing import ArrayLike
 
 from realsim.planner import relations
 from realsim.planner.goals import DIRECTIONS, SIDES, direction_in_world
-from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, free_first, free_radius, narrowest, spots, top_area
+from realsim.robot.placing import cavity_centre, footprint_radius, footprint_ring, free_first, free_radius, narrowest, side_spots, spots, top_area
 from realsim.robot.queries import box_centre
 from realsim.robot.result import ActionResult
 from realsim.robot.skills.release import Cavity, Keepout, Release
@@ -130,7 +130,7 @@ class PlaceSkills(Release):
             else:
                 d_side = np.asarray(direction_in_world(DIRECTIONS[SIDES[side]], self.base_yaw), float)
                 for turn in pl.beside_turns:
-                    cands += [(cost + pl.turn_cost * abs(turn), 0.0, xy, turn) for cost, xy in self._side_spots(_turned(o, turn), r, d_side, gap_)]
+                    cands += [(cost + pl.turn_cost * abs(turn), 0.0, xy, turn) for cost, xy in side_spots(_turned(o, turn), r, d_side, gap_, pl)]
             cands.sort(key=lambda t: (t[0], t[1]))
             level = float(r[:, 2].min())
             rings = {turn: footprint_ring(_turned(o, turn), frac=pl.support_fraction) for turn in {c[3] for c in cands}}
@@ -150,18 +150,6 @@ class PlaceSkills(Release):
             return self._place(obj, [xy for xy, _ in near], np.nan, "place_beside", judge, Keepout(self._others(obj)),
                                turns=[turn for _, turn in near])
         return self._run("place_beside", body, max_sim_time)
-
-    def _side_spots(self, o: np.ndarray, r: np.ndarray, d: np.ndarray, gap: float) -> list[tuple[float, np.ndarray]]:
-        """(cost, xy) of spots for the object ``o``'s centre on the ``d`` side of ``r``: over the
-        relation's sector (nearer or further out, off the line as far as the relation allows, a
-        side spot still past ``r``'s extent), the spot ``gap`` straight out first."""
-        pl = self.params.place
-        perp = np.array([-d[1], d[0]])
-        oc, rc = box_centre(o), box_centre(r)
-        base = float(((r[:, :2] - rc) @ d).max()) + float(((o[:, :2] - oc) @ -d).max())
-        allowed = float(np.ptp(r[:, :2] @ perp) + np.ptp(o[:, :2] @ perp)) / 2 + pl.side_slack - pl.beside_margin
-        lats = [0.0] + [sgn * k * pl.beside_step for k in range(1, int(allowed / pl.beside_step) + 1) for sgn in (1.0, -1.0)]
-        return [(abs(along) + abs(lat), rc + d * (base + gap + along) + perp * lat) for along in pl.beside_along for lat in lats]
 
     def place_between(self, obj: str, a: str, b: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on the table between objects ``a`` and ``b``."""

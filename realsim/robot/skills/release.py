@@ -112,12 +112,15 @@ class Release(Motion):
                 last = PlanFailure(f"{obj} would rest on the rim ({(bottom - cavity.rim) * 1000:+.0f} mm)")
                 continue
             goal = np.array([*tcp_xy, z + drop])
-            if not self._ik(goal, r_goal, self.data.ctrl[self.act].copy()).converged:
+            at_goal = self._ik(goal, r_goal, self.data.ctrl[self.act].copy())
+            if not at_goal.converged:
                 last = PlanFailure(f"release pose {np.round(goal, 3).tolist()} unreachable")
                 continue
             try:
-                self._transit(goal + np.array([0, 0, pl.approach_height]), r_goal, skip=obj, below_tcp=-float(moved[:, 2].min()))
-                self._straight(goal, r_goal, clear_but={obj})  # the arm and the held object shove nothing on the way down
+                above = goal + np.array([0, 0, pl.approach_height])  # the way down is checked before the arm moves: a blocked one costs no time
+                q_above, down = self._checked_line(above, goal, r_goal, at_goal.q, {obj})
+                self._transit(above, r_goal, skip=obj, below_tcp=-float(moved[:, 2].min()), q_goal=q_above)
+                self._follow(down)  # the arm and the held object shove nothing on the way down
                 break
             except PlanFailure as exc:
                 last = exc
