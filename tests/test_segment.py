@@ -371,3 +371,27 @@ def test_small_pieces_gather_only_into_an_object_sized_whole() -> None:
     assert len(np.unique(absorb_small(labels, a, b, 100, among_small=True))) == 2
     labels, a, b = chain([30, 500, 40])
     assert len(np.unique(absorb_small(labels, a, b, 100, among_small=True))) == 1
+
+
+def test_coarse_cloud_standing_object_is_not_floating() -> None:
+    """On a 19 mm grid (a 50k-point room) the lowest cell centres of an object standing on the
+    table lie up to a cell above the foreground's 8 mm cut; at that resolution it still stands,
+    while a cluster 6 cm up with nothing under it is noise."""
+    from realsim.perception.object_relations import filter_by_size
+    from realsim.perception.segment_scene import at_resolution
+
+    cell = 0.019
+    rng = np.random.default_rng(6)
+    ang, z = rng.uniform(0, 2 * np.pi, 20000), rng.uniform(0.008, 0.2, 20000)
+    tube = np.stack([0.05 * np.cos(ang), 0.05 * np.sin(ang), TABLE_Z + z], axis=1)
+    floating = rng.uniform([0.2, 0.0, TABLE_Z + 0.06], [0.26, 0.06, TABLE_Z + 0.12], (3000, 3))
+    centres = []
+    for cloud in (tube, floating):  # voxel centres, the grid's lowest layer starting 6 mm up
+        keys, inverse = np.unique(np.floor((cloud - [0.0, 0.0, TABLE_Z + 0.006]) / cell), axis=0, return_inverse=True)
+        centres.append(np.stack([np.bincount(inverse.ravel(), cloud[:, i]) for i in range(3)], axis=1)
+                       / np.bincount(inverse.ravel())[:, None])
+    assert np.sort(centres[0][:, 2] - TABLE_Z)[4] > SegmentParams().stack_min_height  # looks floating at Kinect scale
+    points, result = _labelled(*centres)
+    out = filter_by_size(points, result, [_table()], at_resolution(SegmentParams(), cell))
+    assert np.all(out.labels[: len(centres[0])] == 1)
+    assert np.all(out.labels[len(centres[0]):] == -1)

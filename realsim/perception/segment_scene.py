@@ -33,7 +33,10 @@ def _label_for(scene: Scene, mask: np.ndarray) -> str:
 def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
     """The parameters for an unorganized cloud worked at ``resolution`` (m): link and supervoxel
     lengths grow with the spacing, the point counts of the defaults (tuned on Kinect views, about
-    1.5 mm apart) become the same areas counted in cells of this size, and object sizes are areas."""
+    1.5 mm apart) become the same areas counted in cells of this size, and object sizes are areas.
+    The base of an object standing on its support shows on the grid up to one cell above the
+    foreground's lower bound (a cell's centre averages what lies in it), so only a base higher
+    than that rests on something else."""
     kinect_cell = 0.0015**2
 
     def count(points: int, floor: int) -> int:
@@ -47,6 +50,7 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
         min_contact_links=min(params.min_contact_links, count(params.min_contact_links * 4, 2)),
         absorb_points=max(6, int(round(params.absorb_area / resolution**2))),
         min_object_points=max(5, int(round(params.min_object_area / resolution**2))),
+        stack_min_height=max(params.stack_min_height, params.min_height + resolution),
     )
 
 
@@ -100,7 +104,7 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
         working = dataclasses.replace(working, contact_cut_cell=0.0)
     result = segment_objects(centres, colors, scene.planes, None, working, seed=scene.seed,
                              resolution=resolution, context=context)
-    result = filter_by_size(centres, result, scene.planes, params, max_sheet=max(params.min_object_size / 2, 6 * noise))
+    result = filter_by_size(centres, result, scene.planes, working, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
     _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
                     resolution)
