@@ -34,6 +34,8 @@ def calls(sentence: str, objects: list[ObjectInfo] = CLUTTER) -> list[str]:
     ("pick up the thing sitting in front of the banana", ["grasp('obj6_bowl')"]),
     ("ok class, which one is farthest from you? pick that one up", ["grasp('obj7_banana')"]),
     ("see the two cans? put the one on the right in the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
+    ("pick up the cube in between the other two", ["grasp('obj4_cube')"]),
+    ("pick up the thing between the bowl and the banana", ["grasp('obj4_cube')"]),
 ])
 def test_blind_batch_classes(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines

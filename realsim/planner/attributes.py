@@ -5,6 +5,9 @@ size words, ordinal names, and whether a locator relation ("the can next to the 
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
+
 import numpy as np
 
 from realsim.planner import relations
@@ -46,6 +49,20 @@ def neighbour_colour_pick(scored: list[tuple[ObjectInfo, float]], colors: list[s
     hits = [(o, s) for o, s in named if len(named) == 1 and o.color and all(
         any(n in colors_of(o) for n in (c, *NEIGHBOUR_HUES.get(c, ()))) for c in colors)]
     return hits if len(hits) == 1 else []
+
+
+def between_of(head: str, refs_phrase: str, cands: list[ObjectInfo], resolve_all: Callable[[str], list[ObjectInfo]]) -> list[ObjectInfo]:
+    """Of ``cands``, those between the two objects ``refs_phrase`` names; "the other two" are the
+    two others that ``head`` names ("the cube in between the other two": the middle cube);
+    ``resolve_all`` gives every object a phrase may mean."""
+    if re.fullmatch(r"(?:the )?other (?:two|2|ones)(?: \w+)?", refs_phrase):
+        kin = resolve_all(head)
+        pairs = {o.name: [k for k in kin if k.name != o.name] for o in kin}
+    else:
+        refs = resolve_all(refs_phrase)
+        pairs = {o.name: [r for r in refs if r.name != o.name] for o in cands}
+    return [o for o in cands if len(pairs.get(o.name, [])) == 2
+            and relations.between(pts(o), pts(pairs[o.name][0]), pts(pairs[o.name][1])).ok]
 
 
 def nth(k: int) -> str:

@@ -21,7 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, vocab
-from realsim.planner.attributes import colors_of, left_order, neighbour_colour_pick, ranked_by_size, relation_holds, usual_colour_pick
+from realsim.planner.attributes import between_of, colors_of, left_order, neighbour_colour_pick, ranked_by_size, relation_holds, usual_colour_pick
 from realsim.planner.ordering import EXTREMES, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -206,7 +206,7 @@ class Resolver:
             return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False, loose=loose)
         text = re.sub(r"^both (?:of )?(?=.+\s+and\s+)", "", text)  # "both the banana and the strawberry": a list
         parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
-        if len(parts) > 1 and allow_plural:
+        if len(parts) > 1 and allow_plural and not re.search(r"\bbetween\b", parts[0]):  # "the cube between X and Y" is one
             out: list[ObjectInfo] = []
             for p in parts:  # "the left can and the other one": the other of those named before it
                 for o in self.resolve(p, Context(out) if out and re.match(r"(?:the )?other\b", p) else ctx, want=want, exclude=exclude):
@@ -243,6 +243,9 @@ class Resolver:
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
         located = False
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |sitting |standing )?(?:in )?between (.+)", text)
+        if m:  # "the cube between the red and the green one", "the cube in between the other two"
+            text, cands, located = m.group(1), between_of(m.group(1), m.group(2), cands, self._all), True
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(closest|nearest|closer|nearer)(?: to)?|(?:farthest|furthest|further|farther)(?: away)? from)"
                          r" (?!(?:to )?(?:me|you|the robot)$)(.+)", text)
         if m:
@@ -363,6 +366,10 @@ class Resolver:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
                              "say which one (colour, size, left/right, or the body name)")
         return found
+
+    def _all(self, phrase: str) -> list[ObjectInfo]:
+        """Every object ``phrase`` may mean."""
+        return self.resolve(phrase, Context(), allow_plural=True, loose=True)
 
     def _distinguish(self, objs: list[ObjectInfo]) -> list[str]:
         """Each candidate with its colour, size and position word among the others."""
