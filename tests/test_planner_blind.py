@@ -36,6 +36,8 @@ def calls(sentence: str, objects: list[ObjectInfo] = CLUTTER) -> list[str]:
     ("see the two cans? put the one on the right in the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
     ("pick up the cube in between the other two", ["grasp('obj4_cube')"]),
     ("pick up the thing between the bowl and the banana", ["grasp('obj4_cube')"]),
+    ("lift the bowl up like a trophy", ["grasp('obj6_bowl')"]),
+    ("push the bowl left like a bit", ["push('obj6_bowl', 'left', 0.05)"]),
 ])
 def test_blind_batch_classes(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines

@@ -30,6 +30,7 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     text = re.sub(r"\b(\w+)(?: \1\b)+", r"\1", text)  # "bowl bowl", "no no"
     text = re.sub(r"\b((?:\w+ ){1,3}\w+)(?:\s*[,-]\s*\1\b)+", r"\1", text)  # "the blue box, the blue box"
     text = homophones(text, verb)
+    text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike an? (?!(?:bit|little|lot|tad|touch|few|couple)\b)\w+(?=$|[\s,.;!?])(?! (?:on|in|into|next|to|behind)\b)", " ", text)  # "like a trophy": how
     text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike\b(?! (?:to|this|that)\b)", " ", text)  # "put it like right there"
     text = " ".join(text.split())
     for _ in range(4):
