@@ -66,3 +66,15 @@ def test_a_push_that_would_carry_an_object_stacked_on_it_is_refused_before_movin
     res = robot.push("base_box", (1.0, 0.0), 0.05)
     assert not res.success and "top_box rests on base_box" in res.reason
     assert np.allclose(data.qpos, start)  # refused before anything moved
+
+
+def test_a_push_that_would_take_the_object_over_the_table_edge_is_refused_before_moving() -> None:
+    near_edge = box_object(1, "edge_box", (0.1, 0.29), (0.05, 0.05, 0.06), mass=0.2)  # its far face 3.5 cm from the table's +y edge
+    model, data = loaded(build([near_edge]))
+    robot = Robot(model, data)
+    start = data.qpos.copy()
+    assert robot._stays_on("edge_box", robot.object_points("edge_box"), np.zeros(2))
+    assert not robot._stays_on("edge_box", robot.object_points("edge_box"), np.array([0.0, 0.06]))  # its centre past the edge
+    res = robot.push("edge_box", (0.0, 1.0), 0.10)  # even the shortest stroke within the tolerance (7.2 cm) ends over the edge
+    assert not res.success and "over the edge of what it stands on" in res.reason
+    assert np.allclose(data.qpos, start)

@@ -28,6 +28,9 @@ class StrokeParams:
     angles: tuple[float, ...] = (0.0, 0.2, -0.2, 0.35, -0.35)  # rad off the asked direction
     shorter: tuple[float, ...] = (0.4, 0.7)  # of the along tolerance a stroke may fall short by
     within: float = 0.8  # of the sideways tolerance a stroke may use (the object drifts a little more)
+    support_fraction: float = 0.5  # of the way from the footprint's centre to its edge that must stay over its support at the stroke's end
+    level_probe: float = 0.01  # m above the object's bottom its support is looked for from
+    level_tol: float = 0.01  # m: the surface there is the one it stands on (not the floor past a table's edge)
 
 
 def _turn(d: np.ndarray, angle: float) -> np.ndarray:

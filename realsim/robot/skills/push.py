@@ -17,6 +17,7 @@ from realsim.planner import relations
 from realsim.robot.grasps import frame_from, rotate_about
 from realsim.robot.ik import IKResult
 from realsim.robot.motion import Motion, PathBlocked, Solve
+from realsim.robot.placing import footprint_ring
 from realsim.robot.pushing import StrokeParams, first_contact, strokes
 from realsim.robot.queries import box_centre, box_centre_3d
 from realsim.robot.reach import ReachBound
@@ -73,6 +74,13 @@ class PushSkill(Motion):
                 return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would shove "
                                     f"{self._owner_of_xy(obj, others[hit[1]], bottom)} (after {hit[0] * 100:.0f} cm), "
                                     "and no shorter or askew push within the asked move's tolerance clears it", values={"moved": 0.0})
+            judged = self._stays_on(obj, pts, np.zeros(2))  # it stands level on one surface now: where the stroke leaves it can be judged
+            on_support = [(u, length) for u, length in options if not judged or self._stays_on(obj, pts, u * length)]
+            if not on_support:
+                return ActionResult("push", False, f"pushing {obj} {distance * 100:.0f} cm would take it over the edge of what it "
+                                    "stands on, and no shorter or askew push within the asked move's tolerance keeps it there",
+                                    values={"moved": 0.0})
+            options = on_support
             self._gripper(0.0)
             pushed = {obj, *riding}
             failures: list[PlanFailure] = []
@@ -103,6 +111,15 @@ class PushSkill(Motion):
             verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
+
+    def _stays_on(self, obj: str, pts: np.ndarray, shift: np.ndarray) -> bool:
+        """Whether ``obj`` (points ``pts``) moved by the xy ``shift`` still stands on the surface it
+        stands on now under its footprint's inner ring (its centre of mass well over its support)."""
+        sp = self.stroke
+        bottom = float(pts[:, 2].min())
+        ring = footprint_ring(pts, frac=sp.support_fraction) + box_centre(pts) + shift
+        floors = self.geometry.surfaces_below(ring, bottom + sp.level_probe, exclude=obj)
+        return bool(np.all(np.abs(floors - bottom) < sp.level_tol))
 
     def _plan_stroke(self, pts: np.ndarray, z: float, d: np.ndarray, distance: float, pushed: set[str],
                      solved: dict[tuple[float, ...], IKResult]) -> tuple[np.ndarray, list[np.ndarray]]:
