@@ -229,7 +229,7 @@ SUITE: list[tuple[str, str, str]] = [
     # --- a cluttered converted scan (mOSD test55, 15 objects named by colour and shape)
     ("scan55", "pick up the red box", "lift red_box"),
     # 'the grey object' was obj12_grey_object at (0.03, 0.35) in builds up to 2792723; builds since join it with the
-    # white part beside it into one open container, obj13_white_cylinder (named white, measured blue): no object of
+    # white part beside it into one open container, obj13_white_bowl (obj13_white_cylinder before 52346e3; named white, measured blue): no object of
     # today's build is grey by name, three are by measurement, so the phrase names no one object: refuse.
     ("scan55", "grab the grey thing", "refuse"),
     ("scan55", "put the red box next to the grey object", "refuse"),
