@@ -139,6 +139,19 @@ def test_grasp_lift_place_in_zone(scene: Scene) -> None:
     assert data.time < 40.0
 
 
+def test_the_pads_hold_a_light_part_without_sinking_into_it(scene: Scene) -> None:
+    """A 200 g, 50 mm box lifted and held still: the pads sink less than 0.2 mm into each face
+    (firm pads: their contacts' own stiffness, not the object's mass-scaled default)."""
+    model, data = loaded(scene)
+    pads = [g for g in range(model.ngeom) if model.geom_bodyid[g] in (model.body("panda/left_finger").id, model.body("panda/right_finger").id)
+            and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_BOX]
+    assert len(pads) == 10 and all(model.geom_solmix[g] > 100 and model.geom_solref[g][0] < 0.02 for g in pads)
+    robot = Robot(model, data)
+    assert robot.grasp("box_a").success
+    robot._wait(1.0)
+    assert (0.05 - robot.gripper_opening()) / 2 < 2e-4, robot.gripper_opening()  # 0.35 mm at the default contact, 0.05 mm with the pads' own
+
+
 def test_not_graspable_object_is_reported(scene: Scene) -> None:
     model, data = loaded(scene)
     robot = Robot(model, data)

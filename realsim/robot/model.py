@@ -49,6 +49,13 @@ class GripperParams:
     damping: float = 60.0  # N s/m (Menagerie: 10)
     max_force: float = 70.0  # N (Franka Hand: 70 N continuous)
     closed_target: float = -0.02  # m of tendon the closed command aims past closed: a thin part is squeezed too (~19 N a pad at 1 cm, not ~4 N)
+    # the fingertip pads' contacts: MuJoCo's contact stiffness is per unit of the contact's effective
+    # mass, so at the default 0.02 s a light part squeezed at tens of N lets the pads sink millimetres
+    # into it (pinching a 178 g pitcher's handle, the pads closed from 9.8 to 4.4 mm apart while it was
+    # carried, and it slipped out); the Franka's firm rubber pads on rigid fingers give well under a millimetre.
+    pad_solref: tuple[float, float] = (0.01, 1.0)  # s, damping ratio: 4x stiffer, still 5 steps of 2 ms
+    pad_solimp: tuple[float, float, float, float, float] = (0.95, 0.99, 0.001, 0.5, 2.0)  # as the Menagerie's finger coupling
+    pad_solmix: float = 1000.0  # the pads' solref/solimp govern their contacts (friction stays the larger of the two geoms')
 
 
 @dataclass(frozen=True)
@@ -147,6 +154,10 @@ def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec,
     for body in spec.bodies:
         if body.name != "world":
             body.gravcomp = 1.0
+    for finger in ("left_finger", "right_finger"):
+        for geom in spec.body(finger).geoms:
+            if geom.classname.name.startswith("fingertip_pad_collision"):
+                geom.solref, geom.solimp, geom.solmix = list(gripper.pad_solref), list(gripper.pad_solimp), gripper.pad_solmix
     act = spec.actuator(GRIPPER_ACTUATOR)
     act.gainprm[0] = (0.04 - gripper.closed_target) * gripper.stiffness / 255.0
     act.biasprm[0] = gripper.closed_target * gripper.stiffness
