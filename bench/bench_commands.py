@@ -547,6 +547,11 @@ def bench_plans(args: argparse.Namespace) -> int:
             plan = make_planner(args.planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw())
             acted = (set(plan.calls.acted_on()) if plan.calls is not None
                      else set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program)))
+            # "at X" alone (X kept where it is): met by never acting on X, so X need not be acted on
+            still = {resolve_key(p.split()[1], sim) for p in spec.split(";") if p.split()[:1] == ["at"]}
+            still -= acted
+            movers = movers - still
+            goals = [g for g in goals if getattr(g, "obj", None) not in still]
             ok, got = spec != "refuse" and acted == movers, ", ".join(sorted(acted)) or "nothing"
             missing = sorted(g.describe() for g in goals if not any(_same_goal(g, h) for h in plan.goals))
             if ok and missing:  # the right objects, but another relation, side, direction or distance

@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import speech
+from realsim.planner import casual, speech
 from realsim.planner.vocab import singular
 
 FILLERS = (
+    r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
     r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr",
@@ -23,9 +24,10 @@ FILLERS = (
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
-    r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
+    r"for now", r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
-    r"if that works", r"many thanks", r"thanks a lot",
+    r"if that works", r"many thanks", r"thanks a lot", r"cheers", r"ta", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one)",
+    r"good (?:lad|boy|girl|robot)", r"be a (?:love|dear|darling|sweetheart|pal|mate|star|doll|champ) and", r"for a (?:sec|second|moment|minute|bit)",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
@@ -38,7 +40,7 @@ _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|car
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
-            "w": "with", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
+            "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -112,10 +114,12 @@ def clean(command: str) -> str:
     text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
                   r"\1 the robot", text)  # the robot's base
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
+    text = re.sub(r"\bthe ((?!(?:one|furthest|farthest|most)\b)[a-z]+(?: [a-z]+)?) (?:furthest|farthest|most) (?:to the |on the )(left|right)\b", r"the \2most \1", text)
     text = re.sub(r"\b(?:(?:the )?(?:furthest|farthest|most) (?:to the |on the )?|(?:on |to )?the (?:far|very) )(left|right)\b", r"the \1most", text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
+    text = casual.described(casual.light_verb(text))
     text = re.sub(r"\b(?:your|my|the robot s|the robots) (left|right)\b", r"the \1", text)  # the robot faces the table as the speaker does
     text = re.sub(r"\bi like (?:you )?to\b", " ", text)  # "i'd like you to" once "'d" is gone
     text = re.sub(r"\bso (?:that )?(?:i|we|you|everyone|the class|the kids|they|people)(?: all)? (?:can|could|may|will) (?:see|watch|look at|check)"
@@ -156,9 +160,9 @@ def split_command(command: str) -> list[str]:
     verb = verb_re.match(parts[1]) if topic else None
     statement = re.search(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b", topic)  # an aside
     if topic and not statement and not verb_re.match(topic) and not _has_relation(_bare(topic)) and not _AVOID.match(topic):
-        if verb and re.search(r"\b(?:it|them)\b", parts[1]):
+        if verb and re.search(r"\b(?:it|them|th(?:at|is) one)\b", parts[1]):
             # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
-            parts = [re.sub(r"\b(?:it|them)\b", topic, parts[1], count=1), *parts[2:]]
+            parts = [re.sub(r"\b(?:it|them|th(?:at|is) one)\b", topic, parts[1], count=1), *parts[2:]]
         elif verb and (_relation_start(parts[1][verb.end():].strip())  # "the banana, put in the bowl": the verb's object
                        or re.match(r"(?:\d+|a bit|a little|slightly|left|right|forward|back|up|down)\b", parts[1][verb.end():].strip())):
             parts = [f"{verb.group(0)} {topic} {parts[1][verb.end():].strip()}", *parts[2:]]
@@ -211,7 +215,7 @@ def _run_on(text: str) -> str:
 
 
 _SAYS = re.compile(r"(?:my|our|i|we|you|they|he|she|this|these|those|there)\b.*\b(?:is|are|arent|isnt|was|were|am|have|has|had|can|cant"
-                   r"|used to|looks?|seems?)\b")
+                   r"|used to|looks?|seems?|will|shall|gonna)\b")
 _AXIS = {"+x": "forward", "-x": "back", "+y": "left", "-y": "right"}
 
 
@@ -227,12 +231,20 @@ _AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|t
                     r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing)?(?: over| down| into)? (.+)$")
 
 
+_KEEP_STILL = re.compile(r"(?:but |and |while )?(?:(?:leave|keep) (.+?) (?:exactly |just |right )?(?:where (?:it|they) (?:is|are|was|were|sits?|stands?)(?: now)?"
+                         r"|alone|as (?:it|they) (?:is|are)|in (?:its|their) (?:place|spot)|in place|be|untouched|still)"
+                         r"|(?:keep|stay) (?:clear|away) (?:of|from) (.+))")
+
+
 def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
     """"don't put the mug in the bowl", "not the banana": what is not to be done keeps its object
     still ("dont touch the mug"); it never becomes the action."""
     m = re.match(r"(?:but )?not (.+)$", part)
     if m and not verb_re.match(m.group(1)):
         return f"dont touch {m.group(1)}"
+    m = _KEEP_STILL.fullmatch(part)
+    if m and not re.fullmatch(r"(?:it|them|that|this|those|these)", m.group(1) or m.group(2)):
+        return f"dont touch {m.group(1) or m.group(2)}"  # "leave the mug where it is", "keep clear of the bowl"
     m = re.match(r"(?:please )?(?:dont|don t|do not|never|no need to)\s+(.+)$", part)
     if not m or _AVOID.match(part):
         return part
@@ -363,6 +375,8 @@ def rephrase(clause: str) -> str:
     m = re.match(rf"^(.+?) (?:{_MODAL} )?(?:be|end up|stay|go)? ?(?:right )?back (?:where (?:it|they) (?:is|are|was|were|started)(?: now)?|in (?:its|their) (?:place|spot))$", c)
     if m:  # "at the end it should be right back where it is now"
         return f"put {m.group(1)} back"
+    if not _VERB_ANYWHERE.search(c) and (said := casual.terse(c, _has_relation(c))):  # "cereal box forward 10cm", "all cans by bowl"
+        return said
     m = _GOES.match(c)
     if m and _relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"

@@ -38,7 +38,6 @@ HELP = (
 )
 
 
-
 class RulePlanner:
     """The offline planner; its calls are the same primitives Claude's programs use."""
 
@@ -48,8 +47,6 @@ class RulePlanner:
         calls, goals = parse_calls(command, scene_objects, robot_yaw)
         program = Program(tuple(calls), command)
         return Plan(program=program.source(), goals=goals, planner=self.name, calls=program)
-
-
 
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
@@ -124,8 +121,8 @@ def _disturbed(goal: Goal, later: list[Step]) -> bool:
 
 def _clause(clause: str, p: Parser) -> Step:
     c = " ".join(clause.split())
-    if re.fullmatch(r"(?:(?:go|return|move|come|head|get)(?: back)?(?: to)?(?: (?:the|your))? (?:home|start|starting|rest|resting|initial|ready)"
-                    r"(?: position| pose| posture| point| spot)?|reset(?: yourself| the arm| arm)?|home(?: it| the arm| yourself)?|(?:go back and )?(?:have|take) a (?:rest|break)|go back|return|retract(?: the arm)?"
+    if re.fullmatch(r"(?:(?:go|return|move|come|head|get)(?: back)?(?: to)?(?: (?:the|your))? (?:home|start|starting|rest|resting|initial|ready|normal|usual|original|default|neutral)"
+                    r"(?: position| pose| posture| point| spot| place)?|reset(?: yourself| the arm| arm)?|home(?: it| the arm| yourself)?|(?:go back and )?(?:have|take) a (?:rest|break)|go back|return|retract(?: the arm)?"
                     r"|(?:go|move|return|come) home)", c):
         return Step([Call("go_home")], [AtHome()])
     m = re.fullmatch(r"(open|close|shut) (?:the |your )?(?:gripper|hand|fingers|claw)|release(?: it| that| the object)?|let (?:it )?go(?: of it)?|drop it|let go of (.+)", c)
@@ -350,7 +347,8 @@ def _beside_measure(obj_phrase: str, kind: str) -> str:
 
 def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) -> ObjectInfo:
     """The one object ``target_phrase`` names; "one" stands for the moved object's noun ("put the
-    green cube beside the red one": the red cube), else for any object."""
+    green cube beside the red one": the red cube), else for any object; of two it could name, one
+    being the moved object, the other."""
     ctx = Context(p.ctx.last, p.ctx.place)
     head = _head_noun(obj_phrase, p)
     if head and re.search(r"\bone$", target_phrase) and not re.search(r"\bother one$", target_phrase):
@@ -358,7 +356,13 @@ def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) ->
             return p.resolver.resolve(re.sub(r"\bone$", head, target_phrase), ctx, want=want, allow_plural=False)[0]
         except InputError:
             pass
-    return p.resolver.resolve(target_phrase, ctx, want=want, allow_plural=False)[0]
+    try:
+        return p.resolver.resolve(target_phrase, ctx, want=want, allow_plural=False)[0]
+    except InputError:  # a thing is never placed by itself: "put the mug by the round container" (bowl or mug)
+        moved = p.resolver.resolve(obj_phrase, ctx, loose=True) if obj_phrase else []
+        if len(moved) != 1:
+            raise
+        return p.resolver.resolve(target_phrase, ctx, want=want, exclude=[moved[0].name], allow_plural=False)[0]
 
 
 def _head_noun(phrase: str, p: Parser) -> str | None:

@@ -39,6 +39,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     # brand names people use for the thing
     "spam": ("meat",), "clorox": ("bleach",), "coke": ("soda", "can"), "cheezit": ("cracker",), "jello": ("gelatin",),
     "lego": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",), "puck": ("cylinder", "disk", "disc"),
+    "disc": ("cylinder", "puck"), "disk": ("cylinder", "puck"),
 }
 # words naming a kind of object rather than one: they select by the size table's record
 KINDS: dict[str, tuple[str, ...]] = {

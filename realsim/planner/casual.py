@@ -1,0 +1,59 @@
+"""Casual speech, before it is read as a command: a light verb and its noun ("give the cube a
+wee shove" -> "shove the cube a bit"), a particle after its object ("pick the mug up"), and terse
+verbless commands ("cereal box forward 10cm", "all cans by bowl"), and a thing named by its look or
+its use ("the tin-looking thing": the tin; "the thing you drink out of": the cup)."""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["described", "light_verb", "terse"]
+
+_NP = r"(?:the|that|this|these|those|a|an|my|your|it|them|both|all)\b(?:(?!\b(?:and|then|up|down|in|into|on|onto)\b)[^,.;])*?"
+_AS_PUSH = {"tap": "nudge", "poke": "nudge"}
+_SMALL_STROKE = re.compile(r"\b(?:wee|little|small|gentle|slight|tiny|light|soft|short)\b")  # a small stroke: a bit
+_STROKE = r"(?:(?:wee|little|small|gentle|quick|slight|tiny|light|good|firm|soft|bit of a|short)\s+)*"
+
+
+def light_verb(text: str) -> str:
+    """A light verb and its noun as the verb they mean ("give the cube a shove" -> "shove the
+    cube"), and a particle after the object back by its verb ("pick the mug up" -> "pick up the mug")."""
+    text = re.sub(rf"\bgive ({_NP}) an? ({_STROKE})(shove|nudge|push|tap|poke|bump|scoot|budge|slide)\b(?=([^,.;]*))",
+                  lambda m: f"{_AS_PUSH.get(m.group(3), m.group(3))} {m.group(1)}"
+                  + (" a bit" if _SMALL_STROKE.search(m.group(2)) and not re.search(r"\d|\b(?:cm|mm|centimet|millimet|inch)", m.group(4)) else ""), text)
+    return re.sub(rf"\b(pick|lift|hold|raise) ({_NP}) up\b", r"\1 up \2", text)
+
+
+_WAY = r"(?:left|right|forwards?|backwards?|back|ahead|away|closer|nearer)"
+_HOW_FAR = r"(?:(?:by )?(?:about |around |roughly )?(?:\d+(?:\.\d+)?|a|one|two|three|four|five|six|seven|eight|nine|ten|twenty) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)|a bit|a little(?: bit)?|slightly)"
+# a bare object, a way and how far: "cereal box forward 10cm", "the mug 5 cm left"; never "the can on the left"
+_TERSE_PUSH = re.compile(rf"((?:the |a |that |this )?[a-z]+(?: [a-z]+){{0,3}}?(?<!\bthe)(?<!\bto)(?<!\bon)(?<!\bat)(?<!\bof)(?<!\bfar))"
+                         rf" ({_WAY}(?: {_HOW_FAR})?|{_HOW_FAR} (?:to the )?{_WAY})")
+
+
+def terse(clause: str, has_place: bool) -> str | None:
+    """The command a verbless clause means, or None: an object, a way and how far ("bowl left
+    6cm" -> "move bowl left 6cm"); an object "by" another with no other place word ("all cans by
+    bowl" -> "put all cans by bowl"). ``has_place``: whether the clause already names a place."""
+    m = _TERSE_PUSH.fullmatch(clause)
+    if m:
+        return f"move {m.group(1)} {m.group(2)}"
+    if not has_place and re.fullmatch(r"(.+?) by (?!\d|about |around |roughly |a |hand\b)(.+)", clause):
+        return f"put {clause}"
+    return None
+
+
+_THING = r"(?:thing|one|object|item)"
+# what people do with a kind of thing -> the kind (its synonyms and kinds in vocab do the rest)
+_USES = ((r"(?:drink|sip) (?:out of|from)|drink (?:coffee|tea|water) (?:out of|from|in)", "cup"),
+         (r"eat (?:out of|from|off)|eat (?:cereal|soup) (?:out of|from|in)", "dish"),
+         (r"write with|draw with", "marker"), (r"(?:drink|sip)", "drink"))
+
+
+def described(text: str) -> str:
+    """A thing named by its look ("the tall white tin-looking thing" -> "the tall white tin") or by
+    its use ("the thing with the handle you drink out of" -> "the cup")."""
+    text = re.sub(rf"\b([a-z]+)(?:[- ](?:looking|shaped)|-like) {_THING}\b", r"\1", text)
+    for use, kind in _USES:
+        text = re.sub(rf"\b{_THING}(?: with (?:a|the) handle)? (?:that |which )?(?:you|we|i|people|one) (?:can |could |would )?(?:{use})\b", kind, text)
+    return text
