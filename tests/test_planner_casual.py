@@ -32,6 +32,10 @@ def calls(sentence: str) -> list[str]:
     ("put the green cube in the bowl and leave the red cube where it is", ["place_in('obj5_cube', 'obj6_bowl')"]),
     ("move the banana next to the bowl but keep clear of the strawberry", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
     ("put the banana in the bowl and leave it there", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("put the banana in the bowl, thanks heaps mate", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("put the banana in the bowl. thank you ever so much", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("lift the banana but leave the bowl alone", ["grasp('obj7_banana')"]),
+    ("stack the blue cube on the green one, there's a good robot", ["place_on('obj4_cube', 'obj5_cube')"]),
 ])
 def test_casual_classes(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines
@@ -40,11 +44,13 @@ def test_casual_classes(sentence: str, lines: list[str]) -> None:
 def test_swap_around() -> None:
     got = calls("could you be able to swap the banana and the strawberry around")
     assert got[1:] == ["place('obj8_strawberry', [0.65, 0.0, 0.02])", "place('obj7_banana', [0.25, 0.3, 0.02])"]
+    assert calls("swap the two cans round")[1:] == ["place('obj2_soda_can', [0.4, 0.2, 0.06])", "place('obj1_soda_can', [0.4, -0.1, 0.06])"]
 
 
 @pytest.mark.parametrize("sentence", [
     "put the green cube in the bowl and leave the green cube where it is",  # moves what it says to keep still
     "give the banana a shove, cheers, and leave the banana alone",
+    "put the strawberry in the bowl but leave the strawberry where it is",
     "the banana on the left",  # a place, no command
     "cheers mate",  # a closing alone
 ])

@@ -12,6 +12,7 @@ from realsim.planner import casual, speech
 from realsim.planner.vocab import singular
 
 FILLERS = (
+    r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
@@ -26,7 +27,7 @@ FILLERS = (
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"for now", r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
-    r"if that works", r"many thanks", r"thanks a lot", r"cheers", r"ta", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one)",
+    r"if that works", r"many thanks", r"thanks a lot", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one|robot|bot)",
     r"good (?:lad|boy|girl|robot)", r"be a (?:love|dear|darling|sweetheart|pal|mate|star|doll|champ) and", r"for a (?:sec|second|moment|minute|bit)",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
@@ -147,7 +148,7 @@ def split_command(command: str) -> list[str]:
     text = _in_order(clean(command))
     text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s |you )?done"
                   r"|when (?:that s |you re |you )?(?:done|finished)|(?:but )?(?:in|at|by) the end)\b", ",", text)
-    text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to)\b)", ", ", text)  # "..., but don't put the mug in it"
+    text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to|leave|keep|stay)\b)", ", ", text)  # "..., but don't put the mug in it"
     text = _run_on(text)
     parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]

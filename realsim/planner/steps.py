@@ -48,7 +48,7 @@ class Parser:
 
 
 SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|locations) of| where| places of)?"
-                  r" (.+?)(?: (?:and|with|for) (.+?))?(?: (?:are|is|around|over|places|positions|spots|sit))*")
+                  r" (.+?)(?: (?:and|with|for) (.+?))?(?: (?:are|is|around|round|over|places|positions|spots|sit))*")
 EACH_OTHER = re.compile(r"(?:each other|one another|one other|together)")
 
 
