@@ -10,6 +10,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from realsim.errors import InputError
 from realsim.planner import relations
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, SIZE_AXIS, TYPICAL_COLORS, name_words, norm
@@ -93,6 +94,21 @@ def ranked_by_size(objs: list[ObjectInfo], word: str) -> list[ObjectInfo]:
     """``objs`` from the most to the least ``word`` (tall: height; long: extent; else volume):
     "the biggest" is the first, "the two smallest" the first two by "smallest"."""
     return sorted(objs, key=lambda o: _volume(o, word), reverse=word in BIG)
+
+
+SIZE_MARGIN = 0.15  # sizes closer than this (relative) are not told apart by eye
+
+
+def size_pick(objs: list[ObjectInfo], word: str, k: int) -> list[ObjectInfo]:
+    """The ``k`` most ``word`` of ``objs``; :class:`InputError` when the ``k``-th and the next do
+    not differ clearly in the size compared (three equal cubes have no "bigger" one)."""
+    ranked = ranked_by_size(objs, word)
+    if len(ranked) > k and re.search(r"(?:er|est)$", word):  # a comparison, not a kind ("the tall can on the left")
+        a, b = _volume(ranked[k - 1], word), _volume(ranked[k], word)
+        if abs(a - b) < SIZE_MARGIN * max(a, b, 1e-9):
+            close = [o.name for o in ranked if abs(_volume(o, word) - a) < SIZE_MARGIN * max(a, 1e-9)]
+            raise InputError(f"{word!r}: {', '.join(close)} are about the same size; say which one another way")
+    return ranked[:k]
 
 
 def relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, forward: np.ndarray, left: np.ndarray) -> bool:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+from realsim.errors import InputError
 from realsim.planner import casual, speech
 from realsim.planner.vocab import singular
 
@@ -317,11 +318,15 @@ def _partitive(parts: list[str]) -> list[str]:
     to you": "one" is a soda (a can), and the opening names no object of its own."""
     if len(parts) < 2:
         return parts
-    m = re.fullmatch(r"(?:of|out of|among|from among|(?:you )?see|look at|notice) (?:all )?(?:the |these |those )?(?:two |three |four |both )?([a-z ]+)", parts[0])
+    m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice) ((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
+    restricts = bool(m) and m.group(1) in ("of", "out of", "among", "from among", "between") and bool(m.group(2))
+    if m and restricts and (" and " in f" {m.group(3)} " or not re.search(r"\bone\b", parts[1])):
+        # "of the marker and the meat can, ...", "out of the yellow things, take the biggest": never chosen among everything
+        raise InputError(f"{parts[0]!r}: cannot read which ones to choose among; name the one you mean ('the biggest yellow object')")
     if not m or not re.search(r"\bone\b", parts[1]):
         return parts
-    noun = singular(m.group(1).split()[-1])
-    return [re.sub(r"\bone\b", noun, parts[1], count=1), *parts[2:]]
+    words = m.group(3).split()
+    return [re.sub(r"\bone\b", " ".join([*words[:-1], singular(words[-1])]), parts[1], count=1), *parts[2:]]
 
 
 def _has_relation(text: str) -> bool:

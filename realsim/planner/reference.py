@@ -21,7 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, vocab
-from realsim.planner.attributes import between_of, colors_of, left_order, neighbour_colour_pick, ranked_by_size, relation_holds, usual_colour_pick
+from realsim.planner.attributes import between_of, colors_of, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
 from realsim.planner.ordering import EXTREMES, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -350,7 +350,7 @@ class Resolver:
             found = exact  # the scene's own name for it, word for word ("the red object" beside a red box)
         # size and position
         if sizes and len(found) > 1:
-            found = ranked_by_size(found, sizes[-1])[: quantity or 1]
+            found = size_pick(found, sizes[-1], quantity or 1)
         if order is not None and len(found) > 1:
             found = ordered(found, order, ordinal, phrase, self.robot_xy, self._distinguish)
         elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:

@@ -14,7 +14,7 @@ import re
 from realsim.errors import InputError
 from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
-__all__ = ["object_first", "repair"]
+__all__ = ["instead", "object_first", "reasons", "repair"]
 
 _MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
@@ -33,6 +33,7 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike an? (?!(?:bit|little|lot|tad|touch|few|couple)\b)\w+(?=$|[\s,.;!?])(?! (?:on|in|into|next|to|behind)\b)", " ", text)  # "like a trophy": how
     text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike\b(?! (?:to|this|that)\b)", " ", text)  # "put it like right there"
     text = " ".join(text.split())
+    text = instead(reasons(text, verb, relation))
     for _ in range(4):
         step = _one_repair(text, verb, relation)
         if step == text:
@@ -135,3 +136,48 @@ def object_first(clause: str, verb: re.Pattern[str]) -> str | None:
         head = re.sub(r"^(?:please\s+)?|\s+you$", "", head)
         return f"{m.group(0).strip()} {head} {tail}".strip()
     return None
+
+
+# a reason or purpose after a command: talk about why, never where ("..., it's in my way when I reach for the banana")
+_REASON = re.compile(r"\s*,?\s*\b(?:because|cause|cos|coz|since|so that|so(?= (?:i|we|you|it|they|he|she|everyone|the|there|that|my|your|nothing|no)\b))\b[^.;!?]*"
+                     r"|\s*,\s*(?:it's|it is|its|that's|thats|that is|they're|they are|when (?:i|we|you|it|they))\b[^.;!?]*")
+
+
+def reasons(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
+    """``text`` without a reason or purpose clause ("because ...", "since ...", "so I can ...",
+    ", it's ...", ", when I ...") that follows, in the same sentence, a command whose place is
+    already said: what such a clause names is never the place or the object."""
+    verb_any = re.compile(rf"(?<![a-z]){verb.pattern}")
+    place_any = re.compile(rf"(?<![a-z]){relation.pattern}\s*(?:the|a|an|my|your|that|this|these|those|each other|one another|it|them|me|you)\b")
+    out, start = [], 0
+    for sentence in re.finditer(r"[^.;!?]+[.;!?]*", text):
+        body = sentence.group(0)
+        for m in _REASON.finditer(body):
+            head = body[: m.start()]
+            if verb_any.search(head) and place_any.search(head):
+                body = head + body[m.end():]
+                break
+        out.append(text[start: sentence.start()] + body)
+        start = sentence.end()
+    return "".join(out) + text[start:]
+
+
+_INSTEAD = re.compile(r"(?:^|(?<=[.,;!?]))\s*(?:(?:actually|no|sorry|wait|oh|um|uh|hmm|well|ok|okay)\s*,?\s*)*"
+                      r"(?:(?:make|do) (?:that|it)|i meant?|use|take)?\s*((?:the|a|an|that|this) [a-z' -]+?) instead of "
+                      r"(?:the |a |an |that |this )?([a-z' -]+?)\s*(?=$|[.!?;,])")
+
+
+def instead(text: str) -> str:
+    """A repair "(make that) X instead of Y" said after the command: Y replaced by X where the
+    command named it; when Y was not named exactly once the speaker is asked."""
+    m = _INSTEAD.search(text)
+    before = text[: m.start()].strip(" ,") if m else ""
+    if not m or not before:
+        return text
+    said, old = m.group(1).strip(), m.group(2).strip()
+    hits = list(re.finditer(rf"\b(?:(?:the|a|an|that|this) )?{re.escape(old)}\b", before))
+    if len(hits) != 1:
+        raise InputError(f"{text!r}: '{said} instead of {old}': the command names '{old}' {len(hits)} times, not once; "
+                         "say the whole command again")
+    h = hits[0]
+    return f"{before[: h.start()]}{said}{before[h.end():]}{text[m.end():]}"
