@@ -199,7 +199,9 @@ SUITE: list[tuple[str, str, str]] = [
     ("textblocks", "push the plate 5 cm to the right", "moved plate right 0.05"),
     ("textblocks", "put the blue cube next to the red cube", "next cube@blue cube@red"),
     ("textblocks", "put the green cube to the right of the red one", "right cube@green cube@red"),
-    ("textblocks", "lift the biggest cube", "lift cube@blue"),
+    # the three text cubes are 51.1, 48.2 and 46.3 mm a side (red, blue, green): too alike to call one the biggest
+    # (this goal said blue, read from rotation-inflated boxes; red is the biggest in truth): asked about since bde7f8c
+    ("textblocks", "lift the biggest cube", "refuse"),
     ("textblocks", "pick up the cube", "refuse"),
     ("textblocks", "grab the yellow cube", "refuse"),
     ("textblocks", "put the second cube from the left on the plate", "on cube@blue plate"),
