@@ -345,6 +345,23 @@ VERB_START = re.compile(rf"(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, 
 _VERB_ANYWHERE = re.compile(rf"(?<![a-z]){VERB_START.pattern}")
 _RELATION_AT = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0])) if w not in ('by', 'over'))})\b")
 
+# Statements and passives that say what should happen, with the imperative each means ({0}, {1}: its groups).
+_STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
+    # "could the can be picked up"
+    (re.compile(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:picked up|lifted|raised)$"), "pick up {0}"),
+    # "could the mug be moved into the bowl"
+    (re.compile(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:moved|pushed|shifted|slid|put|placed|set|dropped|stacked|transferred)\b\s*(.+)$"),
+     "move {0} {1}"),
+    # "the box needs to be moved 5 cm forward"
+    (re.compile(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"), "move {0} {1}"),
+    # "the red can and the white can should have traded places"
+    (re.compile(rf"^(.+?) (?:{_MODAL} )?(?:have )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange) (?:places|positions|spots)$"), "swap {0}"),
+    # "at the end it should be right back where it is now"
+    (re.compile(rf"^(.+?) (?:{_MODAL} )?(?:be|end up|stay|go)? ?(?:right )?back (?:where (?:it|they) (?:is|are|was|were|started)(?: now)?|in (?:its|their) (?:place|spot))$"),
+     "put {0} back"),
+)
+
+
 
 def rephrase(clause: str) -> str:
     """The imperative a clause without a leading verb means, or the clause unchanged: a wish
@@ -366,21 +383,9 @@ def rephrase(clause: str) -> str:
         # "i want the mug by the bowl": put it there; "i want the banana": give it to me
         placed = _PLACE_WORD.search(f" {rest} ")
         return f"put {rest}" if placed else f"hand me {rest}"
-    m = re.match(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:picked up|lifted|raised)$", c)
-    if m:  # "could the can be picked up"
-        return f"pick up {m.group(1)}"
-    m = re.match(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:moved|pushed|shifted|slid|put|placed|set|dropped|stacked|transferred)\b\s*(.+)$", c)
-    if m:  # "could the mug be moved into the bowl"
-        return f"move {m.group(1)} {m.group(2)}"
-    m = re.match(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$", c)
-    if m:  # "the box needs to be moved 5 cm forward"
-        return f"move {m.group(1)} {m.group(2)}"
-    m = re.match(rf"^(.+?) (?:{_MODAL} )?(?:have )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange) (?:places|positions|spots)$", c)
-    if m:  # "the red can and the white can should have traded places"
-        return f"swap {m.group(1)}"
-    m = re.match(rf"^(.+?) (?:{_MODAL} )?(?:be|end up|stay|go)? ?(?:right )?back (?:where (?:it|they) (?:is|are|was|were|started)(?: now)?|in (?:its|their) (?:place|spot))$", c)
-    if m:  # "at the end it should be right back where it is now"
-        return f"put {m.group(1)} back"
+    for pattern, imperative in _STATEMENTS:
+        if m := pattern.match(c):
+            return imperative.format(*m.groups())
     if not _VERB_ANYWHERE.search(c) and (said := casual.terse(c, _has_relation(c))):  # "cereal box forward 10cm", "all cans by bowl"
         return said
     m = _GOES.match(c)
