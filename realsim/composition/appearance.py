@@ -13,6 +13,7 @@ are subdivided to a few centimetres so the per-vertex projection stays perspecti
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import trimesh
@@ -20,6 +21,7 @@ from scipy.ndimage import distance_transform_edt
 from scipy.spatial.transform import Rotation
 
 from realsim.composition.atlas import face_colour_atlas, png_bytes
+from realsim.composition.surface_follow import follow_seen_depth
 from realsim.geometry import inside_convex_polygon
 from realsim.perception.intrinsics import Intrinsics, fit_intrinsics
 from realsim.scene import Scene, SceneObject, SupportPlane
@@ -35,6 +37,8 @@ class AppearanceParams:
     support_tolerance: float = 0.012  # a pixel within this of a support plane, inside its polygon, is the support (m)
     top_lift: float = 0.0005  # the textured top sits this far above the collision top (m)
     follow_surface: bool = True  # the textured top follows the captured surface's height (else flat on the fitted plane)
+    follow_objects: bool = True  # a scanned object's visual surface takes the seen depth where the camera saw it
+    object_follow_max: float = 0.02  # ... by at most this much along the line of sight (m); the collision shape stays the fit
     margin_px: int = 2
 
 
@@ -51,6 +55,11 @@ class CaptureImage:
     @property
     def valid(self) -> np.ndarray:
         return np.all(np.isfinite(self.world), axis=2)
+
+    @cached_property
+    def optical_depth(self) -> np.ndarray:
+        """(H, W) the captured depth along the camera's axis (optical z), NaN where no depth."""
+        return np.asarray(self.world, float) @ self.world_to_optical[2, :3] + self.world_to_optical[2, 3]
 
     def pixels(self, world_points: np.ndarray) -> np.ndarray:
         """(N, 2) pixel coordinates (u, v) of world points."""
@@ -132,8 +141,14 @@ def texture_object(obj: SceneObject, image: CaptureImage, params: AppearancePara
         return False
     mesh = subdivided(obj.visual, params.object_edge)
     rot, pos = _object_to_world(obj)
+    mask = image.labels == obj.id
+    if params.follow_objects:
+        to_world = np.eye(4)
+        to_world[:3, :3], to_world[:3, 3] = rot, pos
+        mesh, _ = follow_seen_depth(mesh, image.world_to_optical @ to_world, image.optical_depth, mask,
+                                    image.intrinsics.fx, image.intrinsics.project, params.object_follow_max)
     pix = image.pixels(np.asarray(mesh.vertices) @ rot.T + pos)
-    result = projected_texture(image, image.labels == obj.id, pix, params.margin_px)
+    result = projected_texture(image, mask, pix, params.margin_px)
     if result is None:
         return False
     png, uv = result
