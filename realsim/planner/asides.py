@@ -11,7 +11,8 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.phrasing import VERB_START, WHICH_ONE
+from realsim.planner.lexicon import VERB_START
+from realsim.planner.phrasing import WHICH_ONE
 from realsim.planner.steps import Parser
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
 

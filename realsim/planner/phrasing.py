@@ -8,20 +8,19 @@ from __future__ import annotations
 
 import re
 
-from realsim.errors import InputError
-from realsim.planner import casual, speech
-from realsim.planner.vocab import singular
+from realsim.planner import casual, discourse, places, speech, topic
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"maybe",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
-    r"i (?:was )?wonder(?:ing)? if you could", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
+    r"i (?:was |am |m )?wonder(?:ing)? if you (?:could|would|might|can|will)", r"(?:might|may|could|can) i (?:trouble|bother|ask|get) you to", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
     r"will you", r"you may", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
     r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
@@ -42,43 +41,11 @@ _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|car
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
-            "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though"}
+            "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
            "getting": "get", "returning": "return", "placing it": "place it"}
-TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
-        "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
-PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
-       "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest", "translate")
-PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate")
-ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
-                                                  "come", "head", "pull open", "pull out", "push in"))))
-PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
-
-# "do that again", "repeat it", "once more": the last step again (a clause of its own)
-AGAIN = re.compile(r"(?:do (?:that|it|this|so|the same)(?: thing)? (?:again|once more|one more time)|repeat(?: that| it| this)?(?: again)?"
-                   r"|(?:and )?(?:once more|one more time|again))")
-
-RELATIONS: tuple[tuple[str, str], ...] = (
-    ("at the side of", "next"), ("by the side of", "next"), ("on either side of", "sides"), ("on both sides of", "sides"), ("on each side of", "sides"), ("to either side of", "sides"),
-    ("either side of", "sides"), ("on opposite sides of", "sides"),
-    ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
-    ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
-    ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
-    ("to the front of", "front"), ("at the front of", "front"), ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
-    ("to the right hand side of", "right"), ("to the right side of", "right"), ("on the right hand side of", "right"),
-    ("closer to", "next"), ("nearer to", "next"), ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
-    ("to the right of", "right"), ("on the right side of", "right"), ("on the right of", "right"), ("right of", "right"),
-    ("behind", "behind"), ("in between", "between"), ("between", "between"),
-    ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
-    ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
-    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
-    ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
-    ("toward", "next"), ("towards", "next"), ("to", "to"),  # toward a thing is a way, not into it
-)
-SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|floor)(?: top)?"
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
@@ -89,7 +56,8 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
-    text = speech.repair(text, VERB_START, _RELATION_AT)
+    text = discourse.drop_talk(discourse.steps_as_clauses(text))
+    text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
@@ -112,12 +80,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\bto (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of"
     text = re.sub(r"\b(behind|beside|inside) of\b", r"\1", text)
     text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
-    text = re.sub(r"\ball the way (?:on|at) (?:the )?(left|right)\b", r"on the far \1", text)
     text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
                   r"\1 the robot", text)  # the robot's base
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
-    text = re.sub(r"\bthe ((?!(?:one|furthest|farthest|most)\b)[a-z]+(?: [a-z]+)?) (?:furthest|farthest|most) (?:to the |on the )(left|right)\b", r"the \2most \1", text)
-    text = re.sub(r"\b(?:(?:the )?(?:furthest|farthest|most) (?:to the |on the )?|(?:on |to )?the (?:far|very) )(left|right)\b", r"the \1most", text)
+    text = places.positions(text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
@@ -137,6 +103,7 @@ def clean(command: str) -> str:
     text = re.sub(r"(?<!the )(?<!far )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
     for filler in FILLERS:
         text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
+    text = re.sub(rf"(?:^|(?<=[\s,.;]))do (?={VERB_START.pattern})", "", text)  # "do go back home": emphasis
     for g, v in GERUNDS.items():
         text = re.sub(rf"\b{g}\b", v, text)
     text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
@@ -157,19 +124,7 @@ def split_command(command: str) -> list[str]:
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
     parts = [re.sub(rf"^you (?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you put in the bowl"
     parts = [_prohibition(p, verb_re) for p in parts]
-    parts = _partitive(parts)
-    topic = re.sub(r"^(?:as for|about) ", "", parts[0]) if len(parts) > 1 else ""
-    verb = verb_re.match(parts[1]) if topic else None
-    statement = re.search(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b", topic)  # an aside
-    if topic and not statement and not verb_re.match(topic) and not _has_relation(_bare(topic)) and not _AVOID.match(topic):
-        if verb and re.search(r"\b(?:it|them|th(?:at|is) one)\b", parts[1]):
-            # "the bowl, push it forward": a command opening with a bare noun phrase names what "it" means
-            parts = [re.sub(r"\b(?:it|them|th(?:at|is) one)\b", topic, parts[1], count=1), *parts[2:]]
-        elif verb and (_relation_start(parts[1][verb.end():].strip())  # "the banana, put in the bowl": the verb's object
-                       or re.match(r"(?:\d+|a bit|a little|slightly|left|right|forward|back|up|down)\b", parts[1][verb.end():].strip())):
-            parts = [f"{verb.group(0)} {topic} {parts[1][verb.end():].strip()}", *parts[2:]]
-        elif _relation_start(parts[1]):
-            parts = [f"{topic} {parts[1]}", *parts[2:]]  # "the soup, next to the banana": where the named thing goes
+    parts = topic.fronted(topic.choice(topic.partitive(parts)), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part):
@@ -177,7 +132,7 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
-            if _AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
+            if AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
                 clauses.append(part)
             elif _AMOUNT.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far
                 clauses[-1] = f"{clauses[-1]} {part}"
@@ -229,9 +184,6 @@ def _axes(text: str) -> str:
     return re.sub(r",?\s*\b(?:i\.?\s?e\.?|in other words)(?=[\s,])[^.;]*", "", text)
 
 
-_AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|try not to|avoid|(?:be )?careful not to|without)"
-                    r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing)?(?: over| down| into)? (.+)$")
-
 
 _KEEP_STILL = re.compile(r"(?:but |and |while )?(?:(?:leave|keep) (.+?) (?:exactly |just |right )?(?:where (?:it|they) (?:is|are|was|were|sits?|stands?)(?: now)?"
                          r"|alone|as (?:it|they) (?:is|are)|in (?:its|their) (?:place|spot)|in place|be|untouched|still)"
@@ -248,7 +200,7 @@ def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
     if m and not re.fullmatch(r"(?:it|them|that|this|those|these)", m.group(1) or m.group(2)):
         return f"dont touch {m.group(1) or m.group(2)}"  # "leave the mug where it is", "keep clear of the bowl"
     m = re.match(r"(?:please )?(?:dont|don t|do not|never|no need to)\s+(.+)$", part)
-    if not m or _AVOID.match(part):
+    if not m or AVOID.match(part):
         return part
     if re.fullmatch(r"(?:place|put|set|drop|release|let go of|lay) (?:it|them)(?: down| back)?", m.group(1)):
         return ""  # "grasp the mug and hold it. do not place it": it stays in the hand
@@ -264,7 +216,7 @@ def avoided(clause: str) -> tuple[str, str]:
     """A clause without a named thing not to touch, and that thing's phrase ("" if none): "don't
     touch the mustard" -> ("", "the mustard"); "pick up the cube without hitting the bowl" ->
     ("pick up the cube", "the bowl")."""
-    m = _AVOID.search(clause)
+    m = AVOID.search(clause)
     return (clause[: m.start()].strip(), m.group(1).strip()) if m else (clause, "")
 
 
@@ -305,45 +257,6 @@ _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|i
 _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"
                    r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
 
-
-def _bare(phrase: str) -> str:
-    """A noun phrase without what only picks among its kind: a relative clause ("the can that is
-    on the left") or a position ("the soda on the right")."""
-    phrase = re.sub(r"\s+(?:that is|that s|thats|which is|that|which)\s.*$", "", phrase)
-    return re.sub(r"\s+(?:on|to|at|in) the (?:far )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?\b", "", phrase)
-
-
-def _partitive(parts: list[str]) -> list[str]:
-    """"of the two sodas, pick up the one on the left", "see the two red cans? take the one closer
-    to you": "one" is a soda (a can), and the opening names no object of its own."""
-    if len(parts) < 2:
-        return parts
-    m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice) ((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
-    restricts = bool(m) and m.group(1) in ("of", "out of", "among", "from among", "between") and bool(m.group(2))
-    if m and restricts and (" and " in f" {m.group(3)} " or not re.search(r"\bone\b", parts[1])):
-        # "of the marker and the meat can, ...", "out of the yellow things, take the biggest": never chosen among everything
-        raise InputError(f"{parts[0]!r}: cannot read which ones to choose among; name the one you mean ('the biggest yellow object')")
-    if not m or not re.search(r"\bone\b", parts[1]):
-        return parts
-    words = m.group(3).split()
-    return [re.sub(r"\bone\b", " ".join([*words[:-1], singular(words[-1])]), parts[1], count=1), *parts[2:]]
-
-
-def _has_relation(text: str) -> bool:
-    """Whether a relation word opens ``text`` or any of its word tails ("mug in the bowl")."""
-    words = text.split()
-    return any(_relation_start(" ".join(words[i:])) for i in range(len(words)))
-
-
-def _relation_start(text: str) -> bool:
-    """Whether ``text`` opens with a relation word ("in the bowl", "to the left of the box")."""
-    words = sorted((w for w, _ in RELATIONS if w not in ("by", "over")), key=len, reverse=True)
-    return bool(re.match(rf"(?:{'|'.join(re.escape(w) for w in words)})\b", text))
-
-
-VERB_START = re.compile(rf"(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
-_VERB_ANYWHERE = re.compile(rf"(?<![a-z]){VERB_START.pattern}")
-_RELATION_AT = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0])) if w not in ('by', 'over'))})\b")
 
 # Statements and passives that say what should happen, with the imperative each means ({0}, {1}: its groups).
 _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
@@ -386,11 +299,11 @@ def rephrase(clause: str) -> str:
     for pattern, imperative in _STATEMENTS:
         if m := pattern.match(c):
             return imperative.format(*m.groups())
-    if not _VERB_ANYWHERE.search(c) and (said := casual.terse(c, _has_relation(c))):  # "cereal box forward 10cm", "all cans by bowl"
+    if not VERB_ANYWHERE.search(c) and (said := casual.terse(c, has_relation(c))):  # "cereal box forward 10cm", "all cans by bowl"
         return said
     m = _GOES.match(c)
-    if m and _relation_start(m.group(2)):
+    if m and relation_start(m.group(2)):
         return f"put {m.group(1)} {m.group(2)}"
-    if _has_relation(" ".join(c.split()[1:])) and not _VERB_ANYWHERE.search(c):
+    if has_relation(" ".join(c.split()[1:])) and not VERB_ANYWHERE.search(c):
         return f"put {c}"
-    return speech.object_first(c, _VERB_ANYWHERE) or c  # "the red fruit put in front of the banana"
+    return speech.object_first(c, VERB_ANYWHERE) or c  # "the red fruit put in front of the banana"

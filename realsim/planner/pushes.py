@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
+from realsim.planner.lexicon import SURFACES
 from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES
 
 _DIR_ALT = "|".join(re.escape(w) for w in sorted(DIRECTION_WORDS, key=len, reverse=True))
@@ -55,3 +56,17 @@ def distance(text: str) -> float | None:
     return dist
 
 
+_MEASURE = re.compile(r"\s+(?:(?:about |around |roughly |some )?(\d+(?:\.\d+)?|a few|a couple of) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+                      r"|a (?:bit|little|tad)(?: more)?|slightly|directly|just|diagonally|immediately|straight|somewhere"
+                      rf"|(?:down )?(?:on|onto) {SURFACES}|down)$")
+
+
+def beside_measure(obj_phrase: str, kind: str) -> str:
+    """The object phrase without how it sits by the target ("the mug 10 cm | to the left of the
+    bowl", "the mug down on the table | behind the box"); a side relation allows at most 15 cm."""
+    while m := _MEASURE.search(obj_phrase):
+        if m.group(1) and kind not in ("in", "on") and distance(m.group(0)) is not None and (distance(m.group(0)) or 0.0) > 0.15:
+            raise InputError(f"a place beside an object is at most 15 cm from it, not {m.group(0).strip()}; "
+                             "to move something a distance say 'move X N cm left'")
+        obj_phrase = obj_phrase[: m.start()]
+    return obj_phrase

@@ -174,6 +174,12 @@ class Resolver:
             pool = self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True)
             return [min(pool, key=lambda o: (round(self.robot_xy(o)[0], 3), -self.robot_xy(o)[1]))]
         text = noun_phrase.normalize(text)
+        m = re.fullmatch(r"(.+?) among (.+)", text)
+        if m:  # "the one closer to you among the banana and the mug": the pick among exactly those (realsim.planner.topic)
+            pool = {o.name for part in re.split(r"\s+and\s+|\s+or\s+|\s*,\s*", m.group(2)) if part
+                    for o in self.resolve(part, Context(), allow_plural=False)}
+            others = [o.name for o in self.objects if o.name not in pool]
+            return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *others], allow_plural=allow_plural, loose=loose)
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
         if m and not {singular(w) for w in m.group(2).split()} & {w for names in self._words.values() for n in names for w in n}:
             text = m.group(1)
@@ -312,6 +318,8 @@ class Resolver:
         extreme_words = [w for w in words if w in EXTREMES and w not in ("near", "far")]
         if extreme_words and order is None:
             order = ("extreme", extreme_words[-1])
+        elif extreme_words and order is not None and order[0] == "extreme" and EXTREMES[extreme_words[-1]][0] != EXTREMES[str(order[1])][0]:
+            order = ("corner", (str(order[1]), extreme_words[-1]))  # "the rightmost thing, closest to you": first both ways, else asked
         if any(w in ("middle", "center", "centre", "central") for w in words):
             order = ("middle", None)
         skip = set(COLOR_WORDS) | set(BIG) | set(SMALL) | set(EXTREMES) | {"middle", "center", "centre", "central", "one", "ones", "most", "colored", "coloured"}

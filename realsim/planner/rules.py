@@ -21,12 +21,14 @@ from collections.abc import Sequence
 from realsim.errors import InputError
 from realsim.planner.asides import is_aside
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.phrasing import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, QUESTION, RELATIONS, SURFACES, TAKE, avoided, rephrase, split_command
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE
+from realsim.planner.phrasing import QUESTION, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
-from realsim.planner.pushes import distance, is_push
+from realsim.planner.pushes import beside_measure, distance, is_push
 from realsim.planner.reference import Context
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
+from realsim.planner.topic import TOPIC
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.planner.vocab import GENERIC, VAGUE_DISTANCES, name_words, norm, singular
 
@@ -66,7 +68,9 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
             named = p.resolver.resolve(phrase, Context(p.ctx.last), allow_plural=True)
             kept |= {o.name: phrase for o in named}
             p.ctx.set(named)
-        if c:
+        if c.startswith(TOPIC):  # "the thing at the back, push it ...": what "it" means next
+            p.ctx.set(p.resolver.resolve(c[len(TOPIC):], Context(p.ctx.last), allow_plural=True))
+        elif c:
             try:
                 steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
             except InputError as exc:
@@ -263,7 +267,7 @@ def _relation_tail(rest: str) -> bool:
 def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: str) -> Step:
     target_phrase, *exception = re.split(r"\s+(?=(?:except|but not|other than|apart from|save for|excluding|besides)\s)", target_phrase, maxsplit=1)
     obj_phrase = f"{obj_phrase} {exception[0]}" if exception else obj_phrase  # "all the fruit in the bowl except the banana"
-    obj_phrase = _beside_measure(obj_phrase, kind)
+    obj_phrase = beside_measure(obj_phrase, kind)
     target_phrase = re.sub(r"\s+(?:again|too|as well|please|there)$", "", target_phrase).strip()
     target_phrase = re.sub(r"\s+(?:where it was|where it belongs|so it stands|upright)$", "", target_phrase).strip()
     if re.fullmatch(SURFACES, target_phrase) and kind in ("on", "to", "in"):
@@ -327,22 +331,6 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
             calls.append(Call("place_beside", (o.name, target.name, side)))
             goals.append(SideOf(o.name, target.name, side))
     return Step(calls, goals, tuple(o.name for o in objs))
-
-
-_MEASURE = re.compile(r"\s+(?:(?:about |around |roughly |some )?(\d+(?:\.\d+)?|a few|a couple of) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
-                      r"|a (?:bit|little|tad)(?: more)?|slightly|directly|just|diagonally|immediately|straight|somewhere"
-                      rf"|(?:down )?(?:on|onto) {SURFACES}|down)$")
-
-
-def _beside_measure(obj_phrase: str, kind: str) -> str:
-    """The object phrase without how it sits by the target ("the mug 10 cm | to the left of the
-    bowl", "the mug down on the table | behind the box"); a side relation allows at most 15 cm."""
-    while m := _MEASURE.search(obj_phrase):
-        if m.group(1) and kind not in ("in", "on") and distance(m.group(0)) is not None and (distance(m.group(0)) or 0.0) > 0.15:
-            raise InputError(f"a place beside an object is at most 15 cm from it, not {m.group(0).strip()}; "
-                             "to move something a distance say 'move X N cm left'")
-        obj_phrase = obj_phrase[: m.start()]
-    return obj_phrase
 
 
 def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) -> ObjectInfo:

@@ -71,7 +71,8 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
 
 _POSITION = re.compile(r"\s+(?:the )?(?:far |very )?(?:left|right|front|back|middle|center|centre)\b")
 _HOMOPHONES = ((r"\b(?:too|two)\b(?= (?:the )?(?:left|right|front|back|side|top)\b)", "to"),  # "move it two the left"
-               (r"\bfor\b(?= (?:cm|mm|centimet|millimet|inch))", "four"))  # "for centimeters"
+               (r"\bfor\b(?= (?:cm|mm|centimet|millimet|inch))", "four"),  # "for centimeters"
+               (r"(?<=[a-z] )2(?= (?:the|my|your|it|them|where)\b)", "to"))  # "next 2 the banana": a count never precedes "the"
 
 
 def homophones(text: str, verb: re.Pattern[str]) -> str:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field, replace
 
 from realsim.errors import InputError
 from realsim.planner.goals import Goal, Moved, NextTo, On, Placed
-from realsim.planner.phrasing import PARTICLES
+from realsim.planner.lexicon import PARTICLES
 from realsim.planner.program import Call
 from realsim.planner.reference import Context, Resolver
 from realsim.planner.types import ObjectInfo

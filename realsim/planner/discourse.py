@@ -1,0 +1,100 @@
+"""Talk around a command, removed before the command is read: sentences and comma pieces that
+are only greetings, thanks, politeness, hedges, exhortations and chat ("Hello there, young
+fellow.", "Much obliged, I'm sure.", "If not, no worries.", "Come on!", "..., if you please?"),
+and the markers of a numbered step list ("1. ... 2. ...", "Steps: 1) ...", "Step one: ...").
+
+The rule for what is dropped: a piece (a sentence, or a part of one between commas, semicolons
+or colons) goes only when every word of it belongs to a discourse phrase of :data:`TALK`, a
+closed list that holds no object, place, direction or distance word; so nothing that names an
+object, a place or a distance is ever dropped. A conditional hedge ("if not", "otherwise") is
+talk only in a sentence of talk alone: "If not, put it on the plate" keeps its condition, and
+the planner refuses what it cannot read rather than doing both. A text of talk alone is left
+as it is (the planner then says it found no command).
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["TALK", "drop_talk", "steps_as_clauses"]
+
+_MUCH = r"(?: (?:so|very|ever so|so very|very very|really|truly|awfully|most|ever)?\s?(?:much|kindly|a lot|a bunch|heaps|loads|indeed|in advance|again))*"
+_WHO = (r"(?:(?:my |you )?(?:dear|young|old|good|kind|dear old|little|sweet)?\s?"
+        r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine))")
+# Discourse phrases: none names an object, a place, a direction or a distance.
+TALK: tuple[str, ...] = (
+    # greetings and address
+    rf"(?:hello|hi|hey|hiya|howdy|yo|oi|greetings|good (?:morning|afternoon|evening|day|night))(?: there)?(?: to you)?(?: {_WHO})?", _WHO,
+    r"how are you(?: doing| today)*", r"hope (?:you re|youre|you are) (?:well|good|doing well)", r"nice to meet you",
+    # thanks and praise
+    rf"(?:thank you|thanks|thankyou|thank u|thx|ty|tysm|tyvm|ta|cheers|many thanks|much obliged|obliged|much appreciated|appreciated"
+    rf"|(?:i )?appreciate (?:it|that)(?: a lot)?|(?:i m|im|i am) (?:so |very |most |ever so )?(?:grateful|obliged|thankful)){_MUCH}(?: {_WHO})?",
+    r"(?:i|we) (?:would|d|will|ll) be (?:so |very |most |ever so |really |truly |eternally )?(?:grateful|obliged|thankful)(?: to you)?",
+    r"(?:i m|im|i am) sure", r"(?:that s|thats|that is|that ll be|that would be|you re|youre|you are)(?: a)? (?:so |very |really |just )?"
+    r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|grand|fine|all|it|a star|a gem|a dear|a darling|the best|a legend|too kind|so kind)",
+    r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|splendid|marvellous|marvelous|excellent|nice|cool|sweet|good job|well done|nice one|good stuff|bless you)",
+    # politeness and hedges said as a piece of their own
+    r"if you please", r"if you (?:would|could|will|can|dont mind|do not mind|wouldnt mind|would not mind)", r"if (?:it|that) s? ?(?:ok|okay|alright|all right|fine|possible|easy|no trouble|not too much trouble)",
+    r"(?:if|when) you (?:get|have) (?:a )?(?:chance|moment|sec|second|minute)", r"(?:sorry|apologies) (?:to bother you|for the trouble|for bothering you)",
+    r"(?:i )?hope (?:i m|im|i am) not (?:bothering|disturbing|troubling) you", r"no (?:rush|hurry|pressure|stress)", r"(?:take|taking) your time",
+    r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
+    # exhortations and chat
+    r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
+    r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
+    r"(?:much|very|so|ever so|really|truly|indeed)",
+)
+# a conditional or alternative: talk only in a sentence of talk alone ("If not, no worries.")
+_HEDGE: tuple[str, ...] = (
+    r"(?:but )?only if (?:it s|its|it is|that s|thats|that is|you can|you re able|possible|easy)(?: easy| possible| not too hard| no trouble)?",
+    r"if (?:not|you can t|you cant|you cannot|it doesn t work|it doesnt work|that doesn t work|it s not possible|its not possible|not possible|you re not able|you are not able)",
+    r"otherwise", r"no worries", r"no (?:problem|probs|bother|big deal|matter)", r"(?:it s|its|that s|thats) (?:fine|ok|okay|alright|no problem)(?: too| as well)?",
+    r"don t worry(?: about it)?", r"dont worry(?: about it)?", r"never mind", r"nevermind", r"all good", r"either way",
+)
+_TALK_RE = re.compile(rf"(?:(?:{'|'.join(TALK)})(?:\s+|$))+")
+_ANY_RE = re.compile(rf"(?:(?:{'|'.join((*TALK, *_HEDGE))})(?:\s+|$))+")
+
+
+def _words(piece: str) -> str:
+    return " ".join(re.sub(r"[^a-z0-9 ]+", " ", piece.replace("'", " ")).split())
+
+
+def _is_talk(piece: str, in_talk_sentence: bool) -> bool:
+    words = _words(piece)
+    return bool(words) and bool((_ANY_RE if in_talk_sentence else _TALK_RE).fullmatch(words + " "))
+
+
+def drop_talk(text: str) -> str:
+    """``text`` (lower case, punctuation kept) without the sentences and comma pieces that are only
+    talk (see the module's rule); unchanged when nothing else is left."""
+    out: list[str] = []
+    for sentence in re.finditer(r"(?:[^.!?]|\.(?=\d))+(?:[.!?]+|$)", text):
+        body = sentence.group(0)
+        end = re.search(r"[.!?]*\s*$", body)
+        stop = end.group(0).strip() if end else ""
+        body = body[: end.start()] if end else body
+        pieces = [p for p in re.split(r"\s*[,;:]\s*", body) if p.strip()]
+        if not pieces or all(_is_talk(p, True) for p in pieces):
+            continue
+        kept = [p.strip() for p in pieces if not _is_talk(p, False)]
+        out.append(", ".join(kept) + (stop or "."))
+    return " ".join(out) if out else text
+
+
+_WORD_NUMBERS = ("one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten")
+
+
+def steps_as_clauses(text: str) -> str:
+    """A numbered step list as clauses ("1. grab X 2) put it ..." -> "grab X, then put it ..."):
+    "step N" / "step one" before a pause always; bare numbers "1." "2)" only when they count up
+    from 1 in order, so a distance ("push it 10. then ...") is never taken for a step."""
+    text = re.sub(r"(?:^|(?<=[\s.,;:!?]))(?:the )?steps?(?: are| is)?\s*:\s*", " ", text)  # "Steps: ..."
+    text = re.sub(rf"(?:^|(?<=[\s.,;:!?]))step\s+(?:\d+|{'|'.join(_WORD_NUMBERS)})\s*[.,:;)-]*\s+", ", then ", text)
+    marks = list(re.finditer(r"(?:^|(?<=[\s.,;:!?]))(\d{1,2})\s*[.)]\s+(?=[a-z])", text))
+    run: list[re.Match[str]] = []
+    for m in marks:
+        if int(m.group(1)) == len(run) + 1:
+            run.append(m)
+    if len(run) >= 2 and [int(m.group(1)) for m in run] == list(range(1, len(run) + 1)) and len(run) == len(marks):
+        for m in reversed(run):
+            text = f"{text[: m.start()]}, then {text[m.end():]}"
+    return re.sub(r"^\s*,\s*then\s+", "", re.sub(r"\s*(?:[.;:]\s*)?,\s*then\s+", ", then ", text)).strip()

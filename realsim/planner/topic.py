@@ -1,0 +1,112 @@
+"""A thing named before the command that acts on it: a fronted topic ("the bowl, push it
+forward"; "the thing at the very back, closest to you, push it ..."), a partitive opening ("of
+the two sodas, take the one on the left") and a choice among named things ("whichever is closer,
+the banana or the mug"; "of the marker and the meat can, the one further away").
+
+A choice among named things becomes "<the one ...> among <A> and <B>", which the resolver reads
+as the pick among exactly those things (see :mod:`realsim.planner.reference`), never among all.
+"""
+
+from __future__ import annotations
+
+import re
+
+from realsim.errors import InputError
+from realsim.planner.lexicon import AVOID, VERB_START, has_relation, relation_start
+from realsim.planner.vocab import singular
+
+__all__ = ["TOPIC", "bare", "choice", "fronted", "partitive"]
+
+TOPIC = "topic: "  # a clause that only names what the next clause's "it" means
+
+_VERB = VERB_START
+_PRONOUN = re.compile(r"\b(?:it|them|th(?:at|is) one)\b")
+# a locator said as a piece of its own after a topic ("..., closest to you, push it ..."): which one, never where to
+_LOCATOR = re.compile(r"(?:the one )?(?:(?:that is |thats |that s |which is )?(?:closest|nearest|closer|nearer|furthest|farthest|further|farther)\b"
+                      r"|(?:on|at|in) the (?:front|back|middle|centre|center|left|right)\b|the \w+most\b)")
+_STATEMENT = re.compile(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b")
+_LIST = r"(?:the |that |this )?[a-z ]+?(?:(?:,| or| and)\s+(?:the |that |this )?[a-z ]+?)+"
+
+
+def bare(phrase: str) -> str:
+    """A noun phrase without what only picks among its kind: a relative clause ("the can that is
+    on the left"), a position ("the soda on the right") or a distance from the speaker ("closer to you")."""
+    phrase = re.sub(r"\s+(?:that is|that s|thats|which is|that|which)\s.*$", "", phrase)
+    phrase = re.sub(r"\s+(?:(?:closest|nearest|closer|nearer) to|(?:furthest|farthest|further|farther)(?: away)? from) (?:you|me|the robot)\b", "", phrase)
+    return re.sub(r"\s+(?:on|to|at|in) the (?:far )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?\b", "", phrase)
+
+
+def choice(parts: list[str]) -> list[str]:
+    """"whichever is closer to you, the banana or the mug, and put it ..." / "the banana or the mug,
+    whichever is closer": the pick among the things listed (see the module)."""
+    for i in range(len(parts) - 1):
+        a, b = parts[i], parts[i + 1]
+        m = re.search(r"\b(?:whichever|whatever|which ever)(?: one)? (?:is|s) (.+)$", a)
+        if m and re.fullmatch(_LIST, b):
+            return [*parts[:i], f"{a[: m.start()]}the one {m.group(1)} among {_and(b)}".strip(), *parts[i + 2:]]
+        m = re.fullmatch(r"(?:whichever|whatever|which ever)(?: one)? (?:is|s) (.+)", b)
+        if m and re.search(_LIST + "$", a):
+            listed = re.search(rf"(?:^|\b(?=the |that |this )){_LIST}$", a)
+            if listed:
+                return [*parts[:i], f"{a[: listed.start()]}the one {m.group(1)} among {_and(listed.group(0))}".strip(), *parts[i + 2:]]
+    return parts
+
+
+def _and(listed: str) -> str:
+    return re.sub(r"\s*,\s*|\s+or\s+", " and ", listed)
+
+
+def partitive(parts: list[str]) -> list[str]:
+    """"of the two sodas, pick up the one on the left", "see the two red cans? take the one closer
+    to you": "one" is a soda (a can), and the opening names no object of its own; "of the marker
+    and the meat can, the one further away": the one among those two."""
+    if len(parts) < 2:
+        return parts
+    while len(parts) > 2 and re.match(r"(?:of|out of|among|from among|between) ", parts[0]) and re.fullmatch(r"(?:the|that|this) [a-z ]+", parts[1]) \
+            and not _VERB.match(parts[1]):  # "of the marker and the meat can": the list was split at its "and"
+        parts = [f"{parts[0]} and {parts[1]}", *parts[2:]]
+    m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice) ((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
+    restricts = bool(m) and m.group(1) in ("of", "out of", "among", "from among", "between") and bool(m.group(2))
+    one = re.search(r"\bthe one\b", parts[1])
+    if m and restricts and " and " in f" {m.group(3)} " and one:  # "of the marker and the meat can, take the one further away"
+        listed = f"{m.group(2)}{m.group(3)}".strip()
+        tail = re.search(r"\bthe one\b.*$", parts[1])
+        assert tail is not None
+        return [f"{parts[1][: tail.start()]}{tail.group(0)} among {listed}".strip(), *parts[2:]]
+    if m and restricts and (" and " in f" {m.group(3)} " or not re.search(r"\bone\b", parts[1])):
+        # "out of the yellow things, take the biggest": never chosen among everything
+        raise InputError(f"{parts[0]!r}: cannot read which ones to choose among; name the one you mean ('the biggest yellow object')")
+    if not m or not re.search(r"\bone\b", parts[1]):
+        return parts
+    words = m.group(3).split()
+    return [re.sub(r"\bone\b", " ".join([*words[:-1], singular(words[-1])]), parts[1], count=1), *parts[2:]]
+
+
+def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str]:
+    """A bare noun phrase before a clause that acts on it, put into that clause: "the bowl, push it
+    forward" (for "it"), "the banana, put in the bowl" (as the verb's object), "the soup, next to the
+    banana" (what goes there). Locator pieces after it ("..., closest to you, push it") say which
+    one. ``comma``: the topic ends at a comma (then a topic naming a place, "the thing in front of
+    the bowl, slide it ...", is still read as one when a pronoun takes it up)."""
+    if len(parts) < 2:
+        return parts
+    topic, n = re.sub(r"^(?:as for|about) ", "", parts[0]), 1
+    while n + 1 < len(parts) and _LOCATOR.match(parts[n]) and not verb_re.match(parts[n]):
+        topic, n = f"{topic} {re.sub(r'^the one ', '', parts[n])}", n + 1
+    rest = parts[n]
+    verb = verb_re.match(rest)
+    resumed = bool(verb) and bool(_PRONOUN.search(rest))
+    if n > 1 and not resumed:
+        return parts
+    if _STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic):
+        return parts
+    if has_relation(bare(topic)) and not (resumed and comma):
+        return parts
+    if resumed:  # "the bowl, push it forward": a command opening with a noun phrase names what "it" means
+        return [f"{TOPIC}{topic}", *parts[n:]]
+    if verb and (relation_start(rest[verb.end():].strip())  # "the banana, put in the bowl": the verb's object
+                 or re.match(r"(?:\d+|a bit|a little|slightly|left|right|forward|back|up|down)\b", rest[verb.end():].strip())):
+        return [f"{verb.group(0)} {topic} {rest[verb.end():].strip()}", *parts[n + 1:]]
+    if relation_start(rest):
+        return [f"{topic} {rest}", *parts[n + 1:]]  # "the soup, next to the banana": where the named thing goes
+    return parts

@@ -1,0 +1,69 @@
+"""Talk around a command (greetings, thanks, hedges, exhortations), numbered step lists, things
+named by where they are ("way over on the left", "right up front", a fronted topic taken up by
+"it"), and a choice among named things ("whichever is closer, A or B"). Sentences written for
+this test on the generated clutter scene, not taken from a bench set."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+from realsim.planner.discourse import drop_talk, steps_as_clauses
+
+
+def calls(sentence: str) -> list[str]:
+    return [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # talk: whole sentences and comma pieces of greetings, thanks, politeness and hedges
+    ("Good morning, robot. Put the banana in the bowl, if you please. Much obliged.", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("hiya mate, put the red cube on the blue cube. cheers, you're a star", ["place_on('obj3_cube', 'obj4_cube')"]),
+    ("Put the strawberry in the bowl. If not, no worries.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("Banana in the bowl. Now. Go!", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("put the banana in the bowl, come on!", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("Might I trouble you to lift the banana? And afterwards do go back home. Thank you kindly.", ["grasp('obj7_banana')", "go_home()"]),
+    ("yo grab the strawberry ez", ["grasp('obj8_strawberry')"]),
+    # numbered steps
+    ("1) pick up the banana 2) put it in the bowl 3) go home", ["grasp('obj7_banana')", "place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+    ("Step 1: push the banana 10 cm left. Step 2: go home.", ["push('obj7_banana', 'left', 0.1)", "go_home()"]),
+    ("Step one, lift the strawberry. Step two, put it next to the bowl.",
+     ["grasp('obj8_strawberry')", "place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    # objects named by place, and a fronted topic that "it" takes up
+    ("the thing way over on the left, push it 5 cm forward", ["push('obj8_strawberry', 'forward', 0.05)"]),
+    ("the can way over on the right, put it in the bowl", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
+    ("the thing closest to you, put it next to the banana", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("the cube right behind the bowl, push it 5 cm left", ["push('obj4_cube', 'left', 0.05)"]),
+    # a choice among named things
+    ("pick up whichever is further from you, the banana or the strawberry", ["grasp('obj7_banana')"]),
+    ("of the bowl and the banana, lift the one closer to you", ["grasp('obj6_bowl')"]),
+    ("the banana or the strawberry, whichever is closer, put it in the bowl", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+])
+def test_read_right(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+@pytest.mark.parametrize("sentence", [
+    "Put the strawberry in the bowl. If not, put it next to the bowl.",  # a condition is never dropped
+    "Hello there. Thank you so much.",  # talk alone
+    "the can at the very front, lift it",  # the two cans are level
+    "lift the can right up front on the left",  # not first both ways
+])
+def test_refused(sentence: str) -> None:
+    with pytest.raises(InputError):
+        calls(sentence)
+
+
+def test_talk_never_takes_a_word_that_names_something() -> None:
+    assert drop_talk("thanks, the mug. cheers.") == "the mug."
+    assert drop_talk("thank you, to the left.") == "to the left."
+    assert drop_talk("okay, 10 cm.") == "10 cm."
+    assert drop_talk("hello. thanks!") == "hello. thanks!"  # nothing else: left for the planner to refuse
+
+
+def test_a_step_list_counts_up_from_one() -> None:
+    assert steps_as_clauses("1. lift the mug 2. go home") == "lift the mug, then go home"
+    assert steps_as_clauses("push the mug 10. then go home") == "push the mug 10. then go home"  # a distance, not a step
+    assert steps_as_clauses("push it 2. then 3. home") == "push it 2. then 3. home"
