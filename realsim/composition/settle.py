@@ -8,6 +8,7 @@ cached under the spec's content (XML, assets, parameters, code digest), so a rer
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -30,6 +31,7 @@ class SettleParams:
     min_time: float = 0.5  # simulated seconds before testing for rest
     max_time: float = 4.0
     rest_speed: float = 2e-3  # m/s (and rad/s) below which every object is at rest
+    rest_window: float = 0.25  # s: an object that stayed within rest_speed * rest_window of its pose this long is at rest too
     check_time: float = 2.0  # simulated seconds of the rest check
     max_drift: float = 0.005  # m an object may move during the check
     capacity: CapacityParams = field(default_factory=CapacityParams)  # nconmax / njmax recorded for batched engines
@@ -41,10 +43,33 @@ def _max_speed(data: mujoco.MjData, free: list[tuple[str, int, int]]) -> float:
     return float(max(np.abs(data.qvel[d : d + 6]).max() for _, _, d in free))
 
 
+def _poses(data: mujoco.MjData, free: list[tuple[str, int, int]]) -> np.ndarray:
+    """(B, 7) position and unit quaternion of every free body."""
+    return np.array([data.qpos[q : q + 7] for _, q, _ in free]).reshape(len(free), 7)
+
+
+def _stayed(poses: deque[np.ndarray], reach: float) -> bool:
+    """Whether every body stayed within ``reach`` (m, and rad of rotation) of its latest pose at every
+    earlier pose in ``poses`` (a full window): still, or rocking in place (contact chatter), not moving on."""
+    if len(poses) < (poses.maxlen or 0):
+        return False
+    now = poses[-1]
+    for then in list(poses)[:-1]:
+        if np.any(np.linalg.norm(now[:, :3] - then[:, :3], axis=1) > reach):
+            return False
+        cos = np.clip(np.abs(np.einsum("bk,bk->b", now[:, 3:], then[:, 3:])) / (np.linalg.norm(now[:, 3:], axis=1) * np.linalg.norm(then[:, 3:], axis=1)), 0.0, 1.0)
+        if np.any(2.0 * np.arccos(cos) > reach):
+            return False
+    return True
+
+
 def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tuple[str, int, int]], params: SettleParams) -> float:
-    """Step until every free body is slower than ``rest_speed`` (after ``min_time``); return sim time."""
+    """Step until every free body is at rest (after ``min_time``): slower than ``rest_speed``, or
+    within ``rest_speed * rest_window`` of its pose over the last ``rest_window`` (a body rocking in
+    place never passes the speed test); return the simulated time."""
     start = data.time
     check_every = max(1, int(0.05 / model.opt.timestep))
+    poses: deque[np.ndarray] = deque(maxlen=max(1, int(round(params.rest_window / (check_every * model.opt.timestep)))) + 1)
     step = 0
     while data.time - start < params.max_time:
         mujoco.mj_step(model, data)
@@ -52,9 +77,11 @@ def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tupl
         if step % check_every:
             continue
         check_state(model, data, "settling")
-        if data.time - start >= params.min_time and _max_speed(data, free) < params.rest_speed:
+        poses.append(_poses(data, free))
+        if data.time - start >= params.min_time and (_max_speed(data, free) < params.rest_speed
+                                                     or _stayed(poses, params.rest_speed * params.rest_window)):
             break
-    return data.time - start
+    return float(data.time - start)
 
 
 def rest_check(model: mujoco.MjModel, duration: float, key: str = KEYFRAME,
