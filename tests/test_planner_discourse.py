@@ -11,6 +11,7 @@ from test_planner_rules import CLUTTER
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
 from realsim.planner.discourse import drop_talk, steps_as_clauses
+from realsim.planner.types import ObjectInfo
 
 
 def calls(sentence: str) -> list[str]:
@@ -67,3 +68,37 @@ def test_a_step_list_counts_up_from_one() -> None:
     assert steps_as_clauses("1. lift the mug 2. go home") == "lift the mug, then go home"
     assert steps_as_clauses("push the mug 10. then go home") == "push the mug 10. then go home"  # a distance, not a step
     assert steps_as_clauses("push it 2. then 3. home") == "push it 2. then 3. home"
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # "not X, Y": Y replaces what the command named, or only confirms it
+    ("put the green cube behind the bowl? not the blue one, the green", ["place_beside('obj5_cube', 'obj6_bowl', 'behind')"]),
+    ("put the blue cube on the bowl, no, not the blue one, the red one", ["place_on('obj3_cube', 'obj6_bowl')"]),
+    ("put the banana next to the bowl. not in it, just beside it", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("put the banana in the bowl, not in it, behind it", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    # remarks and times after a command that has its place; holding on; "while you're at it"; "after"
+    ("put the strawberry next to the bowl, they go together", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    ("put the banana behind the bowl before it falls off, thanks", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    ("put the banana in the bowl, I'm making a smoothie later", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("lift the banana and keep holding it until I say so", ["grasp('obj7_banana')"]),
+    ("put the banana in the bowl while you're at it", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("lift the banana. Oh, and go home after.", ["grasp('obj7_banana')", "go_home()"]),
+])
+def test_clarifications_and_remarks(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+@pytest.mark.parametrize("sentence", [
+    "put the red cube on the blue cube, not the green one, the yellow one",  # neither named nor agreeing: asked
+    "push the banana toward the bowl until it sits next to the strawberry",  # a time that names a place is never dropped
+])
+def test_unclear_clarifications_refused(sentence: str) -> None:
+    with pytest.raises(InputError):
+        calls(sentence)
+
+
+def test_the_scenes_own_name_with_another_generic_noun() -> None:
+    """"the big white thing" is the scene's "big white object", not the biggest white thing."""
+    objs = [ObjectInfo("obj1_big_white_object", "big white object", (), (0.4, 0.0, 0.03), (0.05, 0.05, 0.05)),
+            ObjectInfo("obj2_white_box", "white box", (), (0.4, 0.2, 0.05), (0.2, 0.1, 0.1))]
+    assert [c.text() for c in RulePlanner().plan("pick up the big white thing", objs).calls] == ["grasp('obj1_big_white_object')"]

@@ -39,6 +39,7 @@ TALK: tuple[str, ...] = (
     r"(?:i )?hope (?:i m|im|i am) not (?:bothering|disturbing|troubling) you", r"no (?:rush|hurry|pressure|stress)", r"(?:take|taking) your time",
     r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
     # exhortations and chat
+    r"while (?:you re|youre|you are) at it", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
     r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
     r"(?:much|very|so|ever so|really|truly|indeed)",

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import casual, discourse, places, speech, topic
+from realsim.planner import casual, clarify, discourse, places, speech, topic
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 
 FILLERS = (
@@ -16,7 +16,7 @@ FILLERS = (
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"maybe",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"maybe", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
@@ -56,7 +56,7 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
-    text = discourse.drop_talk(discourse.steps_as_clauses(text))
+    text = clarify.clarify(discourse.drop_talk(discourse.steps_as_clauses(text)))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
@@ -67,6 +67,8 @@ def clean(command: str) -> str:
                   r"\2 \1", text)  # "the can of tomato", "a tin of tomato soup"
     text = re.sub(r"\s+by (?:its|the|their) (?:handle|rim|top|side|edge|body|lid|middle)s?\b", "", text)  # the grasp is the robot's choice
     text = re.sub(r"\s+and (?:hold|keep) (?:it|them|holding it|holding them)(?: up| there| in the air| steady| still)?(?=$|[.,;!?])", "", text)
+    # holding on is what a lift leaves: "keep holding it until I say otherwise"
+    text = re.sub(r"(?:^|(?<=[.,;!?])|\s+and\b)\s*(?:and )?(?:keep|continue|just keep) (?:holding|to hold) (?:it|them|on(?: to (?:it|them))?)(?: up| there| in the air)?(?: until [^.,;!?]*)?(?=$|[.,;!?])", " ", text)
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
     text = _VOCATIVE.sub(" ", text)
     for short, word in _TEXTING.items():  # "could u grab the can pls"
@@ -114,6 +116,7 @@ def split_command(command: str) -> list[str]:
     """Clauses at 'then', 'and then', 'after that', commas, semicolons, full stops and 'and' before
     a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
     text = _in_order(clean(command))
+    text = re.sub(r"\s+after(?=$|[.,;])", "", text)  # "go back home after"
     text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s |you )?done"
                   r"|when (?:that s |you re |you )?(?:done|finished)|(?:but )?(?:in|at|by) the end)\b", ",", text)
     text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to|leave|keep|stay)\b)", ", ", text)  # "..., but don't put the mug in it"

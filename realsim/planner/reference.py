@@ -234,8 +234,9 @@ class Resolver:
     def _single_phrase(self, text: str, phrase: str, ctx: Context, want: str | None, exclude: Sequence[str],
                        allow_plural: bool, loose: bool = False) -> list[ObjectInfo]:
         cands = [o for o in self.objects if o.name not in exclude]
-        verbatim = [o for o in cands if text in (norm(o.label), " ".join(name_words(o.name)))]
-        if len(verbatim) == 1:  # the scene's own name said word for word ("the second from left yellow object")
+        said = _generic_as_object(text)
+        verbatim = [o for o in cands if said in (_generic_as_object(norm(o.label)), _generic_as_object(" ".join(name_words(o.name))))]
+        if len(verbatim) == 1:  # the scene's own name said word for word ("the second from left yellow object"; "thing" for "object")
             return verbatim
         text = re.sub(r"^(?:whichever|whatever)(?: one| thing)? (?:is|s) (?:the )?(\w+est|\w+most)$", r"\1 thing", text)  # "whatever is tallest"
         m = re.fullmatch(r"(.+?) (?:that is|that s|thats|which is|that are|which are|is|are) ((?:\w+ )?\w+)", text)
@@ -387,3 +388,8 @@ class Resolver:
             where = left_order(i, len(ranked))
             out.append(f"{o.name} ({' '.join(w for w in (self.color_of(o), o.label) if w)}, {where})")
         return out
+
+
+def _generic_as_object(text: str) -> str:
+    """A name with its generic noun said one way ("the big white thing" or "item": object; "one" may stand for any noun)."""
+    return re.sub(r"\b(?:thing|item)$", "object", text)

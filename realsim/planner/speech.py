@@ -14,7 +14,7 @@ import re
 from realsim.errors import InputError
 from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
-__all__ = ["instead", "object_first", "reasons", "repair"]
+__all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
 
 _MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
@@ -63,7 +63,7 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             said = _continued(said, verb, relation)
             if re.search(r"(?:^|\s)(?:the|that|this|a|an)\s", before[:start]) and not weak:  # which of two does it replace?
                 return _contrast(before, said, text, verb, relation)
-            return f"{before[:start].rstrip()} {_one_as(said, before[start:])}".strip()  # "put the soup can uh the tomato one behind the bowl"
+            return f"{before[:start].rstrip()} {one_as(said, before[start:])}".strip()  # "put the soup can uh the tomato one behind the bowl"
         if weak:
             return f"{before} {after}"
     return text
@@ -92,7 +92,7 @@ def _continued(said: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> s
     return said
 
 
-def _noun_phrases(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> list[tuple[int, int]]:
+def noun_phrases(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> list[tuple[int, int]]:
     """(start, end) of each noun phrase opened by a determiner, up to a place word, a verb or a pause."""
     out = []
     for m in re.finditer(r"(?:^|(?<=\s))(?:the|that|this|a|an)\s", text):
@@ -111,16 +111,16 @@ def _contrast(before: str, said: str, text: str, verb: re.Pattern[str], relation
         words = set(phrase.split())
         return {c for c, vocab in (("colour", COLOR_WORDS), ("size", (*BIG, *SMALL))) if words & set(vocab)}
 
-    said_np = next(iter(_noun_phrases(said, verb, relation)), (0, len(said)))
+    said_np = next(iter(noun_phrases(said, verb, relation)), (0, len(said)))
     wanted = classes(said[said_np[0]:said_np[1]])
-    hits = [(a, b) for a, b in _noun_phrases(before, verb, relation) if wanted and wanted & classes(before[a:b])]
+    hits = [(a, b) for a, b in noun_phrases(before, verb, relation) if wanted and wanted & classes(before[a:b])]
     if len(hits) != 1 or not re.search(r"\bone\b", said):
         raise InputError(f"{text!r}: '{said}' could replace either thing named before it; say the whole command again")
     a, b = hits[0]
-    return f"{before[:a]}{_one_as(said[said_np[0]:said_np[1]].strip(), before[a:b])} {before[b:].strip()}".strip()
+    return f"{before[:a]}{one_as(said[said_np[0]:said_np[1]].strip(), before[a:b])} {before[b:].strip()}".strip()
 
 
-def _one_as(said: str, replaced: str) -> str:
+def one_as(said: str, replaced: str) -> str:
     """"the green one" replacing "the blue cube": the green cube (its noun taken from what it replaces)."""
     head = re.sub(r"\s+(?:on|in|at|to) the\b.*$|[^a-z ].*$", "", replaced.strip()).split()
     return re.sub(r"\bone\b", head[-1], said, count=1) if len(head) > 1 and head[-1] != "one" else said
@@ -142,6 +142,12 @@ def object_first(clause: str, verb: re.Pattern[str]) -> str | None:
 # a reason or purpose after a command: talk about why, never where ("..., it's in my way when I reach for the banana")
 _REASON = re.compile(r"\s*,?\s*\b(?:because|cause|cos|coz|since|so that|so(?= (?:i|we|you|it|they|he|she|everyone|the|there|that|my|your|nothing|no)\b))\b[^.;!?]*"
                      r"|\s*,\s*(?:it's|it is|its|that's|thats|that is|they're|they are|when (?:i|we|you|it|they))\b[^.;!?]*")
+# a remark after a command: a statement of the speaker or about the things ("..., they go together",
+# "..., I'm making lunch"), or a time ("before it falls off", "until I say so"); dropped like a
+# reason, but only when it names no place ("until it sits next to the bowl" is kept)
+_REMARK = re.compile(r"\s*,\s*(?:(?:clearly|obviously|honestly|basically|apparently|anyway|seriously|well)\s+)?"
+                     r"(?:i'm|im|i am|i've|ive|i have|i need|i'll|we're|we are|we|they|he's|she's|there's|theres|this is|that's|thats|that is)\b[^.;!?]*"
+                     r"|\s*,?\s*\b(?:before (?:it|they|he|she|someone|somebody|anyone|anybody|things?)|until (?:i|we|you|it|they|someone)|in case)\b[^.;!?]*")
 
 
 def reasons(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
@@ -153,7 +159,7 @@ def reasons(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     out, start = [], 0
     for sentence in re.finditer(r"[^.;!?]+[.;!?]*", text):
         body = sentence.group(0)
-        for m in _REASON.finditer(body):
+        for m in [*_REASON.finditer(body), *(r for r in _REMARK.finditer(body) if not place_any.search(r.group(0)))]:
             head = body[: m.start()]
             if verb_any.search(head) and place_any.search(head):
                 body = head + body[m.end():]
