@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -21,7 +22,8 @@ def is_lone_object(path: Path) -> bool:
     several bodies)."""
     if not path.is_file() or path.suffix.lower() not in MESH_SUFFIXES or (path.suffix.lower() == ".ply" and is_point_cloud_ply(path)):
         return False
-    extent, one_body = _mesh_shape(str(path), path.stat().st_mtime_ns)
+    stamp = path.stat().st_mtime_ns
+    extent = _mesh_extent(str(path), stamp)
 
     def fits(unit: str, size: tuple[float, float]) -> bool:
         return size[0] <= extent * UNIT_SCALE[unit] <= size[1]
@@ -29,26 +31,44 @@ def is_lone_object(path: Path) -> bool:
     scene_size = (OBJECT_EXTENT[1], PLAUSIBLE_EXTENT[1])
     if fits("m", OBJECT_EXTENT) or fits("m", scene_size):
         return fits("m", OBJECT_EXTENT)
-    return one_body and (fits("cm", OBJECT_EXTENT) or fits("mm", OBJECT_EXTENT))
+    if not (fits("cm", OBJECT_EXTENT) or fits("mm", OBJECT_EXTENT)):
+        return False
+    return _one_closed_body(str(path), stamp)  # the costly check, only when the size alone cannot tell
+
+
+def _load(path: str) -> Any:
+    import trimesh
+
+    return trimesh.load(path, force="mesh", process=False)
 
 
 @lru_cache(maxsize=16)
-def _mesh_shape(path: str, mtime_ns: int) -> tuple[float, bool]:
-    """(largest bounding-box side, whether it is one closed body) of a mesh file; (0, False) when it
-    cannot be read (the scan path reports why). One body: after welding seams, a connected part
-    holds >= 99.5 % of the area and >= 99 % of the edges join exactly two faces."""
+def _mesh_extent(path: str, mtime_ns: int) -> float:
+    """The largest bounding-box side of a mesh file; 0 when it has no faces or cannot be read (the scan path reports why)."""
+    try:
+        mesh = _load(path)
+        bounds = mesh.bounds
+    except Exception:  # unreadable or absurd geometry: not an object (the scan path says what is wrong)
+        return 0.0
+    if bounds is None or not np.all(np.isfinite(bounds)) or len(getattr(mesh, "faces", ())) == 0:
+        return 0.0
+    return float(np.max(bounds[1] - bounds[0]))
+
+
+@lru_cache(maxsize=16)
+def _one_closed_body(path: str, mtime_ns: int) -> bool:
+    """Whether a mesh file is one closed body: after welding seams, a connected part holds >= 99.5 %
+    of the area and >= 99 % of the edges join exactly two faces. False when it cannot be read."""
     import trimesh
 
     try:
-        mesh = trimesh.load(path, force="mesh", process=False)
-        bounds = mesh.bounds
-        if bounds is None or not np.all(np.isfinite(bounds)) or len(mesh.faces) == 0:
-            return 0.0, False
-        extent = float(np.max(bounds[1] - bounds[0]))
+        mesh = _load(path)
+        if len(mesh.faces) == 0:
+            return False
         mesh.merge_vertices(merge_tex=True, merge_norm=True)
         _, uses = np.unique(np.sort(mesh.edges, axis=1), axis=0, return_counts=True)
         parts = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
         area = np.bincount(parts, weights=mesh.area_faces)
-    except Exception:  # unreadable or absurd geometry: not an object (the scan path says what is wrong)
-        return 0.0, False
-    return extent, bool((uses == 2).mean() >= 0.99 and area.max() >= 0.995 * area.sum())
+    except Exception:  # unreadable or absurd geometry: not an object
+        return False
+    return bool((uses == 2).mean() >= 0.99 and area.max() >= 0.995 * area.sum())
