@@ -130,3 +130,28 @@ def test_the_free_space_cuts_keep_what_the_camera_saw_of_the_object() -> None:
     assert np.mean(_inside(kept, inward)) >= 0.99  # no cut takes off more than the noise of a face the camera saw
     beside = mine.reshape(view.depth.shape)
     assert _covered_pixels(kept, view, beside=beside) <= 0.05 * _covered_pixels([guess], view, beside=beside)  # the guess is cut
+
+
+def test_the_cut_search_skips_no_direction_that_could_win() -> None:
+    """_best_cut (which counts only the directions that may win) picks the cut an exhaustive search
+    over every direction and every cut below each bad sample picks, on generated pieces."""
+    from realsim.completion.freespace import MISS_WEIGHT, _best_cut, _directions
+
+    rng = np.random.default_rng(3)
+    for trial in range(20):
+        centre = rng.normal(size=3) * 0.1
+        inside = centre + rng.normal(size=(int(rng.integers(300, 2000)), 3)) * rng.uniform(0.01, 0.05, 3)
+        bad = centre + rng.normal(size=(int(rng.integers(2, 200)), 3)) * 0.03 + rng.normal(size=3) * 0.02
+        ray = rng.normal(size=3)
+        normals = _directions(ray / np.linalg.norm(ray))
+        samples = 1530
+        n, c, cost = _best_cut(inside, bad, normals, samples)
+        pi, pb = inside @ normals.T, bad @ normals.T
+        cuts = np.sort(pb, axis=0) - 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)
+        every = 1.0 - (pi[:, None, :] <= cuts[None]).mean(axis=0) + MISS_WEIGHT * np.arange(len(bad))[:, None] / samples
+        none = MISS_WEIGHT * len(bad) / samples
+        if every.min() >= none:
+            assert not np.isfinite(c) and cost == none
+            continue
+        k, j = np.unravel_index(int(np.argmin(every)), every.shape)
+        assert np.allclose(n, normals[j]) and c == cuts[k, j] and abs(cost - every[k, j]) < 1e-12, trial

@@ -18,6 +18,7 @@ import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
+from realsim.completion.hull import trimesh_hull
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -31,6 +32,7 @@ INSIDE_SAMPLES = 2000
 MAX_CUT_LOSS = 0.1  # a piece that one cut would lose more of is split in two first
 MIN_SPLIT = 0.04  # m: pieces shorter than this are cut, never split
 KEEP_MARGIN = 0.002  # m: seen points this far outside a piece still bind its cuts
+PRUNE_SLACK = 4  # inside points of slack when skipping cut directions that cannot win (see _open_columns)
 MISS_WEIGHT = 20.0  # leaving this share of the surface seen through costs as much as losing the whole piece, inverted
 
 
@@ -66,13 +68,26 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     return np.vstack([piece.vertices, pts])
 
 
-def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray) -> np.ndarray:
-    """Per cut (K, N) how many of the ``pi`` projections (n, N) of its column lie at or below it."""
-    pi = np.sort(pi, axis=0)
+def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray, columns: np.ndarray) -> np.ndarray:
+    """Per cut (K, N) how many of the ``pi`` projections (n, N) of its column lie at or below it, for
+    the ``columns`` asked (0 elsewhere)."""
     span = 2.0 * max(float(np.abs(pi).max()), float(np.abs(cuts).max())) + 1.0  # columns apart: one sorted array
-    shift = span * np.arange(pi.shape[1])
-    kept = np.searchsorted((pi + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right").reshape(cuts.shape, order="F")
-    return np.asarray(kept - len(pi) * np.arange(pi.shape[1]))
+    shift = span * columns
+    sub = np.sort(pi[:, columns], axis=0)
+    found = np.searchsorted((sub + shift).ravel(order="F"), (cuts[:, columns] + shift).ravel(order="F"), side="right")
+    kept = np.zeros(cuts.shape, np.int64)
+    kept[:, columns] = found.reshape((len(cuts), len(columns)), order="F") - len(pi) * np.arange(len(columns))
+    return kept
+
+
+def _open_columns(pi: np.ndarray, cuts: np.ndarray, first: np.ndarray, best: float, samples: int) -> np.ndarray:
+    """The columns (cut directions) whose cuts ``cuts`` (K, N, ascending) may cost no more than
+    ``best``: the lowest (``first``, its cost per column) or a higher one, which keeps at most what
+    the highest keeps and leaves a bad sample more (MISS_WEIGHT / samples). The others cannot hold
+    the least cost (PRUNE_SLACK points of slack for rounding), so their counts are not made."""
+    slack = PRUNE_SLACK / max(len(pi), 1)
+    reach = 1.0 - (pi <= cuts[-1]).sum(axis=0) / max(len(pi), 1) + MISS_WEIGHT / samples
+    return np.flatnonzero((first <= best + slack) | (reach <= best + slack))
 
 
 def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int,
@@ -86,16 +101,22 @@ def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples:
     limit = (keep @ normals.T).max(axis=0)[None, :] if keep is not None and len(keep) else None
     none = MISS_WEIGHT * len(bad) / samples
 
-    def costs(cuts: np.ndarray) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
-        kept = (pi[:, None, :] <= cuts[None]).sum(axis=0) if len(cuts) <= 8 else _kept_by_sorting(pi, cuts)
+    def costs(cuts: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
+        if len(cuts) <= 8:
+            kept = (pi[:, None, :] <= cuts[None]).sum(axis=0)
+        else:
+            kept = _kept_by_sorting(pi, cuts, np.arange(pi.shape[1]) if columns is None else columns)
         cost = 1.0 - kept / max(len(pi), 1) + MISS_WEIGHT * np.arange(len(cuts))[:, None] / samples
+        if columns is not None:
+            cost[:, np.setdiff1d(np.arange(pi.shape[1]), columns)] = np.inf
         return cost if limit is None else np.where(cuts >= limit, cost, np.inf)  # leave every ``keep`` point
 
     first = costs(pb.min(axis=0)[None, :] - width)
     rows = min(len(pb), int(np.floor(min(float(first.min()), none) * samples / MISS_WEIGHT)) + 1)
     if rows > 1:
         low = np.partition(pb, rows - 1, axis=0)[:rows] if rows < len(pb) else pb
-        cost = costs(np.sort(low, axis=0) - width)
+        cuts = np.sort(low, axis=0) - width
+        cost = costs(cuts, _open_columns(pi, cuts, first[0], min(float(first.min()), none), samples))
     else:
         cost = first
     k, j = np.unravel_index(int(np.argmin(cost)), cost.shape)
@@ -232,7 +253,7 @@ def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, toleranc
             continue
         if obj.id in supporters and not _holds(clipped, supporters[obj.id][:, :2]):
             continue
-        hull = trimesh.convex.convex_hull(np.vstack([p.vertices for p in clipped]))
+        hull = trimesh_hull(np.vstack([p.vertices for p in clipped]))
         if obj.visual is None or obj.visual is obj.collision[0]:  # a single hull is its own visual: the clipped pieces' hull
             visual = hull
         else:

@@ -5,6 +5,9 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
+from trimesh import triangles, util
+from trimesh.constants import tol
+from trimesh.convex import QHULL_DEFAULT
 
 
 def fast_hull(points: np.ndarray) -> trimesh.Trimesh:
@@ -29,3 +32,45 @@ def solid_hull(points: np.ndarray) -> trimesh.Trimesh | None:
     except QhullError:
         return None
     return hull if hull.volume > 1e-9 else None
+
+
+def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
+    """``trimesh.convex.convex_hull(points)`` (the same vertices, faces and normals), built without
+    its merge and repair passes when they would change nothing: no two vertices within trimesh's
+    merge tolerance, every edge shared by two faces in opposite directions, a positive volume.
+    Anything else goes to trimesh itself (those passes cost more than the hull)."""
+    points = np.asarray(points, dtype=np.float64)
+    try:
+        hull = ConvexHull(points, qhull_options=str(QHULL_DEFAULT))
+    except QhullError:
+        return _by_trimesh(points)
+    vid = np.sort(hull.vertices)
+    index = np.zeros(len(hull.points), dtype=np.int64)
+    index[vid] = np.arange(len(vid))
+    faces = index[hull.simplices].copy()
+    vertices = hull.points[vid].copy()
+    crosses = triangles.cross(vertices[faces])
+    normals, valid = util.unitize(crosses, check_valid=True)
+    faces, crosses = faces[valid], crosses[valid]
+    area = triangles.area(crosses=crosses)
+    centre = vertices[faces].mean(axis=1)
+    if area.sum() <= 0:
+        return _by_trimesh(points)
+    backwards = util.diagonal_dot(normals, centre - np.average(centre, weights=area, axis=0)) < 0.0
+    faces[backwards] = np.fliplr(faces[backwards])
+    normals[backwards] *= -1.0
+    rounded = (vertices * 10 ** util.decimal_to_digits(tol.merge)).round().astype(np.int64)
+    order = np.lexsort(rounded.T)
+    repeated = np.any(np.all(rounded[order[1:]] == rounded[order[:-1]], axis=1))
+    edges = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    directed = np.sort(edges[:, 0] * len(vertices) + edges[:, 1])
+    reverse = np.sort(edges[:, 1] * len(vertices) + edges[:, 0])
+    volume = float(np.einsum("fk,fk->", vertices[faces[:, 0]], np.where(backwards[:, None], -crosses, crosses))) / 6.0
+    if repeated or np.any(directed[1:] == directed[:-1]) or not np.array_equal(directed, reverse) or volume <= 1e-15:
+        return _by_trimesh(points)  # every directed edge once and its reverse too: closed and consistently wound
+    return trimesh.Trimesh(vertices=vertices, faces=faces, face_normals=normals, process=False, validate=False)
+
+
+def _by_trimesh(points: np.ndarray) -> trimesh.Trimesh:
+    hull: trimesh.Trimesh = trimesh.convex.convex_hull(points)
+    return hull

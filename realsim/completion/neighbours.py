@@ -6,6 +6,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
+from realsim.completion.hull import trimesh_hull
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
@@ -36,7 +37,7 @@ def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> tri
     if len(points) < 4:
         return None
     try:
-        out = trimesh.convex.convex_hull(points)
+        out = trimesh_hull(points)
     except QhullError:
         return None
     return out if out.volume > 1e-7 else None
