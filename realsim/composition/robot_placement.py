@@ -14,6 +14,7 @@ choice is deterministic).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import mujoco
@@ -22,7 +23,7 @@ import numpy as np
 from realsim.geometry import yaw_quat
 from realsim.robot.grasps import frame_from
 from realsim.robot.ik import ArmIK, IKParams, mat_to_quat
-from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, RobotHandles, attach_robot
+from realsim.robot.model import BASE_FOOTPRINT, GRIPPER_MAX_OPENING, PREFIX, RobotHandles, attach_robot, panda_spec
 from realsim.scene import Scene, SceneObject, primary_support
 
 TOP_DOWN = np.array([0.0, 1.0, 0.0, 0.0])  # tcp z axis pointing down (w, x, y, z)
@@ -99,6 +100,24 @@ def handle_targets(model: mujoco.MjModel, pregrasp: float = 0.10) -> list[tuple[
     return out
 
 
+@functools.lru_cache(maxsize=1)
+def bare_panda() -> mujoco.MjModel:
+    """The Panda at the origin without geoms or meshes: the bodies (explicit inertials), joints,
+    sites and actuators IK reads, the same arrays as the full model's, compiled without the mesh
+    processing that costs half a second (a pose search needs kinematics, not looks)."""
+    child, _ = panda_spec()
+    for geom in list(child.geoms):
+        child.delete(geom)
+    for mesh in list(child.meshes):
+        child.delete(mesh)
+    spec = mujoco.MjSpec()
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.attach(child, prefix=PREFIX, frame=spec.worldbody.add_frame(pos=[0.0, 0.0, 0.0], quat=[1.0, 0.0, 0.0, 0.0]))
+    for key in list(spec.keys):
+        spec.delete(key)
+    return spec.compile()
+
+
 def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK,
                oriented: list[tuple[np.ndarray, np.ndarray]] = ()) -> tuple[float, int, float]:
     """(score, reachable count, mean manipulability) of a base pose over top-down hover
@@ -106,7 +125,7 @@ def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np
 
     Targets beyond the arm's reach sphere around the shoulder count as unreachable without IK.
     """
-    ik = ArmIK(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])), ik_params)
+    ik = ArmIK(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])), ik_params, scene=bare_panda())
     shoulder = np.array([pose[0], pose[1], base_z + SHOULDER_HEIGHT])
     reach, manip = 0, []
     for t, quat in [(t, TOP_DOWN) for t in targets] + list(oriented):
