@@ -102,3 +102,18 @@ def test_the_scenes_own_name_with_another_generic_noun() -> None:
     objs = [ObjectInfo("obj1_big_white_object", "big white object", (), (0.4, 0.0, 0.03), (0.05, 0.05, 0.05)),
             ObjectInfo("obj2_white_box", "white box", (), (0.4, 0.2, 0.05), (0.2, 0.1, 0.1))]
     assert [c.text() for c in RulePlanner().plan("pick up the big white thing", objs).calls] == ["grasp('obj1_big_white_object')"]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # word enumerators and bracketed numbers are step marks, never an ordinal naming an object
+    ("Two steps: first, lift the banana; second, put it next to the bowl.", ["grasp('obj7_banana')", "place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("(1) push the banana 5 cm left (2) go home", ["push('obj7_banana', 'left', 0.05)", "go_home()"]),
+    # a thing and its place as two pieces; a terse lift, said twice, is one lift
+    ("Red cube, on the blue cube. Green one, next to it.", ["place_on('obj3_cube', 'obj4_cube')", "place_beside('obj5_cube', 'obj3_cube', 'next')"]),
+    ("Banana. Up. Lift it.", ["grasp('obj7_banana')"]),
+    # a remark after a take; a reason never swallows the clause after it
+    ("grab the strawberry, my daughter wants it", ["grasp('obj8_strawberry')"]),
+    ("put the banana in the bowl because it is ripe, then go home", ["place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+])
+def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines

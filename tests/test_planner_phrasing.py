@@ -105,7 +105,7 @@ REFERENCES: list[tuple[str, list[str]]] = [
     ("move the bowl closer to you", ["push('obj6_bowl', 'back', 0.1)"]),
     ("stack the cubes", ["place_on('obj3_cube', 'obj4_cube')", "place_on('obj5_cube', 'obj3_cube')"]),
     ("return the strawberry to where it was", ["place('obj8_strawberry', [0.25, 0.3, 0.02])"]),
-    ("pick up the strawberry and give it to me", ["grasp('obj8_strawberry')", "grasp('obj8_strawberry')"]),
+    ("pick up the strawberry and give it to me", ["grasp('obj8_strawberry')"]),  # held already: one grasp
     ("put the cube nearest the bowl into the bowl", ["place_in('obj4_cube', 'obj6_bowl')"]),
     ("grab whatever is biggest", ["grasp('obj6_bowl')"]),
     ("move the banana to the front of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),

@@ -33,11 +33,14 @@ _TERSE_PUSH = re.compile(rf"((?:the |a |that |this )?[a-z]+(?: [a-z]+){{0,3}}?(?
 
 def terse(clause: str, has_place: bool) -> str | None:
     """The command a verbless clause means, or None: an object, a way and how far ("bowl left
-    6cm" -> "move bowl left 6cm"); an object "by" another with no other place word ("all cans by
+    6cm" -> "move bowl left 6cm"); an object and "up" ("mug up" -> "lift mug"); an object "by" another with no other place word ("all cans by
     bowl" -> "put all cans by bowl"). ``has_place``: whether the clause already names a place."""
     m = _TERSE_PUSH.fullmatch(clause)
     if m:
         return f"move {m.group(1)} {m.group(2)}"
+    m = re.fullmatch(r"((?:the |that |this )?[a-z]+(?: [a-z]+){0,3}?) up(?: high| in the air)?", clause)
+    if m and not has_place:  # "mug up", "marker, up!": lift it
+        return f"lift {m.group(1)}"
     if not has_place and re.fullmatch(r"(.+?) by (?!\d|about |around |roughly |a |hand\b)(.+)", clause):
         return f"put {clause}"
     return None

@@ -18,7 +18,7 @@ import re
 
 __all__ = ["TALK", "drop_talk", "steps_as_clauses"]
 
-_MUCH = r"(?: (?:so|very|ever so|so very|very very|really|truly|awfully|most|ever)?\s?(?:much|kindly|a lot|a bunch|heaps|loads|indeed|in advance|again))*"
+_MUCH = r"(?: (?:so|very|ever so|so very|very very|really|truly|awfully|most|ever)?\s?(?:much|kindly|a lot|a bunch|a million|a ton|tons|heaps|loads|indeed|in advance|again))*"
 _WHO = (r"(?:(?:my |you )?(?:dear|young|old|good|kind|dear old|little|sweet)?\s?"
         r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine))")
 # Discourse phrases: none names an object, a place, a direction or a distance.
@@ -39,7 +39,7 @@ TALK: tuple[str, ...] = (
     r"(?:i )?hope (?:i m|im|i am) not (?:bothering|disturbing|troubling) you", r"no (?:rush|hurry|pressure|stress)", r"(?:take|taking) your time",
     r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
     # exhortations and chat
-    r"while (?:you re|youre|you are) at it", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
+    r"while (?:you re|youre|you are) at it", r"(?:ok |okay |so |right )?(?:here s|heres|here is) (?:the|my|a) (?:plan|deal|idea|thing|task)", r"(?:the )?plan is", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
     r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
     r"(?:much|very|so|ever so|really|truly|indeed)",
@@ -88,9 +88,12 @@ def steps_as_clauses(text: str) -> str:
     """A numbered step list as clauses ("1. grab X 2) put it ..." -> "grab X, then put it ..."):
     "step N" / "step one" before a pause always; bare numbers "1." "2)" only when they count up
     from 1 in order, so a distance ("push it 10. then ...") is never taken for a step."""
-    text = re.sub(r"(?:^|(?<=[\s.,;:!?]))(?:the )?steps?(?: are| is)?\s*:\s*", " ", text)  # "Steps: ..."
+    text = re.sub(r"(?:^|(?<=[\s.,;:!?]))(?:(?:the|two|three|four|five|\d|a few|some|these|my|here are the|here are my)\s+)?steps?(?: are| is)?\s*:\s*", " ", text)
+    # an enumerator said as a word before a pause: "first, lift X; second, put it ..."
+    text = re.sub(r"(?:^|(?<=[.,;:!?]))\s*(?:first|firstly|second|secondly|third|thirdly|fourth|fifth|next|then|finally|lastly|last of all)\s*[,:;]\s*",
+                  ", then ", text)
     text = re.sub(rf"(?:^|(?<=[\s.,;:!?]))step\s+(?:\d+|{'|'.join(_WORD_NUMBERS)})\s*[.,:;)-]*\s+", ", then ", text)
-    marks = list(re.finditer(r"(?:^|(?<=[\s.,;:!?]))(\d{1,2})\s*[.)]\s+(?=[a-z])", text))
+    marks = list(re.finditer(r"(?:^|(?<=[\s.,;:!?]))\(?(\d{1,2})\s*[.)]\s+(?=[a-z])", text))
     run: list[re.Match[str]] = []
     for m in marks:
         if int(m.group(1)) == len(run) + 1:

@@ -127,7 +127,7 @@ def split_command(command: str) -> list[str]:
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
     parts = [re.sub(rf"^you (?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you put in the bowl"
     parts = [_prohibition(p, verb_re) for p in parts]
-    parts = topic.fronted(topic.choice(topic.partitive(parts)), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
+    parts = topic.fronted(topic.joined(topic.choice(topic.partitive(parts)), verb_re), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part):

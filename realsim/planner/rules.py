@@ -72,7 +72,9 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
             p.ctx.set(p.resolver.resolve(c[len(TOPIC):], Context(p.ctx.last), allow_plural=True))
         elif c:
             try:
-                steps.append(repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p))
+                step = repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p)
+                if not (steps and [x.name for x in step.calls] == ["grasp"] and step.calls == steps[-1].calls):  # "Mug, up. Lift it.": held already
+                    steps.append(step)
             except InputError as exc:
                 if not is_aside(c, p):
                     raise

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
+from realsim.planner.lexicon import TAKE
 from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
 __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
@@ -140,28 +141,35 @@ def object_first(clause: str, verb: re.Pattern[str]) -> str | None:
 
 
 # a reason or purpose after a command: talk about why, never where ("..., it's in my way when I reach for the banana")
-_REASON = re.compile(r"\s*,?\s*\b(?:because|cause|cos|coz|since|so that|so(?= (?:i|we|you|it|they|he|she|everyone|the|there|that|my|your|nothing|no)\b))\b[^.;!?]*"
-                     r"|\s*,\s*(?:it's|it is|its|that's|thats|that is|they're|they are|when (?:i|we|you|it|they))\b[^.;!?]*")
+_UNTIL = r"(?:(?!,\s*(?:but|then|and|after|also|finally|next)\b)[^.;!?])*"  # to the end of the sentence or the next clause
+_REASON = re.compile(rf"\s*,?\s*\b(?:because|cause|cos|coz|since|so that|so(?= (?:i|we|you|it|they|he|she|everyone|the|there|that|my|your|nothing|no)\b))\b{_UNTIL}"
+                     rf"|\s*,\s*(?:it's|it is|its|that's|thats|that is|they're|they are|when (?:i|we|you|it|they))\b{_UNTIL}")
 # a remark after a command: a statement of the speaker or about the things ("..., they go together",
 # "..., I'm making lunch"), or a time ("before it falls off", "until I say so"); dropped like a
 # reason, but only when it names no place ("until it sits next to the bowl" is kept)
-_REMARK = re.compile(r"\s*,\s*(?:(?:clearly|obviously|honestly|basically|apparently|anyway|seriously|well)\s+)?"
-                     r"(?:i'm|im|i am|i've|ive|i have|i need|i'll|we're|we are|we|they|he's|she's|there's|theres|this is|that's|thats|that is)\b[^.;!?]*"
-                     r"|\s*,?\s*\b(?:before (?:it|they|he|she|someone|somebody|anyone|anybody|things?)|until (?:i|we|you|it|they|someone)|in case)\b[^.;!?]*")
+_REMARK = re.compile(rf"\s*,\s*(?:(?:clearly|obviously|honestly|basically|apparently|anyway|seriously|well)\s+)?"
+                     rf"(?:i'm|im|i am|i've|ive|i have|i need|i'll|we're|we are|we|they|he's|she's|there's|theres|this is|that's|thats|that is"
+                     rf"|(?:my|our) [a-z]+(?: [a-z]+)? (?:wants?|likes?|loves?|needs?|left|is|was|has|had|made|keeps?|will|gets?))\b{_UNTIL}"
+                     rf"|\s*,?\s*\b(?:before (?:it|they|he|she|someone|somebody|anyone|anybody|things?)|until (?:i|we|you|it|they|someone)|in case)\b{_UNTIL}")
+
+
+_TAKE = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(v) for v in sorted(TAKE, key=len, reverse=True))}) (?:up )?(?:the|that|this|it|them)\b")
 
 
 def reasons(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     """``text`` without a reason or purpose clause ("because ...", "since ...", "so I can ...",
-    ", it's ...", ", when I ...") that follows, in the same sentence, a command whose place is
-    already said: what such a clause names is never the place or the object."""
+    ", it's ...", ", when I ...") or a remark that follows, in the same sentence, a command whose
+    place is already said, or a take that needs none: what such a clause names is never the place
+    or the object."""
     verb_any = re.compile(rf"(?<![a-z]){verb.pattern}")
     place_any = re.compile(rf"(?<![a-z]){relation.pattern}\s*(?:the|a|an|my|your|that|this|these|those|each other|one another|it|them|me|you)\b")
     out, start = [], 0
     for sentence in re.finditer(r"[^.;!?]+[.;!?]*", text):
         body = sentence.group(0)
-        for m in [*_REASON.finditer(body), *(r for r in _REMARK.finditer(body) if not place_any.search(r.group(0)))]:
+        remarks = [r for r in _REMARK.finditer(body) if not place_any.search(r.group(0))]
+        for m in [*_REASON.finditer(body), *remarks]:
             head = body[: m.start()]
-            if verb_any.search(head) and place_any.search(head):
+            if verb_any.search(head) and (place_any.search(head) or (m in remarks and _TAKE.search(head))):  # a take needs no place
                 body = head + body[m.end():]
                 break
         out.append(text[start: sentence.start()] + body)

@@ -12,10 +12,11 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
+from realsim.planner import casual
 from realsim.planner.lexicon import AVOID, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
-__all__ = ["TOPIC", "bare", "choice", "fronted", "partitive"]
+__all__ = ["TOPIC", "bare", "choice", "fronted", "joined", "partitive"]
 
 TOPIC = "topic: "  # a clause that only names what the next clause's "it" means
 
@@ -82,6 +83,20 @@ def partitive(parts: list[str]) -> list[str]:
     return [re.sub(r"\bone\b", " ".join([*words[:-1], singular(words[-1])]), parts[1], count=1), *parts[2:]]
 
 
+def joined(parts: list[str], verb_re: re.Pattern[str]) -> list[str]:
+    """A thing and its place said as two pieces ("Blue one, next to it"; "Marker, up!"): one piece,
+    so the place goes with that thing and not with the command before it."""
+    out: list[str] = []
+    for part in parts:
+        prev = out[-1] if out else ""
+        if (prev and not verb_re.match(prev) and not verb_re.match(part) and not has_relation(prev) and not _STATEMENT.search(prev)
+                and not prev.startswith(TOPIC) and re.fullmatch(r"[a-z ]+", prev) and (relation_start(part) or part in ("up", "up high"))):
+            out[-1] = f"{prev} {part}"
+        else:
+            out.append(part)
+    return out
+
+
 def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str]:
     """A bare noun phrase before a clause that acts on it, put into that clause: "the bowl, push it
     forward" (for "it"), "the banana, put in the bowl" (as the verb's object), "the soup, next to the
@@ -98,7 +113,7 @@ def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str
     resumed = bool(verb) and bool(_PRONOUN.search(rest))
     if n > 1 and not resumed:
         return parts
-    if _STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic):
+    if _STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic) or casual.terse(topic, has_relation(topic)):
         return parts
     if has_relation(bare(topic)) and not (resumed and comma):
         return parts
