@@ -13,6 +13,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
+from realsim.completion.hull import trimesh_hull
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import SceneObject
 
@@ -52,7 +53,7 @@ def brace(obj: SceneObject, margin: float) -> bool:
     k = int(np.argmin(lowest))
     t = np.linspace(0.0, 2 * np.pi, 8, endpoint=False)
     foot = np.column_stack([com[0] + 2 * margin * np.cos(t), com[1] + 2 * margin * np.sin(t), np.full(8, z0)])
-    grown = trimesh.convex.convex_hull(np.vstack([pieces[k].vertices, foot]))
+    grown = trimesh_hull(np.vstack([pieces[k].vertices, foot]))
     single = obj.visual is pieces[0] and len(pieces) == 1
     obj.collision = [grown if i == k else p for i, p in enumerate(pieces)]
     if single:

@@ -8,7 +8,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
-from realsim.completion.hull import solid_hull
+from realsim.completion.hull import solid_hull, trimesh_hull
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
@@ -97,7 +97,7 @@ def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed:
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
     kept[kept[:, 2] < base_z + step, 2] = base_z
     try:
-        hull: trimesh.Trimesh = trimesh.convex.convex_hull(kept)  # trimesh's triangulation: the painted surface
+        hull: trimesh.Trimesh = trimesh_hull(kept)  # trimesh's triangulation: the painted surface
         return hull
     except QhullError:
         return mesh

@@ -16,6 +16,7 @@ import numpy as np
 import trimesh
 
 from realsim.completion.circles import arc_coverage_deg, fit_circle
+from realsim.completion.hull import trimesh_hull
 
 
 @dataclass(frozen=True)
@@ -269,13 +270,13 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     rim_at_floor = float(np.interp(z_in[0], *zip(*sorted(zip(out_z, out_r)))))  # the outside at the floor's height
     bottom = [_ring(foot, base_z, fine, centre), _ring(max(floor_r, 1e-3), float(z_in[0]), fine, centre),
               _ring(max(rim_at_floor, 1e-3), float(z_in[0]), fine, centre)]
-    pieces = [trimesh.convex.convex_hull(np.vstack(bottom))]
+    pieces = [trimesh_hull(np.vstack(bottom))]
     for i, j in _straight_runs(np.column_stack([wall_r, wall_z]), np.column_stack([out_r, out_z]), params.max_bulge, params.segments):
         ring_r, ring_z = np.concatenate([wall_r[i:j + 1], out_r[i:j + 1]]), np.concatenate([wall_z[i:j + 1], out_z[i:j + 1]])
         for a0, a1 in zip(angles[:-1], angles[1:]):
             arc = np.linspace(a0, a1, 3)
-            pieces.append(trimesh.convex.convex_hull(np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(ring_r, ring_z)])))
-    outer = trimesh.convex.convex_hull(np.vstack([_ring(foot, base_z, fine, centre)] + [_ring(float(x), float(zz), fine, centre) for x, zz in zip(r_out, z_out)]))
+            pieces.append(trimesh_hull(np.vstack([_ring(float(x), float(zz), arc, centre) for x, zz in zip(ring_r, ring_z)])))
+    outer = trimesh_hull(np.vstack([_ring(foot, base_z, fine, centre)] + [_ring(float(x), float(zz), fine, centre) for x, zz in zip(r_out, z_out)]))
     order = np.argsort(np.concatenate([[base_z], z_out]), kind="stable")
     profile = (np.concatenate([[base_z], z_out])[order], np.concatenate([[foot], r_out])[order])
     return OpenContainer(pieces, visual, outer, wall, float(z_in[0]), profile)

@@ -11,7 +11,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
-from realsim.completion.hull import fast_hull
+from realsim.completion.hull import fast_hull, trimesh_hull
 from realsim.completion.neighbours import clip_convex
 
 
@@ -29,7 +29,7 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = 
     top[:, 2] = np.maximum(top[:, 2], base_z + 1e-3)
     cloud = np.vstack([top, base])
     try:
-        mesh = fast_hull(cloud) if fast else trimesh.convex.convex_hull(cloud)
+        mesh = fast_hull(cloud) if fast else trimesh_hull(cloud)
     except QhullError:
         lo, hi = cloud.min(axis=0), cloud.max(axis=0)
         hi = np.maximum(hi, lo + 0.005)

@@ -16,6 +16,7 @@ import numpy as np
 import trimesh
 
 from realsim.completion.circles import arc_coverage_deg, fit_circle
+from realsim.completion.hull import trimesh_hull
 from realsim.completion.params import CompletionParams
 
 
@@ -104,14 +105,14 @@ def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: C
         cylinder = trimesh.creation.cylinder(radius=radius, height=height, sections=n)
         cylinder.apply_translation([centre[0], centre[1], base_z + height / 2])
         return Revolved([cylinder], cylinder, cylinder, centre, radius, straight=True)
-    pieces = [trimesh.convex.convex_hull(np.vstack([_ring(float(r[i]), float(z[i]), centre, n), _ring(float(r[i + 1]), float(z[i + 1]), centre, n)]))
+    pieces = [trimesh_hull(np.vstack([_ring(float(r[i]), float(z[i]), centre, n), _ring(float(r[i + 1]), float(z[i + 1]), centre, n)]))
               for i in range(len(z) - 1)]
     line = np.vstack([[0.0, base_z], np.column_stack([r, z]), [0.0, top_z]])
     visual = trimesh.creation.revolve(line, sections=n)
     visual.apply_translation([centre[0], centre[1], 0.0])
     if visual.volume < 0:
         visual.invert()
-    outer = trimesh.convex.convex_hull(np.vstack([p.vertices for p in pieces]))
+    outer = trimesh_hull(np.vstack([p.vertices for p in pieces]))
     return Revolved(pieces, visual, outer, centre, radius)
 
 

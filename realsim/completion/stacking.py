@@ -8,6 +8,7 @@ from typing import cast
 import numpy as np
 import trimesh
 
+from realsim.completion.hull import trimesh_hull
 from realsim.completion.params import CompletionParams
 from realsim.scene import SceneObject
 
@@ -44,7 +45,7 @@ def flatten_top(under: SceneObject, mesh: trimesh.Trimesh, top_z: float, params:
     """
     verts = mesh.vertices.copy()
     verts[:, 2] = np.minimum(verts[:, 2], top_z - params.base_clearance)  # the upper object drops onto it
-    flat: trimesh.Trimesh = trimesh.convex.convex_hull(verts)
+    flat: trimesh.Trimesh = trimesh_hull(verts)
     set_shape(under, flat, under.position - np.array([0.0, 0.0, params.base_clearance]), params)
     return flat
 
@@ -108,5 +109,5 @@ def seat_on(plane: np.ndarray, floor: float, base_z: float, meshes: list[trimesh
             continue
         seat = np.column_stack([base[:, :2], np.ones(len(base))]) @ plane - clearance
         base[:, 2] = np.minimum(base[:, 2], np.maximum(seat, floor))
-        out.append(trimesh.convex.convex_hull(np.vstack([v, base])))
+        out.append(trimesh_hull(np.vstack([v, base])))
     return out
