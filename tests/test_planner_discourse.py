@@ -117,3 +117,26 @@ def test_the_scenes_own_name_with_another_generic_noun() -> None:
 ])
 def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # a position said as a comparative in a topic or a choice is the extreme it picks, never a push
+    ("the can further left, put it in the bowl", ["place_in('obj1_soda_can', 'obj6_bowl')"]),
+    ("the one further forward, the bowl or the banana, lift it", ["grasp('obj6_bowl')"]),
+    ("whatever is closest to the banana, pick it up", ["grasp('obj4_cube')"]),
+    ("which ever is further away, the banana or the strawberry, put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("of the bowl and the banana, grab whichever is closer to you", ["grasp('obj6_bowl')"]),
+    # "there's X ... it", "there are two Xs ... the one ..."
+    ("there's a banana on the table. put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("There are two soda cans. Put the one further right in the bowl.", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
+    # more talk: closings, praise, "oh"
+    ("Hi! So, um, could you lift the banana for me? That'd be great, thanks! Have a nice day!", ["grasp('obj7_banana')"]),
+    ("lift the strawberry. oh also, go home after that. Cheers, legend!", ["grasp('obj8_strawberry')", "go_home()"]),
+])
+def test_comparatives_existentials_and_closings(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+def test_an_existential_of_several_is_asked() -> None:
+    with pytest.raises(InputError):
+        calls("there's a soda can on the table. put it in the bowl")  # two soda cans: which?

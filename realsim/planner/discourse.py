@@ -20,7 +20,7 @@ __all__ = ["TALK", "drop_talk", "steps_as_clauses"]
 
 _MUCH = r"(?: (?:so|very|ever so|so very|very very|really|truly|awfully|most|ever)?\s?(?:much|kindly|a lot|a bunch|a million|a ton|tons|heaps|loads|indeed|in advance|again))*"
 _WHO = (r"(?:(?:my |you )?(?:dear|young|old|good|kind|dear old|little|sweet)?\s?"
-        r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine))")
+        r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine|legend|hero|genius|boss|chief))")
 # Discourse phrases: none names an object, a place, a direction or a distance.
 TALK: tuple[str, ...] = (
     # greetings and address
@@ -30,7 +30,8 @@ TALK: tuple[str, ...] = (
     rf"(?:thank you|thanks|thankyou|thank u|thx|ty|tysm|tyvm|ta|cheers|many thanks|much obliged|obliged|much appreciated|appreciated"
     rf"|(?:i )?appreciate (?:it|that)(?: a lot)?|(?:i m|im|i am) (?:so |very |most |ever so )?(?:grateful|obliged|thankful)){_MUCH}(?: {_WHO})?",
     r"(?:i|we) (?:would|d|will|ll) be (?:so |very |most |ever so |really |truly |eternally )?(?:grateful|obliged|thankful)(?: to you)?",
-    r"(?:i m|im|i am) sure", r"(?:that s|thats|that is|that ll be|that would be|you re|youre|you are)(?: a)? (?:so |very |really |just )?"
+    r"(?:i m|im|i am) sure", r"(?:have|enjoy) a (?:nice|good|great|lovely|wonderful) (?:day|one|evening|night|weekend|morning|afternoon)",
+    r"(?:that s|thats|that is|that ll be|that would be|that d be|thatd be|you re|youre|you are|you d be|youd be)(?: a)? (?:so |very |really |just )?"
     r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|grand|fine|all|it|a star|a gem|a dear|a darling|the best|a legend|too kind|so kind)",
     r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|splendid|marvellous|marvelous|excellent|nice|cool|sweet|good job|well done|nice one|good stuff|bless you)",
     # politeness and hedges said as a piece of their own
@@ -42,7 +43,7 @@ TALK: tuple[str, ...] = (
     r"while (?:you re|youre|you are) at it", r"(?:ok |okay |so |right )?(?:here s|heres|here is) (?:the|my|a) (?:plan|deal|idea|thing|task)", r"(?:the )?plan is", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
     r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
-    r"(?:much|very|so|ever so|really|truly|indeed)",
+    r"(?:much|very|so|ever so|really|truly|indeed|also|too|as well)",
 )
 # a conditional or alternative: talk only in a sentence of talk alone ("If not, no worries.")
 _HEDGE: tuple[str, ...] = (

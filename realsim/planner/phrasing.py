@@ -16,7 +16,7 @@ FILLERS = (
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"maybe", r"while you(?: re| are)? at it",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
@@ -49,7 +49,7 @@ GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "m
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
-QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
+QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! ever\b)(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
                       r"| (?:you|you'?re|you are|that'?s|that is|it'?s|it is|all that'?s) (?:done|finished)\b)")
 
 
@@ -102,7 +102,7 @@ def clean(command: str) -> str:
                   r"|has|in|into|inside|on|onto|next|beside|behind|to)\b)", r"\1", text)
     text = re.sub(r"\bout of (?:the|my|your|our) way\b", " ", text)  # "get the banana out of the way, put it ...": take it
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
-    text = re.sub(r"(?<!the )(?<!far )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
+    text = re.sub(r"(?<!the )(?<!far )(?<!further )(?<!farther )(?<!more )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
     for filler in FILLERS:
         text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
     text = re.sub(rf"(?:^|(?<=[\s,.;]))do (?={VERB_START.pattern})", "", text)  # "do go back home": emphasis

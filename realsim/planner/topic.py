@@ -16,7 +16,7 @@ from realsim.planner import casual
 from realsim.planner.lexicon import AVOID, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
-__all__ = ["TOPIC", "bare", "choice", "fronted", "joined", "partitive"]
+__all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive"]
 
 TOPIC = "topic: "  # a clause that only names what the next clause's "it" means
 
@@ -27,6 +27,20 @@ _LOCATOR = re.compile(r"(?:the one )?(?:(?:that is |thats |that s |which is )?(?
                       r"|(?:on|at|in) the (?:front|back|middle|centre|center|left|right)\b|the \w+most\b)")
 _STATEMENT = re.compile(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b")
 _LIST = r"(?:the |that |this )?[a-z ]+?(?:(?:,| or| and)\s+(?:the |that |this )?[a-z ]+?)+"
+
+
+_EXISTS = re.compile(r"^(?:so |ok |okay |oh |look )?(?:there|here)(?: is| s)? (?:a|an|one|the) ")
+_SURFACE = r"(?:table|desk|counter|countertop|worktop|surface|floor)"
+_MOST = {"back": "backmost", "backward": "backmost", "backwards": "backmost", "forward": "frontmost", "front": "frontmost",
+         "left": "leftmost", "right": "rightmost"}
+
+
+def compared(phrase: str) -> str:
+    """A position said as a comparative inside a noun phrase ("the can further back", "the one more
+    to the left") as the extreme it picks ("the can backmost"); a push's "further back" is a way and
+    never reaches here (only topics and choices are read with it)."""
+    return re.sub(r"\b(?:that is |thats |that s |which is |is )?(?:further|farther|more) (?:to (?:the )?|towards? (?:the )?)?(back|backwards?|forward|front|left|right)\b(?! of)",
+                  lambda m: _MOST[m.group(1)], phrase)
 
 
 def bare(phrase: str) -> str:
@@ -44,12 +58,15 @@ def choice(parts: list[str]) -> list[str]:
         a, b = parts[i], parts[i + 1]
         m = re.search(r"\b(?:whichever|whatever|which ever)(?: one)? (?:is|s) (.+)$", a)
         if m and re.fullmatch(_LIST, b):
-            return [*parts[:i], f"{a[: m.start()]}the one {m.group(1)} among {_and(b)}".strip(), *parts[i + 2:]]
+            return [*parts[:i], f"{a[: m.start()]}{compared('the one ' + m.group(1))} among {_and(b)}".strip(), *parts[i + 2:]]
+        m = re.fullmatch(r"the one (.+)", a)
+        if m and re.fullmatch(_LIST, b) and " or " in b:  # "the one further back, the mug or the banana, ..."
+            return [*parts[:i], f"{compared(a)} among {_and(b)}", *parts[i + 2:]]
         m = re.fullmatch(r"(?:whichever|whatever|which ever)(?: one)? (?:is|s) (.+)", b)
         if m and re.search(_LIST + "$", a):
             listed = re.search(rf"(?:^|\b(?=the |that |this )){_LIST}$", a)
             if listed:
-                return [*parts[:i], f"{a[: listed.start()]}the one {m.group(1)} among {_and(listed.group(0))}".strip(), *parts[i + 2:]]
+                return [*parts[:i], f"{a[: listed.start()]}{compared('the one ' + m.group(1))} among {_and(listed.group(0))}".strip(), *parts[i + 2:]]
     return parts
 
 
@@ -66,8 +83,11 @@ def partitive(parts: list[str]) -> list[str]:
     while len(parts) > 2 and re.match(r"(?:of|out of|among|from among|between) ", parts[0]) and re.fullmatch(r"(?:the|that|this) [a-z ]+", parts[1]) \
             and not _VERB.match(parts[1]):  # "of the marker and the meat can": the list was split at its "and"
         parts = [f"{parts[0]} and {parts[1]}", *parts[2:]]
-    m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice) ((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
+    m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice|(?:so |ok |okay )?(?:there|here)(?: are| is| s)?|we have|i have|i see) "
+                     r"((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
     restricts = bool(m) and m.group(1) in ("of", "out of", "among", "from among", "between") and bool(m.group(2))
+    if m and restricts:  # "of the marker and the meat can, grab whichever is closer": the one closer
+        parts = [parts[0], re.sub(r"\b(?:whichever|which ever)(?: one)? (?:is |s )?", "the one ", parts[1]), *parts[2:]]
     one = re.search(r"\bthe one\b", parts[1])
     if m and restricts and " and " in f" {m.group(3)} " and one:  # "of the marker and the meat can, take the one further away"
         listed = f"{m.group(2)}{m.group(3)}".strip()
@@ -111,11 +131,14 @@ def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str
     rest = parts[n]
     verb = verb_re.match(rest)
     resumed = bool(verb) and bool(_PRONOUN.search(rest))
-    if n > 1 and not resumed:
+    said = _EXISTS.match(topic)  # "there's a mug on the table. put it in the bowl": the mug (the one, else asked)
+    topic = compared(re.sub(r"^(?:whatever|whichever)(?: one| thing)? (?:is |s )?", "the thing ", _EXISTS.sub("the ", topic)))
+    topic = re.sub(rf"\s+(?:on|at|upon) (?:the |my |your |our )?{_SURFACE}$", "", topic)
+    if n > 1 and not resumed or said and not resumed:
         return parts
     if _STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic) or casual.terse(topic, has_relation(topic)):
         return parts
-    if has_relation(bare(topic)) and not (resumed and comma):
+    if has_relation(bare(topic)) and not (resumed and (comma or said)):
         return parts
     if resumed:  # "the bowl, push it forward": a command opening with a noun phrase names what "it" means
         return [f"{TOPIC}{topic}", *parts[n:]]
