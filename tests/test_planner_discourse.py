@@ -140,3 +140,19 @@ def test_comparatives_existentials_and_closings(sentence: str, lines: list[str])
 def test_an_existential_of_several_is_asked() -> None:
     with pytest.raises(InputError):
         calls("there's a soda can on the table. put it in the bowl")  # two soda cans: which?
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # a question before a command is talk; the one thing it names is what "it" means next
+    ("why is the banana over there? put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("honestly who leaves cubes everywhere. put the green one behind the bowl", ["place_beside('obj5_cube', 'obj6_bowl', 'behind')"]),
+    # a wish, then "give it to me": one lift
+    ("i want the strawberry. give it to me", ["grasp('obj8_strawberry')"]),
+])
+def test_questions_and_wishes_before_a_command(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+def test_a_question_alone_is_refused() -> None:
+    with pytest.raises(InputError, match="question"):
+        calls("why is the banana over there?")

@@ -18,7 +18,9 @@ from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
 
 __all__ = ["is_aside"]
 
-_OPENER = r"(?:(?:ok|okay|so|ugh|hey|oh|well|um|hmm|haha|lol|alright|right)\s+)*"
+_OPENER = r"(?:(?:ok|okay|so|ugh|hey|oh|well|um|hmm|haha|lol|alright|right|seriously|honestly|wow|man|like)\s+)*"
+# a question is never a command: "why is the marker over there?", "who leaves cubes all over the place"
+_WH = re.compile(rf"{_OPENER}(?:why|who|how come|how on earth|what s with|whats with|what is with)\b")
 _STATEMENT = re.compile(rf"{_OPENER}(.+?) (?:is|are|s|looks|look|seems|seem|was|were|keeps|sits|has been|got|needs|need)\b")
 
 
@@ -37,6 +39,11 @@ def is_aside(clause: str, p: Parser) -> bool:
     if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look|(?:see|watch|notice|look at) (?:how|what|if|whether)"
                 rf"|let s see|lets see|has|have|had|does|did)\b", clause):
         return True  # "so there's a bowl and a mug here": what the speaker sees
+    if _WH.match(clause):  # the one thing it names, if any, is what "it" means next
+        named = [o for a, b in re.findall(r"\bthe ([a-z]+)(?: ([a-z]+))?", clause) for o in (_quiet(p, f"the {a} {b}") if b else []) or _quiet(p, f"the {a}")]
+        if len({o.name for o in named}) == 1:
+            p.ctx.set(named[:1])
+        return True
     m = WHICH_ONE.fullmatch(clause)
     if m:  # "which one is farthest from you?": the answer is what "that one" means next
         try:
@@ -54,3 +61,11 @@ def is_aside(clause: str, p: Parser) -> bool:
             p.ctx.set(subject)
             return True
     return not any(singular(w) in _scene_words(p) for w in clause.split())
+
+
+def _quiet(p: Parser, phrase: str) -> list:
+    """The one object ``phrase`` names, or none (no error)."""
+    try:
+        return p.resolver.resolve(phrase, p.ctx, allow_plural=False)
+    except InputError:
+        return []

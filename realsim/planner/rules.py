@@ -53,7 +53,7 @@ class RulePlanner:
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
     """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
-    if QUESTION.match(command.strip().lower()):
+    if QUESTION.match(command.strip().lower()) and not re.search(r"[?.!]\s+\S", command.strip()):  # a question alone
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
     clauses = split_command(command)
     if not clauses:

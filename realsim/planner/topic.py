@@ -136,7 +136,8 @@ def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str
     topic = re.sub(rf"\s+(?:on|at|upon) (?:the |my |your |our )?{_SURFACE}$", "", topic)
     if n > 1 and not resumed or said and not resumed:
         return parts
-    if _STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic) or casual.terse(topic, has_relation(topic)):
+    if (_STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic) or casual.terse(topic, has_relation(topic))
+            or re.match(r"(?:i|we) (?:would |d )?(?:like|want|need|wish)\b", topic)):  # "i want the banana. give it to me": a wish
         return parts
     if has_relation(bare(topic)) and not (resumed and (comma or said)):
         return parts
