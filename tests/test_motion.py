@@ -103,3 +103,36 @@ def test_planned_moves_keep_the_arm_off_the_box(tall_scene: Scene) -> None:
     with pytest.raises(PathBlocked):  # a straight line into the box, kept clear of everything
         robot._straight(far - np.array([0.05, 0.0, 0.0]), clear_but=set())
     assert np.linalg.norm(data.xpos[b] - start) < 0.002
+
+
+def test_clearance_gaps_are_mujocos_own_distances(tall_scene: Scene) -> None:
+    """The arm-object gaps a planned transit keeps are MuJoCo's geom distances (ground truth from
+    mj_geomDistance over every arm and box geom pair), nearer as the hand nears the box's face."""
+    model, data = loaded(tall_scene)
+    robot = Robot(model, data)
+    box = [g for g in range(model.ngeom) if model.geom_bodyid[g] == model.body("tall_box").id and model.geom_contype[g]]
+    arm = [g for g in range(model.ngeom) if int(model.geom_bodyid[g]) in robot.geometry.robot_bodies
+           and (model.geom_contype[g] or model.geom_conaffinity[g])]
+    reach = robot.transit_params.clearance
+    scratch = mujoco.MjData(model)
+    seen = []
+    for x in (-0.06, -0.03, -0.02, -0.012):  # the box's face is at x = 0.015
+        q = robot._ik(np.array([x, 0.0, TCP_Z]), _facing(np.array([1.0, 0, 0]), 0.4), np.array(robot.ik.home)).q
+        scratch.qpos[:] = data.qpos
+        scratch.qpos[robot.qadr] = q
+        mujoco.mj_kinematics(model, scratch)
+        truth = min(mujoco.mj_geomDistance(model, scratch, a, b, 0.2, None) for a in arm for b in box)
+        gap = robot.gap_check.gaps(data.qpos, robot.qadr, q).get("tall_box", np.inf)
+        assert (gap == np.inf and truth >= reach - 1e-4) or abs(gap - truth) < 1e-3, (x, gap, truth)
+        seen.append(min(gap, truth))
+    assert seen == sorted(seen, reverse=True) and seen[-1] < reach  # nearer, and the last within reach
+
+
+def test_required_gaps_relax_only_to_an_end_posture_nearer_than_the_clearance() -> None:
+    from realsim.robot.clearance import keeps, required_gaps
+
+    need = required_gaps([{"box": 0.004, "can": 0.05}, {"bowl": -0.001}], 0.015)
+    assert need == {"box": 0.004, "can": 0.015, "bowl": 0.0}
+    assert keeps({"box": 0.005, "mug": 0.02}, need, 0.015)
+    assert not keeps({"mug": 0.01}, need, 0.015)  # an object the ends keep clear of: the full clearance
+    assert not keeps({"box": 0.002}, need, 0.015)

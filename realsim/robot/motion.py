@@ -12,12 +12,13 @@ from collections.abc import Callable, Iterable
 import mujoco
 import numpy as np
 
+from realsim.robot.clearance import ClearanceCheck, keeps, required_gaps
 from realsim.robot.collision_ik import CollisionIK
 from realsim.robot.grasps import rotate_about
 from realsim.robot.ik import IKResult, mat_to_quat
 from realsim.robot.queries import WorldQueries
 from realsim.robot.result import PlanFailure
-from realsim.robot.transit import plan_joint_path
+from realsim.robot.transit import TransitParams, plan_joint_path
 
 __all__ = ["Motion", "PathBlocked", "Solve"]
 
@@ -30,6 +31,8 @@ class PathBlocked(PlanFailure):
 
 class Motion(WorldQueries):
     """Planning and following tcp paths; every plan raises :class:`PlanFailure` when it cannot be made."""
+
+    transit_params = TransitParams()
 
     def _ik(self, pos: np.ndarray, rot: np.ndarray, q_init: np.ndarray) -> IKResult:
         """IK for the tcp at (``pos``, rotation ``rot``) starting from ``q_init``."""
@@ -208,12 +211,24 @@ class Motion(WorldQueries):
             return
         self._follow([q_goal])
 
+    @functools.cached_property
+    def gap_check(self) -> ClearanceCheck:
+        """Gaps between the arm and the objects (built on first use)."""
+        return ClearanceCheck(self.model, self.geometry, self.transit_params.clearance)
+
     def _planned(self, q0: np.ndarray, q_goal: np.ndarray, ignore: set[str] | frozenset[str]) -> list[np.ndarray]:
         """Corners of a sampling-based joint path on which no link, nor the held object, touches an
-        object (``ignore`` aside) and the forearm and wrist stay off the table."""
-        carry = self._carry()
-        return plan_joint_path(q0, q_goal, self.ik.lower, self.ik.upper, lambda q: not self._touches(q, ignore, carry=carry, world=True),
-                               seed=self.seed)
+        object (``ignore`` aside), the forearm and wrist stay off the table, and the arm keeps
+        ``transit_params.clearance`` from every object (less only where an end posture is nearer):
+        the arm follows a path a few millimetres off, and a path that grazes an object shoves it."""
+        carry, clear = self._carry(), self.transit_params.clearance
+
+        def gaps(q: np.ndarray) -> dict[str, float]:
+            return self.gap_check.gaps(self.data.qpos, self.qadr, q, ignore, self._carried(q, carry))
+        need = required_gaps([gaps(q0), gaps(q_goal)], clear)
+        return plan_joint_path(q0, q_goal, self.ik.lower, self.ik.upper,
+                               lambda q: not self._touches(q, ignore, carry=carry, world=True) and keeps(gaps(q), need, clear),
+                               seed=self.seed, params=self.transit_params)
 
     @functools.cached_property
     def _far_links(self) -> set[int]:
@@ -244,12 +259,16 @@ class Motion(WorldQueries):
                  carry: tuple[np.ndarray, np.ndarray] | None = None, world: bool = False) -> set[str]:
         """What the arm at joints ``q`` (carrying the held object at ``carry``) would touch; with
         ``world`` the forearm and wrist touching the table count too."""
-        carried = None
-        if self.held and carry is not None:
-            p_w, r_w = self.ik.fk(q)
-            carried = {self.held: (r_w @ carry[0] + p_w, mat_to_quat(r_w @ carry[1]))}
-        return self.geometry.robot_hits(self.qadr, q, ignore, hand_may_touch, self.hand_bodies, carried=carried,
+        return self.geometry.robot_hits(self.qadr, q, ignore, hand_may_touch, self.hand_bodies, carried=self._carried(q, carry),
                                         world_bodies=self._far_links if world else ())
+
+    def _carried(self, q: np.ndarray, carry: tuple[np.ndarray, np.ndarray] | None) -> dict[str, tuple[np.ndarray, np.ndarray]] | None:
+        """The held object's world (position, quaternion) with the arm at joints ``q`` (``carry``: its
+        pose in the tcp frame), as the collision checks take it; None when nothing is held."""
+        if not self.held or carry is None:
+            return None
+        p_w, r_w = self.ik.fk(q)
+        return {self.held: (r_w @ carry[0] + p_w, mat_to_quat(r_w @ carry[1]))}
 
     def _check_clear(self, path: list[np.ndarray], ignore: set[str] | frozenset[str] = frozenset(), hand_may_touch: set[str] | frozenset[str] = frozenset(),
                      start: np.ndarray | None = None) -> None:

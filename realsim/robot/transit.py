@@ -30,6 +30,7 @@ class TransitParams:
     range: float = 0.6  # rad: longest tree extension of RRT-Connect
     simplify_steps: int = 60  # shortcut attempts on the found path
     margin: float = 0.01  # rad kept inside the joint limits
+    clearance: float = 0.015  # m the arm keeps from every object between the path's ends (less only where an end is nearer)
 
 
 def plan_joint_path(q_start: np.ndarray, q_goal: np.ndarray, lower: np.ndarray, upper: np.ndarray, valid: Callable[[np.ndarray], bool],

@@ -26,10 +26,22 @@ class BasicSkills(Motion):
                     self._straight(np.array([pos[0], pos[1], home_pos[2]]))
                 except PlanFailure:
                     pass
-            try:  # around what is in the way; the direct joint move when no clear path is found
-                self._move_joints(np.array(HOME_ARM), ignore={self.held} if self.held else set())
-            except PlanFailure:
-                self._follow([np.array(HOME_ARM)])
+            ignore = {self.held} if self.held else set()
+            try:  # around what is in the way
+                self._move_joints(np.array(HOME_ARM), ignore=ignore)
+            except PlanFailure as exc:  # never a blind move: it would shove what is in the way
+                pos, rot = self.tcp_pose()
+                above = np.array([pos[0], pos[1], max(pos[2], self._tallest(self.held) + self.params.clearance)])
+                again: PlanFailure | None = None
+                for rot_up in (rot, self.ik.fk(np.array(HOME_ARM))[1]):  # from above everything (a checked straight rise), turning home if need be
+                    try:
+                        self._straight(above, rot_up, clear_but=ignore)
+                        self._move_joints(np.array(HOME_ARM), ignore=ignore)
+                        break
+                    except PlanFailure as failure:
+                        again = failure
+                else:
+                    return ActionResult("go_home", False, f"no clear way home ({exc}; from above: {again})")
             err = float(np.abs(self.data.qpos[self.qadr] - np.array(HOME_ARM)).max())
             ok = err < self.params.arm.home_tol
             return ActionResult("go_home", ok, "" if ok else f"joint error {err:.3f} rad", values={"joint_error": err})

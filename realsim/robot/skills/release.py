@@ -131,7 +131,7 @@ class Release(Motion):
             return ActionResult(name, False, f"{obj} slipped out of the hand on the way", values={"release_pose": k})
         if not tilt:
             self._stand(obj)
-        self._let_go()
+        self._let_go([*down[::-1], q_above])
         self._wait(pl.release_wait)
         dof = self.model.jnt_dofadr[self.model.body(obj).jntadr[0]]
         resting = float(np.abs(self.data.qvel[dof:dof + 3]).max()) < pl.rest_speed
@@ -146,10 +146,11 @@ class Release(Motion):
         reason = "" if ok else (f"not {_WORDS[name]} after release: {verdict.measured}" if not verdict.ok else "object still moving")
         return ActionResult(name, ok, reason, values=values)
 
-    def _let_go(self) -> None:
+    def _let_go(self, way_up: list[np.ndarray]) -> None:
         """Open and back off. A handle's fingers open only enough to free it and leave its loop the
         way they came in (opened wide or lifted, the finger inside the loop tips the object over);
-        other pinches open fully and lift."""
+        other pinches open fully and lift: straight up as high as the arm reaches, else back up
+        ``way_up`` (the joint path the hand came down, checked on the way down)."""
         pl = self.params.place
         kind, width = self.pinch
         self.held, self.pinch = None, ("", 0.0)
@@ -161,11 +162,16 @@ class Release(Motion):
             except PlanFailure:
                 pass
             pos, _ = self.tcp_pose()
+            way_up = []  # the way down ran through the loop
         self._gripper(GRIPPER_OPEN_CTRL)
-        try:
-            self._straight(pos + np.array([0, 0, pl.retreat]))
-        except PlanFailure:
-            pass
+        for up in (pl.retreat, pl.approach_height / 2):
+            try:
+                self._straight(pos + np.array([0, 0, up]))
+                return
+            except PlanFailure:
+                continue
+        if way_up:
+            self._follow(way_up)
 
     def _upright(self, obj: str) -> np.ndarray | None:
         """The turn of the hand (world rotation) that sets the held ``obj`` up as it stood before the
