@@ -79,15 +79,26 @@ class Carving:
 
 def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray, params: CompletionParams,
           own: int | None = None, tiles: bool = True) -> Carving:
-    """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when at least
-    ``tile_min_fraction`` is seen through (the body is evidently not convex) and ``tiles``, its
+    """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when ``tiles`` and
+    the body is evidently not convex (at least ``tile_min_fraction`` is seen through, or the carved
+    hull fills ``carve_min_fraction`` of the voxels again with space the camera saw through), its
     tiles (see :func:`carve_to_tiles`)."""
     voxels = _voxels(mesh, view, params, own)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
-    pieces = _tiles(voxels, base_z, observed, params) if tiles and fraction >= params.tile_min_fraction else None
-    return Carving(fraction, _carved_hull(mesh, voxels, base_z, observed), pieces)
+    hull = _carved_hull(mesh, voxels, base_z, observed)
+    refilled = float(np.mean(voxels[4] & _inside_convex(hull, voxels[3])))  # seen-through voxels the carved hull fills again
+    many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
+    pieces = _tiles(voxels, base_z, observed, params) if tiles and many else None
+    return Carving(fraction, hull, pieces)
+
+
+def _inside_convex(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
+    """Which ``points`` lie inside the convex ``mesh`` (behind every face plane)."""
+    n = mesh.face_normals
+    d = np.einsum("fk,fk->f", n, mesh.triangles[:, 0, :])
+    return np.asarray(np.all(points @ n.T <= d + 1e-9, axis=1))
 
 
 def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:

@@ -57,6 +57,50 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     return np.vstack([points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]])
 
 
+def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
+    """The observed points plus the mirror image of the near side of a low body lying flat, reflected
+    behind its crest (the vertical plane across the line of sight through its highest line).
+
+    A camera above and in front sees a lying round body (a banana, a bottle on its side) from its near
+    foot over the crest down to where its line of sight grazes the far side, above the far side's
+    widest line: extruded down from there the body is short by a share of its radius. A body
+    symmetric about its crest has the far side of its near side. In each slice across the line of
+    sight the crest is the middle of the points within ``mirror_crest_tolerance`` of the slice's
+    top (its 98th height percentile); a slice is mirrored only where its surface is seen falling away
+    past the crest (a flat
+    top seen whole is its own middle, so its front face lands on its far edge; a top rising to its far
+    edge is no crest), no farther before the crest than ``mirror_crest_reach`` of the slice's height, and
+    no image is kept where the camera saw through. None when no slice qualifies or the body is not low (see
+    :func:`mirror_hidden_half`)."""
+    d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
+    if np.linalg.norm(d) < 1e-6 or len(points) < 30:
+        return None
+    d /= np.linalg.norm(d)
+    lateral = np.array([-d[1], d[0], 0.0])
+    s, w = points @ d, points @ lateral
+    width = float(np.percentile(w, 98) - np.percentile(w, 2))
+    if top_z - base_z >= params.mirror_min_height_share * width:
+        return None  # an upright body: mirrored about its occluding contour instead
+    step = max(params.mirror_crest_slice, width / 20)
+    slot = np.floor((w - w.min()) / step).astype(np.int64)
+    tol = params.mirror_crest_tolerance
+    images = []
+    for k in np.unique(slot):
+        sl = slot == k
+        if sl.sum() < 10:
+            continue
+        zs, ss = points[sl, 2], s[sl]
+        top = float(np.percentile(zs, 98))
+        crest = float(np.median(ss[zs >= top - tol]))
+        if not np.any(zs[ss > crest] < top - tol):
+            continue  # not seen falling away past the crest: a flat top or one rising to its far edge
+        near = points[sl][(ss < crest) & (ss >= crest - params.mirror_crest_reach * (top - base_z))]
+        images.append(near - 2.0 * (near @ d - crest)[:, None] * d[None, :])
+    mirrored = np.vstack(images) if images else np.zeros((0, 3))
+    mirrored = mirrored[~view.seen_through(mirrored, params.carve_tolerance, footprint=False)]  # not where the camera saw through
+    return np.vstack([points, mirrored]) if len(mirrored) else None
+
+
 def _extreme_depth(w: np.ndarray, s: np.ndarray, share: float = 0.25) -> float:
     """The depth ``s`` at which a side reaches its largest lateral extent ``w`` (measured from the
     body's middle): the vertex of w^2 fitted as a parabola in s (exact for an elliptic section) to the

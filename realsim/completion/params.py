@@ -28,6 +28,7 @@ class CompletionParams:
     carve_tile: float = 0.02  # much carved shapes are kept as convex cubic tiles at least this wide (m)
     max_pieces: int = 24  # about this many tiles (the bounding box cut in this many cubes)
     tile_min_fraction: float = 0.1  # a shape this much seen through is kept as tiles (a hull would refill the free space)
+    tile_when_refilled: bool = True  # also tiles when the carved hull fills carve_min_fraction of its voxels again with seen free space
     denoise_window: int = 5  # object pixels' depth: the median of this many pixels square of the same object (camera views)
     clip_free_space: bool = True  # cut every finished piece back out of the space the camera saw through
     free_space_sigmas: float = 4.0  # a piece nearer than the captured depth by this many sensor-noise sigmas is cut back
@@ -41,6 +42,10 @@ class CompletionParams:
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
     mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored
+    mirror_crest: bool = True  # a low body lying flat is mirrored behind its crest (its highest line across the line of sight)
+    mirror_crest_slice: float = 0.005  # m: the least width of the slices across the line of sight in which the crest is found
+    mirror_crest_tolerance: float = 0.003  # m: points this close to a slice's highest are on its crest
+    mirror_crest_reach: float = 0.75  # the near side mirrored reaches this share of the slice's height before its crest (a round section: half)
     mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     veil_keep: bool = True  # veil pixels continuing the surface beside them (within the free-space tolerance) are kept: the edge

@@ -15,7 +15,7 @@ from realsim.completion.fragments import join_occluded_fragments
 from realsim.completion.freespace import free_drops, free_space_tolerance, keep_out_of_free_space
 from realsim.completion.handles import handle_pieces
 from realsim.completion.hull import fast_hull
-from realsim.completion.mirror import mirror_hidden_half
+from realsim.completion.mirror import mirror_about_crest, mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction, separate_neighbours
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
@@ -79,6 +79,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         else:
             mirrored = mirror_hidden_half(pts, view, base_z, top_z, params, points[mask]) if view is not None else None
             kind = "hull mirrored about its silhouette (the hidden half of a symmetric body)" if mirrored is not None else "hull"
+            if mirrored is None and view is not None and params.mirror_crest:
+                mirrored = mirror_about_crest(pts, view, base_z, top_z, params)
+                kind = "hull mirrored behind its crest (the hidden far side of a body lying flat)" if mirrored is not None else kind
             body = pts if mirrored is None else mirrored
             drops = free_drops(body, base_z, view, tolerance) if view is not None else None
             mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops)
