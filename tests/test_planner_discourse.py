@@ -156,3 +156,28 @@ def test_questions_and_wishes_before_a_command(sentence: str, lines: list[str]) 
 def test_a_question_alone_is_refused() -> None:
     with pytest.raises(InputError, match="question"):
         calls("why is the banana over there?")
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("heyyy can u put the banana in the bowl?? thx bestie", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("right, first thing: lift the banana. second thing: go home.", ["grasp('obj7_banana')", "go_home()"]),
+    ("a) push the bowl 5 cm left b) go home", ["push('obj6_bowl', 'left', 0.05)", "go_home()"]),
+    ("To do: 1) banana in the bowl 2) home", ["place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+    ("put the banana in the bowl. and then, um, go home i guess", ["place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+    ("could you put the strawberry in the bowl? if it's too hard, no worries", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("Red cube on the blue cube. Done.", ["place_on('obj3_cube', 'obj4_cube')"]),
+    # "not X" alone or across a full stop
+    ("put the green cube next to the bowl, not on top of it", ["place_beside('obj5_cube', 'obj6_bowl', 'next')"]),
+    ("lift the banana. not the strawberry! the banana.", ["grasp('obj7_banana')"]),
+])
+def test_more_talk_lists_and_clarifications(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+@pytest.mark.parametrize("sentence", [
+    "put the green cube on the bowl, not on top of it",  # the place it says not: asked
+    "put the banana in the bowl. if it's full, put it next to the bowl",  # a condition with a command is kept, and unread
+])
+def test_contradictions_refused(sentence: str) -> None:
+    with pytest.raises(InputError):
+        calls(sentence)

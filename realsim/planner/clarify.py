@@ -19,8 +19,8 @@ from realsim.planner.speech import noun_phrases, one_as
 
 __all__ = ["clarify"]
 
-_NOT = re.compile(r"(?:^|(?<=[.,;!?]))\s*(?:(?:no|nope|sorry|i mean|well|oh|um|uh|ah)\s*,?\s*)*(?:but )?not (?P<neg>[^,.;!?]+?)\s*[,;]\s*"
-                  r"(?:(?:but|just|rather|only|i mean|instead|more like)\s+)*(?P<pos>[^,.;!?]+?)\s*(?:\s(?:instead|please|thanks))?\s*(?=$|[.,;!?])")
+_NOT = re.compile(r"(?:^|(?<=[.,;!?]))\s*(?:(?:no|nope|sorry|i mean|well|oh|um|uh|ah)\s*,?\s*)*(?:but )?not (?P<neg>[^,.;!?]+?)\s*(?:[,;.!]+\s*|$)"
+                  r"(?:(?:but|just|rather|only|i mean|instead|more like)\s+)*(?P<pos>[^,.;!?]*?)\s*(?:\s(?:instead|please|thanks))?\s*(?=$|[.,;!?])")
 _FUNCTION = {"the", "a", "an", "that", "this", "one", "ones", "thing", "object", "it", "them", "of", "right", "just", "directly"}
 
 
@@ -59,7 +59,13 @@ def clarify(text: str) -> str:
     if not m or not before or not VERB_ANYWHERE.search(before) and not RELATION_AT.search(before):
         return text
     neg, pos, after = m.group("neg").strip(), m.group("pos").strip(), text[m.end():]
+    if VERB_START.match(pos) or VERB_START.match(neg):  # "... . not the banana. put the can ...": a command of its own
+        return text
     neg_kind, pos_kind = _kind(neg), _kind(pos)
+    if not pos:  # "put the cube next to the plate, not on top of it": only a place the command did not say
+        if neg_kind is not None and neg_kind not in {kind for _, _, kind in _places(before)}:
+            return f"{before}{after}"
+        return text
     if (neg_kind is None) != (pos_kind is None):  # "put the mug, not the can, in the bowl": not a clarification
         return text
     asked = InputError(f"{text.strip()!r}: 'not {neg}, {pos}' does not match what the command said; say the whole command again")

@@ -20,7 +20,7 @@ __all__ = ["TALK", "drop_talk", "steps_as_clauses"]
 
 _MUCH = r"(?: (?:so|very|ever so|so very|very very|really|truly|awfully|most|ever)?\s?(?:much|kindly|a lot|a bunch|a million|a ton|tons|heaps|loads|indeed|in advance|again))*"
 _WHO = (r"(?:(?:my |you )?(?:dear|young|old|good|kind|dear old|little|sweet)?\s?"
-        r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine|legend|hero|genius|boss|chief))")
+        r"(?:fellow|friend|sir|madam|maam|mate|buddy|pal|robot|chap|dear|love|luv|bot|fella|lad|lass|man|dude|bro|bud|champ|sweetie|darling|son|kid|machine|legend|hero|genius|boss|chief|bestie|babe|hun|honey|bud|homie))")
 # Discourse phrases: none names an object, a place, a direction or a distance.
 TALK: tuple[str, ...] = (
     # greetings and address
@@ -41,6 +41,7 @@ TALK: tuple[str, ...] = (
     r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
     # exhortations and chat
     r"while (?:you re|youre|you are) at it", r"(?:ok |okay |so |right )?(?:here s|heres|here is) (?:the|my|a) (?:plan|deal|idea|thing|task)", r"(?:the )?plan is", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
+    r"to ?do(?: list)?", r"todo", r"(?:all )?done", r"finished", r"over and out", r"that s everything", r"(?:i )?(?:guess|think|suppose|reckon)(?: so)?",
     r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
     r"(?:much|very|so|ever so|really|truly|indeed|also|too|as well)",
@@ -49,6 +50,7 @@ TALK: tuple[str, ...] = (
 _HEDGE: tuple[str, ...] = (
     r"(?:but )?only if (?:it s|its|it is|that s|thats|that is|you can|you re able|possible|easy)(?: easy| possible| not too hard| no trouble)?",
     r"if (?:not|you can t|you cant|you cannot|it doesn t work|it doesnt work|that doesn t work|it s not possible|its not possible|not possible|you re not able|you are not able)",
+    r"(?:but )?(?:only )?if (?:it s|its|it is|that s|thats|that is|you can t|you cant|you cannot|not|it isn t|it isnt|it s not|its not)\b[a-z ]*",
     r"otherwise", r"no worries", r"no (?:problem|probs|bother|big deal|matter)", r"(?:it s|its|that s|thats) (?:fine|ok|okay|alright|no problem)(?: too| as well)?",
     r"don t worry(?: about it)?", r"dont worry(?: about it)?", r"never mind", r"nevermind", r"all good", r"either way",
 )
@@ -77,6 +79,8 @@ def drop_talk(text: str) -> str:
         pieces = [p for p in re.split(r"\s*[,;:]\s*", body) if p.strip()]
         if not pieces or all(_is_talk(p, True) for p in pieces):
             continue
+        if not out and re.fullmatch(r"\s*right(?: then| so| ok| okay| well)?\s*", pieces[0]) and len(pieces) > 1:
+            pieces = pieces[1:]  # "Right, first thing: ...": opening the talk, not a side
         kept = [p.strip() for p in pieces if not _is_talk(p, False)]
         out.append(", ".join(kept) + (stop or "."))
     return " ".join(out) if out else text
@@ -87,19 +91,18 @@ _WORD_NUMBERS = ("one", "two", "three", "four", "five", "six", "seven", "eight",
 
 def steps_as_clauses(text: str) -> str:
     """A numbered step list as clauses ("1. grab X 2) put it ..." -> "grab X, then put it ..."):
-    "step N" / "step one" before a pause always; bare numbers "1." "2)" only when they count up
-    from 1 in order, so a distance ("push it 10. then ...") is never taken for a step."""
+    "step N" / "step one" / "first," / "second thing:" before a pause always; bare numbers "1." "2)"
+    or letters "a)" "b)" only when they count up from the first in order, so a distance ("push it
+    10. then ...") is never taken for a step."""
     text = re.sub(r"(?:^|(?<=[\s.,;:!?]))(?:(?:the|two|three|four|five|\d|a few|some|these|my|here are the|here are my)\s+)?steps?(?: are| is)?\s*:\s*", " ", text)
     # an enumerator said as a word before a pause: "first, lift X; second, put it ..."
-    text = re.sub(r"(?:^|(?<=[.,;:!?]))\s*(?:first|firstly|second|secondly|third|thirdly|fourth|fifth|next|then|finally|lastly|last of all)\s*[,:;]\s*",
-                  ", then ", text)
+    text = re.sub(r"(?:^|(?<=[.,;:!?]))\s*(?:first|firstly|second|secondly|third|thirdly|fourth|fifth|next|then|finally|lastly|last of all)"
+                  r"(?: (?:thing|step|up|off|of all))?\s*[,:;]\s*", ", then ", text)
     text = re.sub(rf"(?:^|(?<=[\s.,;:!?]))step\s+(?:\d+|{'|'.join(_WORD_NUMBERS)})\s*[.,:;)-]*\s+", ", then ", text)
-    marks = list(re.finditer(r"(?:^|(?<=[\s.,;:!?]))\(?(\d{1,2})\s*[.)]\s+(?=[a-z])", text))
-    run: list[re.Match[str]] = []
-    for m in marks:
-        if int(m.group(1)) == len(run) + 1:
-            run.append(m)
-    if len(run) >= 2 and [int(m.group(1)) for m in run] == list(range(1, len(run) + 1)) and len(run) == len(marks):
-        for m in reversed(run):
-            text = f"{text[: m.start()]}, then {text[m.end():]}"
+    for mark, first in ((r"\d{1,2}", "1"), (r"[a-e]", "a")):  # "1. .. 2. ..", "a) .. b) .."
+        marks = list(re.finditer(rf"(?:^|(?<=[\s.,;:!?]))\(?({mark})\s*[.)]\s+(?=[a-z])", text, re.IGNORECASE if first == "a" else 0))
+        count = [ord(m.group(1).lower()) - ord("a") + 1 if first == "a" else int(m.group(1)) for m in marks]
+        if len(marks) >= 2 and count == list(range(1, len(marks) + 1)) and (first == "1" or all(")" in m.group(0) for m in marks)):
+            for m in reversed(marks):
+                text = f"{text[: m.start()]}, then {text[m.end():]}"
     return re.sub(r"^\s*,\s*then\s+", "", re.sub(r"\s*(?:[.;:]\s*)?,\s*then\s+", ", then ", text)).strip()
