@@ -181,3 +181,16 @@ def test_more_talk_lists_and_clarifications(sentence: str, lines: list[str]) -> 
 def test_contradictions_refused(sentence: str) -> None:
     with pytest.raises(InputError):
         calls(sentence)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # "further/more" before a way says more of that way (it had pushed away from the robot)
+    ("move the strawberry further left", ["push('obj8_strawberry', 'left', 0.1)"]),
+    ("slide the banana a bit further to the right", ["push('obj7_banana', 'right', 0.05)"]),
+    # a comparative position before a place says which one; a comparison of a listed pair
+    ("put the can further left on the bowl", ["place_on('obj1_soda_can', 'obj6_bowl')"]),
+    ("of the red and green cubes, put the one further right in the bowl", ["place_in('obj5_cube', 'obj6_bowl')"]),
+    ("pick up the bigger of the bowl and the strawberry", ["grasp('obj6_bowl')"]),
+])
+def test_comparatives_of_position_and_pairs(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines

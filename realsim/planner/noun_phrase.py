@@ -30,6 +30,8 @@ def normalize(text: str) -> str:
     m = _PARTITIVE.fullmatch(text)
     if m and not m.group(2):  # "the taller of the two": which two is for the speaker to say
         raise InputError(f"{text!r}: of which ones? name them ('the taller of the two white cans')")
+    if m and re.search(r"\s(?:and|or)\s", m.group(2)):  # "the taller of the mustard and the marker": of those two
+        return f"{m.group(1)[:-2]}est one among {m.group(2)}"
     if m:  # "the taller of the two white cans", "the bigger one of those boxes"
         words = m.group(2).split()
         text = " ".join([m.group(1)[:-2] + "est", *words[:-1], singular(words[-1])])

@@ -176,8 +176,11 @@ class Resolver:
         text = noun_phrase.normalize(text)
         m = re.fullmatch(r"(.+?) among (.+)", text)
         if m:  # "the one closer to you among the banana and the mug": the pick among exactly those (realsim.planner.topic)
-            pool = {o.name for part in re.split(r"\s+and\s+|\s+or\s+|\s*,\s*", m.group(2)) if part
-                    for o in self.resolve(part, Context(), allow_plural=False)}
+            listed = [part for part in re.split(r"\s+and\s+|\s+or\s+|\s*,\s*", m.group(2)) if part]
+            head = singular(listed[-1].split()[-1])  # "the red and green cubes": the red cube and the green cube
+            listed = [f"{part} {head}" if all(w in COLOR_WORDS or w in BIG or w in SMALL or w in DETERMINERS for w in part.split()) else part
+                      for part in listed[:-1]] + [re.sub(r"\w+$", head, listed[-1])]
+            pool = {o.name for part in listed for o in self.resolve(part, Context(), allow_plural=False)}
             others = [o.name for o in self.objects if o.name not in pool]
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *others], allow_plural=allow_plural, loose=loose)
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object

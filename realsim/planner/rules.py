@@ -28,7 +28,7 @@ from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
 from realsim.planner.reference import Context
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
-from realsim.planner.topic import TOPIC
+from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
 from realsim.planner.vocab import GENERIC, VAGUE_DISTANCES, name_words, norm, singular
 
@@ -152,6 +152,9 @@ def _clause(clause: str, p: Parser) -> Step:
         verb, rest = _verb(said)
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
+    if re.search(r"\b(?:further|farther|more) (?:to the )?(?:left|right|back|forward|front)\b(?=.*\b(?:on|onto|in|into|inside|next to|beside|behind"
+                 r"|in front of|between|on top of)\s+(?:the|a|an|it|them)\b)", rest):
+        rest = compared(rest)  # "put the cube further left on the plate": which cube, then where
     # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
     by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest)
                           or re.search(r"\bto the (?:left|right)(?: side)?(?: a bit| a little| slightly)?$", rest))  # "put the mug to the left"
@@ -159,7 +162,8 @@ def _clause(clause: str, p: Parser) -> Step:
     if m and (verb not in PUT or "from" in m.group(2) or distance(rest) is not None):
         return push_relative(m, distance(rest), p)  # "push the mug toward the bowl"; "slide X toward Y" puts it next to Y
     if (verb in PUSH or by) and is_push(rest):
-        return push_clause(rest, p, clause)
+        # "move it further left": "further" says more of that way, not away
+        return push_clause(re.sub(r"\b(?:further|farther|more)\s+(?=(?:to the )?(?:left|right|back|backwards?|forwards?|ahead)\b)", "", rest), p, clause)
     if verb in ("hand me", "give me", "pass me", "bring me"):
         return _take(rest, p)
     if verb in PUT:

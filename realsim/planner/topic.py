@@ -13,7 +13,7 @@ import re
 
 from realsim.errors import InputError
 from realsim.planner import casual
-from realsim.planner.lexicon import AVOID, VERB_START, has_relation, relation_start
+from realsim.planner.lexicon import AVOID, RELATION_AT, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
 __all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive"]
@@ -80,7 +80,7 @@ def partitive(parts: list[str]) -> list[str]:
     and the meat can, the one further away": the one among those two."""
     if len(parts) < 2:
         return parts
-    while len(parts) > 2 and re.match(r"(?:of|out of|among|from among|between) ", parts[0]) and re.fullmatch(r"(?:the|that|this) [a-z ]+", parts[1]) \
+    while len(parts) > 2 and re.match(r"(?:of|out of|among|from among|between) ", parts[0]) and re.fullmatch(r"(?:(?:the|that|this) )?[a-z ]+", parts[1]) \
             and not _VERB.match(parts[1]):  # "of the marker and the meat can": the list was split at its "and"
         parts = [f"{parts[0]} and {parts[1]}", *parts[2:]]
     m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice|(?:so |ok |okay )?(?:there|here)(?: are| is| s)?|we have|i have|i see) "
@@ -91,9 +91,13 @@ def partitive(parts: list[str]) -> list[str]:
     one = re.search(r"\bthe one\b", parts[1])
     if m and restricts and " and " in f" {m.group(3)} " and one:  # "of the marker and the meat can, take the one further away"
         listed = f"{m.group(2)}{m.group(3)}".strip()
-        tail = re.search(r"\bthe one\b.*$", parts[1])
-        assert tail is not None
-        return [f"{parts[1][: tail.start()]}{tail.group(0)} among {listed}".strip(), *parts[2:]]
+        start = one.start()
+        cut = next((r.start() for r in RELATION_AT.finditer(parts[1], one.end())  # a place it goes, not one that says which
+                    if not re.match(r"(?:closer|nearer) to\b", r.group(0))
+                    and not re.match(r"\s*(?:me|you|the robot|(?:the )?(?:far |very )?(?:left|right|front|back|middle|centre|center)\b(?! of))", parts[1][r.end():])),
+                   len(parts[1]))
+        phrase = compared(parts[1][start:cut].strip())  # "the one further left | on the plate"
+        return [f"{parts[1][:start]}{phrase} among {listed} {parts[1][cut:].strip()}".strip(), *parts[2:]]
     if m and restricts and (" and " in f" {m.group(3)} " or not re.search(r"\bone\b", parts[1])):
         # "out of the yellow things, take the biggest": never chosen among everything
         raise InputError(f"{parts[0]!r}: cannot read which ones to choose among; name the one you mean ('the biggest yellow object')")
