@@ -194,3 +194,23 @@ def test_contradictions_refused(sentence: str) -> None:
 ])
 def test_comparatives_of_position_and_pairs(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # "after" before a bare verb is "then" (it had run the home move first); "after picking ..." still orders
+    ("put the strawberry in the bowl, after go home", ["place_in('obj8_strawberry', 'obj6_bowl')", "go_home()"]),
+    ("go home after you put the banana in the bowl", ["place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+    # chat words that had made a clause an aside, silently dropped
+    ("alright listen up first grab the strawberry then drop it in the bowl then go home thats it",
+     ["grasp('obj8_strawberry')", "place_in('obj8_strawberry', 'obj6_bowl')", "go_home()"]),
+    ("basically put the banana in the bowl and then like go home or whatever", ["place_in('obj7_banana', 'obj6_bowl')", "go_home()"]),
+    # a corrected amount replaces the one said
+    ("Move the bowl 10 cm to the left. Oh wait, make it 5 cm.", ["push('obj6_bowl', 'left', 0.05)"]),
+])
+def test_order_chat_and_corrected_amounts(sentence: str, lines: list[str]) -> None:
+    assert calls(sentence) == lines
+
+
+def test_an_amount_correcting_nothing_is_asked() -> None:
+    with pytest.raises(InputError):
+        calls("put the banana in the bowl. oh wait, make it 5 cm")

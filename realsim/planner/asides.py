@@ -60,6 +60,8 @@ def is_aside(clause: str, p: Parser) -> bool:
         if subject:
             p.ctx.set(subject)
             return True
+    if re.search(r"\d", clause):
+        return False  # an amount ("make it 5 cm") is never talk
     return not any(singular(w) in _scene_words(p) for w in clause.split())
 
 

@@ -17,7 +17,7 @@ from realsim.errors import InputError
 from realsim.planner.lexicon import RELATION_AT, RELATIONS, VERB_ANYWHERE, VERB_START
 from realsim.planner.speech import noun_phrases, one_as
 
-__all__ = ["clarify"]
+__all__ = ["amount", "clarify"]
 
 _NOT = re.compile(r"(?:^|(?<=[.,;!?]))\s*(?:(?:no|nope|sorry|i mean|well|oh|um|uh|ah)\s*,?\s*)*(?:but )?not (?P<neg>[^,.;!?]+?)\s*(?:[,;.!]+\s*|$)"
                   r"(?:(?:but|just|rather|only|i mean|instead|more like)\s+)*(?P<pos>[^,.;!?]*?)\s*(?:\s(?:instead|please|thanks))?\s*(?=$|[.,;!?])")
@@ -88,3 +88,22 @@ def clarify(text: str) -> str:
     if not said and _content(pos) and any(_content(pos) <= set(before[a:b].split()) for a, b in phrases):
         return f"{before}{after}"  # only confirms what the command said
     raise asked
+
+
+_AMOUNT = r"(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+_NEW_AMOUNT = re.compile(rf"(?:^|(?<=[.,;!?]))\s*(?:(?:oh|no|wait|sorry|actually|um|uh|hmm)\s*,?\s*)*(?:make (?:it|that)|i meant?|(?:no|sorry|actually),?)\s+"
+                         rf"({_AMOUNT})(?: instead)?\s*(?=$|[.,;!?])")
+
+
+def amount(text: str) -> str:
+    """A corrected amount after a command ("move the box 10 cm left. oh wait, make it 5 cm"): the
+    last amount the command said replaced; asked when it said none."""
+    m = _NEW_AMOUNT.search(text)
+    before = text[: m.start()].strip(" ,") if m else ""
+    if not m or not before:
+        return text
+    said = list(re.finditer(_AMOUNT, before))
+    if not said:
+        raise InputError(f"{text.strip()!r}: '{m.group(1)}' corrects no amount the command said; say the whole command again")
+    last = said[-1]
+    return f"{before[: last.start()]}{m.group(1)}{before[last.end():]}{text[m.end():]}"

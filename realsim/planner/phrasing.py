@@ -16,7 +16,8 @@ FILLERS = (
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?", r"while you(?: re| are)? at it",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
+    r"or (?:whatever|something|so)", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
@@ -56,7 +57,7 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = command.lower().replace("’", "'")
-    text = clarify.clarify(discourse.drop_talk(discourse.steps_as_clauses(text)))
+    text = clarify.amount(clarify.clarify(discourse.drop_talk(discourse.steps_as_clauses(text))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
@@ -106,6 +107,7 @@ def clean(command: str) -> str:
     for filler in FILLERS:
         text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
     text = re.sub(rf"(?:^|(?<=[\s,.;]))do (?={VERB_START.pattern})", "", text)  # "do go back home": emphasis
+    text = re.sub(rf"\bafter(?:wards?)?,? (?={VERB_START.pattern})", "then ", text)  # "..., after go home": then (a gerund is still "-ing" here)
     for g, v in GERUNDS.items():
         text = re.sub(rf"\b{g}\b", v, text)
     text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
