@@ -214,3 +214,17 @@ def test_order_chat_and_corrected_amounts(sentence: str, lines: list[str]) -> No
 def test_an_amount_correcting_nothing_is_asked() -> None:
     with pytest.raises(InputError):
         calls("put the banana in the bowl. oh wait, make it 5 cm")
+
+
+@pytest.mark.parametrize("sentence", [
+    "Step 1: lift the teapot. Step 2: go home.",  # a command about a thing the scene lacks was skipped as talk: go home alone
+    "lift the teapot then go home",
+])
+def test_a_command_on_a_missing_thing_is_refused_not_skipped(sentence: str) -> None:
+    with pytest.raises(InputError, match="teapot"):
+        calls(sentence)
+
+
+def test_a_vague_amount_after_a_command_stays_talk() -> None:
+    assert calls("put the banana in front of the bowl, a little closer to you") == ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]
+    assert calls("there's a banana on the table. put it in the bowl, would ya") == ["place_in('obj7_banana', 'obj6_bowl')"]

@@ -33,6 +33,8 @@ def is_aside(clause: str, p: Parser) -> bool:
     """Whether a clause the planner could not read is talk around the command: a statement whose
     subject is one scene object (that object becomes "it"), or words naming no scene object. An
     instruction broken off before its place ("put it in the, um"), or naming a place, is never talk."""
+    if VERB_START.match(clause) and re.search(r"\b(?:the|a|an|my|that|this|these|those|both|all)\s+(?!(?:little|bit|tad|few|couple|lot|touch|smidge|way)\b)[a-z]", clause):
+        return False  # "lift the teapot" with no teapot: a command about a thing the scene lacks is refused, never skipped
     if VERB_START.match(clause) and (re.search(r"\b(?:the|a|an|in|into|on|onto|to|of|next to|behind|beside)$", clause)
                                      or re.search(r"\b(?:in|into|on|onto|inside|next to|behind|beside|in front of|left of|right of) the\b", clause)):
         return False  # "drop it in the white bowl": a place the planner could not find is no aside either
