@@ -16,6 +16,9 @@ segment) and compared in the ground-truth frame:
   1 M cloud and the mesh with --full; peak memory of the 10 M-point conversion (a subprocess).
 
     .venv/bin/python bench/bench_captures.py [--quick] [--full] [--layouts table,counter,floor]
+
+A layout written ``name:seed`` (``table:7``) is a held-out scene: four objects drawn from the
+generator's default set with that seed, a stacked and a touching pair (seed 0: the fixed sets).
 """
 
 from __future__ import annotations
@@ -58,6 +61,16 @@ class Row:
     f1: float
     iou: float
     note: str = ""
+
+
+def bench_scene(key: str) -> SynthScene:
+    """The scene of a ``--layouts`` entry: ``table`` (the fixed objects) or ``table:7`` (seeded draw)."""
+    layout, _, seed = key.partition(":")
+    if layout not in SCENES or (seed and not seed.isdigit()):
+        raise SystemExit(f"unknown layout {key!r}: use table, counter or floor, optionally :seed")
+    if not seed or int(seed) == 0:
+        return make_scene(SceneSpec(layout=layout, objects=SCENES[layout], seed=0))
+    return make_scene(SceneSpec(layout=layout, seed=int(seed)))
 
 
 def _pipeline_file() -> Path:
@@ -110,9 +123,9 @@ def evaluate(gt: SynthScene, source: Path, capture_to_world: np.ndarray, form: s
 
 
 def print_rows(rows: list[Row]) -> None:
-    print(f"{'layout':8s} {'form':16s} {'s':>6s} {'sup mm':>6s} {'deg':>5s} {'miss':>4s} {'extra':>5s} {'true':>4s} {'found':>5s} {'F1':>5s} {'IoU':>5s}  warnings")
+    print(f"{'layout':10s} {'form':16s} {'s':>6s} {'sup mm':>6s} {'deg':>5s} {'miss':>4s} {'extra':>5s} {'true':>4s} {'found':>5s} {'F1':>5s} {'IoU':>5s}  warnings")
     for r in rows:
-        print(f"{r.layout:8s} {r.form:16s} {r.seconds:6.2f} {r.sup_err_mm:6.2f} {r.sup_tilt_deg:5.2f} {r.sup_missing:4d} {r.sup_extra:5d} "
+        print(f"{r.layout:10s} {r.form:16s} {r.seconds:6.2f} {r.sup_err_mm:6.2f} {r.sup_tilt_deg:5.2f} {r.sup_missing:4d} {r.sup_extra:5d} "
               f"{r.n_true:4d} {r.n_found:5d} {r.f1:5.2f} {r.iou:5.3f}  {r.note}")
 
 
@@ -151,7 +164,7 @@ def units_check(gt: SynthScene, tmp: Path) -> list[str]:
 
 def peak_memory_10m(gt_layout: str, tmp: Path) -> str:
     """Convert a 10 M-point cloud in a subprocess and report its time and peak RSS."""
-    gt = make_scene(SceneSpec(layout=gt_layout, objects=SCENES[gt_layout], seed=0))
+    gt = bench_scene(gt_layout)
     path = tmp / "cloud10m.ply"
     write_point_cloud(gt, path, 10_000_000)
     # ru_maxrss survives fork+exec (it would report the parent's peak): reset the high-water mark first
@@ -171,10 +184,11 @@ def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: 
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
         for layout in layouts:
-            gt = make_scene(SceneSpec(layout=layout, objects=SCENES[layout], seed=0))
-            d = tmp / layout
+            gt = bench_scene(layout)
+            d = tmp / layout.replace(":", "_")
             d.mkdir()
             entry = write_organized_view(gt, d / "view.pcd")
+            start = len(rows)
             rows.append(evaluate(gt, d / "view.pcd", entry["capture_to_world"], "view (Kinect)"))
             for count in densities:
                 path = d / f"cloud_{count}.ply"
@@ -185,17 +199,23 @@ def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: 
             if frames:
                 entry = write_rgbd_sequence(gt, d / "sequence", frames)
                 rows.append(evaluate(gt, d / "sequence", entry["capture_to_world"], f"RGB-D {frames} fr"))
+            for r in rows[start:]:
+                r.layout = layout
             print(f"[{layout} done]", flush=True)
         print_rows(rows)
         good = rows
         print(f"\nall forms: F1 mean {np.mean([r.f1 for r in good]):.3f} (min {min(r.f1 for r in good):.2f}), "
               f"IoU mean {np.mean([r.iou for r in good]):.3f}, worst support {np.nanmax([r.sup_err_mm for r in good]):.2f} mm / "
               f"{np.nanmax([r.sup_tilt_deg for r in good]):.2f} deg, missing {sum(r.sup_missing for r in good)}, extra {sum(r.sup_extra for r in good)}")
+        for form in dict.fromkeys(r.form for r in good):
+            of = [r for r in good if r.form == form]
+            print(f"  {form:16s} F1 mean {np.mean([r.f1 for r in of]):.3f} (min {min(r.f1 for r in of):.2f}), IoU mean {np.mean([r.iou for r in of]):.3f}")
         print("\nunits (table scene, 200k cloud, no flags):")
-        print("\n".join(units_check(make_scene(SceneSpec(layout=layouts[0], objects=SCENES[layouts[0]], seed=0)), tmp)))
+        print("\n".join(units_check(bench_scene(layouts[0]), tmp)))
         if full:
             print("\nfull conversions (all stages, robot, settle, written), table scene:")
-            for path in (tmp / layouts[0] / "cloud_1000000.ply", tmp / layouts[0] / "mesh.glb"):
+            first = tmp / layouts[0].replace(":", "_")
+            for path in (first / "cloud_1000000.ply", first / "mesh.glb"):
                 if path.exists():
                     started, cpu = time.perf_counter(), time.process_time()
                     scene = convert(path, tmp / f"out_{path.stem}")

@@ -81,3 +81,25 @@ def test_a_single_object_and_a_handle_are_not_cut() -> None:
     keep = handle[:, 0] > 0.04
     labels, _ = _cut([can, (handle[keep], hn[keep])])
     assert len(np.unique(labels)) == 1
+
+
+def test_a_box_on_a_box_is_cut_but_a_piece_hanging_beside_is_not() -> None:
+    """A small box stacked on a larger one rests on its top (its foot lies over the base seen from
+    above) and is cut off; a piece joined to a can's side only at its own foot, hanging beside the
+    can over nothing (a handle's lower end), meets it in its lowest part too but rests on nothing,
+    so it stays with the can."""
+    base, bn = _box((0.0, 0.0), 0.06, 0.05)
+    top, tn = _box((0.01, 0.0), 0.025, 0.05)
+    top[:, 2] += 0.05
+    labels, gt = _cut([(base, bn), (top, tn)])
+    assert len(np.unique(labels)) == 2
+    ious, _ = matched_iou(labels + 1, gt)
+    assert ious.min() > 0.9, ious
+    can = _can((0.0, 0.0), 0.04, 0.1)
+    piece, pn = _box((0.065, 0.0), 0.015, 0.04)
+    piece[:, 2] += 0.02  # from 2 to 6 cm high, 1 cm off the can's side
+    foot, fn = _box((0.045, 0.0), 0.0075, 0.012)
+    foot[:, 2] += 0.02  # the only join: a 1.5 cm bar from the can to the piece's foot
+    keep = (foot[:, 0] > 0.04) & (foot[:, 0] < 0.05)
+    labels, _ = _cut([can, (piece, pn), (foot[keep], fn[keep])])
+    assert len(np.unique(labels)) == 1

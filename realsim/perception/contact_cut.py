@@ -22,6 +22,7 @@ from scipy.sparse.csgraph import connected_components
 from scipy.sparse.linalg import ArpackNoConvergence, LinearOperator, eigsh, splu
 from scipy.spatial import cKDTree
 
+from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.perception.object_relations import base_height
 
 __all__ = ["CutParams", "concave_link_weights", "cut_contacts"]
@@ -73,16 +74,26 @@ def _extent(points: np.ndarray) -> float:
     return float(np.max(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
 
 
-def _supported(height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
+def _supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
     """Whether the points ``side`` can be an object of their own: they stand on the support, or
-    the points where they meet the rest (``contact``) lie in their lowest part, so they rest on
-    it (a handle meets its body at both ends, a stacked can at its bottom)."""
+    they rest on the rest: the points where they meet it (``contact``) lie in their lowest part
+    (a handle meets its body at both ends, a stacked can at its bottom) and that lowest part lies
+    over the rest seen from above (a stacked can's foot is on its base's top; a handle's lower end
+    hangs beside its body, over nothing)."""
     h = height[side]
     if base_height(h) <= params.stand_height:
         return True
     meet = height[side & contact]
     low = h.min()
-    return bool(len(meet)) and float(np.median(meet)) <= low + params.rest_fraction * (h.max() - low)
+    lowest = h <= low + params.rest_fraction * (h.max() - low)
+    if not len(meet) or float(np.median(meet)) > low + params.rest_fraction * (h.max() - low):
+        return False
+    under = points[~side, :2]
+    try:
+        hull = polygon_and_rectangle(under)[0]
+    except ValueError:  # the rest is a line seen from above: nothing to rest on
+        return False
+    return bool(inside_convex_polygon(points[side][lowest, :2], hull).mean() >= 0.5)
 
 
 def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.ndarray, height: np.ndarray,
@@ -127,7 +138,7 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
         crossing = (lo <= t) & (hi > t)
         contact = np.zeros(n, dtype=bool)
         contact[a[crossing]] = contact[b[crossing]] = True
-        if _supported(height, side, contact, params) and _supported(height, ~side, contact, params):
+        if _supported(points, height, side, contact, params) and _supported(points, height, ~side, contact, params):
             return side
     return None
 
