@@ -89,3 +89,39 @@ def test_side_spots_reach_down_to_the_least_gap_the_relation_accepts_off_a_round
     near = [xy for (_, xy), g in zip(cands, gaps) if g < min(pl.beside_along) + pl.beside_gap - 1e-6]
     clear = [xy for xy in near if tree.query(_disc(tuple(xy), 0.045)[:, :2])[0].min() >= 0.01]
     assert clear and all(abs(xy[1]) > 0.02 for xy in clear)  # the nearer spots that clear the bowl lie off the line, past its round corner
+
+
+def _walled_pad(half: float, gap: float):
+    """A 5 cm cube to place, a square pad ``half`` a side wide and four 12 cm walls ``gap`` off its edges."""
+    from test_robot import box_object, build, loaded
+
+    tx, ty, t, w = 0.05, 0.15, half + gap + 0.025, 2 * (half + gap) + 0.10
+    walls = [((tx + t, ty), (0.05, w, 0.12)), ((tx - t, ty), (0.05, w, 0.12)),
+             ((tx, ty + t), (2 * (half + gap), 0.05, 0.12)), ((tx, ty - t), (2 * (half + gap), 0.05, 0.12))]
+    objs = [box_object(1, "cube", (0.1, -0.15), (0.05, 0.05, 0.05)), box_object(2, "pad", (tx, ty), (2 * half, 2 * half, 0.02), mass=0.3)]
+    objs += [box_object(3 + i, f"wall{i}", xy, ext, mass=0.3) for i, (xy, ext) in enumerate(walls)]
+    return loaded(build(objs))
+
+
+@pytest.mark.parametrize(("half", "gap"), [(0.05, 0.005), (0.03, 0.002)])
+def test_place_on_never_lands_the_object_on_a_taller_neighbour(half: float, gap: float) -> None:
+    """A pad walled in by taller neighbours: on a 10 cm pad, walls 5 mm off its edges, the
+    fingers' sweep cannot keep 1 cm from them but the cube can, and it is placed; on a 6 cm pad,
+    walls 2 mm off, no pose keeps the cube itself 1 cm clear, so nothing is released (released
+    anyway, it would land on a wall's edge and shove it). No wall ever moves."""
+    from realsim.planner import relations
+    from realsim.robot import Robot
+
+    model, data = _walled_pad(half, gap)
+    robot = Robot(model, data)
+    start = {f"wall{i}": data.xpos[model.body(f"wall{i}").id].copy() for i in range(4)}
+    assert robot.grasp("cube").success
+    res = robot.place_on("cube", "pad")
+    if half > 0.04:
+        assert res.success, res.reason
+        assert relations.on(robot.object_points("cube"), robot.object_points("pad"), robot.geometry.touching("cube"), "pad").ok
+    else:
+        assert not res.success and "leaves 10 mm" in res.reason
+        assert robot.held == "cube" and robot.holding("cube")
+    for name, p0 in start.items():
+        assert np.linalg.norm(data.xpos[model.body(name).id] - p0) < 0.003, name

@@ -48,7 +48,9 @@ class PlaceSkills(Release):
 
     def place_on(self, obj: str, target: str, max_sim_time: float | None = None) -> ActionResult:
         """Put the held ``obj`` on top of body ``target`` (spots within its top face that keep the
-        object's centre well inside it, clear of what already lies there)."""
+        object's centre well inside it, its footprint and the fingers clear of what already lies
+        there and of neighbours rising above that face, else its footprint alone: released over
+        one, it lands on it and slides off, shoving both; no such spot, and nothing moves)."""
         pl = self.params.place
 
         def body() -> ActionResult:
@@ -57,7 +59,7 @@ class PlaceSkills(Release):
             near = spots(centre, max(r_in - footprint_radius(self.object_points(obj)) * pl.support_fraction, 0.0), self.base_pos[:2], self.release.ring)
             return self._place(obj, near, np.nan, "place_on", lambda: relations.on(
                 self.object_points(obj), self.object_points(target), self.geometry.touching(obj), target),
-                Keepout(self._others(obj, {target}, above=float(tp[:, 2].max()) - self.params.place.on_top_margin), soft=True))
+                Keepout(self._others(obj, {target}, above=float(tp[:, 2].max()) - self.params.place.on_top_margin), fingers_soft=True))
         return self._run("place_on", body, max_sim_time)
 
     def place_in(self, obj: str, container: str, max_sim_time: float | None = None) -> ActionResult:

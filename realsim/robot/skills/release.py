@@ -33,11 +33,13 @@ _WORDS = {"place": "at the target", "place_on": "on the target", "place_in": "in
 @dataclass(frozen=True)
 class Keepout:
     """What a release must not touch: xy points of other objects, kept ``margin`` away; ``soft``:
-    when no pose clears them, try the poses anyway (a crowded bowl)."""
+    when no pose clears them, try the poses anyway (a crowded bowl); ``fingers_soft``: then the
+    poses whose object footprint alone clears them (the opening fingers' sweep is an upper bound)."""
 
     xy: np.ndarray
     margin: float = 0.01
     soft: bool = False
+    fingers_soft: bool = False  # when no pose clears with the fingers, poses whose object alone clears (never one that lands on a neighbour)
 
 
 @dataclass(frozen=True)
@@ -264,15 +266,18 @@ class Release(Motion):
         pl = self.params.place
         y, x = rot[:, 1], rot[:, 0]
         fingers = np.array([sy * pl.finger_reach * y + sx * pl.finger_half_width * x for sy in (-1.0, 1.0) for sx in (-1.0, 0.0, 1.0)])
-        foot = np.vstack([rel[:: max(1, len(rel) // pl.footprint_samples)], fingers])
+        body = rel[:: max(1, len(rel) // pl.footprint_samples)]
         tree = cKDTree(keepout.xy)
 
-        def fits(pose: Pose) -> bool:
+        def fits(pose: Pose, foot: np.ndarray) -> bool:
             xy, yaw, _, tilt = pose
             turn = self._turn(yaw, tilt, axis)
             at = (foot @ turn.T)[:, :2] - box_centre(rel @ turn.T) + xy
             return bool(tree.query(at)[0].min() >= keepout.margin)
-        clear = [pose for pose in poses if fits(pose)]
+        with_fingers = np.vstack([body, fingers])
+        clear = [pose for pose in poses if fits(pose, with_fingers)]
+        if not clear and keepout.fingers_soft:
+            clear = [pose for pose in poses if fits(pose, body)]
         if not clear and not keepout.soft:
             raise PlanFailure(f"no release pose leaves {keepout.margin * 1000:.0f} mm to the other objects ({len(poses)} tried)")
         kept: list[Pose] = (clear or poses)[: self.release.max_poses]
