@@ -228,3 +228,9 @@ def test_a_command_on_a_missing_thing_is_refused_not_skipped(sentence: str) -> N
 def test_a_vague_amount_after_a_command_stays_talk() -> None:
     assert calls("put the banana in front of the bowl, a little closer to you") == ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]
     assert calls("there's a banana on the table. put it in the bowl, would ya") == ["place_in('obj7_banana', 'obj6_bowl')"]
+
+
+def test_the_same_place_said_again() -> None:
+    assert calls("Green cube in the bowl! Blue one too, same bowl!") == ["place_in('obj5_cube', 'obj6_bowl')", "place_in('obj4_cube', 'obj6_bowl')"]
+    assert calls("put the banana in the bowl, then the strawberry, same place") == [
+        "place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]

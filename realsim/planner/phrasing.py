@@ -139,6 +139,9 @@ def split_command(command: str) -> list[str]:
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
             if AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
                 clauses.append(part)
+            elif (same := re.fullmatch(r"(?:(?:in|on|into|onto|to|at) )?(?:the )?same (\w+)(?: again| too| as well)?", part)) and rel and (
+                    same.group(1) in ("place", "spot", "one", "location", "position") or re.search(rf"\b{same.group(1)}\b", clauses[-1][rel.start():])):
+                continue  # "Red one too, same plate!": the place said again
             elif _AMOUNT.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
