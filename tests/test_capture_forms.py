@@ -142,3 +142,15 @@ def test_noiseless_cloud_objects_keep_their_feet(gt, tmp_path: Path) -> None:
     for k in range(1, len(gt.objects) + 1):
         mine = ids == k
         assert (scene.labels[mine] == 0).mean() < 0.05, gt.objects[k - 1].name
+
+
+def test_an_open_vessel_keeps_its_inner_floor(tmp_path: Path) -> None:
+    """A bowl's and a mug's inner floor lie within the support's noise of it, but inside their
+    outline, where no support is seen: they are the vessel's (a 2 mm-noise 200k cloud; 13 % of
+    the bowl was left to the table before)."""
+    vessels = make_scene(SceneSpec(layout="table", objects=("024_bowl", "025_mug"), stacked=False, touching=False, seed=3))
+    _, ids = write_point_cloud(vessels, tmp_path / "vessels.ply", 200_000)
+    scene = run_pipeline(tmp_path / "vessels.ply", pipeline=_pipeline(tmp_path))
+    assert len(scene.objects) == 2
+    for k in range(1, 3):
+        assert (scene.labels[ids == k] == 0).mean() < 0.05, vessels.objects[k - 1].name

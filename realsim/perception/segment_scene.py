@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
@@ -134,31 +135,57 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
     they are, once the objects are found (the objects are never joined through it): above 4 sigma
     of the noise (never under 2 mm), to the object within ``reach``; between 1 and 4 sigma, only
     inside that object's footprint (its occupied cells of side ``cell``): the support under an
-    object is hidden, so what rises there is the object's foot, not the support's noise."""
+    object is hidden, so what rises there is the object's foot, not the support's noise. Inside
+    the footprint's holes (cells its outline encloses: a bowl's or a mug's inner floor) nothing
+    of the support is seen at all, so every point there down to 4 sigma under it is the object's."""
     low, sure = max(noise, MIN_OBJECT_HEIGHT), max(4 * noise, MIN_OBJECT_HEIGHT)
     obj = centre_labels > 0
     if low >= params.min_height or not obj.any():
         return
-    lower, height = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=low))
+    foot_labels, foot = centre_labels[obj], np.floor(centres[obj][:, :2] / cell).astype(np.int64)
+    hole_labels, holes = _footprint_holes(foot_labels, foot)
+    lower, height = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=-sure))
     band = np.flatnonzero((lower >= 0) & (support < 0))
+    mine = np.floor(scene.points[band, :2] / cell).astype(np.int64)
+    lo = np.min([foot.min(axis=0), mine.min(axis=0, initial=0)], axis=0) if len(band) else foot.min(axis=0)
+    span = np.max([foot.max(axis=0), mine.max(axis=0, initial=0)], axis=0) - lo + 1
+
+    def key(lab: np.ndarray | int, ij: np.ndarray) -> np.ndarray:
+        return (np.asarray(lab, dtype=np.int64) * span[0] + (ij[:, 0] - lo[0])) * span[1] + (ij[:, 1] - lo[1])
+
+    # under an object's outline: that object's, however far from its seen points (a bowl's floor)
+    hole_keys = key(0, holes)
+    order = np.argsort(hole_keys, kind="stable")
+    hole_keys, hole_labels = hole_keys[order], hole_labels[order]
+    at = np.minimum(np.searchsorted(hole_keys, key(0, mine)), max(len(hole_keys) - 1, 0))
+    hidden = hole_keys[at] == key(0, mine) if len(hole_keys) else np.zeros(len(band), dtype=bool)
+    labels[band[hidden]] = hole_labels[at[hidden]]
+    rest = ~hidden & (height[band] > low)
+    band, mine = band[rest], mine[rest]
     if len(band) == 0:
         return
     dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
     near = np.isfinite(dist)
-    band, owner = band[near], centre_labels[obj][nn[near]]
-    keep = height[band] > sure
-    doubt = np.flatnonzero(~keep)
-    if len(doubt):
-        foot = np.floor(centres[obj][:, :2] / cell).astype(np.int64)
-        mine = np.floor(scene.points[band[doubt], :2] / cell).astype(np.int64)
-        lo = np.minimum(foot.min(axis=0), mine.min(axis=0))
-        span = np.maximum(foot.max(axis=0), mine.max(axis=0)) - lo + 1
-
-        def key(lab: np.ndarray, ij: np.ndarray) -> np.ndarray:
-            return (lab.astype(np.int64) * span[0] + (ij[:, 0] - lo[0])) * span[1] + (ij[:, 1] - lo[1])
-
-        keep[doubt] = np.isin(key(owner[doubt], mine), key(centre_labels[obj], foot))
+    band, mine, owner = band[near], mine[near], foot_labels[nn[near]]
+    keep = (height[band] > sure) | np.isin(key(owner, mine), key(foot_labels, foot))
     labels[band[keep]] = owner[keep]
+
+
+def _footprint_holes(labels: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The xy cells each object's occupied ``cells`` enclose (as label, cell pairs): openings its
+    outline closes around, wider than the one- or two-cell gaps sampling leaves in a surface (a
+    box top seen from above has those, and the support under it is no floor of the box's)."""
+    out_l, out_c = [np.zeros(0, np.int64)], [np.zeros((0, 2), np.int64)]
+    for k in np.unique(labels):
+        ij = cells[labels == k]
+        lo = ij.min(axis=0) - 2
+        grid = np.zeros(tuple(ij.max(axis=0) - lo + 3), dtype=bool)
+        grid[ij[:, 0] - lo[0], ij[:, 1] - lo[1]] = True
+        closed = ndimage.binary_closing(grid, structure=np.ones((3, 3), dtype=bool))
+        holes = np.argwhere(ndimage.binary_fill_holes(closed) & ~closed)
+        out_l.append(np.full(len(holes), k, dtype=np.int64))
+        out_c.append(holes + lo)
+    return np.concatenate(out_l), np.concatenate(out_c)
 
 
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
