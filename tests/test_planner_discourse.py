@@ -234,3 +234,9 @@ def test_the_same_place_said_again() -> None:
     assert calls("Green cube in the bowl! Blue one too, same bowl!") == ["place_in('obj5_cube', 'obj6_bowl')", "place_in('obj4_cube', 'obj6_bowl')"]
     assert calls("put the banana in the bowl, then the strawberry, same place") == [
         "place_in('obj7_banana', 'obj6_bowl')", "place_in('obj8_strawberry', 'obj6_bowl')"]
+
+
+def test_a_contracted_is_makes_a_statement() -> None:
+    """"the banana's in the way, move it ...": a statement naming what "it" means, not a thing called "banana in the way"."""
+    assert calls("the banana's in the way, move it next to the strawberry") == ["place_beside('obj7_banana', 'obj8_strawberry', 'next')"]
+    assert calls("the bowl's dirty. push it 5 cm left") == ["push('obj6_bowl', 'left', 0.05)"]

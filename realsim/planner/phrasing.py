@@ -88,6 +88,9 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
     text = places.positions(text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
+    # "the mug's dirty": the mug is (a statement), where "the mug's handle" is the mug's
+    text = re.sub(r"\b((?:the|that|this|my) [a-z]+(?: [a-z]+)?)'s (?=(?:dirty|empty|full|broken|wet|sticky|heavy|too|so|really|very|not|just|still|always"
+                  r"|in the way|in my way|blocking|sitting|lying|standing|getting|been|gonna|going|kind of|sort of|fine|ok|okay)\b)", r"\1 is ", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
     text = casual.described(casual.light_verb(text))
