@@ -107,7 +107,7 @@ def size_pick(objs: list[ObjectInfo], word: str, k: int) -> list[ObjectInfo]:
         a, b = _volume(ranked[k - 1], word), _volume(ranked[k], word)
         if abs(a - b) < SIZE_MARGIN * max(a, b, 1e-9):
             close = [o.name for o in ranked if abs(_volume(o, word) - a) < SIZE_MARGIN * max(a, 1e-9)]
-            raise InputError(f"{word!r}: {', '.join(close)} are about the same size; say which one another way")
+            raise InputError(f"{word!r} is ambiguous: {', '.join(close)} are about the same size; say which one another way")
     return ranked[:k]
 
 
