@@ -161,9 +161,9 @@ def test_hostile_program_is_rejected_naming_the_line(program: str, line: int) ->
 
 @pytest.mark.parametrize(("program", "line", "why"), RUNAWAY, ids=[f"runaway{i:02d}" for i in range(len(RUNAWAY))])
 def test_runaway_program_is_stopped_naming_the_line(program: str, line: int, why: str) -> None:
-    t0 = time.monotonic()
+    t0 = time.thread_time()  # CPU: the budgets count the program's CPU time, so a loaded machine cannot fail this
     report = run(program, Recorder(), limits=FAST)
-    assert time.monotonic() - t0 < 5.0
+    assert time.thread_time() - t0 < 5.0
     assert report.error is not None and not report.ok
     assert report.error.startswith(f"line {line}:"), report.error
     assert re.search(why, report.error), report.error
@@ -171,10 +171,11 @@ def test_runaway_program_is_stopped_naming_the_line(program: str, line: int, why
 
 def test_cpu_time_budget_stops_a_busy_program() -> None:
     program = "t = 0\nfor i in range(10000):\n    for j in range(10000):\n        t = t + i * j"
+    t0 = time.thread_time()
     report = run(program, Recorder(), limits=Limits(max_steps=10**9, max_seconds=0.3))
     assert report.error is not None and "longer than 0.3 s" in report.error
     assert re.match(r"line [234]:", report.error)
-    assert report.seconds < 3.0
+    assert time.thread_time() - t0 < 3.0
 
 
 def test_corpus_sizes() -> None:

@@ -35,7 +35,7 @@ class Limits:
 
     max_calls: int = 64  # primitive calls
     max_steps: int = 100_000  # executed lines, loop iterations included
-    max_seconds: float = 2.0  # time in the program itself (time inside primitives excluded)
+    max_seconds: float = 2.0  # CPU time of the program itself (time inside primitives excluded; a loaded machine does not spend it)
     max_wall_seconds: float | None = None  # everything included; None: no bound
     max_while_iterations: int = 1_000  # per while loop
     max_len: int = 10_000  # elements of a list/tuple/str

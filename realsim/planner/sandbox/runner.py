@@ -94,8 +94,9 @@ class Runner:
         self.funcs = funcs
         self.limits = limits
         self.report = ExecutionReport()
-        self.start = 0.0
-        self.primitive_time = 0.0
+        self.start = 0.0  # wall clock (time.monotonic) at the run's start
+        self.cpu_start = 0.0  # this thread's CPU time at the run's start: the program's budget is CPU, so load cannot spend it
+        self.primitive_cpu = 0.0  # CPU time spent inside primitives (not the program's)
         self.while_counts: dict[int, int] = {}
         self.allocated = 0
         self.line: int | None = None  # the current call's line when running a typed program
@@ -114,7 +115,7 @@ class Runner:
             line = self._line()
             if len(self.report.calls) >= self.limits.max_calls:
                 raise _Stop(f"line {line}: more than {self.limits.max_calls} primitive calls (budget exhausted)")
-            t0 = time.monotonic()
+            t0 = time.thread_time()
             try:
                 result = fn(*args, **kwargs)
             except _Stop:
@@ -123,7 +124,7 @@ class Runner:
                 call = PrimitiveCall(name, args, kwargs, None, line)
                 raise _Stop(f"line {line}: {call.call_text()} raised {type(exc).__name__}: {_one_line(exc)}") from None
             finally:
-                self.primitive_time += time.monotonic() - t0
+                self.primitive_cpu += time.thread_time() - t0
             call = PrimitiveCall(name, args, kwargs, result, line)
             self.report.calls.append(call)
             if self.limits.stop_on_failure and not call.success:
@@ -233,16 +234,15 @@ class Runner:
         self.report.steps += 1
         if self.report.steps > lim.max_steps:
             raise _Stop(f"line {line}: more than {lim.max_steps} steps executed (runaway loop?)")
-        now = time.monotonic()
-        if now - self.start - self.primitive_time > lim.max_seconds:
+        if time.thread_time() - self.cpu_start - self.primitive_cpu > lim.max_seconds:
             raise _Stop(f"line {line}: the program ran longer than {lim.max_seconds:g} s (runaway loop?)")
-        if lim.max_wall_seconds is not None and now - self.start > lim.max_wall_seconds:
+        if lim.max_wall_seconds is not None and time.monotonic() - self.start > lim.max_wall_seconds:
             raise _Stop(f"line {line}: the run took longer than {lim.max_wall_seconds:g} s")
 
     def run_calls(self, calls: Iterable[tuple[int, str, tuple[Any, ...]]]) -> ExecutionReport:
         """Make ``(line, name, args)`` calls in order through the same wrapped primitives, budgets
         and report as a source program (a typed program has no loops or arithmetic to trace)."""
-        self.start = time.monotonic()
+        self.start, self.cpu_start = time.monotonic(), time.thread_time()
         try:
             for line, name, args in calls:
                 self.line = line
@@ -269,7 +269,7 @@ class Runner:
         env["__rs_tick"] = self.tick
         env["__rs_alloc"] = self.alloc
         previous = sys.gettrace()
-        self.start = time.monotonic()
+        self.start, self.cpu_start = time.monotonic(), time.thread_time()
         sys.settrace(self.tracer)
         try:
             exec(code, env)  # noqa: S102 - the AST was checked and rewritten; builtins replaced
