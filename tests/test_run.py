@@ -178,3 +178,15 @@ def test_same_seed_same_outcome(scene: Path) -> None:
     b = run_command(sim, "push the bowl 5 cm to the left", planner="rules")
     assert a.objects_after == b.objects_after and a.sim_time == b.sim_time
     assert np.isclose(a.objects_after["obj1_bowl"][1] - a.objects_before["obj1_bowl"][1], 0.05, atol=0.02)
+
+
+def test_reset_undoes_what_a_run_left_in_the_model(scene: Path) -> None:
+    """A run that ends holding an object leaves the noslip solver on; the next sentence in the same
+    Sim must start from the scene's own options, as a fresh load does (a bench runs many in one)."""
+    sim = Sim.load(scene)
+    own = int(sim.model.opt.noslip_iterations)
+    rec = run_program(sim, "grasp('obj2_mug')")
+    assert rec.error is None and sim.robot.held == "obj2_mug"
+    assert int(sim.model.opt.noslip_iterations) != own  # held at the end: the solver is still on
+    sim.reset()
+    assert int(sim.model.opt.noslip_iterations) == own

@@ -86,6 +86,7 @@ class Sim:
         self.meta = meta
         self.seed = seed
         self.robot_params = robot_params
+        self._scene_noslip = int(model.opt.noslip_iterations)  # the scene's own; a run ending while holding leaves it raised
         self.prefix = (meta.get("robot") or {}).get("prefix") or PREFIX
         if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.prefix + "link0") < 0:
             raise InputError(f"{self.folder}: the scene has no robot (no '{self.prefix}link0' body); "
@@ -129,7 +130,9 @@ class Sim:
         return cls(xml.parent, model, meta, seed=seed, robot_params=robot_params)
 
     def reset(self) -> None:
-        """Back to keyframe "initial" with a fresh :class:`Robot` (hooks are dropped)."""
+        """Back to keyframe "initial" with a fresh :class:`Robot` (hooks are dropped) and the scene's
+        own solver options (a run that ended holding an object leaves the noslip solver on)."""
+        self.model.opt.noslip_iterations = self._scene_noslip
         mujoco.mj_resetDataKeyframe(self.model, self.data, self.model.key(KEYFRAME).id)
         mujoco.mj_forward(self.model, self.data)
         self.robot = Robot(self.model, self.data, prefix=self.prefix, params=self.robot_params, seed=self.seed)
