@@ -144,8 +144,10 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
         return
     foot_labels, foot = centre_labels[obj], np.floor(centres[obj][:, :2] / cell).astype(np.int64)
     hole_labels, holes = _footprint_holes(foot_labels, foot)
-    lower, height = assign_supports(scene.points, scene.planes, dataclasses.replace(params, min_height=-sure))
-    band = np.flatnonzero((lower >= 0) & (support < 0))
+    cand = np.flatnonzero(support < 0)
+    cand = cand[_near_cells(scene.points[cand, :2], np.vstack([foot, holes]), cell, reach)]
+    lower, height_c = assign_supports(scene.points[cand], scene.planes, dataclasses.replace(params, min_height=-sure))
+    band, height = cand[lower >= 0], height_c[lower >= 0]  # height: per band point from here on
     mine = np.floor(scene.points[band, :2] / cell).astype(np.int64)
     lo = np.min([foot.min(axis=0), mine.min(axis=0, initial=0)], axis=0) if len(band) else foot.min(axis=0)
     span = np.max([foot.max(axis=0), mine.max(axis=0, initial=0)], axis=0) - lo + 1
@@ -160,15 +162,35 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
     at = np.minimum(np.searchsorted(hole_keys, key(0, mine)), max(len(hole_keys) - 1, 0))
     hidden = hole_keys[at] == key(0, mine) if len(hole_keys) else np.zeros(len(band), dtype=bool)
     labels[band[hidden]] = hole_labels[at[hidden]]
-    rest = ~hidden & (height[band] > low)
-    band, mine = band[rest], mine[rest]
+    rest = ~hidden & (height > low)
+    band, mine, height = band[rest], mine[rest], height[rest]
     if len(band) == 0:
         return
     dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
     near = np.isfinite(dist)
-    band, mine, owner = band[near], mine[near], foot_labels[nn[near]]
-    keep = (height[band] > sure) | np.isin(key(owner, mine), key(foot_labels, foot))
+    band, mine, height, owner = band[near], mine[near], height[near], foot_labels[nn[near]]
+    keep = (height > sure) | np.isin(key(owner, mine), key(foot_labels, foot))
     labels[band[keep]] = owner[keep]
+
+
+def _near_cells(xy: np.ndarray, cells: np.ndarray, cell: float, reach: float) -> np.ndarray:
+    """Mask of the points ``xy`` whose xy cell (side ``cell``) is one of ``cells`` or lies within
+    ``reach`` of one: a superset of the points within ``reach`` of anything in those cells, found
+    on a small dense grid instead of testing every support point against every support polygon."""
+    if len(cells) == 0 or len(xy) == 0:
+        return np.zeros(len(xy), dtype=bool)
+    r = int(np.ceil(reach / cell)) + 1
+    lo = cells.min(axis=0) - r
+    grid = np.zeros(tuple(cells.max(axis=0) - lo + r + 1), dtype=bool)
+    grid[cells[:, 0] - lo[0], cells[:, 1] - lo[1]] = True
+    grid = ndimage.binary_dilation(grid, structure=np.ones((2 * r + 1, 2 * r + 1), dtype=bool))
+    with np.errstate(invalid="ignore"):
+        ij = np.floor(np.nan_to_num(xy, nan=np.inf) / cell)
+    inside = np.all((ij >= lo) & (ij < lo + grid.shape), axis=1)
+    out = np.zeros(len(xy), dtype=bool)
+    at = ij[inside].astype(np.int64) - lo
+    out[inside] = grid[at[:, 0], at[:, 1]]
+    return out
 
 
 def _footprint_holes(labels: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
