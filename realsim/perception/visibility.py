@@ -43,8 +43,13 @@ class _Occupancy:
         self.lookup = np.full(tuple(self.top + 1), self.empty, dtype=np.int64)
         self.lookup[blocks[:, 0], blocks[:, 1], blocks[:, 2]] = np.arange(len(blocks))
         self.data = np.zeros((len(blocks) + 1) << (3 * self.SHIFT), dtype=bool)
+        # a cell whose neighbours all lie in its own block finds them at fixed offsets in ``data``
+        local = cells & ((1 << self.SHIFT) - 1)
+        inner = np.all((local >= 1) & (local < (1 << self.SHIFT) - 1), axis=1)
+        inner_flat, border = self.flat(cells[inner]), cells[~inner]
         for d in near:
-            self.data[self.flat(cells + d)] = True
+            self.data[inner_flat + ((int(d[0]) << (2 * self.SHIFT)) + (int(d[1]) << self.SHIFT) + int(d[2]))] = True
+            self.data[self.flat(border + d)] = True
         # stored blocks the dilation left free read as the empty block: rays skip them whole
         per = 1 << (3 * self.SHIFT)
         used = np.r_[self.data[:-per].reshape(-1, per).any(axis=1), False]
@@ -90,36 +95,40 @@ def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: f
 
     Each ray is sampled at every whole cell length along it; a sample in an empty block jumps to
     the first sample beyond that block (a line leaves a box once), so the samples tested, and the
-    counts, are those of a march through every cell."""
+    counts, are those of a march through every cell. Coordinates are kept as one array per axis:
+    the rays still free are taken out by one index per step."""
     last = float(np.floor(reach / cell + 1e-9))
     s, size = occupied.SHIFT, 1 << occupied.SHIFT
     m = size - 1
     table, strides, offset = _block_table(occupied, origin, last)
     count = np.zeros(len(origin), dtype=np.int64)
     for d in dirs:
-        live, start, t = np.arange(len(origin)), origin, np.zeros(len(origin))
+        axes = np.flatnonzero(d)
+        live, t = np.arange(len(origin)), np.zeros(len(origin))
+        start = [np.ascontiguousarray(origin[:, a]) for a in range(3)]
         while len(live):  # only the rays still free are marched on
-            ijk = np.floor(start + t[:, None] * d).astype(np.int64)
-            block = ijk >> s
-            ids = table[block @ strides + offset]
-            flat = (ids << (3 * s)) | ((ijk[:, 0] & m) << (2 * s)) | ((ijk[:, 1] & m) << s) | (ijk[:, 2] & m)
+            ijk = [np.floor(start[a] + t * d[a]).astype(np.int64) for a in range(3)]
+            block = [c >> s for c in ijk]
+            ids = table[block[0] * strides[0] + block[1] * strides[1] + block[2] * strides[2] + offset]
+            flat = (ids << (3 * s)) | ((ijk[0] & m) << (2 * s)) | ((ijk[1] & m) << s) | (ijk[2] & m)
             nxt = t + 1.0
             skip = np.flatnonzero(ids == occupied.empty)
             if len(skip):
-                corner = block[skip] << s
                 leave = np.full(len(skip), np.inf)
-                for axis in np.flatnonzero(d):  # the first whole step past the block's far face
+                for axis in axes:  # the first whole step past the block's far face
+                    corner = block[axis][skip] << s
                     if d[axis] > 0:
-                        step = np.ceil((corner[:, axis] + size - start[skip, axis]) / d[axis])
+                        step = np.ceil((corner + size - start[axis][skip]) / d[axis])
                     else:
-                        step = np.floor((corner[:, axis] - start[skip, axis]) / d[axis]) + 1.0
+                        step = np.floor((corner - start[axis][skip]) / d[axis]) + 1.0
                     leave = np.minimum(leave, step)
                 nxt[skip] = np.maximum(leave, nxt[skip])
             free = ~occupied.data[flat]
             out = free & (nxt > last)
             count[live[out]] += 1
-            free &= ~out
-            live, start, t = live[free], start[free], nxt[free]
+            keep = np.flatnonzero(free & ~out)
+            live, t = live[keep], nxt[keep]
+            start = [c[keep] for c in start]
     return count
 
 
