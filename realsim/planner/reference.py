@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from realsim.errors import InputError
-from realsim.planner import noun_phrase, vocab
+from realsim.planner import noun_phrase, typos, vocab
 from realsim.planner.attributes import between_of, colors_of, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
 from realsim.planner.ordering import EXTREMES, ordered
 from realsim.planner.types import ObjectInfo
@@ -74,6 +74,7 @@ class Resolver:
         c, s = math.cos(robot_yaw), math.sin(robot_yaw)
         self.forward, self.left = np.array([c, s]), np.array([-s, c])
         self._words = {o.name: self._name_sets(o) for o in self.objects}
+        self._said = {w for names in self._words.values() for n in names for w in n}  # the scene's name words
 
     # --- vocabulary of one object -----------------------------------------------------------
     def _name_sets(self, o: ObjectInfo) -> list[list[str]]:
@@ -316,7 +317,7 @@ class Resolver:
         m = re.match(r"(?:the )?(\d+)\s+(.+)", joined)
         if m and int(m.group(1)) > 1:
             quantity, plural, joined = int(m.group(1)), True, m.group(2)
-        words = [w for w in joined.split() if w not in DETERMINERS]
+        words = [typos.spelled(w, self._said) for w in joined.split() if w not in DETERMINERS]  # misspellings read
         colors = [COLOR_WORDS[w] for w in words if w in COLOR_WORDS]
         sizes = [w for w in words if w in BIG or w in SMALL]
         extreme_words = [w for w in words if w in EXTREMES and w not in ("near", "far")]

@@ -17,7 +17,8 @@ from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
 __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
 
-_MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
+_MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
+                     r"|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
                         r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|it)\s+"
@@ -53,7 +54,10 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
         said = re.sub(r"^(?:(?:just|rather|instead|actually|make (?:that|it)|i meant?)\s+)+", "", after)
         if verb.match(said) and not weak:  # "put the mug in the bowl no sorry just pick up the bowl"
             # "..., actually no, take it out again": an undo of what was done, so what was done stays
-            return f"{before}, {said}" if re.search(r"\b(?:it|them)\b", said) else said
+            # unless the speaker cancelled it ("scratch that") or the new command names its own object first
+            cancelled = re.match(r"(?:scratch|strike|forget|cancel|ignore) that|let me rephrase|correction", m.group(1))
+            undo = re.match(r"[a-z ]*?\b(?:it|them)\b", said) and not re.match(r"[a-z ]*?\b(?:the|a|an|this|that)\s[a-z ]*?\b(?:it|them)\b", said)
+            return f"{before}, {said}" if undo and not cancelled else said
         if relation.match(said):  # "the soup can in the mug no no in the bowl"
             places = list(relation.finditer(before))
             if places:
@@ -61,6 +65,8 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
         places = [r for r in relation.finditer(before) if not _POSITION.match(before, r.end())]  # "on the right" says which
         start = max([m.end() for m in verb.finditer(before)] + [r.end() for r in places], default=0)
         if re.match(r"(?:the|that|this|a|an)\s", said) and re.match(r"\s*(?:the|that|this|a|an)\s", before[start:]):
+            if restart := _restarted(said, verb):  # "push the red box -- sorry, the red can -- push it toward you"
+                return f"{before[: _last_verb(before, verb)].rstrip(' ,')} {restart}".strip()
             said = _continued(said, verb, relation)
             if re.search(r"(?:^|\s)(?:the|that|this|a|an)\s", before[:start]) and not weak:  # which of two does it replace?
                 return _contrast(before, said, text, verb, relation)
@@ -82,6 +88,24 @@ def homophones(text: str, verb: re.Pattern[str]) -> str:
     for pattern, word in _HOMOPHONES:
         text = re.sub(pattern, word, text)
     return re.sub(rf"\bthan (?={verb.pattern})", "then ", text)
+
+
+def _last_verb(before: str, verb: re.Pattern[str]) -> int:
+    """Where the last command verb of ``before`` starts (0 when it has none)."""
+    return max((m.start() for m in re.finditer(rf"(?:^|(?<=[\s,;.]))(?:{verb.pattern})", before)), default=0)
+
+
+def _restarted(said: str, verb: re.Pattern[str]) -> str | None:
+    """A repaired object phrase followed, after a pause, by the command said again from its verb
+    ("the mug, put it in the bowl"; "the red can -- push the red can toward you"): that command,
+    its "it" the repaired object; None when no command follows the phrase."""
+    m = re.match(r"([^,;.]+?)\s*[,;-]+\s*(.+)", said)
+    if not m or not verb.match(m.group(2)):
+        return None
+    phrase, command = m.group(1).strip(), m.group(2)
+    if re.search(r"\b(?:it|them)\b", command):
+        return re.sub(r"\b(?:it|them)\b", phrase, command, count=1)
+    return command if phrase in command else None
 
 
 def _continued(said: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:

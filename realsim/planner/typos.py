@@ -1,0 +1,79 @@
+"""Misspelled words ("the read cube", "the gren block", "the yelow bananna"): a word the
+planner does not know is read as the one word of a vocabulary (the scene's names, colours, sizes)
+it is closest to, when that word is within a distance bound relative to its length and no other
+vocabulary word is as close. Short words (three letters or fewer) are never changed: too many
+real words lie one letter apart ("fat", "far").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from realsim.planner.lexicon import ALL_VERBS, RELATIONS
+from realsim.planner.ordering import EXTREMES
+from realsim.planner.vocab import (
+    BIG,
+    COLOR_WORDS,
+    DIRECTION_WORDS,
+    GENERIC,
+    KINDS,
+    NUMBERS,
+    ORDINALS,
+    SMALL,
+    SYNONYMS,
+    TYPICAL_COLORS,
+    UNITS,
+    is_plural,
+    singular,
+)
+
+__all__ = ["bound", "correct", "distance", "spelled"]
+
+# words a noun phrase may hold that are no misspelling of a scene's name, a colour or a size
+_KNOWN = frozenset({*COLOR_WORDS, *BIG, *SMALL, *EXTREMES, *ORDINALS, *GENERIC, *NUMBERS, *SYNONYMS, *(w for v in SYNONYMS.values() for w in v),
+                    *KINDS, *(w for v in KINDS.values() for w in v), *TYPICAL_COLORS, "colored", "coloured", "central", "middle", "center",
+                    "centre", "most", "thing", "things", "the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those",
+                    *(w for v in ALL_VERBS for w in v.split()), *(w for r, _ in RELATIONS for w in r.split()), *(w for d in DIRECTION_WORDS for w in d.split()),
+                    *UNITS, "like", "just", "please", "and", "then", "it", "them", "with", "from", "away", "other", "else", "same", "only"})
+
+
+def distance(a: str, b: str) -> int:
+    """Optimal-string-alignment distance: insertions, deletions, substitutions, adjacent swaps."""
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        cur = [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = a[i - 1] != b[j - 1]
+            cur[j] = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost)
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                cur[j] = min(cur[j], prev2[j - 2] + 1)
+        prev2, prev = prev, cur
+    return prev[-1]
+
+
+def bound(word: str) -> int:
+    """Edits allowed for a word of this length: none up to 3 letters, 1 up to 6, else 2."""
+    return 0 if len(word) <= 3 else 1 if len(word) <= 6 else 2
+
+
+def correct(word: str, vocabulary: Iterable[str], known: Iterable[str] = ()) -> str | None:
+    """The one vocabulary word ``word`` misspells, or None: ``word`` is neither in the vocabulary
+    nor ``known``, and exactly one vocabulary word is nearest, within :func:`bound`."""
+    vocab, known = set(vocabulary), set(known)
+    if {word, singular(word)} & (vocab | known) or not word.isalpha() or bound(word) == 0:
+        return None
+    near = sorted((distance(word, v), v) for v in vocab if abs(len(v) - len(word)) <= bound(word) and len(v) > 2)
+    near = [(d, v) for d, v in near if d <= bound(word)]
+    if not near or (len(near) > 1 and near[1][0] == near[0][0]):
+        return None
+    return near[0][1]
+
+
+def spelled(word: str, scene_words: set[str]) -> str:
+    """``word`` of a noun phrase, or the one scene name, colour or size word it misspells."""
+    vocabulary = scene_words | set(COLOR_WORDS) | set(BIG) | set(SMALL)
+    if said := correct(word, vocabulary, _KNOWN):
+        return said
+    said = correct(singular(word), scene_words, _KNOWN) if is_plural(word) else None  # "strawberies": the plural kept
+    return f"{said}s" if said else word

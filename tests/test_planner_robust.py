@@ -1,0 +1,67 @@
+"""Phrasings no bench sentence was tuned for: restarts after "scratch that", an engineer's
+units and tolerances, and misspelled colours and names (each class with sentences of its own)."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+from realsim.planner.typos import correct, distance
+
+
+def _lines(sentence: str) -> list[str]:
+    return [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # a restart after a cancellation: only the new command
+    ("lift the green cube, no wait, scratch that, lift the strawberry and hold it", ["grasp('obj8_strawberry')"]),
+    ("put the banana on the red cube. forget that, put the banana in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("slide the red cube -- sorry, the blue cube -- slide the blue cube to the left by 4 cm", ["push('obj4_cube', 'left', 0.04)"]),
+    ("put the strawberry, no, the banana, i mean the banana, put it behind the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    ("pick up the red cube, or rather, the green cube", ["grasp('obj5_cube')"]),
+])
+def test_restarted_commands(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("Displace the strawberry 3 in toward the robot base.", ["push('obj8_strawberry', 'back', 0.076)"]),
+    ("Reposition the green cube ~60 mm in -y, no rotation.", ["push('obj5_cube', 'right', 0.06)"]),
+    ("translate the banana 2 in (approx. 5 cm) forward w.r.t. the robot frame", ["push('obj7_banana', 'forward', 0.051)"]),
+    ("Place the strawberry directly left of the bowl, ca. 90 mm centre to centre.", ["place_beside('obj8_strawberry', 'obj6_bowl', 'left')"]),
+    ("set the banana at the midpoint of the red cube and the green cube, ± 5 mm", ["place_between('obj7_banana', 'obj3_cube', 'obj5_cube')"]),
+    ("put the banana 2 in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),  # "in" followed by a thing: no inches
+    ("move the blue cube 5 cm left, then send the arm back to its rest configuration", ["push('obj4_cube', 'left', 0.05)", "go_home()"]),
+])
+def test_engineering_phrasing(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("lift the bleu cube", ["grasp('obj4_cube')"]),
+    ("put the geen cube in the bowl", ["place_in('obj5_cube', 'obj6_bowl')"]),
+    ("drop the strawbery next to the banan", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("put the bananas in the bwol", ["place_in('obj7_banana', 'obj6_bowl')"]),
+])
+def test_misspellings(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+@pytest.mark.parametrize("sentence", [
+    "lift the gren cube",  # green or grey: one letter from each, so asked
+    "lift the fat cube",  # three letters: never changed (fat, far)
+])
+def test_unsure_spellings_are_asked(sentence: str) -> None:
+    with pytest.raises(InputError, match="ambiguous|no .*object"):
+        RulePlanner().plan(sentence, CLUTTER)
+
+
+def test_distance_and_bound() -> None:
+    assert distance("bule", "blue") == 1 and distance("read", "red") == 1 and distance("bowl", "bowl") == 0
+    assert correct("yelow", ["yellow", "blue"]) == "yellow"
+    assert correct("gren", ["green", "grey"]) is None  # two as near
+    assert correct("cans", ["can"]) is None  # a plural is no typo
+    assert correct("grab", ["gray"], known=["grab"]) is None  # a known word stays
