@@ -16,6 +16,7 @@ segment) and compared in the ground-truth frame:
   1 M cloud and the mesh with --full; peak memory of the 10 M-point conversion (a subprocess).
 
     .venv/bin/python bench/bench_captures.py [--quick] [--full] [--layouts table,counter,floor]
+        [--forms view,cloud,mesh,sequence] [--densities 50000,200000] [--no-big]
 
 A layout written ``name:seed`` (``table:7``) is a held-out scene: four objects drawn from the
 generator's default set with that seed, a stacked and a touching pair (seed 0: the fixed sets).
@@ -61,6 +62,7 @@ class Row:
     f1: float
     iou: float
     note: str = ""
+    cpu: float = 0.0  # CPU seconds of load+planes+segment (wall overstates on a loaded machine)
 
 
 def bench_scene(key: str) -> SynthScene:
@@ -81,9 +83,9 @@ def _pipeline_file() -> Path:
 def evaluate(gt: SynthScene, source: Path, capture_to_world: np.ndarray, form: str, gt_ids: np.ndarray | None = None,
              overrides: dict | None = None) -> Row:
     """Convert ``source`` (load, planes, segment) and score it against ``gt``."""
-    started = time.perf_counter()
+    started, cpu = time.perf_counter(), time.process_time()
     scene = run_pipeline(source, pipeline=_pipeline_file(), overrides=overrides or {})
-    seconds = time.perf_counter() - started
+    seconds, cpu = time.perf_counter() - started, time.process_time() - cpu
     m = scene.capture.input_to_world
     to_gt = np.asarray(capture_to_world) @ np.linalg.inv(m)  # converter world -> ground-truth world
     rot = to_gt[:3, :3] / np.cbrt(np.linalg.det(to_gt[:3, :3]))
@@ -119,13 +121,13 @@ def evaluate(gt: SynthScene, source: Path, capture_to_world: np.ndarray, form: s
     tp = int((ious >= 0.5).sum())
     f1 = 2 * tp / max(n_true + n_found, 1)
     return Row(gt.spec.layout, form, seconds, max(errs, default=np.nan) * 1000, max(tilts, default=np.nan), missing, extra,
-               n_true, n_found, f1, float(np.mean(ious)) if len(ious) else 0.0, "; ".join(scene.warnings)[:60])
+               n_true, n_found, f1, float(np.mean(ious)) if len(ious) else 0.0, "; ".join(scene.warnings)[:60], cpu)
 
 
 def print_rows(rows: list[Row]) -> None:
-    print(f"{'layout':10s} {'form':16s} {'s':>6s} {'sup mm':>6s} {'deg':>5s} {'miss':>4s} {'extra':>5s} {'true':>4s} {'found':>5s} {'F1':>5s} {'IoU':>5s}  warnings")
+    print(f"{'layout':10s} {'form':16s} {'s':>6s} {'cpu s':>6s} {'sup mm':>6s} {'deg':>5s} {'miss':>4s} {'extra':>5s} {'true':>4s} {'found':>5s} {'F1':>5s} {'IoU':>5s}  warnings")
     for r in rows:
-        print(f"{r.layout:10s} {r.form:16s} {r.seconds:6.2f} {r.sup_err_mm:6.2f} {r.sup_tilt_deg:5.2f} {r.sup_missing:4d} {r.sup_extra:5d} "
+        print(f"{r.layout:10s} {r.form:16s} {r.seconds:6.2f} {r.cpu:6.2f} {r.sup_err_mm:6.2f} {r.sup_tilt_deg:5.2f} {r.sup_missing:4d} {r.sup_extra:5d} "
               f"{r.n_true:4d} {r.n_found:5d} {r.f1:5.2f} {r.iou:5.3f}  {r.note}")
 
 
@@ -179,7 +181,8 @@ def peak_memory_10m(gt_layout: str, tmp: Path) -> str:
     return f"  10M points ({gt_layout}): {n} objects (true {len(gt.objects)}), load+planes+segment {secs} s, peak memory {int(mb)} MB"
 
 
-def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: bool) -> None:
+def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: bool,
+        forms: frozenset[str] = frozenset({"view", "cloud", "mesh", "sequence"}), units: bool = True) -> None:
     rows: list[Row] = []
     with tempfile.TemporaryDirectory() as tmp_name:
         tmp = Path(tmp_name)
@@ -187,16 +190,18 @@ def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: 
             gt = bench_scene(layout)
             d = tmp / layout.replace(":", "_")
             d.mkdir()
-            entry = write_organized_view(gt, d / "view.pcd")
             start = len(rows)
-            rows.append(evaluate(gt, d / "view.pcd", entry["capture_to_world"], "view (Kinect)"))
-            for count in densities:
+            if "view" in forms:
+                entry = write_organized_view(gt, d / "view.pcd")
+                rows.append(evaluate(gt, d / "view.pcd", entry["capture_to_world"], "view (Kinect)"))
+            for count in densities if "cloud" in forms else []:
                 path = d / f"cloud_{count}.ply"
                 entry, ids = write_point_cloud(gt, path, count)
                 rows.append(evaluate(gt, path, entry["capture_to_world"], f"cloud {count // 1000}k", gt_ids=ids))
-            entry = write_mesh(gt, d / "mesh.glb")
-            rows.append(evaluate(gt, d / "mesh.glb", entry["capture_to_world"], "mesh glb mm Y-up"))
-            if frames:
+            if "mesh" in forms:
+                entry = write_mesh(gt, d / "mesh.glb")
+                rows.append(evaluate(gt, d / "mesh.glb", entry["capture_to_world"], "mesh glb mm Y-up"))
+            if frames and "sequence" in forms:
                 entry = write_rgbd_sequence(gt, d / "sequence", frames)
                 rows.append(evaluate(gt, d / "sequence", entry["capture_to_world"], f"RGB-D {frames} fr"))
             for r in rows[start:]:
@@ -210,8 +215,9 @@ def run(layouts: list[str], densities: list[int], frames: int, full: bool, big: 
         for form in dict.fromkeys(r.form for r in good):
             of = [r for r in good if r.form == form]
             print(f"  {form:16s} F1 mean {np.mean([r.f1 for r in of]):.3f} (min {min(r.f1 for r in of):.2f}), IoU mean {np.mean([r.iou for r in of]):.3f}")
-        print("\nunits (table scene, 200k cloud, no flags):")
-        print("\n".join(units_check(bench_scene(layouts[0]), tmp)))
+        if units:
+            print("\nunits (table scene, 200k cloud, no flags):")
+            print("\n".join(units_check(bench_scene(layouts[0]), tmp)))
         if full:
             print("\nfull conversions (all stages, robot, settle, written), table scene:")
             first = tmp / layouts[0].replace(":", "_")
@@ -231,8 +237,15 @@ if __name__ == "__main__":
     parser.add_argument("--quick", action="store_true", help="200k clouds and 10-frame sequences only, no 10M")
     parser.add_argument("--full", action="store_true", help="also time full conversions")
     parser.add_argument("--layouts", default="table,counter,floor")
+    parser.add_argument("--forms", default="view,cloud,mesh,sequence", help="capture forms to write and score")
+    parser.add_argument("--densities", help="cloud point counts, comma-separated (default: 50k, 200k, 1 M; --quick 200k)")
+    parser.add_argument("--no-big", action="store_true", help="skip the units check and the 10 M-point run")
     args = parser.parse_args()
+    forms = frozenset(args.forms.split(","))
+    if not forms <= {"view", "cloud", "mesh", "sequence"}:
+        raise SystemExit(f"unknown form in {args.forms!r}: use view, cloud, mesh, sequence")
+    chosen = [int(float(c)) for c in args.densities.split(",")] if args.densities else None
     if args.quick:
-        run(args.layouts.split(","), [200_000], 10, False, False)
+        run(args.layouts.split(","), chosen or [200_000], 10, False, False, forms, not args.no_big)
     else:
-        run(args.layouts.split(","), [50_000, 200_000, 1_000_000], 30, args.full, True)
+        run(args.layouts.split(","), chosen or [50_000, 200_000, 1_000_000], 30, args.full, not args.no_big, forms, not args.no_big)
