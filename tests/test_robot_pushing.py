@@ -68,6 +68,16 @@ def test_a_push_that_would_carry_an_object_stacked_on_it_is_refused_before_movin
     assert np.allclose(data.qpos, start)  # refused before anything moved
 
 
+def test_what_an_object_stands_on_does_not_ride_along_when_it_is_pushed() -> None:
+    base = box_object(1, "base_box", (0.05, 0.0), (0.16, 0.16, 0.04), mass=0.4)
+    top = box_object(2, "top_box", (0.05, 0.0), (0.05, 0.05, 0.04), mass=0.1)
+    top.position[2] += 0.04  # resting on the base box, the base's centre under the top's footprint
+    model, data = loaded(build([base, top]))
+    robot = Robot(model, data)
+    assert robot._riding("base_box", robot.object_points("base_box")) == {"top_box"}
+    assert robot._riding("top_box", robot.object_points("top_box")) == set()  # the base is under it, not on it
+
+
 def test_a_push_that_would_take_the_object_over_the_table_edge_is_refused_before_moving() -> None:
     near_edge = box_object(1, "edge_box", (0.1, 0.29), (0.05, 0.05, 0.06), mass=0.2)  # its far face 3.5 cm from the table's +y edge
     model, data = loaded(build([near_edge]))

@@ -55,10 +55,7 @@ class PushSkill(Motion):
                 z = max(z, min(bottom + height + pp.palm_clearance - pp.palm_height, bottom + pp.max_contact_fraction * height))
             # the object's footprint swept along the push must not run into another object
             foot = pts[:: max(1, len(pts) // pp.footprint_samples), :2]
-            # what rests in or on the object (touching it, centred over its footprint) rides along: not in the way
-            lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
-            riding = {n for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}
-                      if np.all((box_centre(self.object_points(n)) >= lo) & (box_centre(self.object_points(n)) <= hi))}
+            riding = self._riding(obj, pts)
             stray = sorted(riding - set(carry))
             if stray:
                 return ActionResult("push", False, f"{', '.join(stray)} {'rests' if len(stray) == 1 else 'rest'} on {obj}: pushing {obj} "
@@ -111,6 +108,20 @@ class PushSkill(Motion):
             verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
+
+    def _riding(self, obj: str, pts: np.ndarray) -> set[str]:
+        """What rests in or on ``obj`` (points ``pts``) and rides along a push: touching it, centred
+        over its footprint and standing on it (its bottom above ``obj``'s bottom); what ``obj``
+        itself rests on is under it, not riding."""
+        lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+        bottom = float(pts[:, 2].min()) + self.params.push.ride_margin
+        out = set()
+        for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}:
+            p = self.object_points(n)
+            c = box_centre(p)
+            if np.all((c >= lo) & (c <= hi)) and float(p[:, 2].min()) > bottom:
+                out.add(n)
+        return out
 
     def _stays_on(self, obj: str, pts: np.ndarray, shift: np.ndarray) -> bool:
         """Whether ``obj`` (points ``pts``) moved by the xy ``shift`` still stands on the surface it
