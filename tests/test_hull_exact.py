@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.hull import trimesh_hull
+from realsim.completion.hull import extreme_points, trimesh_hull
 from realsim.completion.neighbours import clip_convex
 
 
@@ -31,3 +31,22 @@ def test_the_hull_is_trimeshs_on_clouds_boxes_and_clipped_pieces() -> None:
         if cut is not None:
             v = np.asarray(cut.vertices)
             assert _same(trimesh.convex.convex_hull(v), trimesh_hull(v)), k
+
+
+def test_extreme_points_hold_every_directions_maximum_bit_for_bit() -> None:
+    """The points kept give the same max of n . x as all of them, for 3D directions and for lines in
+    the perspective image (what the free-space cuts ask); points well inside are dropped, a flat set kept."""
+    rng = np.random.default_rng(11)
+    for trial in range(30):
+        pts = rng.normal(size=(int(rng.integers(20, 3000)), 3)) * rng.uniform(0.005, 0.1, 3) + [0.0, 0.0, 0.8]
+        if trial % 3 == 0:  # points on the hull's faces too (a box's seen sides)
+            pts = np.vstack([pts, rng.uniform(-0.05, 0.05, (500, 3)) * [1, 1, 0] + [0, 0, pts[:, 2].max()]])
+        kept = extreme_points(pts)
+        assert len(kept) < len(pts) or len(pts) <= 16
+        normals = rng.normal(size=(190, 3))
+        assert np.array_equal((pts @ normals.T).max(axis=0), (kept @ normals.T).max(axis=0)), trial
+        image, image_kept = pts[:, :2] / pts[:, 2:], kept[:, :2] / kept[:, 2:]
+        lines = rng.normal(size=(72, 2))
+        assert np.array_equal((image @ lines.T).max(axis=0), (image_kept @ lines.T).max(axis=0)), trial
+    flat = np.column_stack([rng.uniform(size=(50, 2)), np.zeros(50)])
+    assert len(extreme_points(flat)) == 50

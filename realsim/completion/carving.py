@@ -88,7 +88,8 @@ def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.nd
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
     hull = _carved_hull(mesh, voxels, base_z, observed)
-    refilled = float(np.mean(voxels[4] & _inside_convex(hull, voxels[3])))  # seen-through voxels the carved hull fills again
+    free = voxels[4]  # seen-through voxels the carved hull fills again (only those are tested)
+    refilled = float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
     many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
     pieces = _tiles(voxels, base_z, observed, params) if tiles and many else None
     return Carving(fraction, hull, pieces)

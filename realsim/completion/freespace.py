@@ -18,7 +18,7 @@ import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
-from realsim.completion.hull import trimesh_hull
+from realsim.completion.hull import extreme_points, trimesh_hull
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -166,11 +166,13 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         far = np.maximum(np.linalg.norm(towards, axis=1, keepdims=True), 1e-9)
         seen = seen + towards / far * np.minimum(far, tolerance)
         keep = seen if keep is None else np.vstack([keep, seen])
-    for _ in range(MAX_CUTS):
+    for cut_number in range(MAX_CUTS):
         surface = _samples(piece, seed)
         bad = view.seen_through(surface, tolerance)
         if not bad.any():
             return [piece]
+        if keep is not None and cut_number == 0:
+            keep = extreme_points(keep)  # only these can bind a cut (the others lie inside them)
         step = float(np.clip(np.max(piece.extents) / 25, 0.001, 0.005))
         inside = np.vstack([voxel_centres(piece, step), surface[~bad]])
         if len(inside) > INSIDE_SAMPLES:

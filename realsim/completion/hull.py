@@ -34,6 +34,20 @@ def solid_hull(points: np.ndarray) -> trimesh.Trimesh | None:
     return hull if hull.volume > 1e-9 else None
 
 
+def extreme_points(points: np.ndarray, margin: float = 1e-9) -> np.ndarray:
+    """The ``points`` within ``margin`` of their convex hull's boundary: the only ones that can hold
+    the maximum of ``n . x`` for any direction ``n`` (or, as their perspective images, of any line
+    through the image); all of them when the hull is flat or there are few."""
+    points = np.asarray(points, dtype=np.float64)
+    if len(points) <= 16:
+        return points
+    try:
+        eq = ConvexHull(points).equations
+    except QhullError:
+        return points
+    return points[(points @ eq[:, :-1].T + eq[:, -1]).max(axis=1) > -margin]
+
+
 def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
     """``trimesh.convex.convex_hull(points)`` (the same vertices, faces and normals), built without
     its merge and repair passes when they would change nothing: no two vertices within trimesh's

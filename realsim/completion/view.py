@@ -87,7 +87,7 @@ class DepthView:
         ok = np.stack([labels[r + di:r + di + h, r + dj:r + dj + w] == centre for di, dj in offsets]) & np.isfinite(d)
         basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
         wgt = ok.astype(float)
-        normal = np.einsum("kij,kp,kq->ijpq", wgt, basis, basis)
+        normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))  # small integers: exact in any order
         rhs = np.einsum("kij,kp->ijp", wgt * np.nan_to_num(d), basis)
         fit = (centre > 0) & (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
         out = self.depth.copy()
