@@ -68,16 +68,12 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     return np.vstack([piece.vertices, pts])
 
 
-def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray, columns: np.ndarray) -> np.ndarray:
-    """Per cut (K, N) how many of the ``pi`` projections (n, N) of its column lie at or below it, for
-    the ``columns`` asked (0 elsewhere)."""
-    span = 2.0 * max(float(np.abs(pi).max()), float(np.abs(cuts).max())) + 1.0  # columns apart: one sorted array
-    shift = span * columns
-    sub = np.sort(pi[:, columns], axis=0)
-    found = np.searchsorted((sub + shift).ravel(order="F"), (cuts[:, columns] + shift).ravel(order="F"), side="right")
-    kept = np.zeros(cuts.shape, np.int64)
-    kept[:, columns] = found.reshape((len(cuts), len(columns)), order="F") - len(pi) * np.arange(len(columns))
-    return kept
+def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """Per cut (K, M) how many of the ``pi`` projections (n, M) of its column lie at or below it: the
+    columns set apart by ``shift`` (M, ascending, wider apart than any value) in one sorted array."""
+    sub = np.sort(pi, axis=0)
+    found = np.searchsorted((sub + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right")
+    return found.reshape(cuts.shape, order="F") - len(pi) * np.arange(cuts.shape[1])
 
 
 def _open_columns(pi: np.ndarray, cuts: np.ndarray, first: np.ndarray, best: float, samples: int) -> np.ndarray:
@@ -97,18 +93,21 @@ def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples:
     that cost (the cost of no cut when no cut is better). Only cuts leaving few enough bad samples to
     beat the best cut that leaves none are weighed (leaving each costs MISS_WEIGHT / samples)."""
     pi, pb = inside @ normals.T, bad @ normals.T
-    width = 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)
+    low_pi, high_pi = pi.min(axis=0), pi.max(axis=0)
+    width = 1e-6 * np.maximum(high_pi - low_pi, 1e-9)
     limit = (keep @ normals.T).max(axis=0)[None, :] if keep is not None and len(keep) else None
     none = MISS_WEIGHT * len(bad) / samples
 
     def costs(cuts: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
+        columns = np.arange(pi.shape[1]) if columns is None else columns  # the others cost inf
+        sub_pi, sub_cuts = pi[:, columns], cuts[:, columns]
         if len(cuts) <= 8:
-            kept = (pi[:, None, :] <= cuts[None]).sum(axis=0)
+            kept = (sub_pi[:, None, :] <= sub_cuts[None]).sum(axis=0)
         else:
-            kept = _kept_by_sorting(pi, cuts, np.arange(pi.shape[1]) if columns is None else columns)
-        cost = 1.0 - kept / max(len(pi), 1) + MISS_WEIGHT * np.arange(len(cuts))[:, None] / samples
-        if columns is not None:
-            cost[:, np.setdiff1d(np.arange(pi.shape[1]), columns)] = np.inf
+            span = 2.0 * max(float(high_pi.max()), -float(low_pi.min()), float(np.abs(cuts).max())) + 1.0
+            kept = _kept_by_sorting(sub_pi, sub_cuts, span * columns)
+        cost = np.full(cuts.shape, np.inf)
+        cost[:, columns] = 1.0 - kept / max(len(pi), 1) + MISS_WEIGHT * np.arange(len(cuts))[:, None] / samples
         return cost if limit is None else np.where(cuts >= limit, cost, np.inf)  # leave every ``keep`` point
 
     first = costs(pb.min(axis=0)[None, :] - width)

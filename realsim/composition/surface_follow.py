@@ -43,23 +43,33 @@ def follow_seen_depth(mesh: trimesh.Trimesh, to_optical: np.ndarray, optical_dep
     edges = np.asarray(mesh.edges_unique_length, float)
     half_edge = 0.25 * float(np.median(edges)) if len(edges) else 0.01
     scale = np.ones(len(verts))
-    for i in np.flatnonzero(facing & (z > 1e-3) & np.all(np.isfinite(pix), axis=1)):
-        u, v = pix[i]
-        r = int(np.clip(round(half_edge * fx / z[i]), 1, 8))
-        ui, vi = int(round(u)), int(round(v))
-        if not (0 <= ui < w and 0 <= vi < h):
-            continue
-        win = (slice(max(0, vi - r), min(h, vi + r + 1)), slice(max(0, ui - r), min(w, ui + r + 1)))
-        seen = optical_depth[win][mask[win]]
-        seen = seen[np.isfinite(seen)]
-        if len(seen) < max(3, min_share * (2 * r + 1) ** 2):
-            continue
-        depth = float(np.median(seen))
-        if abs(depth - z[i]) <= max_shift:
-            scale[i] = depth / z[i]
+    todo = np.flatnonzero(facing & (z > 1e-3) & np.all(np.isfinite(pix), axis=1))
+    radius = np.clip(np.rint(half_edge * fx / z[todo]), 1, 8).astype(np.int64)
+    ui, vi = np.rint(pix[todo, 0]), np.rint(pix[todo, 1])
+    on = (ui >= 0) & (ui < w) & (vi >= 0) & (vi < h)
+    todo, radius, ui, vi = todo[on], radius[on], ui[on].astype(np.int64), vi[on].astype(np.int64)
+    seen_depth = np.pad(np.where(mask & np.isfinite(optical_depth), optical_depth, np.nan), 8, constant_values=np.nan)
+    for r in np.unique(radius):
+        pick = radius == r
+        depth = _window_medians(seen_depth, vi[pick] + 8, ui[pick] + 8, int(r), max(3, min_share * (2 * r + 1) ** 2))
+        i = todo[pick]
+        ok = np.abs(depth - z[i]) <= max_shift  # NaN (too few pixels) is never ok
+        scale[i[ok]] = depth[ok] / z[i[ok]]
     moved = int(np.count_nonzero(scale != 1.0))
     if moved == 0:
         return mesh, 0
     new_optical = optical * scale[:, None]
     out = trimesh.Trimesh((new_optical - trans) @ rot, np.asarray(mesh.faces), process=False)
     return out, moved
+
+
+def _window_medians(values: np.ndarray, v: np.ndarray, u: np.ndarray, r: int, least: float) -> np.ndarray:
+    """Per centre (v, u): the median of the finite ``values`` in its (2r+1) x (2r+1) window, NaN where
+    fewer than ``least`` are finite (``values`` padded so every window lies inside)."""
+    dv, du = np.meshgrid(np.arange(-r, r + 1), np.arange(-r, r + 1), indexing="ij")
+    windows = np.sort(values[v[:, None] + dv.ravel()[None, :], u[:, None] + du.ravel()[None, :]], axis=1)  # NaN last
+    count = np.count_nonzero(np.isfinite(windows), axis=1)
+    rows = np.arange(len(windows))
+    low, high = windows[rows, np.maximum((count - 1) // 2, 0)], windows[rows, np.maximum(count // 2, 0)]
+    median = np.where(count % 2 == 1, high, (low + high) / 2)  # np.median's: the middle one, or the mean of the two
+    return np.where(count >= least, median, np.nan)
