@@ -78,6 +78,26 @@ def test_what_an_object_stands_on_does_not_ride_along_when_it_is_pushed() -> Non
     assert robot._riding("top_box", robot.object_points("top_box")) == set()  # the base is under it, not on it
 
 
+def test_a_push_rises_only_within_the_height_that_cannot_tip_the_object_or_catch_the_palm() -> None:
+    tall = box_object(1, "tall_box", (0.05, 0.0), (0.06, 0.20, 0.20), mass=0.3)
+    model, data = loaded(build([tall]))
+    robot = Robot(model, data)
+    pts = robot.object_points("tall_box")
+    bottom, top = float(pts[:, 2].min()), float(pts[:, 2].max())
+    pp = robot.params.push
+    along = robot._contact_heights(pts, bottom + 0.035, np.array([0.0, 1.0, 0.0]))  # 20 cm long this way: every lift
+    assert along == [bottom + 0.035 + lift for lift in (0.0, *pp.reach_lifts)]
+    across = robot._contact_heights(pts, bottom + 0.035, np.array([1.0, 0.0, 0.0]))  # 6 cm: no higher than 3 cm
+    assert across == [bottom + 0.035]
+    low = box_object(2, "low_box", (0.05, 0.0), (0.2, 0.2, 0.09), mass=0.3)
+    model, data = loaded(build([low]))
+    robot = Robot(model, data)
+    pts = robot.object_points("low_box")
+    top = float(pts[:, 2].max())
+    for zc in robot._contact_heights(pts, float(pts[:, 2].min()) + 0.035, np.array([0.0, 1.0, 0.0]))[1:]:
+        assert not -pp.palm_clearance < top - (zc + pp.palm_height) < pp.palm_catch  # the palm never meets its top edge
+
+
 def test_a_push_that_would_take_the_object_over_the_table_edge_is_refused_before_moving() -> None:
     near_edge = box_object(1, "edge_box", (0.1, 0.29), (0.05, 0.05, 0.06), mass=0.2)  # its far face 3.5 cm from the table's +y edge
     model, data = loaded(build([near_edge]))

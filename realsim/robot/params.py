@@ -123,6 +123,8 @@ class PushParams:
     palm_clearance: float = 0.01  # m the palm keeps above a pushed object's top edge (the contact rises for it)
     palm_catch: float = 0.02  # m above the palm's lower edge a top edge is still caught by it (a taller face is pushed flat)
     max_contact_fraction: float = 0.6  # of the object's height the contact may rise to
+    reach_lifts: tuple[float, ...] = (0.02, 0.04, 0.06)  # m the contact rises when no stroke at its height reaches (the wrist stays higher)
+    tip_ratio: float = 1.0  # a contact this many times the half length along the push above the bottom could tip it (friction up to 1)
 
 
 @dataclass(frozen=True)

@@ -82,15 +82,19 @@ class PushSkill(Motion):
             pushed = {obj, *riding}
             failures: list[PlanFailure] = []
             solved: dict[tuple[float, ...], IKResult] = {}  # contact IK per (contact, hand rotation): strokes of one direction share it
-            for u, length in options:
-                ds = np.array([*u, 0.0])
-                try:
-                    rot, stroke = self._plan_stroke(pts, z, ds, length, pushed, solved)
+            planned: tuple[np.ndarray, np.ndarray, list[np.ndarray]] | None = None
+            for zc in self._contact_heights(pts, z, d):  # higher only when no stroke at the usual height can be made
+                for u, length in options:
+                    try:
+                        planned = (np.array([*u, 0.0]), *self._plan_stroke(pts, zc, np.array([*u, 0.0]), length, pushed, solved))
+                        break
+                    except PlanFailure as exc:
+                        failures.append(exc)
+                if planned is not None:
                     break
-                except PlanFailure as exc:
-                    failures.append(exc)
-            else:
+            if planned is None:
                 raise _refusal(failures)
+            ds, rot, stroke = planned
             self._follow(stroke)  # the checked stroke itself, forearm clear of the pushed object
             pos, _ = self.tcp_pose()
             up = np.array([0, 0, pp.retreat_up])
@@ -108,6 +112,18 @@ class PushSkill(Motion):
             verdict = relations.moved(start_pos, end_pos, d[:2], distance)  # the same test as the goal check
             return ActionResult("push", verdict.ok, "" if verdict.ok else verdict.measured, values={"moved": moved, "measured": verdict.measured})
         return self._run("push", body, max_sim_time)
+
+    def _contact_heights(self, pts: np.ndarray, z: float, d: np.ndarray) -> list[float]:
+        """The contact height ``z``, then higher ones (``reach_lifts``): a contact higher up keeps the
+        wrist higher, within reach further out. Each stays below ``max_contact_fraction`` of the
+        object's height and ``tip_ratio`` times its half length along the push ``d`` (pushed
+        higher, friction at its foot could tip it), and clear of the palm catching its top edge."""
+        pp = self.params.push
+        bottom, top = float(pts[:, 2].min()), float(pts[:, 2].max())
+        half = 0.5 * float(np.ptp(pts[:, :2] @ d[:2]))
+        cap = bottom + min(pp.max_contact_fraction * (top - bottom), pp.tip_ratio * half)
+        lifted = [z + lift for lift in pp.reach_lifts if z + lift <= cap]
+        return [z, *(zc for zc in lifted if not -pp.palm_clearance < top - (zc + pp.palm_height) < pp.palm_catch)]
 
     def _riding(self, obj: str, pts: np.ndarray) -> set[str]:
         """What rests in or on ``obj`` (points ``pts``) and rides along a push: touching it, centred
