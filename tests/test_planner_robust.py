@@ -65,3 +65,27 @@ def test_distance_and_bound() -> None:
     assert correct("gren", ["green", "grey"]) is None  # two as near
     assert correct("cans", ["can"]) is None  # a plural is no typo
     assert correct("grab", ["gray"], known=["grab"]) is None  # a known word stays
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("if the strawberry is not in the bowl, put it in the bowl", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("if the strawberry fits in the bowl put it in there otherwise set it beside the bowl", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("If the banana fits into the bowl, drop it in there; if it doesn't, put it behind the bowl.", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+    ("if the blue cube is behind the bowl then pick up the bowl", ["grasp('obj6_bowl')"]),
+    ("if the blue cube is behind the bowl, lift the banana and put it on the green cube",
+     ["grasp('obj7_banana')", "place_on('obj7_banana', 'obj5_cube')"]),
+    ("if there's a cube behind the strawberry, push it left", ["push('obj3_cube', 'left', 0.1)"]),  # the branch names its own "it"
+    ("if you don't mind, put the banana in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),  # politeness, no condition
+])
+def test_conditions_are_checked_on_the_scene(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "reason"), [
+    ("if the banana is in the bowl, take it out", "does not hold"),  # false, no otherwise: nothing is done
+    ("if there's a cube in front of the strawberry, push it left", "does not hold"),
+    ("if the banana is ripe, put it in the bowl", "cannot check"),  # a condition it cannot check is refused
+])
+def test_false_or_unreadable_conditions_do_nothing(sentence: str, reason: str) -> None:
+    with pytest.raises(InputError, match=reason):
+        RulePlanner().plan(sentence, CLUTTER)

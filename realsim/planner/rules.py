@@ -20,13 +20,14 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner.asides import is_aside
+from realsim.planner.conditions import branch
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE
 from realsim.planner.phrasing import QUESTION, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
-from realsim.planner.reference import Context
+from realsim.planner.reference import Context, Resolver
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
@@ -55,6 +56,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
     if QUESTION.match(command.strip().lower()) and not re.search(r"[?.!]\s+\S", command.strip()):  # a question alone
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
+    command = branch(command, Resolver(objects, robot_yaw)) or command  # "if the mug is in the bowl, ...": the branch that holds
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
