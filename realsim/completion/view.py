@@ -76,23 +76,20 @@ class DepthView:
         of the window is the object; other pixels are left as captured."""
         if self.labels is None or not np.any(self.labels > 0):
             return self
-        v, u = np.nonzero(self.labels > 0)
+        v, u = np.nonzero(self.labels > 0)  # only object pixels are fitted: their windows alone are gathered
         r = window // 2
-        v0, v1, u0, u1 = max(v.min() - r, 0), min(v.max() + r + 1, self.depth.shape[0]), max(u.min() - r, 0), min(u.max() + r + 1, self.depth.shape[1])
-        depth, labels = np.pad(self.depth[v0:v1, u0:u1], r, constant_values=np.nan), np.pad(self.labels[v0:v1, u0:u1], r)
-        h, w = v1 - v0, u1 - u0
-        centre = labels[r:r + h, r:r + w]
+        depth, labels = np.pad(self.depth, r, constant_values=np.nan), np.pad(self.labels, r)
         offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
-        d = np.stack([depth[r + di:r + di + h, r + dj:r + dj + w] for di, dj in offsets])
-        ok = np.stack([labels[r + di:r + di + h, r + dj:r + dj + w] == centre for di, dj in offsets]) & np.isfinite(d)
+        d = np.stack([depth[v + r + di, u + r + dj] for di, dj in offsets])  # (window^2, n)
+        centre = self.labels[v, u]
+        ok = np.stack([labels[v + r + di, u + r + dj] == centre for di, dj in offsets]) & np.isfinite(d)
         basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
         wgt = ok.astype(float)
         normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))  # small integers: exact in any order
-        rhs = np.einsum("kij,kp->ijp", wgt * np.nan_to_num(d), basis)
-        fit = (centre > 0) & (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
+        rhs = ((wgt * np.nan_to_num(d))[:, :, None] * basis[:, None, :]).sum(axis=0)  # summed over the window in order
+        fit = (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
         out = self.depth.copy()
-        block = out[v0:v1, u0:u1]
-        block[fit] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
+        out[v[fit], u[fit]] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
         return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
 
     def unveiled(self, veil: np.ndarray, tolerance: float, window: int = 5) -> "DepthView":
