@@ -240,7 +240,7 @@ def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: n
     fallback = _outward_from_local_centre(centroids, normals, counts, radius)
     sign = np.where(score > 0, 1.0, np.where(score < 0, -1.0, 0.0))
     if grid is not None:
-        seen = visibility_score(grid, centroids, normals, grid.cell, 5 * radius)
+        seen = visibility_score(grid, centroids, normals, grid.cell, 5 * radius, settle=2)  # only |seen| >= 2 decides
         sign = np.where(np.abs(seen) >= 2, np.sign(seen), sign)
     # near-horizontal surfaces were seen from above (what stands on a top blocks its free space)
     level = np.abs(normals[:, 2]) > 0.7
@@ -258,7 +258,8 @@ def _point_outward(points: np.ndarray, normals: np.ndarray, working: float, para
     if grid is None:
         return normals
     # neighbours two cells apart that face one way see alike: one ray cast for them
-    seen = visibility_score(grid, points, normals, grid.cell, 5 * params.orientation_radius, group=2 * grid.cell)
+    seen = visibility_score(grid, points, normals, grid.cell, 5 * params.orientation_radius, group=2 * grid.cell,
+                            settle=2)  # only seen <= -2 decides
     return normals * np.where(seen <= -2, -1.0, 1.0)[:, None]
 
 

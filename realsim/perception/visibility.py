@@ -90,17 +90,19 @@ def _block_table(occupied: _Occupancy, origin: np.ndarray, reach_cells: float) -
     return table.ravel(), strides, int(-(lo * strides).sum())
 
 
-def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: float, reach: float) -> np.ndarray:
+def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: float, reach: float,
+             table: tuple[np.ndarray, np.ndarray, int] | None = None) -> np.ndarray:
     """Per origin (grid units): how many rays travel ``reach`` without meeting an occupied cell.
 
     Each ray is sampled at every whole cell length along it; a sample in an empty block jumps to
     the first sample beyond that block (a line leaves a box once), so the samples tested, and the
     counts, are those of a march through every cell. Coordinates are kept as one array per axis:
-    the rays still free are taken out by one index per step."""
+    the rays still free are taken out by one index per step. ``table``: :func:`_block_table` of
+    these origins or of a set holding them."""
     last = float(np.floor(reach / cell + 1e-9))
     s, size = occupied.SHIFT, 1 << occupied.SHIFT
     m = size - 1
-    table, strides, offset = _block_table(occupied, origin, last)
+    flat_table, strides, offset = table if table is not None else _block_table(occupied, origin, last)
     count = np.zeros(len(origin), dtype=np.int64)
     for d in dirs:
         axes = np.flatnonzero(d)
@@ -109,7 +111,7 @@ def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: f
         while len(live):  # only the rays still free are marched on
             ijk = [np.floor(start[a] + t * d[a]).astype(np.int64) for a in range(3)]
             block = [c >> s for c in ijk]
-            ids = table[block[0] * strides[0] + block[1] * strides[1] + block[2] * strides[2] + offset]
+            ids = flat_table[block[0] * strides[0] + block[1] * strides[1] + block[2] * strides[2] + offset]
             flat = (ids << (3 * s)) | ((ijk[0] & m) << (2 * s)) | ((ijk[1] & m) << s) | (ijk[2] & m)
             nxt = t + 1.0
             skip = np.flatnonzero(ids == occupied.empty)
@@ -142,13 +144,15 @@ class OccupancyGrid:
 
 
 def visibility_score(points: np.ndarray | OccupancyGrid, centroids: np.ndarray, normals: np.ndarray, cell: float, reach: float,
-                     offset: float = 2.5, group: float = 0.0) -> np.ndarray:
+                     offset: float = 2.5, group: float = 0.0, settle: int = 0) -> np.ndarray:
     """Rays escaping from ``offset`` cells in front of each patch minus rays escaping from behind
     it: positive when ``normals`` point to the side the patch was seen from (the more open one;
     a thin wall, a cup's, seen from both sides, faces its more open side). With ``group`` (m),
     patches in one cube of that side whose normals share an octant share one score, that of their
     mean (two sides of a thin wall keep theirs). ``points`` may be an :class:`OccupancyGrid` of
-    side ``cell`` built before (one grid for several calls)."""
+    side ``cell`` built before (one grid for several calls). With ``settle`` > 0 the score is
+    clipped to [-settle, settle], and a patch casts no more rays once the directions left cannot
+    move it across that bound (the clipped scores are those of casting every ray)."""
     inverse = None
     if group > 0 and len(centroids):
         centroids, normals, inverse = _grouped(centroids, normals, group)
@@ -158,10 +162,30 @@ def visibility_score(points: np.ndarray | OccupancyGrid, centroids: np.ndarray, 
     occupied = grid.occupied
     base = (centroids - grid.lo) / cell
     dirs = escape_directions()
-    ahead = _escapes(occupied, base + offset * normals, dirs, cell, reach)
-    behind = _escapes(occupied, base - offset * normals, dirs, cell, reach)
-    score = (ahead - behind).astype(np.float64)
+    if settle > 0:
+        score = _settled_score(occupied, base + offset * normals, base - offset * normals, dirs, cell, reach, settle)
+    else:
+        ahead = _escapes(occupied, base + offset * normals, dirs, cell, reach)
+        behind = _escapes(occupied, base - offset * normals, dirs, cell, reach)
+        score = (ahead - behind).astype(np.float64)
     return score if inverse is None else score[inverse]
+
+
+def _settled_score(occupied: _Occupancy, ahead: np.ndarray, behind: np.ndarray, dirs: np.ndarray, cell: float,
+                   reach: float, settle: int) -> np.ndarray:
+    """Escapes from ``ahead`` minus escapes from ``behind``, clipped to [-settle, settle], one
+    direction at a time for the origins whose clipped score the directions left can still change."""
+    table = _block_table(occupied, np.vstack([ahead, behind]), float(np.floor(reach / cell + 1e-9)))
+    score = np.zeros(len(ahead), dtype=np.int64)
+    open_ = np.arange(len(ahead))
+    for k, d in enumerate(dirs):
+        if not len(open_):
+            break
+        counts = _escapes(occupied, np.vstack([ahead[open_], behind[open_]]), d[None], cell, reach, table)
+        score[open_] += counts[: len(open_)] - counts[len(open_):]
+        left, now = len(dirs) - 1 - k, score[open_]
+        open_ = open_[(now - left < settle) & (now + left > -settle)]
+    return np.clip(score, -settle, settle).astype(np.float64)
 
 
 def _grouped(centroids: np.ndarray, normals: np.ndarray, size: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
