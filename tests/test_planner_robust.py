@@ -89,3 +89,22 @@ def test_conditions_are_checked_on_the_scene(sentence: str, lines: list[str]) ->
 def test_false_or_unreadable_conditions_do_nothing(sentence: str, reason: str) -> None:
     with pytest.raises(InputError, match=reason):
         RulePlanner().plan(sentence, CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("Put the strawberry by the bowl. My husband keeps knocking it over.", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    ("lift the banana, the kids think it's a phone", ["grasp('obj7_banana')"]),
+    ("Push the green cube 3 cm left. They're tidying up later.", ["push('obj5_cube', 'left', 0.03)"]),
+    ("Watch this, the robot can pick up the strawberry. Can you pick it up for us?", ["grasp('obj8_strawberry')"]),
+    ("my boss wants you to put the banana on the blue cube", ["place_on('obj7_banana', 'obj4_cube')"]),  # a request through her
+    # a person's sentence that names a place by a thing is a request, kept
+    ("put the strawberry in the bowl. we need the banana behind the bowl too",
+     ["place_in('obj8_strawberry', 'obj6_bowl')", "place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
+])
+def test_remarks_about_people_are_talk(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+def test_a_remark_alone_is_no_command() -> None:
+    with pytest.raises(InputError):
+        RulePlanner().plan("my daughter likes the banana", CLUTTER)

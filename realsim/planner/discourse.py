@@ -42,7 +42,7 @@ TALK: tuple[str, ...] = (
     # exhortations and chat
     r"while (?:you re|youre|you are) at it", r"(?:ok |okay |so |right )?(?:here s|heres|here is) (?:the|my|a) (?:plan|deal|idea|thing|task)", r"(?:the )?plan is", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
     r"(?:good ?)?bye(?: bye)?", r"see (?:you|ya)(?: later)?", r"later", r"to ?do(?: list)?", r"todo", r"(?:all )?done", r"finished", r"over and out", r"that s everything", r"(?:i )?(?:guess|think|suppose|reckon)(?: so)?",
-    r"come on", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
+    r"come on", r"(?:look|see|watch)(?: (?:at )?(?:this|here|that))?", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
     r"(?:much|very|so|ever so|really|truly|indeed|also|too|as well)",
 )

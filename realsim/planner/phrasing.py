@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import casual, clarify, discourse, places, speech, technical, topic
+from realsim.planner import casual, clarify, discourse, places, remarks, speech, technical, topic
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 
 FILLERS = (
@@ -57,7 +57,7 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = technical.technical(command.lower().replace("’", "'"))
-    text = clarify.amount(clarify.clarify(discourse.drop_talk(discourse.steps_as_clauses(text))))
+    text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
