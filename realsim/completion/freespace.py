@@ -99,8 +99,10 @@ def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples:
     none = MISS_WEIGHT * len(bad) / samples
 
     def costs(cuts: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
-        columns = np.arange(pi.shape[1]) if columns is None else columns  # the others cost inf
-        sub_pi, sub_cuts = pi[:, columns], cuts[:, columns]
+        if columns is None:
+            columns, sub_pi, sub_cuts = np.arange(pi.shape[1]), pi, cuts
+        else:  # the other columns cost inf
+            sub_pi, sub_cuts = pi[:, columns], cuts[:, columns]
         if len(cuts) <= 8:
             kept = (sub_pi[:, None, :] <= sub_cuts[None]).sum(axis=0)
         else:
