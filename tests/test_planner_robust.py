@@ -108,3 +108,19 @@ def test_remarks_about_people_are_talk(sentence: str, lines: list[str]) -> None:
 def test_a_remark_alone_is_no_command() -> None:
     with pytest.raises(InputError):
         RulePlanner().plan("my daughter likes the banana", CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("whichever cube is closer to the bowl, put it on the banana", ["place_on('obj4_cube', 'obj7_banana')"]),
+    ("whichever can is further from the bowl, lift that one", ["grasp('obj1_soda_can')"]),
+    ("Banana. 10 cm right.", ["push('obj7_banana', 'right', 0.1)"]),
+    ("Blue cube. Left, 5 cm.", ["push('obj4_cube', 'left', 0.05)"]),
+])
+def test_relation_picks_and_terse_ways(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+def test_a_way_after_a_placing_is_not_taken_as_the_same_place() -> None:
+    """"..., then strawberry, left 3 cm": never "put the strawberry in the bowl" with the way dropped."""
+    with pytest.raises(InputError):
+        RulePlanner().plan("put the banana in the bowl, then strawberry, left 3 cm", CLUTTER)

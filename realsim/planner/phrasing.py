@@ -157,7 +157,7 @@ def split_command(command: str) -> list[str]:
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
             elif _SAYS.match(part):  # "..., my eyes aren't what they used to be": a remark of its own
                 clauses.append(part)
-            elif put is not None and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} "):
+            elif put is not None and rel and "between" not in rel.group(0) and not rel_re.search(f" {part} ") and not _AMOUNT.search(part):
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
                 clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())

@@ -107,14 +107,19 @@ def partitive(parts: list[str]) -> list[str]:
     return [re.sub(r"\bone\b", " ".join([*words[:-1], singular(words[-1])]), parts[1], count=1), *parts[2:]]
 
 
+_DIRECTION = r"(?:left|right|forward|forwards|back|backward|backwards|away|toward (?:me|you)|towards (?:me|you)|closer)"
+_WAY = re.compile(rf"(?:(?:by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) )?(?:to the )?{_DIRECTION}"
+                  rf"(?: (?:and |by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*))?")  # "10 cm right", "left 5 cm"
+
+
 def joined(parts: list[str], verb_re: re.Pattern[str]) -> list[str]:
-    """A thing and its place said as two pieces ("Blue one, next to it"; "Marker, up!"): one piece,
-    so the place goes with that thing and not with the command before it."""
+    """A thing and its place or way said as two pieces ("Blue one, next to it"; "Marker, up!"; "Red
+    can. 10 cm right."): one piece, so the place goes with that thing and not with the command before it."""
     out: list[str] = []
     for part in parts:
         prev = out[-1] if out else ""
         if (prev and not verb_re.match(prev) and not verb_re.match(part) and not has_relation(prev) and not _STATEMENT.search(prev)
-                and not prev.startswith(TOPIC) and re.fullmatch(r"[a-z ]+", prev) and (relation_start(part) or part in ("up", "up high"))):
+                and not prev.startswith(TOPIC) and re.fullmatch(r"[a-z ]+", prev) and (relation_start(part) or part in ("up", "up high") or _WAY.fullmatch(part))):
             out[-1] = f"{prev} {part}"
         else:
             out.append(part)
@@ -136,6 +141,7 @@ def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str
     verb = verb_re.match(rest)
     resumed = bool(verb) and bool(_PRONOUN.search(rest))
     said = _EXISTS.match(topic)  # "there's a mug on the table. put it in the bowl": the mug (the one, else asked)
+    topic = re.sub(r"^(?:whatever|whichever|which ever) (?!(?:one|thing|is|s)\b)((?:\w+ )?\w+) (?:is|s|are) ", r"the \1 ", topic)  # "whichever can is closer to the bowl"
     topic = compared(re.sub(r"^(?:whatever|whichever)(?: one| thing)? (?:is |s )?", "the thing ", _EXISTS.sub("the ", topic)))
     topic = re.sub(rf"\s+(?:on|at|upon) (?:the |my |your |our )?{_SURFACE}$", "", topic)
     if n > 1 and not resumed or said and not resumed:
