@@ -124,3 +124,31 @@ def test_a_way_after_a_placing_is_not_taken_as_the_same_place() -> None:
     """"..., then strawberry, left 3 cm": never "put the strawberry in the bowl" with the way dropped."""
     with pytest.raises(InputError):
         RulePlanner().plan("put the banana in the bowl, then strawberry, left 3 cm", CLUTTER)
+
+
+_HELD = [o if o.name != "obj8_strawberry" else type(o)(o.name, o.label, o.aliases, (0.30, 0.0, 0.03), o.size, o.color) for o in CLUTTER]
+
+
+def test_the_container_with_a_thing_is_the_one_holding_it() -> None:
+    plan = RulePlanner().plan("put the banana in the bowl with the strawberry", _HELD)
+    assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')"]
+
+
+@pytest.mark.parametrize("sentence", ["put the banana in the bowl with the strawberry", "put banana in bowl w/ strawberry"])
+def test_a_thing_with_what_it_does_not_hold_is_asked_about(sentence: str) -> None:
+    """Never the strawberry as the target (it was before: 'the bowl with the strawberry' named it)."""
+    with pytest.raises(InputError, match="holds"):
+        RulePlanner().plan(sentence, CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("pls set the strawberry nxt 2 the banana", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("cn u put the green cube b4 the bowl thx", ["place_beside('obj5_cube', 'obj6_bowl', 'front')"]),
+    ("Place the red cube before the strawberry.", ["place_beside('obj3_cube', 'obj8_strawberry', 'front')"]),
+    ("lift the banana before you go home", ["grasp('obj7_banana')", "go_home()"]),  # a time, not a place
+    ("It'd be lovely if the strawberry were in the bowl.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("the green cube needs the banana on it", ["place_on('obj7_banana', 'obj5_cube')"]),
+    ("would be perfect if the strawberry sat behind the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+])
+def test_texting_and_indirect_requests(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines

@@ -122,3 +122,16 @@ def relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, forward: np.ndarray
         return relations.inside(a, b).ok or (relations.xy_gap(a, b) == 0.0 and a[:, 2].min() < b[:, 2].max())
     d = {"left": left, "right": -left, "behind": forward, "front": -forward}[rel]
     return relations.side_of(a, b, d, max_gap=0.3).ok
+
+
+def holding(head: str, held_phrase: str, resolve_all: Callable[[str], list[ObjectInfo]],
+            holds: Callable[[str, ObjectInfo, ObjectInfo], bool], phrase: str) -> list[ObjectInfo]:
+    """"the bowl with the strawberry": the one object ``head`` names that holds (in or on it) what
+    ``held_phrase`` names; refused when none or several do ("put the banana in the bowl with the
+    strawberry" may mean both go in: the speaker is asked, the strawberry is never the target)."""
+    held = resolve_all(held_phrase)
+    hits = [o for o in resolve_all(head) if o not in held and all(holds("in", h, o) or holds("on", h, o) for h in held)]
+    if len(hits) != 1:
+        raise InputError(f"{phrase.strip()!r}: {len(hits) or 'no'} {head} hold{'s' if len(hits) < 2 else ''} {held_phrase}; "
+                         f"to move things together say 'put X and Y in Z'")
+    return hits

@@ -42,7 +42,8 @@ _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|car
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
-            "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right"}
+            "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right",
+            "b4": "before", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -280,6 +281,12 @@ _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
     (re.compile(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"), "move {0} {1}"),
     # "the red can and the white can should have traded places"
     (re.compile(rf"^(.+?) (?:{_MODAL} )?(?:have )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange) (?:places|positions|spots)$"), "swap {0}"),
+    # "it'd be great if the banana was in the bowl": the state wished for, made
+    (re.compile(r"^(?:it |that |this )?(?:would |d |will |s |is )?be (?:great|nice|good|lovely|helpful|awesome|perfect|ideal|brilliant|wonderful|cool|best|better)"
+                r" if (.+?) (?:was|were|is|are|sat|stood|ended up|could be|would be) (.+)$"), "put {0} {1}"),
+    # "the bowl needs the banana in it", "the plate could use the cube on it": the thing it wants there
+    (re.compile(r"^(.+?) (?:needs|wants|could use|should have|must have|has to have|is missing) (.+?) (in|on|inside|on top of|next to|beside|behind|in front of) (?:it|them)$"),
+     "put {1} {2} {0}"),
     # "at the end it should be right back where it is now"
     (re.compile(rf"^(.+?) (?:{_MODAL} )?(?:be|end up|stay|go)? ?(?:right )?back (?:where (?:it|they) (?:is|are|was|were|started)(?: now)?|in (?:its|their) (?:place|spot))$"),
      "put {0} back"),

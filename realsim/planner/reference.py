@@ -21,7 +21,7 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, typos, vocab
-from realsim.planner.attributes import between_of, colors_of, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
+from realsim.planner.attributes import between_of, colors_of, holding, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
 from realsim.planner.ordering import EXTREMES, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -107,11 +107,8 @@ class Resolver:
         words = {w for n in self._primary(o) for w in n}
         rec = record(o.label)
         out = {k for k, members in KINDS.items() if words & set(members)}
-        if rec is not None and rec[1] == "fruit":
-            out.add("fruit")
-        if "container" in o.affordances:
-            out.add("container")
-        return out
+        out |= {"fruit"} if rec is not None and rec[1] == "fruit" else set()
+        return out | ({"container"} if "container" in o.affordances else set())
 
     def listing(self) -> str:
         if not self.objects:
@@ -185,8 +182,10 @@ class Resolver:
             others = [o.name for o in self.objects if o.name not in pool]
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *others], allow_plural=allow_plural, loose=loose)
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
-        if m and not {singular(w) for w in m.group(2).split()} & {w for names in self._words.values() for n in names for w in n}:
+        if m and not {singular(w) for w in m.group(2).split()} & self._said:
             text = m.group(1)
+        elif m:  # "the bowl with the strawberry (in it)": the one holding it, never the strawberry
+            return holding(m.group(1), re.sub(r"\s+(?:in|on) (?:it|them)$", "", m.group(2)), self._all, lambda k, o, r: relation_holds(k, o, r, self.forward, self.left), phrase)
         if not text:
             raise InputError(f"which object? nothing named in {phrase.strip()!r}; {self.listing()}")
         if re.fullmatch(r"(?:far |very )?(?:left|right|front|back|middle|center|centre|end|side|top|bottom)(?: side| end| hand side)?", text):
