@@ -127,10 +127,10 @@ class PushSkill(Motion):
 
     def _riding(self, obj: str, pts: np.ndarray) -> set[str]:
         """What rests in or on ``obj`` (points ``pts``) and rides along a push: touching it, centred
-        over its footprint and standing on it (its bottom above ``obj``'s bottom); what ``obj``
-        itself rests on is under it, not riding."""
+        over its footprint, its bottom not below ``obj``'s (a mug in a bowl stands about as low as
+        the bowl); what ``obj`` itself rests on starts lower, under it, and does not ride."""
         lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
-        bottom = float(pts[:, 2].min()) + self.params.push.ride_margin
+        bottom = float(pts[:, 2].min()) - self.params.push.ride_margin
         out = set()
         for n in self.geometry.touching(obj) - {relations.WORLD, relations.ROBOT}:
             p = self.object_points(n)
