@@ -152,3 +152,19 @@ def test_a_thing_with_what_it_does_not_hold_is_asked_about(sentence: str) -> Non
 ])
 def test_texting_and_indirect_requests(sentence: str, lines: list[str]) -> None:
     assert _lines(sentence) == lines
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("pikc up the strawberry", ["grasp('obj8_strawberry')"]),
+    ("set the banana besdie the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+    ("put the strawberry ontop of the blue cube", ["place_on('obj8_strawberry', 'obj4_cube')"]),
+    ("shvoe the green cube rihgt 2 cm", ["push('obj5_cube', 'right', 0.02)"]),
+])
+def test_misspelled_command_words(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines
+
+
+def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:
+    """"plate" is one letter from "place": with no plate in the scene it is refused, not read as a verb."""
+    with pytest.raises(InputError, match="plate"):
+        RulePlanner().plan("put the banana on the plate", CLUTTER)

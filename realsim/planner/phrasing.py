@@ -43,7 +43,7 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
             "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right",
-            "b4": "before", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through"}
+            "b4": "before", "nexto": "next to", "infront": "in front", "ontop": "on top", "inbetween": "in between", "onto the top of": "on top of", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",

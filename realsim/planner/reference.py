@@ -74,7 +74,7 @@ class Resolver:
         c, s = math.cos(robot_yaw), math.sin(robot_yaw)
         self.forward, self.left = np.array([c, s]), np.array([-s, c])
         self._words = {o.name: self._name_sets(o) for o in self.objects}
-        self._said = {w for names in self._words.values() for n in names for w in n}  # the scene's name words
+        self._said = self.scene_words = {w for names in self._words.values() for n in names for w in n}  # the scene's name words
 
     # --- vocabulary of one object -----------------------------------------------------------
     def _name_sets(self, o: ObjectInfo) -> list[list[str]]:

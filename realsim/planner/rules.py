@@ -19,6 +19,7 @@ import re
 from collections.abc import Sequence
 
 from realsim.errors import InputError
+from realsim.planner import typos
 from realsim.planner.asides import is_aside
 from realsim.planner.conditions import branch
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
@@ -74,7 +75,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
             p.ctx.set(p.resolver.resolve(c[len(TOPIC):], Context(p.ctx.last), allow_plural=True))
         elif c:
             try:
-                step = repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else _clause(c, p)
+                step = repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else typos.retry(c, p.resolver.scene_words, lambda t: _clause(t, p))
                 if not (steps and [x.name for x in step.calls] == ["grasp"] and step.calls == steps[-1].calls):  # "Mug, up. Lift it.": held already
                     steps.append(step)
             except InputError as exc:

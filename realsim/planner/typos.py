@@ -7,7 +7,8 @@ real words lie one letter apart ("fat", "far").
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from typing import TypeVar
 
 from realsim.planner.lexicon import ALL_VERBS, RELATIONS
 from realsim.planner.ordering import EXTREMES
@@ -27,7 +28,11 @@ from realsim.planner.vocab import (
     singular,
 )
 
-__all__ = ["bound", "correct", "distance", "spelled"]
+__all__ = ["bound", "correct", "distance", "retry", "spelled"]
+
+T = TypeVar("T")
+# the words a command is built of: its verbs and place words (a misspelled one leaves the clause unread)
+_COMMAND_WORDS = frozenset({w for v in ALL_VERBS for w in v.split()} | {w for r, _ in RELATIONS for w in r.split()} | set(DIRECTION_WORDS))
 
 # words a noun phrase may hold that are no misspelling of a scene's name, a colour or a size
 _KNOWN = frozenset({*COLOR_WORDS, *BIG, *SMALL, *EXTREMES, *ORDINALS, *GENERIC, *NUMBERS, *SYNONYMS, *(w for v in SYNONYMS.values() for w in v),
@@ -70,6 +75,12 @@ def correct(word: str, vocabulary: Iterable[str], known: Iterable[str] = ()) -> 
     return near[0][1]
 
 
+# words near a command word that are words of their own ("plate": place; "bowl": roll)
+_OTHER = frozenset({"plate", "please", "plates", "bowl", "ball", "bottle", "table", "cable", "label", "handle", "sides", "side", "top", "bottom",
+                    "there", "here", "where", "them", "then", "than", "these", "those", "their", "they", "other", "another", "bit", "little",
+                    "want", "wants", "need", "needs", "make", "made", "have", "has", "give", "gave", "hand", "take", "took", "like", "look"})
+
+
 def spelled(word: str, scene_words: set[str]) -> str:
     """``word`` of a noun phrase, or the one scene name, colour or size word it misspells."""
     vocabulary = scene_words | set(COLOR_WORDS) | set(BIG) | set(SMALL)
@@ -77,3 +88,20 @@ def spelled(word: str, scene_words: set[str]) -> str:
         return said
     said = correct(singular(word), scene_words, _KNOWN) if is_plural(word) else None  # "strawberies": the plural kept
     return f"{said}s" if said else word
+
+
+def retry(clause: str, scene_words: set[str], read: Callable[[str], T]) -> T:
+    """``read(clause)``; when that fails, ``read`` of the clause with its misspelled verbs and place
+    words corrected ("pcik up the banana", "put it behnid the bowl"), if any; the first error else.
+    Scene names, colours and sizes are never corrected into command words."""
+    try:
+        return read(clause)
+    except Exception as exc:
+        known = _KNOWN | scene_words
+        fixed = " ".join(correct(w, _COMMAND_WORDS - scene_words, known | _OTHER) or w for w in clause.split())
+        if fixed == clause:
+            raise
+        try:
+            return read(fixed)
+        except Exception:
+            raise exc from None
