@@ -168,3 +168,12 @@ def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:
     """"plate" is one letter from "place": with no plate in the scene it is refused, not read as a verb."""
     with pytest.raises(InputError, match="plate"):
         RulePlanner().plan("put the banana on the plate", CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("put the strawberry on the -- actually, behind the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+    ("Blue cube into the bowl... no wait, next to the bowl, not in it.", ["place_beside('obj4_cube', 'obj6_bowl', 'next')"]),
+    ("put the banana in the bowl, not on it", ["place_in('obj7_banana', 'obj6_bowl')"]),
+])
+def test_interrupted_places(sentence: str, lines: list[str]) -> None:
+    assert _lines(sentence) == lines

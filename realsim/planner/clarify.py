@@ -65,6 +65,10 @@ def clarify(text: str) -> str:
     if not pos:  # "put the cube next to the plate, not on top of it": only a place the command did not say
         if neg_kind is not None and neg_kind not in {kind for _, _, kind in _places(before)}:
             return f"{before}{after}"
+        said = _places(before)  # "onto the plate... wait, no, in front of it, not on it": the repair already took it back
+        if neg_kind is not None and said and said[-1][2] != neg_kind and re.search(
+                r"\b(?:wait|no|sorry|actually|i mean|rather)\b", before[max(b for _, b, k in said if k == neg_kind):said[-1][0]]):
+            return f"{before}{after}"
         return text
     if (neg_kind is None) != (pos_kind is None):  # "put the mug, not the can, in the bowl": not a clarification
         return text

@@ -18,7 +18,7 @@ from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
 
 _MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
-                     r"|no|sorry|wait|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
+                     r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
                         r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|it)\s+"
