@@ -177,3 +177,19 @@ def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:
 ])
 def test_interrupted_places(sentence: str, lines: list[str]) -> None:
     assert _lines(sentence) == lines
+
+
+def test_in_it_is_never_a_thing_that_holds_nothing() -> None:
+    """"..., we want the strawberry in it too": the bowl just placed by, never the banana."""
+    assert _lines("put the banana next to the bowl, we want the strawberry in it too") == [
+        "place_beside('obj7_banana', 'obj6_bowl', 'next')", "place_in('obj8_strawberry', 'obj6_bowl')"]
+    with pytest.raises(InputError, match="holds nothing"):
+        RulePlanner().plan("lift the banana and put the strawberry in it", CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("if the bowl is empty, lift it; otherwise put the banana in it", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("if the bowl isn't empty, drop the banana next to it", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
+])
+def test_empty_conditions(sentence: str, lines: list[str]) -> None:
+    assert [c.text() for c in RulePlanner().plan(sentence, _HELD).calls] == lines

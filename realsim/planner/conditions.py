@@ -34,6 +34,7 @@ def branch(command: str, resolver: Resolver) -> str | None:
     """The command to carry out for a conditional ``command`` (see the module), or None when the
     command has no leading condition."""
     text = " ".join(command.lower().replace("’", "'").replace("'", " ").split())
+    text = re.sub(r"\b(is|are|does|do|was|were)n ?t\b", r"\1 not", text)  # "isn't", "doesn't"
     m = _IF.match(text)
     if not m:
         return None
@@ -46,8 +47,11 @@ def branch(command: str, resolver: Resolver) -> str | None:
         raise InputError(f"nothing to do: the condition '{cond}' does not hold in the scene")
     if subject and re.search(r"\b(?:it|them)\b", chosen) and not re.match(r"(?:[a-z]+ )*?(?:the|a|an|this|that|these|those|my|your)\s(?:[a-z]+ )*?(?:it|them)\b", chosen):
         chosen = f"{subject}, {chosen}"  # "it": the condition's subject (a fronted topic), unless the branch names its own first
-    if place:  # "put it in there": the condition's place
+    if place:  # "put it in there": the condition's place; "put the banana in it": so is "it" after a thing of its own
         chosen = re.sub(r"\b(in|into|on|onto|next to|beside|behind) there\b", rf"\1 {place}", chosen)
+        rel = r"(in|into|on|onto|next to|beside|behind|in front of|left of|right of)"
+        if re.match(rf"(?:[a-z]+ )*?(?:the|a|an|this|that|my|your)\s(?:[a-z]+ )*?{rel} (?:it|them)\b", chosen):
+            chosen = re.sub(rf"\b{rel} (?:it|them)\b", rf"\1 {place}", chosen, count=1)
     return chosen
 
 
@@ -63,6 +67,11 @@ def _check(cond: str, r: Resolver) -> tuple[bool, str, str]:
         obj, box = _one(m.group(1), r), _one(m.group(3), r)
         fits = "container" in box.affordances and max(obj.size[:2]) < 0.95 * min(box.size[:2])
         return fits != bool(m.group(2)), m.group(1), m.group(3)
+    m = re.fullmatch(rf"(.+?) {_BE}( not| nt)? (?:already |still |currently )?empty", cond)
+    if m:  # "if the bowl is empty": nothing in it
+        box = _one(m.group(1), r)
+        empty = not any(relation_holds("in", o, box, r.forward, r.left) for o in r.objects if o.name != box.name)
+        return empty != bool(m.group(2)), m.group(1), m.group(1)
     m = re.fullmatch(rf"(.+?) {_BE}( not| nt)? (?:already |still |currently )?(.+)", cond)
     kind, ref = _relation(m.group(3)) if m else (None, "")
     if not m or kind not in _KINDS - {"to", "between", "sides", "other"}:

@@ -315,6 +315,10 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
         target = p.ctx.place
     else:
         target = _target(target_phrase, obj_phrase, p, want)
+        if target_phrase in ("it", "them") and want == "container" and "container" not in target.affordances:  # "we want the strawberry in it": not the banana
+            if p.ctx.place is None or "container" not in p.ctx.place.affordances:
+                raise InputError(f"'in it': {target.name} holds nothing; name the container; {p.resolver.listing()}")
+            target = p.ctx.place
     p.ctx.place = target
     objs = objects_named(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
     if len(objs) > 1:
