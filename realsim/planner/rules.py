@@ -22,6 +22,7 @@ from realsim.errors import InputError
 from realsim.planner import typos
 from realsim.planner.asides import is_aside
 from realsim.planner.conditions import branch
+from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE
 from realsim.planner.phrasing import QUESTION, avoided, rephrase, split_command
@@ -315,10 +316,8 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
         target = p.ctx.place
     else:
         target = _target(target_phrase, obj_phrase, p, want)
-        if target_phrase in ("it", "them") and want == "container" and "container" not in target.affordances:  # "we want the strawberry in it": not the banana
-            if p.ctx.place is None or "container" not in p.ctx.place.affordances:
-                raise InputError(f"'in it': {target.name} holds nothing; name the container; {p.resolver.listing()}")
-            target = p.ctx.place
+        if want == "container":  # "we want the strawberry in it": not the banana
+            target = held_in(target_phrase, target, p.ctx.place, p.resolver.listing())
     p.ctx.place = target
     objs = objects_named(obj_phrase, p)  # ordinals count the target too; a plural leaves it out
     if len(objs) > 1:
@@ -331,6 +330,7 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
     calls, goals = [], []
     for o in objs:
         if kind == "in":
+            check_fits(o, target, p.resolver.listing())
             calls.append(Call("place_in", (o.name, target.name)))
             goals.append(Inside(o.name, target.name))
         elif kind == "on":
