@@ -89,6 +89,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(left|right)(?: hand)? side of\b", r"to the \1 of", text)  # "in right side of X": a side
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
+    text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
+    text = re.sub(r"\bmake (it|them) (?:go|move|slide|shift)\b", r"move \1", text)  # "make it go left"
+    text = re.sub(r"\bmore (?:near|close)(?: (?:of|to|from))? (you|me)\b", r"closer to \1", text)  # "more near of you"
+    text = re.sub(r"\bmore far(?: away)?(?: (?:of|to|from))? (you|me)\b", r"away from \1", text)  # "more far from you"
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
     text = places.positions(text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
