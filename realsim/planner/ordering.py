@@ -6,6 +6,7 @@ the front on the right": first along both directions). Directions are the robot'
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable
 
 from realsim.errors import InputError
@@ -13,7 +14,7 @@ from realsim.planner import relations
 from realsim.planner.attributes import pts
 from realsim.planner.types import ObjectInfo
 
-__all__ = ["EXTREMES", "TIE", "ordered"]
+__all__ = ["EXTREMES", "TIE", "middle_of", "ordered"]
 
 TIE = 0.02  # m: objects closer than this along a direction are level ("the leftmost" of two side by side)
 # robot-frame orderings: (axis, sign); axis 0 forward (away from the robot), 1 left
@@ -36,6 +37,8 @@ def ordered(found: list[ObjectInfo], order: tuple[str, object], ordinal: int | N
         return [choose(found, key=lambda o: relations.xy_gap(pts(o), pts(ref)) + 1e-3 * math.dist(o.position[:2], ref.position[:2]))]
     if kind == "middle":
         ys = sorted(found, key=lambda o: robot_xy(o)[1])
+        if isinstance(arg, int) and arg != len(ys):  # "the middle of the three" when five match: not sure which
+            raise InputError(f"{phrase.strip()!r}: {arg} said, but {len(ys)} match: {', '.join(distinguish(ys))}; say which one")
         if len(ys) % 2 == 0:
             raise InputError(f"{phrase.strip()!r}: there is no middle one of {len(ys)}: {', '.join(distinguish(ys))}")
         return [ys[len(ys) // 2]]
@@ -57,3 +60,16 @@ def ordered(found: list[ObjectInfo], order: tuple[str, object], ordinal: int | N
     if ties:  # level with another along that direction: which one is meant is not clear
         raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(distinguish([pick, *ties]))} are level; say which one")
     return [pick]
+
+
+_COUNTS = {"three": 3, "five": 5, "seven": 7, "two": 2, "four": 4, "six": 6}
+
+
+def middle_of(text: str) -> tuple[str, int | None]:
+    """"the block in the middle of the three (blocks)" -> ("the block in the middle", 3); "of them",
+    "of all" say no count; text without it is returned as is with None."""
+    m = re.fullmatch(r"(.+?\b(?:in|at) the (?:middle|center|centre)) of (?:the |these |those |all )?(them|all|two|three|four|five|six|seven|\d)(?: (?:ones?|\w+s|of them))?", text)
+    if not m:
+        return text, None
+    said = m.group(2)
+    return m.group(1), None if said in ("them", "all") else _COUNTS.get(said) or int(said)

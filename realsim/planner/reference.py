@@ -22,7 +22,7 @@ import numpy as np
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, typos, vocab
 from realsim.planner.attributes import between_of, colors_of, holding, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
-from realsim.planner.ordering import EXTREMES, ordered
+from realsim.planner.ordering import EXTREMES, middle_of, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
@@ -280,12 +280,13 @@ class Resolver:
         m = re.fullmatch(r"(.+?)\s+(?:at|in|on) the (?:very )?(front|back)(?: corner)?(?:,? (?:on|to|at) the)? (?:far )?(left|right)(?: corner| side)?", text)
         if m:
             text, order = m.group(1), ("corner", (m.group(2), m.group(3)))
+        text, count = middle_of(text)  # "the block in the middle of the three"
         m = None if m else re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
                          r"|(closest|nearest|closer|nearer) to (?:me|you|the robot)|(farthest|furthest|farther|further)(?: away)? from (?:me|you|the robot))", text)
         if m:
             text = m.group(1)
             word = m.group(3) or ("nearest" if m.group(4) else "farthest")
-            order = ("middle", None) if word in ("middle", "center", "centre") else ("extreme", word)
+            order = ("middle", count) if word in ("middle", "center", "centre") else ("extreme", word)
         words = text.split()
         # ordinal "second from the right", "the third can from the left", "the last box"
         ordinal: int | None = None
