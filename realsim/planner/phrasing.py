@@ -90,6 +90,8 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
     text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
+    text = re.sub(r"\bchange (?:the )?(?:place|places|position|positions|spot|spots)(?: of)? (.+?) (?:with|and) ", r"swap \1 with ", text)
+    text = re.sub(r",? (?:so )?(?:each one|each|both)(?: of them)? (?:go|goes|ends? up|sits?|is) (?:where|in the place)(?: is)? the other(?: one)?(?: (?:is|was|sits|sat))?(?=$|[,.;!?])", "", text)
     text = re.sub(r"\bmake (it|them) (?:go|move|slide|shift)\b", r"move \1", text)  # "make it go left"
     text = re.sub(r"\bmore (?:near|close)(?: (?:of|to|from))? (you|me)\b", r"closer to \1", text)  # "more near of you"
     text = re.sub(r"\bmore far(?: away)?(?: (?:of|to|from))? (you|me)\b", r"away from \1", text)  # "more far from you"
