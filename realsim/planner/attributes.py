@@ -100,14 +100,24 @@ SIZE_MARGIN = 0.15  # sizes closer than this (relative) are not told apart by ey
 
 
 def size_pick(objs: list[ObjectInfo], word: str, k: int) -> list[ObjectInfo]:
-    """The ``k`` most ``word`` of ``objs``; :class:`InputError` when the ``k``-th and the next do
-    not differ clearly in the size compared (three equal cubes have no "bigger" one)."""
+    """The ``k`` most ``word`` of ``objs``. When the ``k``-th and the next do not differ clearly in
+    the size compared, a comparison ("bigger", "tallest") is refused with :class:`InputError` (three
+    equal cubes have no "bigger" one) and a plain size word ("the tall can") picks nothing: every
+    object about as ``word`` as the ``k``-th is kept, so another word must tell them apart or the
+    caller asks which one (two equal cans are not told apart by "tall"), unless the scene's own name
+    of exactly one of them carries the word."""
     ranked = ranked_by_size(objs, word)
-    if len(ranked) > k and re.search(r"(?:er|est)$", word):  # a comparison, not a kind ("the tall can on the left")
+    if len(ranked) > k:
         a, b = _volume(ranked[k - 1], word), _volume(ranked[k], word)
         if abs(a - b) < SIZE_MARGIN * max(a, b, 1e-9):
-            close = [o.name for o in ranked if abs(_volume(o, word) - a) < SIZE_MARGIN * max(a, 1e-9)]
-            raise InputError(f"{word!r} is ambiguous: {', '.join(close)} are about the same size; say which one another way")
+            close = [o for o in ranked if abs(_volume(o, word) - a) < SIZE_MARGIN * max(a, 1e-9)]
+            if re.search(r"(?:er|est)$", word):
+                raise InputError(f"{word!r} is ambiguous: {', '.join(o.name for o in close)} are about the same size; "
+                                 "say which one another way")
+            named = [o for o in close if word in re.split(r"[^a-z]+", f"{o.name} {o.label}".lower())]
+            if k == 1 and len(named) == 1:  # the scene's own name says it ("left_tall_white_can")
+                return named
+            return ranked[:k - 1] + [o for o in close if o not in ranked[:k - 1]]
     return ranked[:k]
 
 
