@@ -4,7 +4,7 @@ side relation. Sentences written for this test, not taken from a bench set."""
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
@@ -12,10 +12,6 @@ from realsim.planner.types import ObjectInfo
 
 MUG = ObjectInfo("obj9_mug", "mug", ("cup",), (0.35, -0.3, 0.05), (0.08, 0.08, 0.1), "blue", ("graspable", "container"))
 SCENE = [*CLUTTER, MUG]
-
-
-def calls(sentence: str) -> list[str]:
-    return [c.text() for c in RulePlanner().plan(sentence, SCENE).calls]
 
 
 @pytest.mark.parametrize(("sentence", "line"), [
@@ -26,7 +22,7 @@ def calls(sentence: str) -> list[str]:
     ("put the red cube on the front side of the bowl", "place_beside('obj3_cube', 'obj6_bowl', 'front')"),
 ])
 def test_side_of_is_a_side(sentence: str, line: str) -> None:
-    assert calls(sentence)[-1] == line
+    assert call_lines(sentence, SCENE)[-1] == line
 
 
 @pytest.mark.parametrize("sentence", [
@@ -35,7 +31,7 @@ def test_side_of_is_a_side(sentence: str, line: str) -> None:
     "put the banana in the bowl",  # long, but narrow enough to go in
 ])
 def test_fits_in_a_container(sentence: str) -> None:
-    assert calls(sentence)[-1].startswith("place_in(")
+    assert call_lines(sentence, SCENE)[-1].startswith("place_in(")
 
 
 @pytest.mark.parametrize(("sentence", "reason"), [

@@ -4,16 +4,12 @@ matches; another count is refused. Sentences written for this test, not taken fr
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
 
 CUBES = [o for o in CLUTTER if o.label == "cube" or o.label == "bowl"]
-
-
-def calls(sentence: str) -> list[str]:
-    return [c.text() for c in RulePlanner().plan(sentence, CUBES).calls]
 
 
 @pytest.mark.parametrize("sentence", [
@@ -22,7 +18,7 @@ def calls(sentence: str) -> list[str]:
     "grab the block in the middle of them",
 ])
 def test_middle_of_the_three(sentence: str) -> None:
-    assert calls(sentence)[0] == "grasp('obj4_cube')" or calls(sentence)[0] == "place_in('obj4_cube', 'obj6_bowl')"
+    assert call_lines(sentence, CUBES)[0] == "grasp('obj4_cube')" or call_lines(sentence, CUBES)[0] == "place_in('obj4_cube', 'obj6_bowl')"
 
 
 @pytest.mark.parametrize("sentence", [

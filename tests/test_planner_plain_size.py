@@ -5,14 +5,10 @@ Sentences written for this test, not taken from a bench set."""
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import ObjectInfo, RulePlanner
-
-
-def first_call(sentence: str, objects: list[ObjectInfo]) -> str:
-    return [c.text() for c in RulePlanner().plan(sentence, objects).calls][0]
 
 
 @pytest.mark.parametrize("sentence", ["lift the tall can", "pick up the big soda can", "put the small can in the bowl"])
@@ -22,16 +18,16 @@ def test_equal_cans_are_not_told_apart_by_a_size_word(sentence: str) -> None:
 
 
 def test_a_size_word_with_another_locator_still_picks() -> None:
-    assert first_call("grab the tall can on the left", CLUTTER) == "grasp('obj1_soda_can')"
+    assert call_lines("grab the tall can on the left", CLUTTER)[0] == "grasp('obj1_soda_can')"
 
 
 def test_a_clearly_bigger_one_is_picked() -> None:
     cans = [*CLUTTER[2:], ObjectInfo("obj9_can", "can", (), (0.4, -0.3, 0.09), (0.07, 0.07, 0.18), "red"),
             ObjectInfo("obj10_can", "can", (), (0.4, 0.35, 0.05), (0.07, 0.07, 0.10), "red")]
-    assert first_call("pick up the tall can", cans) == "grasp('obj9_can')"
+    assert call_lines("pick up the tall can", cans)[0] == "grasp('obj9_can')"
 
 
 def test_the_scenes_own_name_decides_between_near_equals() -> None:
     cans = [*CLUTTER[2:], ObjectInfo("obj9_tall_white_can", "tall white can", ("can",), (0.4, -0.3, 0.07), (0.07, 0.07, 0.14), "white"),
             ObjectInfo("obj10_red_can", "red can", ("can",), (0.4, 0.35, 0.065), (0.1, 0.1, 0.13), "red")]
-    assert first_call("lift the tall can", cans) == "grasp('obj9_tall_white_can')"
+    assert call_lines("lift the tall can", cans)[0] == "grasp('obj9_tall_white_can')"

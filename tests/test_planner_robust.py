@@ -4,15 +4,11 @@ units and tolerances, and misspelled colours and names (each class with sentence
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
 from realsim.planner.typos import correct, distance
-
-
-def _lines(sentence: str) -> list[str]:
-    return [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls]
 
 
 @pytest.mark.parametrize(("sentence", "lines"), [
@@ -24,7 +20,7 @@ def _lines(sentence: str) -> list[str]:
     ("pick up the red cube, or rather, the green cube", ["grasp('obj5_cube')"]),
 ])
 def test_restarted_commands(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 @pytest.mark.parametrize(("sentence", "lines"), [
@@ -37,7 +33,7 @@ def test_restarted_commands(sentence: str, lines: list[str]) -> None:
     ("move the blue cube 5 cm left, then send the arm back to its rest configuration", ["push('obj4_cube', 'left', 0.05)", "go_home()"]),
 ])
 def test_engineering_phrasing(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 @pytest.mark.parametrize(("sentence", "lines"), [
@@ -47,7 +43,7 @@ def test_engineering_phrasing(sentence: str, lines: list[str]) -> None:
     ("put the bananas in the bwol", ["place_in('obj7_banana', 'obj6_bowl')"]),
 ])
 def test_misspellings(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 @pytest.mark.parametrize("sentence", [
@@ -78,7 +74,7 @@ def test_distance_and_bound() -> None:
     ("if you don't mind, put the banana in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),  # politeness, no condition
 ])
 def test_conditions_are_checked_on_the_scene(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 @pytest.mark.parametrize(("sentence", "reason"), [
@@ -102,7 +98,7 @@ def test_false_or_unreadable_conditions_do_nothing(sentence: str, reason: str) -
      ["place_in('obj8_strawberry', 'obj6_bowl')", "place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
 ])
 def test_remarks_about_people_are_talk(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 def test_a_remark_alone_is_no_command() -> None:
@@ -117,7 +113,7 @@ def test_a_remark_alone_is_no_command() -> None:
     ("Blue cube. Left, 5 cm.", ["push('obj4_cube', 'left', 0.05)"]),
 ])
 def test_relation_picks_and_terse_ways(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 def test_a_way_after_a_placing_is_not_taken_as_the_same_place() -> None:
@@ -151,7 +147,7 @@ def test_a_thing_with_what_it_does_not_hold_is_asked_about(sentence: str) -> Non
     ("would be perfect if the strawberry sat behind the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
 ])
 def test_texting_and_indirect_requests(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 @pytest.mark.parametrize(("sentence", "lines"), [
@@ -161,7 +157,7 @@ def test_texting_and_indirect_requests(sentence: str, lines: list[str]) -> None:
     ("shvoe the green cube rihgt 2 cm", ["push('obj5_cube', 'right', 0.02)"]),
 ])
 def test_misspelled_command_words(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:
@@ -176,12 +172,12 @@ def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:
     ("put the banana in the bowl, not on it", ["place_in('obj7_banana', 'obj6_bowl')"]),
 ])
 def test_interrupted_places(sentence: str, lines: list[str]) -> None:
-    assert _lines(sentence) == lines
+    assert call_lines(sentence) == lines
 
 
 def test_in_it_is_never_a_thing_that_holds_nothing() -> None:
     """"..., we want the strawberry in it too": the bowl just placed by, never the banana."""
-    assert _lines("put the banana next to the bowl, we want the strawberry in it too") == [
+    assert call_lines("put the banana next to the bowl, we want the strawberry in it too") == [
         "place_beside('obj7_banana', 'obj6_bowl', 'next')", "place_in('obj8_strawberry', 'obj6_bowl')"]
     with pytest.raises(InputError, match="holds nothing"):
         RulePlanner().plan("lift the banana and put the strawberry in it", CLUTTER)

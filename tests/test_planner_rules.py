@@ -163,6 +163,11 @@ CLUTTER = [
     ObjectInfo("obj8_strawberry", "strawberry", (), (0.25, 0.3, 0.02), (0.04, 0.04, 0.04), "red"),
 ]
 
+def call_lines(sentence: str, objects: list[ObjectInfo] = CLUTTER) -> list[str]:
+    """The rule planner's calls for ``sentence`` on ``objects``, one text line each."""
+    return [c.text() for c in RulePlanner().plan(sentence, objects).calls]
+
+
 PEOPLE: list[tuple[str, list[str]]] = [
     ("pick up the left can and set it down inside the bowl", ["grasp('obj1_soda_can')", "place_in('obj1_soda_can', 'obj6_bowl')"]),
     ("could you please drop the green cube into the bowl for me", ["place_in('obj5_cube', 'obj6_bowl')"]),

@@ -5,13 +5,7 @@ go ..." moves it. Sentences written for this test, not taken from a bench set.""
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
-
-from realsim.planner import RulePlanner
-
-
-def calls(sentence: str) -> list[str]:
-    return [c.text() for c in RulePlanner().plan(sentence, CLUTTER).calls]
+from test_planner_rules import call_lines
 
 
 @pytest.mark.parametrize(("sentence", "line"), [
@@ -25,9 +19,9 @@ def calls(sentence: str) -> list[str]:
     ("the banana, make it slide to the left 2 cm", "push('obj7_banana', 'left', 0.02)"),
 ])
 def test_way_relative_to_the_robot(sentence: str, line: str) -> None:
-    assert calls(sentence) == [line]
+    assert call_lines(sentence) == [line]
 
 
 def test_place_still_read_with_the_way() -> None:
     """"more near of you" after a place says which side of it: in front."""
-    assert calls("put the strawberry in front from the bowl, more near of you") == ["place_beside('obj8_strawberry', 'obj6_bowl', 'front')"]
+    assert call_lines("put the strawberry in front from the bowl, more near of you") == ["place_beside('obj8_strawberry', 'obj6_bowl', 'front')"]
