@@ -44,3 +44,9 @@ def test_fits_in_a_container(sentence: str) -> None:
 def test_in_what_holds_nothing_or_too_small_is_refused(sentence: str, reason: str) -> None:
     with pytest.raises(InputError, match=reason):
         RulePlanner().plan(sentence, SCENE)
+
+
+def test_a_drawer_holds_things() -> None:
+    """A drawer is not an open container, but things go in it."""
+    drawer = ObjectInfo("obj9_drawer", "drawer", (), (0.7, -0.4, 0.2), (0.4, 0.3, 0.15), None, ("drawer",))
+    assert call_lines("put the strawberry in the drawer", [*CLUTTER, drawer]) == ["place_in('obj8_strawberry', 'obj9_drawer')"]
