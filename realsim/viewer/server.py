@@ -263,21 +263,21 @@ def serve(folder: Path, host: str = "127.0.0.1", port: int = 8080, *, splat: Pat
 
     if splat is not None and not Path(splat).is_file():
         raise InputError(f"--splat {splat}: no such file")
+    # SIGTERM asks to stop: a flag, not an exception, so one arriving while the viewer still starts
+    # (its status may already answer) stops it cleanly too, never as an interrupt (exit 130)
+    stop = threading.Event()
+    signal.signal(signal.SIGTERM, lambda *_args: stop.set())
     viewer = Viewer(Path(folder), host=host, port=port, splat=splat, paused=paused, status_port=status_port)
     if viewer.port != port:
         print(f"realsim: warning: port {port} is taken; serving on {viewer.port} instead", file=sys.stderr)
 
-    def _terminate(*_args) -> None:
-        raise KeyboardInterrupt
-
-    signal.signal(signal.SIGTERM, _terminate)
-    viewer.start()
-    status = f", status at http://{host}:{status_port}/status" if status_port is not None else ""
-    print(f"realsim view: serving {viewer.url} (Ctrl-C to stop){status}", flush=True)
     try:
+        viewer.start()
+        status = f", status at http://{host}:{status_port}/status" if status_port is not None else ""
+        print(f"realsim view: serving {viewer.url} (Ctrl-C to stop){status}", flush=True)
         deadline = None if duration is None else time.monotonic() + duration
-        while deadline is None or time.monotonic() < deadline:
-            time.sleep(0.2)
+        while not stop.is_set() and (deadline is None or time.monotonic() < deadline):
+            stop.wait(0.2)
     except KeyboardInterrupt:
         pass
     finally:
