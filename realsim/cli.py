@@ -285,8 +285,8 @@ def build_parser() -> argparse.ArgumentParser:
     example.add_argument("--layout", choices=["table", "counter", "floor"], help="YCB scans on this support, in every capture form")
     example.add_argument("--objects", help="with --layout: comma-separated YCB names (default: --count drawn)")
     example.add_argument("--count", type=int, default=4, help="with --layout: objects drawn when --objects is absent")
-    example.add_argument("--forms", default="view,sequence,cloud,mesh", help="with --layout: view,sequence,cloud,mesh")
-    example.add_argument("--points", type=int, default=200_000, help="with --layout: points of cloud.ply")
+    example.add_argument("--forms", default="view,sequence,cloud,mesh", help="with --layout: any of view,sequence,cloud,mesh,splat")
+    example.add_argument("--points", type=int, default=200_000, help="with --layout: points of cloud.ply (and splats of splat.ply)")
     example.set_defaults(func=cmd_example)
 
     export = sub.add_parser("export", help="export a converted scene as self-contained MJCF or as USD")

@@ -85,25 +85,6 @@ def test_rgbd_sequence_is_fused(gt, tmp_path: Path) -> None:
     assert abs(_table_height(scene, entry) - gt.primary_support().height) < 0.005
 
 
-def test_splat_ply_is_read_as_its_centres(gt, tmp_path: Path) -> None:
-    pts, cols, _ = sample_cloud(gt, 20_000)
-    n = len(pts)
-    names = ["x", "y", "z", "f_dc_0", "f_dc_1", "f_dc_2", "opacity", "scale_0", "scale_1", "scale_2", "rot_0", "rot_1", "rot_2", "rot_3"]
-    data = np.zeros(n, dtype=[(k, "<f4") for k in names])
-    data["x"], data["y"], data["z"] = pts.T
-    for i in range(3):
-        data[f"f_dc_{i}"] = (cols[:, i] / 255.0 - 0.5) / 0.28209479177387814
-    data["opacity"] = np.where(np.arange(n) % 10 == 0, -5.0, 5.0)  # every tenth splat is a faint floater
-    data["scale_0"] = data["scale_1"] = data["scale_2"] = np.log(0.003)
-    data["rot_0"] = 1.0
-    header = "ply\nformat binary_little_endian 1.0\nelement vertex %d\n" % n + "".join(f"property float {k}\n" for k in names) + "end_header\n"
-    (tmp_path / "splat.ply").write_bytes(header.encode() + data.tobytes())
-    scene = load_capture(tmp_path / "splat.ply")
-    assert len(scene.points) == n - (n + 9) // 10
-    assert str(scene.capture.splat).endswith("splat.ply") and scene.colors is not None
-    assert np.allclose(scene.colors.mean(axis=0), cols[np.arange(n) % 10 != 0].mean(axis=0) / 255.0, atol=0.01)
-
-
 def test_usd_stage_units_and_up(gt, tmp_path: Path) -> None:
     from pxr import Gf, Usd, UsdGeom, Vt
 

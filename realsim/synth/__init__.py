@@ -27,9 +27,12 @@ Write capture forms (each returns its ``ground_truth.json`` entry with ``capture
     # dest/cloud.ply         unorganized cloud of the visible surfaces, 2 mm noise, Z up, metres
     #                        (+ cloud_labels.npy: object id per point)
     # dest/mesh.glb          the merged mesh, glTF Y-up millimetres, vertex colours
+    # dest/splat.ply         3D Gaussian splat (3DGS PLY) of the visible surfaces, 3 % faint floaters
+    #                        (+ splat_labels.npy: object id per splat, -1 floaters); forms="...,splat"
     # dest/ground_truth.json supports, objects (id, name, pose, mesh_file, resting_on, touching), forms
     write_point_cloud(scene, path, count=1_000_000, units="cm", up="+y")   # any density, units, up
     write_mesh(scene, path, units="m", up="+z")                             # .glb, .obj, .ply
+    write_splat(scene, path, count=200_000)                                 # realsim.synth.splat
     sample_cloud(scene, count) -> (points, colours, object ids)            # in memory, world frame
     render(scene, look_at(eye, target)) -> Frame(color, depth, part, object_id)   # one ray-cast view
 """
@@ -56,10 +59,11 @@ from realsim.synth.scene import (
     make_scene,
     ycb_root,
 )
+from realsim.synth.splat import write_splat
 
 __all__ = [
     "Camera", "Frame", "backproject", "kinect_noise", "kinect_view", "look_at", "orbit", "render",
     "ground_truth", "sample_cloud", "visible_faces", "world_to_capture", "write_all", "write_mesh",
-    "write_organized_view", "write_point_cloud", "write_rgbd_sequence",
+    "write_organized_view", "write_point_cloud", "write_rgbd_sequence", "write_splat",
     "DEFAULT_OBJECTS", "LAYOUTS", "GtObject", "GtSupport", "SceneSpec", "SynthScene", "make_scene", "ycb_root",
 ]

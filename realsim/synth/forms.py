@@ -19,6 +19,7 @@ from realsim.synth.scene import SynthScene
 
 UNIT_SCALE = {"m": 1.0, "cm": 100.0, "mm": 1000.0}  # capture units per metre
 # world (Z up) -> capture axes, for each supported up axis of the written file
+FORMS = ("view", "sequence", "cloud", "mesh", "splat")  # what write_all can write
 _UP = {"+z": np.eye(3), "+y": np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])}
 
 
@@ -119,6 +120,13 @@ def visible_faces(scene: SynthScene, seed: int = 0, views: int = 24) -> np.ndarr
 def sample_cloud(scene: SynthScene, count: int, seed: int = 0, noise: float = 0.002) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``count`` world points sampled by area on the visible faces, with isotropic Gaussian
     ``noise`` (m): (points (N, 3), colours (N, 3) uint8, object id (N,))."""
+    pts, pick = sample_surface(scene, count, seed, noise)
+    vcol = scene.mesh.visual.vertex_colors[:, :3]
+    return pts, vcol[scene.mesh.faces[pick, 0]], scene.face_object[pick]
+
+
+def sample_surface(scene: SynthScene, count: int, seed: int = 0, noise: float = 0.002) -> tuple[np.ndarray, np.ndarray]:
+    """``count`` noisy world points by area on the visible faces, and the face each lies on."""
     rng = np.random.default_rng([seed, 19])
     faces = np.flatnonzero(visible_faces(scene, seed))
     area = scene.mesh.area_faces[faces]
@@ -129,9 +137,7 @@ def sample_cloud(scene: SynthScene, count: int, seed: int = 0, noise: float = 0.
     r[flip] = 1 - r[flip]
     pts = tri[:, 0] + r[:, :1] * (tri[:, 1] - tri[:, 0]) + r[:, 1:] * (tri[:, 2] - tri[:, 0])
     pts += rng.standard_normal(pts.shape) * noise
-    vcol = scene.mesh.visual.vertex_colors[:, :3]
-    cols = vcol[scene.mesh.faces[pick, 0]]
-    return pts, cols, scene.face_object[pick]
+    return pts, pick
 
 
 def write_point_cloud(scene: SynthScene, path: Path, count: int = 200_000, seed: int = 0, noise: float = 0.002,
@@ -198,7 +204,13 @@ def _jsonable(v: Any) -> Any:
 def write_all(scene: SynthScene, dest: Path, forms: tuple[str, ...] = ("view", "sequence", "cloud", "mesh"),
               cloud_points: int = 200_000, frames: int = 30, seed: int = 0) -> Path:
     """Write the chosen forms into ``dest`` (``view.pcd``, ``sequence/``, ``cloud.ply`` with
-    ``cloud_labels.npy``, ``mesh.glb``) and ``ground_truth.json``. Returns ``dest``."""
+    ``cloud_labels.npy``, ``mesh.glb``, ``splat.ply`` with ``splat_labels.npy``) and
+    ``ground_truth.json``. Returns ``dest``."""
+    from realsim.errors import InputError
+
+    unknown = sorted(set(forms) - set(FORMS))
+    if unknown:
+        raise InputError(f"unknown capture form {', '.join(unknown)}: choose from {', '.join(FORMS)}")
     dest = Path(dest)
     dest.mkdir(parents=True, exist_ok=True)
     entries = []
@@ -213,5 +225,12 @@ def write_all(scene: SynthScene, dest: Path, forms: tuple[str, ...] = ("view", "
         entries.append(entry)
     if "mesh" in forms:
         entries.append(write_mesh(scene, dest / "mesh.glb"))
+    if "splat" in forms:
+        from realsim.synth.splat import write_splat  # splat.py builds on this module's sampling
+
+        entry, ids = write_splat(scene, dest / "splat.ply", cloud_points, seed)
+        np.save(dest / "splat_labels.npy", ids.astype(np.int32))
+        entry["labels"] = "splat_labels.npy"
+        entries.append(entry)
     (dest / "ground_truth.json").write_text(json.dumps(ground_truth(scene, entries), indent=1) + "\n")
     return dest

@@ -94,8 +94,7 @@ class Viewer:
             self.nodes = add_visual_geoms(self.server, model, data, self.spec, self.sim.folder)
         add_support_outlines(self.server, self.sim.scene_json.get("planes", []))
         self.splat = splat if splat is not None else find_splat(self.sim.scene_json)
-        if self.splat is not None:
-            self._add_splat(self.splat)
+        self.splat_count = self._add_splat(self.splat) if self.splat is not None else 0
         self._set_initial_camera()
         self._build_gui()
         self._threads = [threading.Thread(target=self._physics_loop, name="realsim-physics", daemon=True),
@@ -107,11 +106,13 @@ class Viewer:
         return f"http://{self.host}:{self.port}"
 
     # --- scene -------------------------------------------------------------------------------
-    def _add_splat(self, path: Path) -> None:
+    def _add_splat(self, path: Path) -> int:
+        """Show the capture's Gaussian splat in the scene's world frame; returns how many splats."""
         transform = np.asarray(self.sim.scene_json.get("capture", {}).get("input_to_world", np.eye(4)), dtype=float)
-        splats = read_splat_ply(path, transform)
-        self.server.scene.add_gaussian_splats("/backdrop/splat", centers=splats.centers, covariances=splats.covariances,
-                                              rgbs=splats.rgbs, opacities=splats.opacities)
+        self.splats = read_splat_ply(path, transform)
+        self.server.scene.add_gaussian_splats("/backdrop/splat", centers=self.splats.centers, covariances=self.splats.covariances,
+                                              rgbs=self.splats.rgbs, opacities=self.splats.opacities)
+        return len(self.splats.centers)
 
     def _set_initial_camera(self) -> None:
         model, data = self.sim.model, self.sim.data
@@ -217,7 +218,7 @@ class Viewer:
             poses = {n.name: [*self.sim.data.xpos[n.body].round(6).tolist(), *self.sim.data.xquat[n.body].round(6).tolist()] for n in self.nodes}
             sim_time = float(self.sim.data.time)
         return {"sim_time": sim_time, "frames": self.frames, "clients": len(self.server.get_clients()), "paused": self.sim.paused,
-                "url": self.url, "bodies": poses}
+                "url": self.url, "splats": self.splat_count, "bodies": poses}
 
     def start(self) -> "Viewer":
         for thread in self._threads:
