@@ -192,6 +192,9 @@ def attach_robot(
     x, y, yaw = (float(v) for v in base_pos_xy_yaw)
     top = float(base_z) + max(float(pedestal_height), 0.0)
     child, assets = panda_spec(gripper)
+    # its meshes resolve as the scene's own (and as they will from the written scene.xml), so MuJoCo's
+    # asset cache serves the written scene's compile check with the meshes processed here
+    child.modelfiledir, child.meshdir = spec.modelfiledir, spec.meshdir
     if pedestal_height > 0:
         half = [BASE_FOOTPRINT, BASE_FOOTPRINT, pedestal_height / 2]
         pos = [x, y, base_z + pedestal_height / 2]
