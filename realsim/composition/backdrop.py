@@ -97,12 +97,14 @@ def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarra
     ok = keep & np.all(np.isfinite(points), axis=1) & np.all(np.isfinite(colors), axis=1)
     if not params.enabled or ok.sum() < 100:
         return None
-    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points[ok]))
+    kept = points[ok]
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(kept))
     cloud.colors = o3d.utility.Vector3dVector(np.clip(colors[ok], 0.0, 1.0))
     voxel = max(float(spacing) if np.isfinite(spacing) else 0.0, params.cloud_min_voxel)
-    lower = points[ok].min(axis=0)  # Open3D's grid starts half a voxel below the cloud's minimum
+    lower = kept.min(axis=0)  # Open3D's grid starts half a voxel below the cloud's minimum
+    sample = kept[::SAMPLE_STRIDE]
     while True:  # the voxel grows until ball pivoting (about two faces a point) fits the face budget
-        if not sample_fills(points[ok], lower, voxel, params.cloud_max_faces / 2):
+        if not sample_fills(sample, lower, voxel, params.cloud_max_faces / 2):
             thin = cloud.voxel_down_sample(voxel)
             if 2 * len(thin.points) <= params.cloud_max_faces:
                 break
@@ -123,11 +125,11 @@ def build_cloud_backdrop(points: np.ndarray, colors: np.ndarray, keep: np.ndarra
 SAMPLE_STRIDE = 8  # every 8th point: a cheap lower bound on the voxels the whole cloud fills
 
 
-def sample_fills(points: np.ndarray, lower: np.ndarray, voxel: float, count: float) -> bool:
-    """True when every ``SAMPLE_STRIDE``-th point alone fills more than ``count`` voxels of Open3D's
-    down-sampling grid (origin ``lower - voxel / 2``), so the whole cloud does too: that voxel
-    need not be tried (a margin of 1 % covers rounding at cell borders)."""
-    cells = np.floor((points[::SAMPLE_STRIDE] - (lower - voxel * 0.5)) / voxel).astype(np.int64)
+def sample_fills(sample: np.ndarray, lower: np.ndarray, voxel: float, count: float) -> bool:
+    """True when ``sample`` (every ``SAMPLE_STRIDE``-th point of a cloud) alone fills more than
+    ``count`` voxels of Open3D's down-sampling grid (origin ``lower - voxel / 2``), so the whole
+    cloud does too: that voxel need not be tried (a margin of 1 % covers rounding at cell borders)."""
+    cells = np.floor((sample - (lower - voxel * 0.5)) / voxel).astype(np.int64)
     if len(cells) <= count:
         return False
     span = cells.max(axis=0) + 1

@@ -1,7 +1,8 @@
 """The ``robot`` stage: put the Franka Panda beside the primary support, reaching the objects.
 
-The searched pose is cached under the composed scene's content (spec XML, assets, supports,
-objects, parameters, code digest): a rerun attaches the robot where it stood without searching.
+The searched pose is cached under exactly what the search reads (the primary support, the hover
+and handle targets, the parameters, the code digest): a rerun attaches the robot where it stood
+without searching.
 """
 
 from __future__ import annotations
@@ -10,8 +11,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from realsim.cache import DiskCache, output_key, spec_digest
-from realsim.composition.robot_placement import MAX_REACH, PlacementParams, add_robot, pedestal_height
+from realsim.cache import DiskCache, output_key
+from realsim.composition.robot_placement import MAX_REACH, PlacementParams, SearchInputs, add_robot, pedestal_height, search_inputs
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon
 from realsim.robot.model import attach_robot
@@ -39,10 +40,11 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
         handles = add_robot(scene, pose=pose, params=params.placement)
     else:
         cache = DiskCache()
-        key = _placement_key(scene, params.placement)
+        inputs = search_inputs(scene, scene.spec.compile(), params.placement)
+        key = _placement_key(scene, params.placement, inputs)
         found = cache.get(key)
         if found is None:
-            handles = add_robot(scene, params=params.placement)
+            handles = add_robot(scene, params=params.placement, inputs=inputs)
             cache.put(key, handles.base_pose)
         else:  # the pose this very scene got before: attach without searching
             handles = attach_robot(scene.spec, tuple(found), base_z=scene.floor_height,
@@ -59,14 +61,10 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
     return scene
 
 
-def _placement_key(scene: Scene, params: PlacementParams) -> str:
-    """Everything the pose search reads: the composed spec and assets, supports, objects, parameters."""
-    planes = [(p.id, p.kind, p.height, p.observed, np.round(p.polygon, 9).tolist(), np.round(p.rect_center, 9).tolist(),
-               np.round(p.rect_size, 9).tolist(), round(float(p.rect_yaw), 9)) for p in scene.planes]
-    objects = [(o.name, o.label, np.round(o.position, 9).tolist(), None if o.size is None else np.round(o.size, 9).tolist())
-               for o in scene.objects]
-    return output_key("robot-placement", data=spec_digest(scene.spec, scene.assets),
-                      params={"placement": params, "planes": planes, "objects": objects, "floor": scene.floor_height})
+def _placement_key(scene: Scene, params: PlacementParams, inputs: SearchInputs) -> str:
+    """Everything the pose search reads (the primary support, the targets, the parameters; the
+    composed spec only through them) and the floor the robot stands on."""
+    return output_key("robot-placement", params={"placement": params, "search": inputs.record(), "floor": scene.floor_height})
 
 
 def check_robot_pose(scene: Scene, pose: tuple[float, float, float], reach: float = MAX_REACH) -> None:

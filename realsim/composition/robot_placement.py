@@ -139,17 +139,25 @@ def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np
     return reach + mean_m * 5.0, reach, mean_m
 
 
-def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None = None, override: tuple[float, float, float] | None = None,
-                      params: PlacementParams = PlacementParams(), extra_targets: list[np.ndarray] | None = None) -> tuple[float, float, float]:
-    """The base pose (x, y, yaw) beside the primary support maximizing reach and manipulability.
+@dataclass(frozen=True)
+class SearchInputs:
+    """Everything the base pose search reads: the primary support's rectangle and height, the
+    top-down hover targets and the oriented (position, quaternion) handle targets."""
 
-    ``override`` (the CLI's ``--robot-pose x,y,yaw``) is returned as given. Object poses are read
-    from ``model_without_robot`` (its bodies' initial poses) when given, else from the scene.
-    """
-    if override is not None:
-        return tuple(float(v) for v in override)  # type: ignore[return-value]
+    rect: tuple[tuple[float, float], tuple[float, float], float, float]  # centre, size, yaw, height
+    targets: tuple[tuple[float, ...], ...]
+    oriented: tuple[tuple[tuple[float, ...], tuple[float, ...]], ...]
+
+    def record(self) -> dict[str, object]:
+        """The inputs as plain lists (a cache key's parameters)."""
+        return {"rect": self.rect, "targets": self.targets, "oriented": self.oriented}
+
+
+def search_inputs(scene: Scene, model_without_robot: mujoco.MjModel | None = None, params: PlacementParams = PlacementParams(),
+                  extra_targets: list[np.ndarray] | None = None) -> SearchInputs:
+    """What :func:`choose_robot_pose` searches over. Object poses are read from
+    ``model_without_robot`` (its bodies' initial poses) when given, else from the scene."""
     plane = primary_support(scene)
-    base_z = plane.height - params.pedestal_drop
     targets = []
     for obj in graspable_objects(scene):
         pos = np.asarray(obj.position, float)
@@ -164,6 +172,26 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     oriented = handle_targets(model_without_robot) if model_without_robot is not None else []
     if not targets and not oriented:
         targets = [np.array([*plane.rect_center, plane.height + 0.1])]
+    rect = (tuple(float(v) for v in plane.rect_center), tuple(float(v) for v in plane.rect_size), float(plane.rect_yaw), float(plane.height))
+    return SearchInputs(rect, tuple(tuple(float(v) for v in t) for t in targets),  # type: ignore[arg-type]
+                        tuple((tuple(float(v) for v in p), tuple(float(v) for v in q)) for p, q in oriented))
+
+
+def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None = None, override: tuple[float, float, float] | None = None,
+                      params: PlacementParams = PlacementParams(), extra_targets: list[np.ndarray] | None = None,
+                      inputs: SearchInputs | None = None) -> tuple[float, float, float]:
+    """The base pose (x, y, yaw) beside the primary support maximizing reach and manipulability.
+
+    ``override`` (the CLI's ``--robot-pose x,y,yaw``) is returned as given. The targets are
+    ``inputs`` when given, else :func:`search_inputs` of the other arguments.
+    """
+    if override is not None:
+        return tuple(float(v) for v in override)  # type: ignore[return-value]
+    if inputs is None:
+        inputs = search_inputs(scene, model_without_robot, params, extra_targets)
+    base_z = inputs.rect[3] - params.pedestal_drop
+    targets = [np.array(t) for t in inputs.targets]
+    oriented = [(np.array(p), np.array(q)) for p, q in inputs.oriented]
     best, best_score = None, -np.inf
     for pose in _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], params.ik_candidates):
         s, _, _ = score_pose(pose, base_z, targets, oriented=oriented)
@@ -193,11 +221,12 @@ def pedestal_height(scene: Scene, params: PlacementParams = PlacementParams()) -
 
 
 def add_robot(scene: Scene, pose: tuple[float, float, float] | None = None, params: PlacementParams = PlacementParams(),
-              extra_targets: list[np.ndarray] | None = None) -> RobotHandles:
-    """The robot stage: choose the base pose (unless given), attach the Panda on its pedestal to
-    ``scene.spec`` and add its meshes to ``scene.assets``. Run after compose, before settle."""
-    model = scene.spec.compile() if scene.spec is not None else None
-    pose = choose_robot_pose(scene, model, override=pose, params=params, extra_targets=extra_targets)
+              extra_targets: list[np.ndarray] | None = None, inputs: SearchInputs | None = None) -> RobotHandles:
+    """The robot stage: choose the base pose (unless given; over ``inputs`` when given), attach the
+    Panda on its pedestal to ``scene.spec`` and add its meshes to ``scene.assets``. Run after
+    compose, before settle."""
+    model = scene.spec.compile() if scene.spec is not None and pose is None and inputs is None else None
+    pose = choose_robot_pose(scene, model, override=pose, params=params, extra_targets=extra_targets, inputs=inputs)
     handles = attach_robot(scene.spec, pose, base_z=scene.floor_height, pedestal_height=pedestal_height(scene, params))
     scene.assets.update(handles.assets)
     return handles

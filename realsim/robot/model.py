@@ -14,6 +14,7 @@ and the gripper's range from the compiled scene (with the names scene.json recor
 
 from __future__ import annotations
 
+import functools
 import os
 from dataclasses import dataclass, field, fields
 from pathlib import Path
@@ -134,15 +135,11 @@ def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec,
     spec = mujoco.MjSpec.from_file(str(folder / "panda.xml"))
     assets: dict[str, bytes] = {}
     mesh_dir = folder / (spec.meshdir or "")
-    cache = DiskCache()
     for mesh in spec.meshes:
         path = mesh_dir / mesh.file
-        if path.suffix.lower() == ".obj":
-            name = f"panda_{path.stem}.stl"
-            assets[name] = cache.get_or_compute(cache_key("panda-mesh-stl", files=[path]), lambda path=path: _binary_stl(path))
-        else:
-            name = f"panda_{path.name}"
-            assets[name] = path.read_bytes()
+        stat = path.stat()
+        name, data = _mesh_asset(str(path), stat.st_size, stat.st_mtime_ns)
+        assets[name] = data
         mesh.file = name
     spec.meshdir = ""
     spec.assets = assets
@@ -165,6 +162,17 @@ def panda_spec(gripper: GripperParams = GripperParams()) -> tuple[mujoco.MjSpec,
     act.biasprm[2] = -gripper.damping
     act.forcerange = [-gripper.max_force, gripper.max_force]
     return spec, assets
+
+
+@functools.lru_cache(maxsize=256)
+def _mesh_asset(path: str, size: int, mtime_ns: int) -> tuple[str, bytes]:
+    """(asset name, bytes) of one Menagerie mesh file: an OBJ as binary STL (on-disk cache keyed by
+    its content), anything else as it is. Kept in process per file size and modification time, so
+    each conversion does not read and hash the Panda's meshes again."""
+    file = Path(path)
+    if file.suffix.lower() != ".obj":
+        return f"panda_{file.name}", file.read_bytes()
+    return f"panda_{file.stem}.stl", DiskCache().get_or_compute(cache_key("panda-mesh-stl", files=[file]), lambda: _binary_stl(file))
 
 
 def _binary_stl(path: Path) -> bytes:
