@@ -133,9 +133,10 @@ def test_the_free_space_cuts_keep_what_the_camera_saw_of_the_object() -> None:
 
 
 def test_the_cut_search_skips_no_direction_that_could_win() -> None:
-    """_best_cut (which counts only the directions that may win) picks the cut an exhaustive search
+    """best_cut (which counts only the directions that may win) picks the cut an exhaustive search
     over every direction and every cut below each bad sample picks, on generated pieces."""
-    from realsim.completion.freespace import MISS_WEIGHT, _best_cut, _directions
+    from realsim.completion.cutsearch import MISS_WEIGHT, best_cut
+    from realsim.completion.freespace import _directions
 
     rng = np.random.default_rng(3)
     for trial in range(20):
@@ -145,7 +146,7 @@ def test_the_cut_search_skips_no_direction_that_could_win() -> None:
         ray = rng.normal(size=3)
         normals = _directions(ray / np.linalg.norm(ray))
         samples = 1530
-        n, c, cost = _best_cut(inside, bad, normals, samples)
+        n, c, cost = best_cut(inside, bad, normals, samples)
         pi, pb = inside @ normals.T, bad @ normals.T
         cuts = np.sort(pb, axis=0) - 1e-6 * np.maximum(np.ptp(pi, axis=0), 1e-9)
         every = 1.0 - (pi[:, None, :] <= cuts[None]).mean(axis=0) + MISS_WEIGHT * np.arange(len(bad))[:, None] / samples

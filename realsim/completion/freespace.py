@@ -18,6 +18,7 @@ import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
+from realsim.completion.cutsearch import best_cut
 from realsim.completion.hull import extreme_points, trimesh_hull
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
@@ -32,8 +33,6 @@ INSIDE_SAMPLES = 2000
 MAX_CUT_LOSS = 0.1  # a piece that one cut would lose more of is split in two first
 MIN_SPLIT = 0.04  # m: pieces shorter than this are cut, never split
 KEEP_MARGIN = 0.002  # m: seen points this far outside a piece still bind its cuts
-PRUNE_SLACK = 4  # inside points of slack when skipping cut directions that cannot win (see _open_columns)
-MISS_WEIGHT = 20.0  # leaving this share of the surface seen through costs as much as losing the whole piece, inverted
 
 
 def _directions(ray: np.ndarray) -> np.ndarray:
@@ -68,65 +67,6 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     return np.vstack([piece.vertices, pts])
 
 
-def _kept_by_sorting(pi: np.ndarray, cuts: np.ndarray, shift: np.ndarray) -> np.ndarray:
-    """Per cut (K, M) how many of the ``pi`` projections (n, M) of its column lie at or below it: the
-    columns set apart by ``shift`` (M, ascending, wider apart than any value) in one sorted array."""
-    sub = np.sort(pi, axis=0)
-    found = np.searchsorted((sub + shift).ravel(order="F"), (cuts + shift).ravel(order="F"), side="right")
-    return found.reshape(cuts.shape, order="F") - len(pi) * np.arange(cuts.shape[1])
-
-
-def _open_columns(pi: np.ndarray, cuts: np.ndarray, first: np.ndarray, best: float, samples: int) -> np.ndarray:
-    """The columns (cut directions) whose cuts ``cuts`` (K, N, ascending) may cost no more than
-    ``best``: the lowest (``first``, its cost per column) or a higher one, which keeps at most what
-    the highest keeps and leaves a bad sample more (MISS_WEIGHT / samples). The others cannot hold
-    the least cost (PRUNE_SLACK points of slack for rounding), so their counts are not made."""
-    slack = PRUNE_SLACK / max(len(pi), 1)
-    reach = 1.0 - (pi <= cuts[-1]).sum(axis=0) / max(len(pi), 1) + MISS_WEIGHT / samples
-    return np.flatnonzero((first <= best + slack) | (reach <= best + slack))
-
-
-def _best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: int,
-              keep: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
-    """The cut (normal, offset: keep ``n . x <= c``) minimising the share of ``inside`` lost plus
-    MISS_WEIGHT times the share of the ``samples`` surface samples left seen through (``bad``), and
-    that cost (the cost of no cut when no cut is better). Only cuts leaving few enough bad samples to
-    beat the best cut that leaves none are weighed (leaving each costs MISS_WEIGHT / samples)."""
-    pi, pb = inside @ normals.T, bad @ normals.T
-    low_pi, high_pi = pi.min(axis=0), pi.max(axis=0)
-    width = 1e-6 * np.maximum(high_pi - low_pi, 1e-9)
-    limit = (keep @ normals.T).max(axis=0)[None, :] if keep is not None and len(keep) else None
-    none = MISS_WEIGHT * len(bad) / samples
-
-    def costs(cuts: np.ndarray, columns: np.ndarray | None = None) -> np.ndarray:  # cuts (K, N): just below the K lowest bad samples of each column
-        if columns is None:
-            columns, sub_pi, sub_cuts = np.arange(pi.shape[1]), pi, cuts
-        else:  # the other columns cost inf
-            sub_pi, sub_cuts = pi[:, columns], cuts[:, columns]
-        if len(cuts) <= 8:
-            kept = (sub_pi[:, None, :] <= sub_cuts[None]).sum(axis=0)
-        else:
-            span = 2.0 * max(float(high_pi.max()), -float(low_pi.min()), float(np.abs(cuts).max())) + 1.0
-            kept = _kept_by_sorting(sub_pi, sub_cuts, span * columns)
-        cost = np.full(cuts.shape, np.inf)
-        cost[:, columns] = 1.0 - kept / max(len(pi), 1) + MISS_WEIGHT * np.arange(len(cuts))[:, None] / samples
-        return cost if limit is None else np.where(cuts >= limit, cost, np.inf)  # leave every ``keep`` point
-
-    first = costs(pb.min(axis=0)[None, :] - width)
-    rows = min(len(pb), int(np.floor(min(float(first.min()), none) * samples / MISS_WEIGHT)) + 1)
-    if rows > 1:
-        low = np.partition(pb, rows - 1, axis=0)[:rows] if rows < len(pb) else pb
-        cuts = np.sort(low, axis=0) - width
-        cost = costs(cuts, _open_columns(pi, cuts, first[0], min(float(first.min()), none), samples))
-    else:
-        cost = first
-    k, j = np.unravel_index(int(np.argmin(cost)), cost.shape)
-    if cost[k, j] >= none:
-        return normals[0], np.inf, none
-    cut = np.sort(pb[:, j])[k] - width[j]
-    return normals[j], float(cut), float(cost[k, j])
-
-
 def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
     """Normalized image coordinates (x / z, y / z in the optical frame) of world points."""
     opt = points @ view.world_to_optical[:3, :3].T + view.world_to_optical[:3, 3]
@@ -136,12 +76,13 @@ def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
 def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int, keep: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
     """The best cut as a world half-space ``n . x <= c`` (and its cost): a plane among the fixed
     directions (see :func:`_directions`), or one through the camera centre (a line in the image that
-    trims the piece's silhouette); either leaves the ``keep`` points (what stands on the piece) kept."""
-    ray = bad.mean(axis=0) - view.camera
-    n, c, cost = _best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples, keep)
+    trims the piece's silhouette) when that costs less; either leaves the ``keep`` points (what stands
+    on the piece) kept. The image cut is found first: the plane search then skips what cannot match it."""
     t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
-    n2, c2, cost2 = _best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples,
-                              None if keep is None else _image(view, keep))
+    n2, c2, cost2 = best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples,
+                             None if keep is None else _image(view, keep))
+    ray = bad.mean(axis=0) - view.camera
+    n, c, cost = best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples, keep, cost2 if np.isfinite(c2) else np.inf)
     if cost2 < cost and np.isfinite(c2):  # n2 . (y_xy / y_z) <= c2 with y = A x + b, y_z > 0
         k = np.array([n2[0], n2[1], -c2])
         a, b = view.world_to_optical[:3, :3], view.world_to_optical[:3, 3]
