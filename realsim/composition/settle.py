@@ -9,7 +9,7 @@ cached under the spec's content (XML, assets, parameters, code digest), so a rer
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
@@ -18,7 +18,7 @@ import mujoco
 import numpy as np
 
 from realsim.cache import DiskCache, output_key, spec_digest
-from realsim.physics.capacity import CapacityParams, measure_capacity
+from realsim.physics.capacity import CapacityParams, LandingPeaks, measure_capacity
 from realsim.physics.divergence import check_state
 from realsim.scene import Scene
 from realsim.scene_format import HOME_KEYFRAME, KEYFRAME, free_joint_bodies
@@ -63,10 +63,12 @@ def _stayed(poses: deque[np.ndarray], reach: float) -> bool:
     return True
 
 
-def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tuple[str, int, int]], params: SettleParams) -> float:
+def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tuple[str, int, int]], params: SettleParams,
+                     watch: Callable[[mujoco.MjData], None] | None = None) -> float:
     """Step until every free body is at rest (after ``min_time``): slower than ``rest_speed``, or
     within ``rest_speed * rest_window`` of its pose over the last ``rest_window`` (a body rocking in
-    place never passes the speed test); return the simulated time."""
+    place never passes the speed test); return the simulated time. ``watch`` sees the state after
+    every step."""
     start = data.time
     check_every = max(1, int(0.05 / model.opt.timestep))
     poses: deque[np.ndarray] = deque(maxlen=max(1, int(round(params.rest_window / (check_every * model.opt.timestep)))) + 1)
@@ -74,6 +76,8 @@ def simulate_to_rest(model: mujoco.MjModel, data: mujoco.MjData, free: list[tupl
     while data.time - start < params.max_time:
         mujoco.mj_step(model, data)
         step += 1
+        if watch is not None:
+            watch(data)
         if step % check_every:
             continue
         check_state(model, data, "settling")
@@ -138,7 +142,8 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     if settled is None:
         with awake(model):
             settled = _settle(model, params)
-            settled["capacity"] = measure_capacity(model, (settled["key_qpos"], settled["key_ctrl"]), params.capacity)
+            settled["capacity"] = measure_capacity(model, (settled["key_qpos"], settled["key_ctrl"]), params.capacity,
+                                                   landing=settled.pop("landing"))
         cache.put(cache_id, settled)
     spec.nconmax, spec.njmax = settled["capacity"]["nconmax"], settled["capacity"]["njmax"]  # read by MJX / MuJoCo Warp users
     qpos, key_qpos, key_ctrl, report = settled["qpos"], settled["key_qpos"], settled["key_ctrl"], dict(settled["report"])
@@ -175,7 +180,10 @@ def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
         mujoco.mj_resetDataKeyframe(model, data, home)
     mujoco.mj_forward(model, data)
     free = free_joint_bodies(model)
-    settle_time = simulate_to_rest(model, data, free, params)
+    landing = LandingPeaks(model, params.capacity) if home is not None else None  # capacity's landing run: these very states
+    if landing is not None:
+        landing.observe(data)
+    settle_time = simulate_to_rest(model, data, free, params, watch=None if landing is None else landing.observe)
     qpos = data.qpos.copy()
     for _, q, _ in free:  # canonical quaternion sign for byte-stable output
         quat = qpos[q + 3 : q + 7]
@@ -185,7 +193,8 @@ def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
     # scene.xml is compiled again by the writer).
     report = rest_check(model, params.check_time, state=(key_qpos, key_ctrl))
     report["settle_time"] = settle_time
-    return {"qpos": qpos, "key_qpos": key_qpos, "key_ctrl": key_ctrl, "report": report}
+    return {"qpos": qpos, "key_qpos": key_qpos, "key_ctrl": key_ctrl, "report": report,
+            "landing": None if landing is None else landing.peaks()}
 
 
 def _home_key(model: mujoco.MjModel) -> int | None:

@@ -48,12 +48,34 @@ def _key(model: mujoco.MjModel, name: str) -> int | None:
     return None
 
 
+class LandingPeaks:
+    """Peak contacts and constraint rows of the landing run observed in a simulation that takes
+    the same states (settling: keyframe ``home`` after ``mj_forward``, then the same steps, awake),
+    so :func:`measure_capacity` need not simulate them again."""
+
+    def __init__(self, model: mujoco.MjModel, params: CapacityParams = CapacityParams()) -> None:
+        self.steps = int(round(params.landing_time / model.opt.timestep))
+        self.seen = 0  # states observed: the one after mj_forward, then one per step
+        self.ncon = self.nefc = 0
+
+    def observe(self, data: mujoco.MjData) -> None:
+        """Take the current state into the peaks while it is one of the landing run's."""
+        if self.seen <= self.steps:
+            self.ncon, self.nefc = max(self.ncon, int(data.ncon)), max(self.nefc, int(data.nefc))
+            self.seen += 1
+
+    def peaks(self) -> tuple[int, int] | None:
+        """(ncon, nefc) over the whole landing run, or None when fewer states were observed."""
+        return (self.ncon, self.nefc) if self.seen > self.steps else None
+
+
 def measure_capacity(model: mujoco.MjModel, initial: tuple[np.ndarray, np.ndarray] | None = None,
-                     params: CapacityParams = CapacityParams()) -> dict[str, Any]:
+                     params: CapacityParams = CapacityParams(), landing: tuple[int, int] | None = None) -> dict[str, Any]:
     """Peak contacts and constraint rows while objects land and while the robot moves, and the
     capacity to record: ``{"nconmax", "njmax", "measured": {...}, "headroom", ...}``. ``initial`` is
-    the settled state (qpos, ctrl); None reads keyframe ``initial``. Run it with sleeping off
-    (:func:`realsim.composition.settle.awake`): batched engines compute every contact."""
+    the settled state (qpos, ctrl); None reads keyframe ``initial``. ``landing`` is the landing
+    run's peaks when already observed (:class:`LandingPeaks`); None simulates it. Run it with
+    sleeping off (:func:`realsim.composition.settle.awake`): batched engines compute every contact."""
     peaks = {"ncon": 0, "nefc": 0}
 
     def run(key: str, seconds: float, scripted: bool) -> None:
@@ -68,15 +90,19 @@ def measure_capacity(model: mujoco.MjModel, initial: tuple[np.ndarray, np.ndarra
         mujoco.mj_forward(model, data)
         peaks["ncon"], peaks["nefc"] = max(peaks["ncon"], int(data.ncon)), max(peaks["nefc"], int(data.nefc))
         home = data.ctrl.copy()
+        script = _script(model, home)
         for step in range(int(round(seconds / model.opt.timestep))):
             if scripted:
                 data.ctrl[:] = home
-                _scripted(model, data, home, step * model.opt.timestep)
+                _scripted(data, script, step * model.opt.timestep)
             mujoco.mj_step(model, data)
             peaks["ncon"] = max(peaks["ncon"], int(data.ncon))
             peaks["nefc"] = max(peaks["nefc"], int(data.nefc))
 
-    run("home", params.landing_time, scripted=False)
+    if landing is None:
+        run("home", params.landing_time, scripted=False)
+    else:
+        peaks["ncon"], peaks["nefc"] = landing
     run("initial", params.motion_time, scripted=True)
     rows = _rows_per_contact(model)
     return {
@@ -88,16 +114,31 @@ def measure_capacity(model: mujoco.MjModel, initial: tuple[np.ndarray, np.ndarra
     }
 
 
-def _scripted(model: mujoco.MjModel, data: mujoco.MjData, home: np.ndarray, t: float) -> None:
-    """Controls of the scripted motion at time ``t``: joints 2 and 4 of the Panda swing the hand
-    down towards the table and back (a smooth bump over the first second) while the gripper
-    closes and reopens; every other actuator holds its keyframe control."""
-    bump = math.sin(math.pi * min(max(t, 0.0), 1.0)) ** 2
+Script = tuple[list[tuple[int, float, float, float, float]], tuple[int, float] | None]
+"""The scripted motion's actuators: (id, keyframe control, swing, lower, upper) of each swinging
+joint and (id, keyframe control) of the gripper."""
+
+
+def _script(model: mujoco.MjModel, home: np.ndarray) -> Script:
+    """The actuators :func:`_scripted` drives, looked up once: joints 2 and 4 of the Panda (their
+    swing in rad and control range) and the gripper."""
+    swings = []
     for j, delta in ((2, 0.7), (4, 0.6)):
         aid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, f"panda/actuator{j}")
         if aid >= 0:
             lo, hi = model.actuator_ctrlrange[aid] if model.actuator_ctrllimited[aid] else (-np.inf, np.inf)
-            data.ctrl[aid] = float(np.clip(home[aid] + delta * bump, lo, hi))
+            swings.append((aid, float(home[aid]), delta, float(lo), float(hi)))
     grip = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, "panda/actuator8")
-    if grip >= 0:
-        data.ctrl[grip] = float(home[grip]) * (1.0 - bump)
+    return swings, ((grip, float(home[grip])) if grip >= 0 else None)
+
+
+def _scripted(data: mujoco.MjData, script: Script, t: float) -> None:
+    """Controls of the scripted motion at time ``t``: joints 2 and 4 swing the hand down towards
+    the table and back (a smooth bump over the first second) while the gripper closes and
+    reopens; every other actuator holds its keyframe control."""
+    bump = math.sin(math.pi * min(max(t, 0.0), 1.0)) ** 2
+    swings, grip = script
+    for aid, home, delta, lo, hi in swings:
+        data.ctrl[aid] = float(np.clip(home + delta * bump, lo, hi))
+    if grip is not None:
+        data.ctrl[grip[0]] = grip[1] * (1.0 - bump)
