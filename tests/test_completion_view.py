@@ -32,3 +32,31 @@ def test_a_tilted_plane_is_recovered_at_silhouettes_borders_and_holes_and_the_re
     exact = _view(np.where(labels == 0, 2.0, plane), labels).denoised(5).depth  # a noiseless plane comes back as it was
     assert np.allclose(exact[labels > 0], plane[labels > 0], atol=1e-9)
     assert np.array_equal(_view(noisy, np.zeros_like(labels)).denoised(5).depth, noisy, equal_nan=True)
+
+
+def _denoised_reference(depth: np.ndarray, labels: np.ndarray, window: int = 5) -> np.ndarray:
+    """The plane fit written plainly (2-D gathers, one (window^2, n, 3) product summed over its first axis)."""
+    v, u = np.nonzero(labels > 0)
+    r = window // 2
+    padded, plabels = np.pad(depth, r, constant_values=np.nan), np.pad(labels, r)
+    offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
+    d = np.stack([padded[v + r + di, u + r + dj] for di, dj in offsets])
+    ok = np.stack([plabels[v + r + di, u + r + dj] == labels[v, u] for di, dj in offsets]) & np.isfinite(d)
+    basis = np.array([[1.0, dj, di] for di, dj in offsets])
+    wgt = ok.astype(float)
+    normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))
+    rhs = ((wgt * np.nan_to_num(d))[:, :, None] * basis[:, None, :]).sum(axis=0)
+    fit = (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
+    out = depth.copy()
+    out[v[fit], u[fit]] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
+    return out
+
+
+def test_the_fit_gives_the_plain_computation_bit_for_bit() -> None:
+    rng = np.random.default_rng(5)
+    labels = rng.integers(0, 4, (INTR.height, INTR.width)).astype(np.int32)
+    labels[30:90, 40:120] = 2  # a large object among speckled ones
+    depth = 0.9 + rng.normal(0.0, 0.01, labels.shape)
+    depth[rng.random(labels.shape) < 0.05] = np.nan
+    out = _view(depth, labels).denoised(5).depth
+    assert out.tobytes() == _denoised_reference(depth, labels).tobytes()

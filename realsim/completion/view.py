@@ -78,18 +78,23 @@ class DepthView:
             return self
         v, u = np.nonzero(self.labels > 0)  # only object pixels are fitted: their windows alone are gathered
         r = window // 2
-        depth, labels = np.pad(self.depth, r, constant_values=np.nan), np.pad(self.labels, r)
+        depth, labels = np.pad(self.depth, r, constant_values=np.nan).ravel(), np.pad(self.labels, r).ravel()
+        wide = self.depth.shape[1] + 2 * r
+        at = (v + r) * wide + (u + r)  # each pixel in the padded images, flat
         offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
-        d = np.stack([depth[v + r + di, u + r + dj] for di, dj in offsets])  # (window^2, n)
-        centre = self.labels[v, u]
-        ok = np.stack([labels[v + r + di, u + r + dj] == centre for di, dj in offsets]) & np.isfinite(d)
+        d = np.stack([depth[at + (di * wide + dj)] for di, dj in offsets])  # (window^2, n)
+        centre = labels[at]
+        ok = np.stack([labels[at + (di * wide + dj)] == centre for di, dj in offsets]) & np.isfinite(d)
         basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
         wgt = ok.astype(float)
         normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))  # small integers: exact in any order
-        rhs = ((wgt * np.nan_to_num(d))[:, :, None] * basis[:, None, :]).sum(axis=0)  # summed over the window in order
+        seen = wgt * np.nan_to_num(d)
+        rhs = seen[0] * basis[0][:, None]  # (3, n)
+        for k in range(1, len(offsets)):  # summed over the window in order
+            rhs += seen[k] * basis[k][:, None]
         fit = (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
         out = self.depth.copy()
-        out[v[fit], u[fit]] = np.linalg.solve(normal[fit], rhs[fit][..., None])[:, 0, 0]
+        out[v[fit], u[fit]] = np.linalg.solve(normal[fit], rhs[:, fit].T[..., None])[:, 0, 0]
         return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
 
     def unveiled(self, veil: np.ndarray, tolerance: float, window: int = 5) -> "DepthView":
