@@ -118,7 +118,9 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
     """Guess the input's up axis.
 
     Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
-    axis closest to the dominant plane's normal, signed so most points lie above that plane.
+    axis closest to the dominant plane's normal, signed so that most of what stands clear of
+    that plane (farther than three RANSAC thresholds) lies above it: a scanned slab's underside
+    is as large as its top, so the median point alone cannot tell them apart.
     """
     if fmt_hint in ("glb", "gltf"):
         return "+y"
@@ -131,9 +133,13 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
     if len(pts) > 50_000:
         pts = pts[rng.choice(len(pts), 50_000, replace=False)]
     extent = float(np.max(np.ptp(pts, axis=0)))
-    normal, offset, _ = ransac_plane(pts, max(extent * 0.01, 1e-6), 500, rng)  # the project's one (seeded) RANSAC
+    threshold = max(extent * 0.01, 1e-6)
+    normal, offset, _ = ransac_plane(pts, threshold, 500, rng)  # the project's one (seeded) RANSAC
     axis = int(np.argmax(np.abs(normal)))
     signed = normal.copy()
-    if np.median(pts @ normal + offset) < 0:
+    height = pts @ normal + offset
+    clear = height[np.abs(height) > 3 * threshold]
+    below = (clear < 0).sum() > (clear > 0).sum() if len(clear) >= max(50, 0.001 * len(height)) else np.median(height) < 0
+    if below:
         signed = -signed
     return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]

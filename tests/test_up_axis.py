@@ -1,0 +1,45 @@
+"""Up-axis detection of unorganized captures: the side things stand on is up, whichever axis
+the file used and even when the scanned floor is a closed slab (its underside as large as its top)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from realsim.perception.capture import load_capture, sample_mesh
+from realsim.perception.resolution import detect_up
+from realsim.synth import SceneSpec, make_scene, sample_cloud, write_mesh
+from realsim.synth.scene import ycb_root
+
+pytestmark = pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared/data/ycb_google16k")
+# world (Z up) -> file axes for each up axis a file may use
+ROTATIONS = {
+    "+z": np.eye(3), "-z": np.diag([1.0, -1.0, -1.0]),
+    "+y": np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]]), "-y": np.array([[1.0, 0, 0], [0, 0, -1], [0, 1, 0]]),
+    "+x": np.array([[0, 0, 1.0], [0, 1, 0], [-1, 0, 0]]), "-x": np.array([[0, 0, -1.0], [0, 1, 0], [1, 0, 0]]),
+}
+
+
+@pytest.fixture(scope="module")
+def floor_scene():
+    return make_scene(SceneSpec(layout="floor", objects=None, seed=80))
+
+
+@pytest.mark.parametrize("up", sorted(ROTATIONS))
+def test_up_of_a_closed_floor_slab_mesh_and_of_a_scan(floor_scene, up: str) -> None:
+    mesh_points, _, _ = sample_mesh(floor_scene.mesh, 60_000, 0, Path("room.ply"))
+    scan_points, _, _ = sample_cloud(floor_scene, 60_000)
+    for points in (mesh_points, scan_points):
+        assert detect_up(points @ ROTATIONS[up].T, False, "ply", 0) == up
+
+
+def test_floor_mesh_converts_right_side_up(floor_scene, tmp_path: Path) -> None:
+    write_mesh(floor_scene, tmp_path / "room.ply", units="m", up="+z")
+    scene = load_capture(tmp_path / "room.ply")
+    assert scene.capture.up == "+z" and scene.capture.up_detected
+    world_z = scene.points @ scene.capture.input_to_world[2, :3] + scene.capture.input_to_world[2, 3]
+    # the floor's top, not its underside, is at z = 0 once the planes stage levels it: here the
+    # transform only rotates, so the objects (up to 25 cm tall) lie above the slab
+    assert np.percentile(world_z, 99.9) > 0.1 and np.percentile(world_z, 0.1) > -0.06
