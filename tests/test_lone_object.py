@@ -61,3 +61,24 @@ def test_scene_sized_or_speck_sized_meshes_are_not_objects(tmp_path: Path) -> No
     assert not is_lone_object(tmp_path / "speck.obj")
     with pytest.raises(InputError, match="--units"):
         convert(tmp_path / "speck.obj", tmp_path / "out")
+
+
+def test_a_scene_mesh_is_read_once_for_the_object_check_and_the_sampling(tmp_path, monkeypatch) -> None:
+    """Telling a lone object from a scene and sampling the scene share one read of the file."""
+    import trimesh
+
+    from realsim.perception import formats
+    from realsim.perception.capture import load_capture
+
+    room = trimesh.creation.box((3.0, 3.0, 0.05))
+    room.apply_translation((0, 0, -0.025))
+    table = trimesh.creation.box((1.2, 0.8, 0.75))
+    table.apply_translation((0, 0, 0.375))
+    path = tmp_path / "room_cm.obj"
+    trimesh.util.concatenate([room, table]).apply_scale(100.0).export(path)  # centimetres: 3 mm as an object, so both checks run
+    reads = []
+    real_load = trimesh.load
+    monkeypatch.setattr(trimesh, "load", lambda *a, **k: reads.append(a[0]) or real_load(*a, **k))
+    scene = load_capture(path)
+    assert scene.capture.units == "cm" and len(reads) == 1
+    assert formats._read_mesh_cached.cache_info().currsize == 0  # released once the capture is loaded

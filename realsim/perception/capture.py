@@ -29,7 +29,14 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.perception.capture_config import CaptureConfig, read_capture_config
-from realsim.perception.formats import MESH_SUFFIXES, POINT_CLOUD_SUFFIXES, USD_SUFFIXES, is_point_cloud_ply
+from realsim.perception.formats import (
+    MESH_SUFFIXES,
+    POINT_CLOUD_SUFFIXES,
+    USD_SUFFIXES,
+    forget_mesh_files,
+    is_point_cloud_ply,
+    read_mesh_file,
+)
 from realsim.perception.lone_object import is_lone_object
 from realsim.perception.resolution import UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
 from realsim.perception.rgbd import is_rgbd_sequence
@@ -117,7 +124,7 @@ def _load_mesh_points(path: Path, count: int, seed: int) -> RawCloud:
 
     try:
         as_points = path.suffix.lower() == ".ply" and is_point_cloud_ply(path)
-        loaded = trimesh.load(path, process=False) if as_points else trimesh.load(path, force="mesh", process=False)
+        loaded = trimesh.load(path, process=False) if as_points else read_mesh_file(path)
     except InputError:
         raise
     except Exception as exc:  # trimesh raises many types for corrupt files
@@ -333,6 +340,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         grid_shape = cloud.grid_shape
         annotations = cloud.annotations
         camera_view = cloud.is_camera_view
+        forget_mesh_files()
     capture = CaptureInfo(
         source=path,
         kind=kind,

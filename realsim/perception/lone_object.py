@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.perception.formats import MESH_SUFFIXES, is_point_cloud_ply
+from realsim.perception.formats import MESH_SUFFIXES, is_point_cloud_ply, read_mesh_file
 from realsim.perception.resolution import PLAUSIBLE_EXTENT, UNIT_SCALE
 
 OBJECT_EXTENT = (0.01, 0.6)  # m: an object is this large
@@ -37,9 +37,7 @@ def is_lone_object(path: Path) -> bool:
 
 
 def _load(path: str) -> Any:
-    import trimesh
-
-    return trimesh.load(path, force="mesh", process=False)
+    return read_mesh_file(Path(path))
 
 
 @lru_cache(maxsize=16)
@@ -62,10 +60,11 @@ def _one_closed_body(path: str, mtime_ns: int) -> bool:
     import trimesh
 
     try:
-        mesh = _load(path)
-        if len(mesh.faces) == 0:
+        loaded = _load(path)
+        if len(loaded.faces) == 0:
             return False
-        mesh.merge_vertices(merge_tex=True, merge_norm=True)
+        mesh = trimesh.Trimesh(loaded.vertices, loaded.faces, process=False)  # the shared read stays as it was
+        mesh.merge_vertices()  # seams welded by position alone (a bare mesh has no uv or normals to keep apart)
         _, uses = np.unique(np.sort(mesh.edges, axis=1), axis=0, return_counts=True)
         parts = trimesh.graph.connected_component_labels(mesh.face_adjacency, node_count=len(mesh.faces))
         area = np.bincount(parts, weights=mesh.area_faces)
