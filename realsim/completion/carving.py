@@ -8,7 +8,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
-from realsim.completion.hull import solid_hull, trimesh_hull
+from realsim.completion.hull import solid_hull, trimesh_hull, volume
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
@@ -179,11 +179,11 @@ def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, 
     out, before, after = [], 0.0, 0.0
     for piece in pieces:
         carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own)
-        before += piece.volume
+        before += volume(piece)
         if fraction > 0.9:
             continue  # all but seen through
         out.append(carved)
-        after += carved.volume
+        after += volume(carved)
     if not out:
         return pieces, 0.0
     return out, max(0.0, 1.0 - after / before) if before > 0 else 0.0

@@ -19,7 +19,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.cutsearch import best_cut
-from realsim.completion.hull import extreme_points, trimesh_hull
+from realsim.completion.hull import extreme_points, trimesh_hull, volume
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -35,19 +35,26 @@ MIN_SPLIT = 0.04  # m: pieces shorter than this are cut, never split
 KEEP_MARGIN = 0.002  # m: seen points this far outside a piece still bind its cuts
 
 
+def _unit_rows(rows: np.ndarray) -> np.ndarray:
+    return rows / np.linalg.norm(rows, axis=1, keepdims=True)
+
+
+_AZIMUTH = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
+_FIXED = _unit_rows(np.vstack([np.column_stack([np.cos(_AZIMUTH), np.sin(_AZIMUTH), np.zeros_like(_AZIMUTH)]),  # horizontal
+                               np.column_stack([np.cos(_AZIMUTH[::2]) * 0.7, np.sin(_AZIMUTH[::2]) * 0.7, np.full(24, 0.714)])]))  # tilted up
+_TURN = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+_COS, _SIN = np.cos(_TURN)[:, None], np.sin(_TURN)[:, None]
+_IMAGE_NORMALS = np.column_stack([np.cos(_TURN), np.sin(_TURN)])  # lines through the image: cuts through the camera centre
+
+
 def _directions(ray: np.ndarray) -> np.ndarray:
     """Candidate cut normals (unit; the cut keeps ``n . x <= c``): horizontal, tilted up, across and
     along the mean line of sight ``ray``; none points far down (the base stays on its support)."""
-    az = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
-    flat = np.column_stack([np.cos(az), np.sin(az), np.zeros_like(az)])
-    up = np.column_stack([np.cos(az[::2]) * 0.7, np.sin(az[::2]) * 0.7, np.full(24, 0.714)])
     e1 = np.cross(ray, [0.0, 0.0, 1.0])
     e1 = e1 / np.linalg.norm(e1) if np.linalg.norm(e1) > 1e-6 else np.array([1.0, 0.0, 0.0])
     e2 = np.cross(ray, e1)
-    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
-    across = np.outer(np.cos(t), e1) + np.outer(np.sin(t), e2)  # planes containing the line of sight
-    normals = np.vstack([flat, up, across, -ray[None, :], [[0.0, 0.0, 1.0]]])
-    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    across = _COS * e1 + _SIN * e2  # planes containing the line of sight
+    normals = np.vstack([_FIXED, _unit_rows(np.vstack([across, -ray[None, :], [[0.0, 0.0, 1.0]]]))])
     return normals[normals[:, 2] > -0.5]
 
 
@@ -78,8 +85,7 @@ def _cut(view: DepthView, inside: np.ndarray, bad: np.ndarray, samples: int, kee
     directions (see :func:`_directions`), or one through the camera centre (a line in the image that
     trims the piece's silhouette) when that costs less; either leaves the ``keep`` points (what stands
     on the piece) kept. The image cut is found first: the plane search then skips what cannot match it."""
-    t = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
-    n2, c2, cost2 = best_cut(_image(view, inside), _image(view, bad), np.column_stack([np.cos(t), np.sin(t)]), samples,
+    n2, c2, cost2 = best_cut(_image(view, inside), _image(view, bad), _IMAGE_NORMALS, samples,
                              None if keep is None else _image(view, keep))
     ray = bad.mean(axis=0) - view.camera
     n, c, cost = best_cut(inside, bad, _directions(ray / np.linalg.norm(ray)), samples, keep, cost2 if np.isfinite(c2) else np.inf)
@@ -100,7 +106,7 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
     ``keep``: points no cut may take off (the base of what stands on the piece, see :func:`_cut`);
     ``seen``: what the camera saw of the object, of which a cut takes off at most ``tolerance`` (its
     noise): the wrong guess behind a seen face is cut, not the face (only points in this piece bind)."""
-    volume = piece.volume
+    whole = volume(piece)
     if seen is not None and len(seen):
         planes = np.einsum("fk,fk->f", piece.face_normals, piece.triangles[:, 0, :])
         seen = seen[np.all(seen @ piece.face_normals.T - planes[None, :] <= KEEP_MARGIN, axis=1)]  # within this piece
@@ -130,7 +136,7 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         if not np.isfinite(c):  # no cut is worth its loss
             return [] if bad.mean() > 0.5 else [piece]
         cut = clip_convex(piece, -n, -c)
-        if cut is None or cut.volume < 0.05 * volume:
+        if cut is None or volume(cut) < 0.05 * whole:
             return []
         piece = cut
     return [piece]
@@ -143,8 +149,8 @@ def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float
     camera saw of it (see :func:`clip_to_free_space`)."""
     splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
     out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits, keep=keep, seen=seen)]
-    before = sum(p.volume for p in pieces)
-    return out, (1.0 - sum(p.volume for p in out) / before) if before > 0 else 0.0
+    before = sum(volume(p) for p in pieces)
+    return out, (1.0 - sum(volume(p) for p in out) / before) if before > 0 else 0.0
 
 
 def free_space_tolerance(view: DepthView, params: CompletionParams, points: np.ndarray | None = None,

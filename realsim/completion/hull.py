@@ -10,6 +10,15 @@ from trimesh.constants import tol
 from trimesh.convex import QHULL_DEFAULT
 
 
+def volume(mesh: trimesh.Trimesh) -> float:
+    """``mesh.volume`` as trimesh computes it (the surface integral of its mass properties: the same
+    operations in the same order) without the centre of mass and inertia computed alongside."""
+    tri = np.asarray(mesh.vertices).view(np.ndarray)[mesh.faces]
+    edge = tri[:, 1:, :] - tri[:, :2, :]
+    cross_x = edge[:, 0, 1] * edge[:, 1, 2] - edge[:, 0, 2] * edge[:, 1, 1]
+    return float(np.sum(cross_x * (tri[:, 0, 0] + tri[:, 1, 0] + tri[:, 2, 0])) / 6.0)
+
+
 def fast_hull(points: np.ndarray) -> trimesh.Trimesh:
     """The convex hull of ``points`` (raises scipy's QhullError when it is flat or too small)."""
     hull = ConvexHull(np.asarray(points, float))
@@ -31,7 +40,7 @@ def solid_hull(points: np.ndarray) -> trimesh.Trimesh | None:
         hull = fast_hull(points)
     except QhullError:
         return None
-    return hull if hull.volume > 1e-9 else None
+    return hull if volume(hull) > 1e-9 else None
 
 
 def extreme_points(points: np.ndarray, margin: float = 1e-9) -> np.ndarray:

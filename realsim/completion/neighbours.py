@@ -6,7 +6,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import QhullError
 
-from realsim.completion.hull import trimesh_hull
+from realsim.completion.hull import trimesh_hull, volume
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
@@ -25,11 +25,21 @@ def foreign_fraction(mesh: trimesh.Trimesh, others: np.ndarray) -> float:
     return float(inside.sum()) / len(others)
 
 
+def unique_edges(faces: np.ndarray) -> np.ndarray:
+    """``Trimesh.edges_unique`` of a mesh with these ``faces`` (the same rows in the same order): every
+    edge once as (lower, higher) vertex index, ordered by the higher index, then the lower (the order
+    of trimesh's packed row hashes), without its hashing and caching."""
+    edges = np.sort(np.asarray(faces, dtype=np.int64)[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+    size = int(edges.max(initial=0)) + 1
+    key = np.unique(edges[:, 1] * size + edges[:, 0])
+    return np.column_stack([key % size, key // size])
+
+
 def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> trimesh.Trimesh | None:
     """The part of a convex mesh where ``normal . x >= offset`` (a convex hull), or None if too little is left."""
     v = np.asarray(mesh.vertices)
     side = v @ normal - offset
-    edges = mesh.edges_unique
+    edges = unique_edges(mesh.faces)
     sa, sb = side[edges[:, 0]], side[edges[:, 1]]
     cross = (sa * sb) < 0
     t = sa[cross] / (sa[cross] - sb[cross])
@@ -40,7 +50,7 @@ def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> tri
         out = trimesh_hull(points)
     except QhullError:
         return None
-    return out if out.volume > 1e-7 else None
+    return out if volume(out) > 1e-7 else None
 
 
 def separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
+from realsim.completion.hull import volume
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -51,14 +52,14 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     low = (moved.vertices @ normals.T).min(axis=0)
     kept = np.mean(seen @ normals.T >= offsets - SEEN_TOLERANCE, axis=0) >= KEEP_SEEN
     best: tuple[float, np.ndarray, float] | None = None
-    volume = moved.volume
+    whole = volume(moved)
     for j in np.argsort(offsets - low):  # shallow cuts first
         if not kept[j]:
             continue
         part = clip_convex(moved, normals[j], float(offsets[j]))
         if part is None:
             continue
-        removed = volume - part.volume
+        removed = whole - volume(part)
         if best is None or removed < best[0]:
             best = (removed, normals[j], float(offsets[j]))
     return best
