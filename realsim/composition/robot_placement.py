@@ -118,6 +118,12 @@ def bare_panda() -> mujoco.MjModel:
     return spec.compile()
 
 
+@functools.lru_cache(maxsize=2)
+def _scoring_ik(params: IKParams) -> ArmIK:
+    """The pose search's IK on :func:`bare_panda`, built once and stood at each candidate pose."""
+    return ArmIK(np.zeros(3), np.array([1.0, 0.0, 0.0, 0.0]), params, scene=bare_panda())
+
+
 def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK,
                oriented: list[tuple[np.ndarray, np.ndarray]] = ()) -> tuple[float, int, float]:
     """(score, reachable count, mean manipulability) of a base pose over top-down hover
@@ -125,7 +131,8 @@ def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np
 
     Targets beyond the arm's reach sphere around the shoulder count as unreachable without IK.
     """
-    ik = ArmIK(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])), ik_params, scene=bare_panda())
+    ik = _scoring_ik(ik_params)
+    ik.place(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])))
     shoulder = np.array([pose[0], pose[1], base_z + SHOULDER_HEIGHT])
     reach, manip = 0, []
     for t, quat in [(t, TOP_DOWN) for t in targets] + list(oriented):

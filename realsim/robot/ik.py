@@ -87,8 +87,7 @@ class ArmIK:
         self.params = params
         self.model = _origin_model() if scene is None else robot_kinematics(scene, PREFIX + "link0")
         self.data = mujoco.MjData(self.model)
-        self.base_pos = np.asarray(base_pos, float)
-        self.base_rot = quat_to_mat(base_quat)
+        self.place(base_pos, base_quat)
         self.site_id = self.model.site(PREFIX + "tcp").id
         self.qadr = np.array([self.model.jnt_qposadr[self.model.joint(PREFIX + j).id] for j in ARM_JOINTS])
         self.dadr = np.array([self.model.jnt_dofadr[self.model.joint(PREFIX + j).id] for j in ARM_JOINTS])
@@ -105,6 +104,12 @@ class ArmIK:
         ]
 
     # --- frames -------------------------------------------------------------------------------
+    def place(self, base_pos: np.ndarray, base_quat: np.ndarray) -> None:
+        """Stand the base at ``base_pos`` / ``base_quat`` (world): the same solver for another base
+        pose (every solve starts from its own initial configuration, nothing carries over)."""
+        self.base_pos = np.asarray(base_pos, float)
+        self.base_rot = quat_to_mat(base_quat)
+
     def to_base(self, pos: np.ndarray, rot: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
         p = self.base_rot.T @ (np.asarray(pos, float) - self.base_pos)
         return p, None if rot is None else self.base_rot.T @ rot
