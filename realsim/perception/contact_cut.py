@@ -36,6 +36,8 @@ class CutParams:
     max_cut_weight: float = 0.35  # the links a kept cut crosses weigh at most this on average
     neck_ratio: float = 1.0  # or they are this few per square root of the smaller side's points (a narrow
     # contact: its length is small beside that side's size, whatever the density)
+    max_mixed_weight: float = 0.5  # or they are mostly folded (the mean weight at most this, as a border more
+    # concave than convex keeps regions apart) and their weight, the unfolded rest, is that narrow
     max_ncut: float = 0.2  # and its normalized-cut value is at most this
     min_size: float = 0.02  # m: each side's largest extent is at least this
     min_points: int = 5  # and it holds at least this many points
@@ -129,7 +131,9 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
     ncut = cut / np.maximum(vol, 1e-12) + cut / np.maximum(total - vol, 1e-12)
     sizes = np.arange(1, n)
     folded = cut <= params.max_cut_weight * np.maximum(links, 1)
-    necked = links <= params.neck_ratio * np.sqrt(np.minimum(sizes, n - sizes))
+    width = params.neck_ratio * np.sqrt(np.minimum(sizes, n - sizes))
+    # a narrow neck, or a contact folded along most of it whose unfolded (convex) rest is that narrow
+    necked = (links <= width) | ((cut <= params.max_mixed_weight * links) & (cut <= width))
     ok = (sizes >= params.min_points) & (n - sizes >= params.min_points) & (folded | necked) & (ncut <= params.max_ncut)
     for t in np.flatnonzero(ok)[np.argsort(ncut[ok], kind="stable")][:8]:
         side = rank <= t

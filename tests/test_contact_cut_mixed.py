@@ -1,0 +1,50 @@
+"""The contact cut's gate on a contact folded along most of its length but wider than a neck:
+kept when its unfolded (convex) rest is as narrow as a neck, refused when it is mostly convex."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.perception.contact_cut import CutParams, _best_cut
+
+SIDE = 30  # nodes per row and column of each patch
+
+
+def _two_patches(weight: float) -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Two flat 30 x 30 patches (1 cm apart, on the support) side by side, linked inside with
+    weight 1 and across their common edge by two links per row of the given weight: 59
+    crossing links, wider than a neck (sqrt(900) = 30)."""
+    idx = np.arange(2 * SIDE * SIDE).reshape(SIDE, 2 * SIDE)  # row j, column i
+    a = [idx[:, :-1].ravel(), idx[:-1, :].ravel()]
+    b = [idx[:, 1:].ravel(), idx[1:, :].ravel()]
+    inside = np.ones(sum(len(x) for x in a))
+    inside[np.flatnonzero(np.isin(a[0], idx[:, SIDE - 1]))] = weight  # the straight crossing link of each row
+    diag_a, diag_b = idx[:-1, SIDE - 1], idx[1:, SIDE]  # and one diagonal per row
+    a.append(diag_a)
+    b.append(diag_b)
+    w = np.r_[inside, np.full(len(diag_a), weight)]
+    j, i = np.divmod(np.arange(2 * SIDE * SIDE), 2 * SIDE)
+    points = np.stack([i * 0.01, j * 0.01, np.full(len(i), 0.005)], axis=1)
+    height = points[:, 2].copy()
+    return len(points), np.concatenate(a), np.concatenate(b), w, points, height
+
+
+def _cut(weight: float, params: CutParams) -> np.ndarray | None:
+    n, a, b, w, points, height = _two_patches(weight)
+    return _best_cut(n, a, b, w, points, height, params)
+
+
+def test_a_mostly_folded_contact_whose_convex_rest_is_narrow_is_cut() -> None:
+    side = _cut(0.45, CutParams())  # mean weight 0.45 (above the fold gate), weight 26.6 <= 30
+    assert side is not None
+    left = np.arange(len(side)) % (2 * SIDE) < SIDE
+    assert (side == left).all() or (side == ~left).all()
+
+
+def test_without_the_mixed_gate_the_same_contact_is_not_cut() -> None:
+    assert _cut(0.45, CutParams(max_mixed_weight=0.0)) is None
+
+
+def test_a_mostly_convex_contact_is_not_cut() -> None:
+    assert _cut(0.505, CutParams()) is None  # mean 0.505: more convex than folded, though its weight 29.8 <= 30
+    assert _cut(0.505, CutParams(max_mixed_weight=0.51)) is not None  # the mean gate alone refused it
