@@ -48,14 +48,22 @@ def occupancy(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
 
 def volume_iou(parts: list[trimesh.Trimesh], b: trimesh.Trimesh) -> float:
     """IoU of the union of convex ``parts`` with the solid bounded by ``b``."""
+    return volume_overlap(parts, b)[0]
+
+
+def volume_overlap(parts: list[trimesh.Trimesh], b: trimesh.Trimesh) -> tuple[float, float, float]:
+    """IoU of the union of convex ``parts`` with the solid bounded by ``b``, the share of the parts'
+    volume inside ``b`` (too much: below 1) and the share of ``b`` the parts cover (too little)."""
     lo = np.minimum(np.min([p.bounds[0] for p in parts], axis=0), b.bounds[0])
     hi = np.maximum(np.max([p.bounds[1] for p in parts], axis=0), b.bounds[1])
     axes = [np.arange(x + GRID / 2, y, GRID) for x, y in zip(lo, hi)]
     grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
     ia = np.any([occupancy(p, grid) for p in parts], axis=0)
     ib = occupancy(b, grid)
-    union = np.count_nonzero(ia | ib)
-    return float(np.count_nonzero(ia & ib)) / union if union else 0.0
+    union, both = np.count_nonzero(ia | ib), float(np.count_nonzero(ia & ib))
+    if not union:
+        return 0.0, 0.0, 0.0
+    return both / union, both / max(1, np.count_nonzero(ia)), both / max(1, np.count_nonzero(ib))
 
 
 def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray,
@@ -167,12 +175,23 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         solid = trimesh.util.concatenate(hulls)
         truth = obj.mesh()
         truth.apply_transform(synth_to_realsim)  # the conversion levels and centres the scene its own way
-        rows.append({**row, "iou": volume_iou(hulls, truth), "f5": surface_f_score(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
+        iou, inside, covered = volume_overlap(hulls, truth)
+        rule = next((n for n in rec["notes"] if n.startswith("completed from")), "").split(" as a ")[-1]
+        rows.append({**row, "iou": iou, "inside": inside, "covered": covered, "rule": _rule(rule), "f5": surface_f_score(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
                      "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"]),
                      "ball": ball, "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
                      "graspable": declared_graspable(hulls, float(solid.bounds[0][2]), np.linalg.inv(world_to_optical)[:2, 3])})
     return rows
+
+
+RULES = (("open container", "hollow"), ("solid of revolution", "revolved"), ("cylinder", "cylinder"), ("silhouette", "mirror"),
+         ("crest", "crest"), ("tiles", "tiles"), ("slabs", "slabs"), ("bands", "bands"))
+
+
+def _rule(kind: str) -> str:
+    """A short name of the completion rules named in a completion note (the shape's ``kind``)."""
+    return "+".join(short for word, short in RULES if word in kind) or "hull"
 
 
 def main() -> None:
@@ -188,10 +207,10 @@ def main() -> None:
         root = args.keep or Path(tmp)
         runs = [(seed, layout, objects) for seed in args.seeds for layout, objects in (all_objects(seed) if args.all else [("table", None)])]
         rows = [r for seed, layout, objects in runs for r in measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides)]
-    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'F@5mm':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s} {'ball':>4s}  name given")
+    print(f"{'seed':>4s} {'object':28s} {'pixels':>7s} {'found':>5s} {'IoU':>5s} {'in':>4s} {'cover':>5s} {'F@5mm':>5s} {'size err mm':>11s} {'free px':>7s} {'pieces':>6s} {'fits':>4s} {'grasp':>5s} {'ball':>4s}  name given")
     for r in rows:
-        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r.get('f5', 0.0):5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s} {'-' if r.get('ball') is None else 'in' if r['ball'] else 'out':>4s}  "
-              f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''}")
+        print(f"{r['seed']:4d} {r['name']:28s} {r['pixels']:7d} {r['clusters']:5d} {r['iou']:5.2f} {r.get('inside', 0.0):4.2f} {r.get('covered', 0.0):5.2f} {r.get('f5', 0.0):5.2f} {r['size_err_mm']:11.1f} {r.get('free_px', 0):7d} {r.get('pieces', 0):6d} {'yes' if r.get('fits') else 'no':>4s} {'yes' if r.get('graspable') else 'no':>5s} {'-' if r.get('ball') is None else 'in' if r['ball'] else 'out':>4s}  "
+              f"{r.get('label', '-')}{' (hollow)' if r.get('hollow') else ''} [{r.get('rule', '-')}]")
     ious = [r["iou"] for r in rows]
     errs = [r["size_err_mm"] for r in rows if np.isfinite(r["size_err_mm"])]
     solid = [r["iou"] for r in rows if r["name"] not in CONTAINERS]
