@@ -21,6 +21,14 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     or the top is seen whole and as wide as the body (a box's top face shows its depth; a bottle's
     cap does not). ``outline``: the points to find the contour in (default ``points``; the pixels
     seen edge-on, left out of ``points`` as unreliable surface, are where the contour is).
+
+    A body symmetric about that plane has its two grazing lines abreast. When they are staggered by
+    more than ``params.mirror_stagger`` of its width (in the height bands whose both ends the camera
+    saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the front
+    is also turned half a turn about the vertical axis halfway between them (exact for a centrally
+    symmetric section at any turn: a box or an oval bottle set diagonally), unless more than
+    ``params.mirror_max_seen_through`` of that image lies where the camera saw through (the body is
+    not symmetric so). The hull of both images is the least body either symmetry allows.
     """
     d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
     if np.linalg.norm(d) < 1e-6:
@@ -40,21 +48,33 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     side = (rim[:, 2] < top_z - 0.25 * height) & (rim[:, 2] > base_z + 0.05 * height)
     ws, ss = rim @ lateral, rim @ d
     edges = np.linspace(base_z + 0.05 * height, top_z - 0.25 * height, params.mirror_bands + 1)
-    contour = []
+    contour, middles = [], []
     for lo, hi in zip(edges[:-1], edges[1:]):
         band = side & (rim[:, 2] >= lo) & (rim[:, 2] < hi)
         if band.sum() < 10:
             continue
         wb, sb = ws[band], ss[band]
-        wb = wb - 0.5 * (np.percentile(wb, 1) + np.percentile(wb, 99))  # from the band's middle
-        contour.extend([_extreme_depth(-wb, sb), _extreme_depth(wb, sb)])
+        left, right = float(np.percentile(wb, 1)), float(np.percentile(wb, 99))
+        wb = wb - 0.5 * (left + right)  # from the band's middle
+        near_left, near_right = _extreme_depth(-wb, sb), _extreme_depth(wb, sb)
+        contour.extend([near_left, near_right])
+        if params.mirror_point and _both_sides_clear(rim[band], wb, lateral, view, params.mirror_probe):
+            middles.append((0.5 * (near_left + near_right), 0.5 * (left + right), abs(near_left - near_right)))
     if len(contour) < 4:
         return None
     plane = float(np.median(contour))
     front = points[s < plane]
     if len(front) < 10:
         return None
-    return np.vstack([points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]])
+    images = [points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]]
+    stagger = float(np.median([m[2] for m in middles])) if len(middles) >= 2 else 0.0
+    if stagger > params.mirror_stagger * width:  # grazing lines not abreast: turned, so also half a turn about their middle
+        axis_s, axis_w = np.median(np.asarray(middles)[:, :2], axis=0)
+        axis = np.append(axis_s * d[:2] + axis_w * lateral[:2], 0.0)
+        turned = 2.0 * axis - points[s < axis_s] * [1, 1, -1]
+        if np.mean(view.seen_through(turned, params.carve_tolerance)) <= params.mirror_max_seen_through:
+            images.append(turned)  # else the camera saw through where the turned body would be: it is not symmetric so
+    return np.vstack(images)
 
 
 def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
@@ -99,6 +119,18 @@ def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z
     mirrored = np.vstack(images) if images else np.zeros((0, 3))
     mirrored = mirrored[~view.seen_through(mirrored, params.carve_tolerance, footprint=False)]  # not where the camera saw through
     return np.vstack([points, mirrored]) if len(mirrored) else None
+
+
+def _both_sides_clear(band: np.ndarray, w: np.ndarray, lateral: np.ndarray, view: DepthView, probe: float) -> bool:
+    """Whether the camera saw past both lateral ends of a height band of side points (``w``: their
+    lateral offsets from the band's middle): a point ``probe`` beyond each end, at the depth of the
+    outermost points, lies in the space it saw through. An end that is not (a nearer neighbour hides
+    it) may not be the body's widest."""
+    ends = []
+    for sign in (-1.0, 1.0):
+        outer = band[sign * w >= np.percentile(sign * w, 97)]
+        ends.append(outer.mean(axis=0) + sign * probe * lateral)
+    return bool(np.all(view.seen_through(np.asarray(ends), 0.0, footprint=False)))
 
 
 def _extreme_depth(w: np.ndarray, s: np.ndarray, share: float = 0.25) -> float:

@@ -41,6 +41,10 @@ class CompletionParams:
     bands_max_fill: float = 0.98  # bands are used when they fill less than this share of the single hull
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
+    mirror_point: bool = True  # the hidden half is also the seen half turned half a turn about the vertical axis between the grazing lines (centrally symmetric sections at any turn), not only reflected about the plane across the line of sight
+    mirror_stagger: float = 0.1  # grazing lines farther apart along the line of sight than this share of the width: a turned body
+    mirror_max_seen_through: float = 0.01  # a half-turned image with more of its points in seen free space is refuted
+    mirror_probe: float = 0.01  # m: a side's grazing line counts when the camera saw past it this far out
     mirror_min_height_share: float = 0.5  # bodies lower than this share of their width are not mirrored
     mirror_crest: bool = True  # a low body lying flat is mirrored behind its crest (its highest line across the line of sight)
     mirror_crest_slice: float = 0.005  # m: the least width of the slices across the line of sight in which the crest is found

@@ -1,0 +1,88 @@
+"""A body turned diagonally to the camera: its hidden half is its seen half turned about the axis
+halfway between its grazing lines, not only reflected across the line of sight."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+from scipy.spatial import Delaunay
+
+from realsim.completion import CompletionParams, DepthView, mirror_hidden_half
+from realsim.perception.intrinsics import Intrinsics
+
+INTR = Intrinsics(fx=200.0, fy=200.0, cx=79.5, cy=59.5, width=160, height=120)
+
+
+def _oval(turn: float, n: int = 180) -> tuple[np.ndarray, np.ndarray]:
+    """An oval section (12 x 5 cm) turned by ``turn`` about z, centred 1 m in front of the camera: its
+    outline and outward normals (xy)."""
+    t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    c, s = np.cos(turn), np.sin(turn)
+    rot = np.array([[c, -s], [s, c]])
+    outline = np.column_stack([0.06 * np.cos(t), 0.025 * np.sin(t)]) @ rot.T
+    normal = np.column_stack([np.cos(t) / 0.06, np.sin(t) / 0.025]) @ rot.T
+    return outline + [1.0, 0.0], normal
+
+
+def _view(background: float, turn: float) -> DepthView:
+    """A camera at (0, 0, 0.1) looking along +x: it sees the oval's front (its nearest depth) in the
+    columns it covers and ``background`` beside it."""
+    world_to_optical = np.eye(4)
+    world_to_optical[:3, :3] = [[0, -1, 0], [0, 0, -1], [1, 0, 0]]  # optical +z = world +x
+    world_to_optical[:3, 3] = world_to_optical[:3, :3] @ -np.array([0.0, 0.0, 0.1])
+    outline, _ = _oval(turn)
+    y = -(np.arange(INTR.width) - INTR.cx) / INTR.fx * outline[:, 0].min()  # world y of each column at the front
+    front = (y >= outline[:, 1].min()) & (y <= outline[:, 1].max())
+    depth = np.full((INTR.height, INTR.width), background)
+    depth[:, front] = outline[:, 0].min()
+    return DepthView(INTR, world_to_optical, 1.0, depth)
+
+
+def _seen_side(turn: float) -> np.ndarray:
+    """The surface points of the upright oval prism (20 cm tall) whose normal faces the camera."""
+    outline, normal = _oval(turn)
+    facing = np.einsum("ij,ij->i", normal, -outline) > 0  # the camera at the xy origin
+    z = np.linspace(0.0, 0.2, 30)
+    return np.column_stack([np.repeat(outline[facing], len(z), axis=0), np.tile(z, facing.sum())])
+
+
+def _covered(points: np.ndarray, turn: float) -> float:
+    """The share of the oval's outline (at mid height) inside the hull of ``points`` (a little slack)."""
+    outline, _ = _oval(turn)
+    centre = np.array([1.0, 0.0])
+    hull = Delaunay(points[:, :2])
+    return float(np.mean(hull.find_simplex(centre + 0.97 * (outline - centre)) >= 0))
+
+
+def test_a_diagonal_oval_is_completed_by_the_half_turn() -> None:
+    turn = np.radians(40.0)
+    seen = _seen_side(turn)
+    params = CompletionParams()
+    both = mirror_hidden_half(seen, _view(5.0, turn), 0.0, 0.2, params)
+    reflected = mirror_hidden_half(seen, _view(5.0, turn), 0.0, 0.2, dataclasses.replace(params, mirror_point=False))
+    assert both is not None and reflected is not None
+    assert _covered(both, turn) > 0.98
+    assert _covered(reflected, turn) < 0.9  # the reflection alone misses the far end of a diagonal oval
+
+
+def test_no_half_turn_the_camera_saw_through() -> None:
+    turn = np.radians(40.0)
+    seen = _seen_side(turn)
+    view = _view(5.0, turn)
+    view.depth[view.depth < 5.0] = 1.2  # the camera saw a wall 1.2 m away through where the turned back would be
+    params = CompletionParams()
+    refuted = mirror_hidden_half(seen, view, 0.0, 0.2, params)
+    reflected = mirror_hidden_half(seen, view, 0.0, 0.2, dataclasses.replace(params, mirror_point=False))
+    believed = mirror_hidden_half(seen, view, 0.0, 0.2, dataclasses.replace(params, mirror_max_seen_through=1.0))
+    assert refuted is not None and reflected is not None and believed is not None
+    assert np.array_equal(refuted, reflected) and len(believed) > len(reflected)
+
+
+def test_no_half_turn_where_a_nearer_body_hides_the_sides() -> None:
+    turn = np.radians(40.0)
+    seen = _seen_side(turn)
+    params = CompletionParams()
+    hidden = mirror_hidden_half(seen, _view(0.5, turn), 0.0, 0.2, params)  # something nearer beside both ends
+    reflected = mirror_hidden_half(seen, _view(0.5, turn), 0.0, 0.2, dataclasses.replace(params, mirror_point=False))
+    assert hidden is not None and reflected is not None and np.array_equal(hidden, reflected)
