@@ -26,11 +26,16 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     xy = np.stack(np.meshgrid(gx, gy, indexing="ij"), axis=-1).reshape(-1, 2)
     n = mesh.face_normals
     d = np.einsum("fk,fk->f", n, mesh.triangles[:, 0, :])
-    rhs = d[None, :] - xy @ n[:, :2].T  # (M, F): n_z z <= rhs
+    products = (xy @ n[:, :2].T).T  # (F, M), one face's products per row
+
+    def rhs(faces: np.ndarray) -> np.ndarray:  # (faces, M): n_z z <= rhs, made in place in its own copy
+        out = products[faces]
+        return np.subtract(d[faces][:, None], out, out=out)
+
     up, down, side = n[:, 2] > 1e-6, n[:, 2] < -1e-6, np.abs(n[:, 2]) <= 1e-6
-    z_top = np.min(rhs[:, up] / n[up, 2], axis=1) if up.any() else np.full(len(xy), hi[2])
-    z_bot = np.max(rhs[:, down] / n[down, 2], axis=1) if down.any() else np.full(len(xy), lo[2])
-    ok = (z_top > z_bot) & (np.all(rhs[:, side] >= -1e-9, axis=1) if side.any() else True)
+    z_top = np.min(np.divide(top := rhs(up), n[up, 2][:, None], out=top), axis=0) if up.any() else np.full(len(xy), hi[2])
+    z_bot = np.max(np.divide(bot := rhs(down), n[down, 2][:, None], out=bot), axis=0) if down.any() else np.full(len(xy), lo[2])
+    ok = (z_top > z_bot) & (np.all(rhs(side) >= -1e-9, axis=0) if side.any() else True)
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
