@@ -1,7 +1,7 @@
 """The cheapest plane cut of a piece: the least share of its inside lost plus a price per bad sample left.
 
-Every direction's projections of the inside points are one contiguous row (``pt``, (N, n)), so each
-count below a cut reads one row. A ``bound`` (the cost of a cut found otherwise, which this one has
+Every direction's projections of the inside points are one row of ``pt`` (N, n), a transposed view
+(no copy): the directions still open are gathered into contiguous rows before their rows are sorted. A ``bound`` (the cost of a cut found otherwise, which this one has
 to beat or tie) skips the cuts and directions that cannot reach it; the cuts that can are counted
 exactly as without it (the same comparisons, shifted or not), so the search returns what the full
 search returns whenever that costs no more than the bound.
@@ -62,7 +62,7 @@ def best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: 
     beat the best cut that leaves none are weighed (leaving each costs MISS_WEIGHT / samples); with
     ``bound``, only cuts that may cost no more than it (the answer is exact when one does)."""
     pb = bad @ normals.T
-    pt = np.ascontiguousarray((inside @ normals.T).T)  # (N, n): one direction's projections contiguous
+    pt = (inside @ normals.T).T  # (N, n), a view: the open rows are gathered contiguous before sorting
     count = max(pt.shape[1], 1)
     low_pi, high_pi = pt.min(axis=1), pt.max(axis=1)
     width = 1e-6 * np.maximum(high_pi - low_pi, 1e-9)
