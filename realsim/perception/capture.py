@@ -38,7 +38,7 @@ from realsim.perception.formats import (
     read_mesh_file,
 )
 from realsim.perception.lone_object import is_lone_object
-from realsim.perception.resolution import UNIT_SCALE, check_scale, detect_up, plausible_units, point_spacing
+from realsim.perception.resolution import UNIT_SCALE, check_scale, detect_up, distant_origin, plausible_units, point_spacing
 from realsim.perception.rgbd import is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 from realsim.viewer.splat import is_splat_ply, read_splat_ply
@@ -107,14 +107,10 @@ def _read_point_file(path: Path) -> RawCloud:
         is_camera = data.grid_shape is not None and data.grid_shape[0] > 1
         return RawCloud(data.points, data.colors, data.grid_shape, is_camera, "pcd", data.labels)
     if suffix in (".xyz", ".pts"):
-        try:
-            arr = np.loadtxt(path, ndmin=2)
-        except ValueError as exc:
-            raise InputError(f"{path}: not a whitespace-separated point list ({exc})") from None
-        if arr.shape[1] < 3:
-            raise InputError(f"{path}: each line needs x y z")
-        colors = arr[:, 3:6] / (255.0 if arr[:, 3:6].max(initial=0) > 1 else 1.0) if arr.shape[1] >= 6 else None
-        return RawCloud(arr[:, :3].astype(np.float64), colors, None, False, suffix[1:])
+        from realsim.perception.text_points import read_text_points
+
+        pts, colors = read_text_points(path)
+        return RawCloud(pts, colors, None, False, suffix[1:])
     raise InputError(f"{path}: unsupported point cloud format {suffix!r}")
 
 
@@ -168,15 +164,17 @@ def sample_mesh(mesh: Any, count: int, seed: int, path: Path) -> tuple[np.ndarra
     return np.asarray(pts, dtype=np.float64), cols, np.asarray(mesh.face_normals)[face_idx]
 
 
-def resample_mesh(cloud: RawCloud, to_world: np.ndarray, params: LoadParams, seed: int, path: Path) -> RawCloud:
+def resample_mesh(cloud: RawCloud, to_world: np.ndarray, params: LoadParams, seed: int, path: Path,
+                  origin: np.ndarray | None = None) -> RawCloud:
     """Sample an environment mesh by area at ``mesh_sample_spacing`` (in metres, through
-    ``to_world``), dropping points on downward-facing faces: the underside of a table top or a
+    ``to_world``; shifted by ``-origin`` when given), dropping points on downward-facing faces: the underside of a table top or a
     floor slab is never a support, and object bottoms are hidden on their support."""
     area_m2 = float(cloud.mesh.area) * float(abs(np.linalg.det(to_world))) ** (2.0 / 3.0)
     count = int(np.clip(area_m2 / params.mesh_sample_spacing**2, params.mesh_pilot_points, params.mesh_max_points))
     pts, cols, normals = sample_mesh(cloud.mesh, count, seed, path)
     up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # world +Z in input coordinates
     keep = normals @ up > -0.3
+    pts = pts if origin is None else pts - origin
     return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt)
 
 
@@ -321,6 +319,9 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     transform = np.eye(4)
     if env is not None:
         cloud = read_environment(env, params, seed)
+        origin = distant_origin(cloud.points)  # input coordinates moved by -origin (None: kept)
+        if origin is not None:
+            cloud.points = cloud.points - origin
         kind = "pointcloud" if cloud.fmt in ("pcd", "xyz", "pts", "rgbd") or (cloud.fmt == "ply" and cloud.mesh is None) else "mesh"
         units, up = units or cloud.units_hint, up or cloud.up_hint
         if up is None:
@@ -332,7 +333,9 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
             check_scale(cloud.points * UNIT_SCALE[units], units)
         transform[:3, :3] = up_rotation(up) * UNIT_SCALE[units]
         if cloud.mesh is not None:
-            cloud = resample_mesh(cloud, transform, params, seed, env)
+            cloud = resample_mesh(cloud, transform, params, seed, env, origin)
+        if origin is not None:
+            transform[:3, 3] = -transform[:3, :3] @ origin
         scene_points = cloud.points @ transform[:3, :3].T
         spacing = point_spacing(scene_points, seed)
         splat = cloud.splat

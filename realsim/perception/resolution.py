@@ -29,6 +29,23 @@ def _subsample(points: np.ndarray, count: int, seed: int = 0) -> np.ndarray:
     return pts
 
 
+FAR_ORIGIN = 100.0  # a capture this many of its own extents from its origin is moved near it
+
+
+def distant_origin(points: np.ndarray) -> np.ndarray | None:
+    """The rounded median point of a capture far from its coordinate origin (an ARKit session
+    that walked, a georeferenced scan km away), else None. Moving such a capture to near zero
+    before any float32 step keeps its millimetres: float32 spacing at 500 km is 6 cm."""
+    pts = _subsample(points, 50_000)
+    if len(pts) == 0:
+        return None
+    centre = np.median(pts, axis=0)
+    extent = float(np.max(np.percentile(pts, 99, axis=0) - np.percentile(pts, 1, axis=0)))
+    if np.linalg.norm(centre) <= FAR_ORIGIN * max(extent, 1e-9):
+        return None
+    return np.round(centre)
+
+
 def point_spacing(points: np.ndarray, seed: int = 0) -> float:
     """Typical distance between neighbouring surface points (same units as ``points``).
 
