@@ -63,3 +63,64 @@ def test_far_origin_is_moved_near_and_recorded(tmp_path: Path, offset: tuple[flo
 def test_near_capture_keeps_its_origin() -> None:
     assert distant_origin(_room()) is None
     assert distant_origin(_room() + [0.0, 0.0, 3.0]) is None
+
+
+def _sequence(folder: Path, frames: int = 3) -> None:
+    """A minimal Stray Scanner folder: a slanted wall about 1.1 m ahead, seen from near the origin."""
+    from PIL import Image
+
+    (folder / "rgb").mkdir(parents=True)
+    (folder / "depth").mkdir()
+    for i in range(frames):
+        Image.fromarray(np.full((48, 64, 3), 120, np.uint8)).save(folder / "rgb" / f"{i:06d}.png")
+        Image.fromarray((1000 + np.arange(64) * 3 + np.arange(48)[:, None]).astype(np.uint16)).save(folder / "depth" / f"{i:06d}.png")
+    (folder / "camera_matrix.csv").write_text("50,0,32\n0,50,24\n0,0,1\n")
+    rows = ["timestamp, frame, x, y, z, qx, qy, qz, qw"] + [f"{i / 30}, {i}, {0.01 * i}, 0, 0, 0, 0, 0, 1" for i in range(frames)]
+    (folder / "odometry.csv").write_text("\n".join(rows) + "\n")
+
+
+@pytest.mark.parametrize("damage", ["truncated depth", "truncated colour", "no depth", "missing frames", "missing poses"])
+def test_broken_sequence_is_an_input_error(tmp_path: Path, damage: str) -> None:
+    from PIL import Image
+
+    from realsim.perception.rgbd import fuse_sequence
+
+    folder = tmp_path / "seq"
+    _sequence(folder, 4)
+    first = {"truncated depth": folder / "depth" / "000000.png", "truncated colour": folder / "rgb" / "000000.png"}
+    if damage in first:
+        raw = first[damage].read_bytes()
+        first[damage].write_bytes(raw[: len(raw) // 3])
+    elif damage == "no depth":
+        for p in (folder / "depth").glob("*.png"):
+            Image.fromarray(np.zeros((48, 64), np.uint16)).save(p)
+    elif damage == "missing frames":
+        for p in sorted((folder / "depth").glob("*.png"))[1:]:
+            p.unlink()
+    else:
+        lines = (folder / "odometry.csv").read_text().splitlines()
+        (folder / "odometry.csv").write_text("\n".join(lines[:2]) + "\n")
+    with pytest.raises(InputError):
+        fuse_sequence(folder)
+
+
+def test_sequence_with_a_blank_frame_fuses(tmp_path: Path) -> None:
+    """A frame without depth (lens covered, out of range) is skipped; it used to crash the fusion."""
+    from PIL import Image
+
+    from realsim.perception.rgbd import fuse_sequence
+
+    _sequence(tmp_path / "seq", 4)
+    Image.fromarray(np.zeros((48, 64), np.uint16)).save(tmp_path / "seq" / "depth" / "000002.png")
+    pts, _ = fuse_sequence(tmp_path / "seq")
+    assert len(pts) > 100 and -1.3 < np.median(pts[:, 2]) < -1.0  # ARKit: the camera looks along -z
+
+
+@pytest.mark.parametrize("suffix", [".usda", ".usdz"])
+def test_truncated_usd_is_an_input_error(tmp_path: Path, suffix: str) -> None:
+    from realsim.perception.usd_mesh import read_usd_mesh
+
+    path = tmp_path / f"room{suffix}"
+    path.write_bytes(b"#usda 1.0\n(\n    metersPerUnit = 0.01\n" if suffix == ".usda" else b"PK\x03\x04\x14\x00\x00")
+    with pytest.raises(InputError, match="cannot open the USD stage"):
+        read_usd_mesh(path)

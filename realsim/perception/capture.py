@@ -201,7 +201,10 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         pts, cols = fuse_sequence(path)
         cloud = RawCloud(pts, cols, None, False, "rgbd", units_hint="m", up_hint="+y")
     elif suffix == ".ply" and is_splat_ply(path):
-        splats = read_splat_ply(path)
+        try:
+            splats = read_splat_ply(path)
+        except (ValueError, KeyError) as exc:  # a truncated or malformed body
+            raise InputError(f"{path}: corrupt Gaussian splat PLY ({str(exc)[:80]}); re-export it") from None
         solid = splats.opacities[:, 0] >= 0.2  # faint splats are floaters, not surfaces
         cloud = RawCloud(splats.centers[solid].astype(np.float64), splats.rgbs[solid].astype(np.float64), None, False, "ply", splat=path)
     elif suffix == ".ply" and is_point_cloud_ply(path):

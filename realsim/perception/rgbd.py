@@ -90,11 +90,14 @@ def _color_frames(folder: Path) -> dict[int, np.ndarray] | dict[int, Path]:
 def _image(p: Path | np.ndarray) -> np.ndarray:
     if isinstance(p, np.ndarray):
         return p
-    if p.suffix == ".npy":
-        return np.load(p)
-    from PIL import Image
+    try:
+        if p.suffix == ".npy":
+            return np.load(p)
+        from PIL import Image
 
-    return np.asarray(Image.open(p))
+        return np.asarray(Image.open(p))
+    except (OSError, ValueError, SyntaxError) as exc:  # PIL and numpy report corrupt files so
+        raise InputError(f"{p}: cannot read the frame ({str(exc)[:80] or type(exc).__name__}); re-export or remove it") from None
 
 
 def _frame_rgbd(folder: Path, k: np.ndarray, depth: Path, color: Path | np.ndarray, conf: Path | None,
@@ -141,6 +144,9 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
     frames = sorted(set(depths) & set(colors) & set(poses))
     if not frames:
         raise InputError(f"{folder}: no frame has colour, depth and a pose (frames are matched by number)")
+    if len(frames) < 0.5 * max(len(depths), len(colors)):
+        raise InputError(f"{folder}: only {len(frames)} frame(s) have colour, depth and a pose ({len(colors)} colour, "
+                         f"{len(depths)} depth, {len(poses)} poses): the export is incomplete; re-export the sequence")
     v = params.voxel
     steps = np.arange(-params.trunc, params.trunc + 1e-9, v)
     keys, sdfs, weights, cols = [], [], [], []
@@ -163,6 +169,9 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         sdfs.append(np.repeat(-steps, len(d)).astype(np.float32))
         weights.append(np.tile((1.0 / d**2).astype(np.float32), len(steps)))
         cols.append(np.tile(rgb[vv, uu], (len(steps), 1)))
+    if not any(len(c) for c in keys):
+        raise InputError(f"{folder}: no frame holds depth within {params.max_depth} m (check depth units: uint16 millimetres)")
+    keys = [c for c in keys if len(c)]
     lo = np.min([c.min(axis=0) for c in keys], axis=0)
     span = np.max([c.max(axis=0) for c in keys], axis=0) - lo + 3
     flat = np.concatenate([((c[:, 0] - lo[0] + 1) * span[1] + (c[:, 1] - lo[1] + 1)) * span[2] + (c[:, 2] - lo[2] + 1) for c in keys])

@@ -21,7 +21,8 @@ def read_usd_mesh(path: Path):  # noqa: ANN201 - (trimesh.Trimesh, units or None
     try:
         stage = Usd.Stage.Open(str(path))
     except Exception as exc:  # pxr raises Tf errors of its own type
-        raise InputError(f"{path}: cannot open the USD stage ({str(exc).splitlines()[0] if str(exc) else exc})") from None
+        del exc  # pxr's message names its own source lines, not the user's problem
+        raise InputError(f"{path}: cannot open the USD stage (a corrupt or truncated file); re-export it") from None
     if stage is None:
         raise InputError(f"{path}: cannot open the USD stage")
     mpu = float(UsdGeom.GetStageMetersPerUnit(stage))
