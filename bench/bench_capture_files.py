@@ -31,7 +31,8 @@ from bench_captures import Row, evaluate, print_rows  # noqa: E402
 
 from realsim.errors import InputError  # noqa: E402
 from realsim.synth import SceneSpec, SynthScene, make_scene, sample_cloud, write_rgbd_sequence, write_splat  # noqa: E402
-from realsim.synth.exports import apply, capture_transform, without_floor, write_cloud, write_mesh_file  # noqa: E402
+from realsim.synth.exports import capture_transform, without_floor, write_cloud, write_mesh_file  # noqa: E402
+from realsim.synth.forms import apply  # noqa: E402
 from realsim.synth.sequence_forms import restyle_sequence  # noqa: E402
 
 LAYOUTS = ("table", "counter", "floor")

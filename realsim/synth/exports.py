@@ -42,11 +42,6 @@ def capture_transform(units: str = "m", up: str = "+z", yaw_deg: float = 0.0, ti
     return t
 
 
-def apply(t: np.ndarray, pts: np.ndarray) -> np.ndarray:
-    """Points through a 4x4 transform."""
-    return pts @ t[:3, :3].T + t[:3, 3]
-
-
 def without_floor(scene: SynthScene, margin: float = 0.05) -> SynthScene:
     """The scene as a tabletop scan: only what lies above the lowest non-floor support top less
     ``margin`` (no floor in view, so its support height is unknown to a converter)."""

@@ -32,7 +32,8 @@ def world_to_capture(units: str = "m", up: str = "+z", offset: np.ndarray | None
     return t
 
 
-def _apply(t: np.ndarray, pts: np.ndarray) -> np.ndarray:
+def apply(t: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """Points through a 4x4 transform."""
     return pts @ t[:3, :3].T + t[:3, 3]
 
 
@@ -148,7 +149,7 @@ def write_point_cloud(scene: SynthScene, path: Path, count: int = 200_000, seed:
 
     pts, cols, ids = sample_cloud(scene, count, seed, noise)
     t = world_to_capture(units, up)
-    cap = _apply(t, pts)
+    cap = apply(t, pts)
     if path.suffix.lower() == ".xyz":
         np.savetxt(path, np.hstack([cap, cols]), fmt=["%.6f"] * 3 + ["%d"] * 3)
     else:

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.synth.forms import _apply, sample_surface, world_to_capture
+from realsim.synth.forms import apply, sample_surface, world_to_capture
 from realsim.synth.scene import SynthScene
 
 SH_C0 = 0.28209479177387814  # zeroth spherical-harmonic band: rgb = 0.5 + SH_C0 * f_dc
@@ -51,7 +51,7 @@ def write_splat(scene: SynthScene, path: Path, count: int = 200_000, seed: int =
     rgb = scene.mesh.visual.vertex_colors[scene.mesh.faces[pick, 0], :3] / 255.0
 
     data = np.zeros(count + n_float, dtype=[(k, "<f4") for k in FIELDS])
-    centres = _apply(t_scale, np.vstack([pts, air]))
+    centres = apply(t_scale, np.vstack([pts, air]))
     data["x"], data["y"], data["z"] = centres.T
     colours = np.vstack([rgb, rng.random((n_float, 3))])
     for i in range(3):
