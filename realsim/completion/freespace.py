@@ -19,11 +19,12 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.cutsearch import best_cut
-from realsim.completion.hull import extreme_points, trimesh_hull, volume
+from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, trimesh_hull, volume
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.completion.view import DepthView
+from realsim.forkmap import fork_map
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import SceneObject, SupportPlane
 
@@ -147,10 +148,31 @@ def clip_pieces(pieces: list[trimesh.Trimesh], view: DepthView, tolerance: float
     """Every piece clipped to the free space (pieces left empty dropped), and the share of volume
     removed; ``keep``: points no cut may take off (something stands on it there); ``seen``: what the
     camera saw of it (see :func:`clip_to_free_space`)."""
-    splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
-    out = [c for i, p in enumerate(pieces) for c in clip_to_free_space(p, view, tolerance, seed=i, splits=splits, keep=keep, seen=seen)]
-    before = sum(volume(p) for p in pieces)
-    return out, (1.0 - sum(volume(p) for p in out) / before) if before > 0 else 0.0
+    return clip_batches([(pieces, keep, seen)], view, tolerance)[0]
+
+
+Batch = tuple[list[trimesh.Trimesh], "np.ndarray | None", "np.ndarray | None"]
+
+
+def clip_batches(batches: list[Batch], view: DepthView, tolerance: float) -> list[tuple[list[trimesh.Trimesh], float]]:
+    """:func:`clip_pieces` of every ``(pieces, keep, seen)``: the pieces of all of them clipped one by
+    one in this process and a forked helper (:func:`realsim.forkmap.fork_map`), the same results."""
+    jobs = [(b, i) for b, (pieces, _, _) in enumerate(batches) for i in range(len(pieces))]
+
+    def clip(job: int) -> list[MeshArrays] | None:
+        b, i = jobs[job]
+        pieces, keep, seen = batches[b]
+        splits = 2 if len(pieces) <= 2 else 0  # a shape already in many pieces is cut, not split further
+        out = clip_to_free_space(pieces[i], view, tolerance, seed=i, splits=splits, keep=keep, seen=seen)
+        return None if len(out) == 1 and out[0] is pieces[i] else [mesh_arrays(c) for c in out]  # None: unchanged
+
+    done = fork_map(clip, len(jobs))
+    results = []
+    for b, (pieces, _, _) in enumerate(batches):
+        out = [c for (j, i), r in zip(jobs, done) if j == b for c in ([pieces[i]] if r is None else [from_arrays(a) for a in r])]
+        before = sum(volume(p) for p in pieces)
+        results.append((out, (1.0 - sum(volume(p) for p in out) / before) if before > 0 else 0.0))
+    return results
 
 
 def free_space_tolerance(view: DepthView, params: CompletionParams, points: np.ndarray | None = None,
@@ -190,6 +212,7 @@ def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, toleranc
     camera saw of each object, of which no cut of a single hull takes off more than the tolerance (a
     wrong guess behind it is cut, not the face in front: test55's tilted box kept its seen corners)."""
     supporters, seen = supporters or {}, seen or {}
+    batches: list[tuple[SceneObject, np.ndarray, Batch]] = []
     for obj in objects:
         if not obj.collision:
             continue
@@ -198,7 +221,9 @@ def keep_out_of_free_space(objects: list[SceneObject], view: DepthView, toleranc
         for p in world:
             p.apply_translation(base)
         one = len(world) == 1  # pieces of a body that is not convex may each have to lose seen points (a tile across a handle's opening)
-        clipped, share = clip_pieces(world, view, tolerance, keep=supporters.get(obj.id), seen=seen.get(obj.id) if one else None)
+        batches.append((obj, base, (world, supporters.get(obj.id), seen.get(obj.id) if one else None)))
+    clips = clip_batches([batch for _, _, batch in batches], view, tolerance)
+    for (obj, base, (world, _, _)), (clipped, share) in zip(batches, clips):
         if not clipped or (share <= 0.0 and len(clipped) == len(world)):
             continue
         if obj.id in supporters and not _holds(clipped, supporters[obj.id][:, :2]):

@@ -97,3 +97,18 @@ def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
 def _by_trimesh(points: np.ndarray) -> trimesh.Trimesh:
     hull: trimesh.Trimesh = trimesh.convex.convex_hull(points)
     return hull
+
+
+MeshArrays = tuple[np.ndarray, np.ndarray, np.ndarray]
+
+
+def mesh_arrays(mesh: trimesh.Trimesh) -> MeshArrays:
+    """What :func:`from_arrays` rebuilds ``mesh`` from (vertices, faces, face normals): to send a mesh
+    between processes without trimesh's cache."""
+    return np.asarray(mesh.vertices).view(np.ndarray), np.asarray(mesh.faces).view(np.ndarray), np.asarray(mesh.face_normals).view(np.ndarray)
+
+
+def from_arrays(arrays: MeshArrays) -> trimesh.Trimesh:
+    """The mesh of :func:`mesh_arrays`: the same vertices, faces and face normals, nothing processed."""
+    vertices, faces, normals = arrays
+    return trimesh.Trimesh(vertices=vertices, faces=faces, face_normals=normals, process=False, validate=False)

@@ -1,0 +1,87 @@
+"""fork_map: the plain loop's results, shared with a forked helper, whatever the helper does."""
+
+from __future__ import annotations
+
+import os
+import time
+
+import numpy as np
+import pytest
+import trimesh
+
+from realsim.completion.hull import from_arrays, mesh_arrays, trimesh_hull
+from realsim.forkmap import can_fork, fork_map
+
+pytestmark = pytest.mark.skipif(not can_fork(), reason="fork_map forks on Linux with more than one worker")
+
+
+def test_results_in_order_and_both_processes_work() -> None:
+    parent = os.getpid()
+
+    def work(i: int) -> tuple[int, int]:
+        time.sleep(0.02)
+        return i * i, os.getpid()
+
+    out = fork_map(work, 40)
+    assert [r for r, _ in out] == [i * i for i in range(40)]
+    pids = {pid for _, pid in out}
+    assert parent in pids and len(pids) == 2
+
+
+def test_numpy_results_are_bit_identical() -> None:
+    rng = np.random.default_rng(3)
+    data = [rng.normal(size=(500, 3)) for _ in range(12)]
+    out = fork_map(lambda i: np.linalg.svd(data[i] @ data[i].T / 7.0)[1], len(data))
+    for i, s in enumerate(out):
+        assert np.array_equal(s, np.linalg.svd(data[i] @ data[i].T / 7.0)[1])
+
+
+def test_what_the_helper_fails_on_is_computed_here() -> None:
+    parent = os.getpid()
+
+    def work(i: int) -> int:
+        if os.getpid() != parent:
+            raise RuntimeError("helper only")
+        time.sleep(0.01)
+        return i + 1
+
+    assert fork_map(work, 10) == list(range(1, 11))
+
+
+def test_a_silent_helper_is_given_up() -> None:
+    parent = os.getpid()
+
+    def work(i: int) -> int:
+        if os.getpid() != parent:
+            time.sleep(30)
+        return -i
+
+    started = time.perf_counter()
+    assert fork_map(work, 4, timeout=0.5) == [0, -1, -2, -3]
+    assert time.perf_counter() - started < 10
+
+
+def test_an_error_here_is_raised() -> None:
+    def work(i: int) -> int:
+        if i == 3:
+            raise ValueError("item 3")
+        return i
+
+    with pytest.raises(ValueError, match="item 3"):
+        fork_map(work, 6)
+
+
+def test_one_worker_is_the_plain_loop(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("REALSIM_WORKERS", "1")
+    assert fork_map(lambda i: os.getpid(), 5) == [os.getpid()] * 5
+
+
+def test_meshes_travel_exactly() -> None:
+    rng = np.random.default_rng(0)
+    for _ in range(20):
+        mesh = trimesh_hull(rng.normal(size=(60, 3)))
+        back = from_arrays(mesh_arrays(mesh))
+        assert np.array_equal(back.vertices, mesh.vertices) and np.array_equal(back.faces, mesh.faces)
+        assert np.array_equal(back.face_normals, mesh.face_normals) and back.volume == mesh.volume
+    box = trimesh.creation.box((0.1, 0.2, 0.3))
+    assert np.array_equal(from_arrays(mesh_arrays(box)).face_normals, box.face_normals)
