@@ -7,7 +7,7 @@ while the other has a long one. Only results are pickled back. The helper must r
 scipy work: nothing that uses OpenMP, which may hang after a fork. Whatever the helper does not
 deliver (it failed, died or went silent past ``timeout``) is computed here, so the results never
 depend on it: an exception is raised here, with its own traceback. Elsewhere than Linux, with
-``$REALSIM_WORKERS=1``, inside a helper, or for fewer than two items, it is the plain loop.
+``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, or for fewer than two items, it is the plain loop.
 """
 
 from __future__ import annotations
@@ -29,8 +29,9 @@ def _workers() -> int:
 
 
 def can_fork() -> bool:
-    """Whether :func:`fork_map` forks: Linux, more than one worker allowed, not inside a helper."""
-    return sys.platform.startswith("linux") and _workers() > 1 and not _in_helper
+    """Whether :func:`fork_map` forks: Linux, more than one worker allowed, not inside a helper nor in a
+    worker of a process pool (the pool already shares out the cores)."""
+    return sys.platform.startswith("linux") and _workers() > 1 and not _in_helper and multiprocessing.parent_process() is None
 
 
 def _claim(counter: Any, n: int) -> int | None:

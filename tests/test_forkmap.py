@@ -85,3 +85,14 @@ def test_meshes_travel_exactly() -> None:
         assert np.array_equal(back.face_normals, mesh.face_normals) and back.volume == mesh.volume
     box = trimesh.creation.box((0.1, 0.2, 0.3))
     assert np.array_equal(from_arrays(mesh_arrays(box)).face_normals, box.face_normals)
+
+
+def _in_pool_worker(_: int) -> bool:
+    return can_fork()
+
+
+def test_a_pool_worker_does_not_fork() -> None:
+    import multiprocessing
+
+    with multiprocessing.get_context("fork").Pool(1) as pool:
+        assert pool.map(_in_pool_worker, [0]) == [False]
