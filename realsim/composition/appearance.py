@@ -135,10 +135,11 @@ def subdivided(mesh: trimesh.Trimesh, edge: float) -> trimesh.Trimesh:
     return trimesh.Trimesh(verts, faces, process=False)
 
 
-def texture_object(obj: SceneObject, image: CaptureImage, params: AppearanceParams) -> bool:
-    """Give a scanned object's visual mesh UVs into its own crop of the photo (``obj.texture_png``)."""
+def textured_visual(obj: SceneObject, image: CaptureImage, params: AppearanceParams) -> tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None:
+    """A scanned object's visual mesh with UVs into its own crop of the photo, as arrays (vertices, faces,
+    UVs; see :func:`textured_mesh`) and that crop's PNG; None: nothing to texture."""
     if obj.visual is None or obj.source_file is not None:
-        return False
+        return None
     mesh = subdivided(obj.visual, params.object_edge)
     rot, pos = _object_to_world(obj)
     mask = image.labels == obj.id
@@ -150,12 +151,16 @@ def texture_object(obj: SceneObject, image: CaptureImage, params: AppearancePara
     pix = image.pixels(np.asarray(mesh.vertices) @ rot.T + pos)
     result = projected_texture(image, mask, pix, params.margin_px)
     if result is None:
-        return False
+        return None
     png, uv = result
+    return np.asarray(mesh.vertices).view(np.ndarray), np.asarray(mesh.faces).view(np.ndarray), uv, png
+
+
+def textured_mesh(vertices: np.ndarray, faces: np.ndarray, uv: np.ndarray) -> trimesh.Trimesh:
+    """A visual mesh with texture coordinates (nothing processed)."""
+    mesh = trimesh.Trimesh(vertices, faces, process=False)
     mesh.visual = trimesh.visual.TextureVisuals(uv=uv)
-    obj.visual = mesh
-    obj.texture_png = png
-    return True
+    return mesh
 
 
 def support_mask(image: CaptureImage, plane: SupportPlane, tolerance: float) -> np.ndarray:

@@ -25,11 +25,13 @@ from realsim.composition.appearance import (
     projected_texture,
     support_mask,
     support_top,
-    texture_object,
+    textured_mesh,
+    textured_visual,
     top_view_texture,
 )
 from realsim.composition.arena import ArenaParams, add_arena
 from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
+from realsim.forkmap import fork_map
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
@@ -129,6 +131,22 @@ def add_visual_mesh(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: 
                   density=0.0, rgba=rgba or [1.0, 1.0, 1.0, 1.0], material=material)
 
 
+def collision_file(hull: trimesh.Trimesh) -> bytes:
+    """The STL file of a collision hull: at most 64 vertices (scan pieces can have more)."""
+    return mesh_bytes(capped(hull), "stl")
+
+
+def _prepared(objects: list[SceneObject], image: CaptureImage | None,
+              params: ComposeParams) -> list[tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]]:
+    """Per object, the mesh work of composing it, shared with a forked helper (:func:`realsim.forkmap.fork_map`):
+    its textured visual (:func:`textured_visual`; None without a photo) and its collision files."""
+    def work(k: int) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]:
+        obj = objects[k]
+        return textured_visual(obj, image, params.appearance) if image is not None else None, [
+            b"" if h.metadata.get("mujoco_primitive") is not None else collision_file(h) for h in obj.collision]
+    return fork_map(work, len(objects))
+
+
 def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass, centre of mass and inertia (about the com, object frame) of an object."""
     if obj.mass is not None and obj.com is not None and obj.inertia is not None:
@@ -151,13 +169,15 @@ PRIMITIVES = {"box": mujoco.mjtGeom.mjGEOM_BOX, "cylinder": mujoco.mjtGeom.mjGEO
 
 
 def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, assets: dict[str, bytes],
-               parent: mujoco.MjsBody | None = None, joint: dict | None = None) -> mujoco.MjsBody:
+               parent: mujoco.MjsBody | None = None, joint: dict | None = None,
+               collision_stl: list[bytes] | None = None) -> mujoco.MjsBody:
     """Add one free body: convex collision meshes (group 3), a visual mesh (group 2), inertia.
 
     With ``parent`` and ``joint`` (``{"type": "slide"|"hinge", "axis", "range", "pos", "damping"}``,
     optionally ``"handle"``, in the object frame) the body is instead a child of ``parent`` on that
     joint (a drawer in its cabinet), with a site ``<name>_handle`` where a hand pulls it; its world
-    pose is still ``obj.position``/``obj.quat``.
+    pose is still ``obj.position``/``obj.quat``. ``collision_stl``: the collision meshes' files when
+    already made (see :func:`_prepared`).
     """
     if parent is None or joint is None:
         body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
@@ -184,7 +204,7 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
             shape = dict(type=PRIMITIVES[primitive["type"]], size=list(primitive["size"]), pos=list(primitive["pos"]), quat=list(primitive["quat"]))
         else:
             file = f"{obj.name}_collision_{i}.stl"
-            assets[file] = mesh_bytes(capped(hull), "stl")  # at most 64 vertices per hull (scan pieces can have more)
+            assets[file] = collision_stl[i] if collision_stl is not None else collision_file(hull)
             spec.add_mesh(name=f"{obj.name}_collision_{i}", file=file)
             shape = dict(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"{obj.name}_collision_{i}")
         body.add_geom(
@@ -328,11 +348,13 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     spec = new_spec(params)
     assets: dict[str, bytes] = {}
     image = capture_image(scene) if params.appearance.enabled else None
+    prepared = _prepared(scene.objects, image, params)
     slabs: dict[int, list[float]] = {}
     lows: dict[int, float] = {}
     if image is not None:
-        for obj in scene.objects:
-            texture_object(obj, image, params.appearance)
+        for obj, (texture, _) in zip(scene.objects, prepared):
+            if texture is not None:
+                obj.visual, obj.texture_png = textured_mesh(*texture[:3]), texture[3]
         slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
     elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
         if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
@@ -347,10 +369,10 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     articulations = scene.articulations  # child name -> joint (realsim.text)
     object_sites = scene.object_sites  # body name -> {site: [x, y, z]} (realsim.text)
     bodies: dict[str, mujoco.MjsBody] = {}
-    for obj in scene.objects:
+    for obj, (_, collision_stl) in zip(scene.objects, prepared):
         joint = articulations.get(obj.name)
         parent = bodies.get(joint["parent"]) if joint else None
-        bodies[obj.name] = add_object(spec, obj, params, assets, parent, joint)
+        bodies[obj.name] = add_object(spec, obj, params, assets, parent, joint, collision_stl)
         for site, pos in (object_sites.get(obj.name) or {}).items():  # grasp features of procedural objects: <body>_handle, _rim, _lid, ...
             bodies[obj.name].add_site(name=f"{obj.name}_{site}", pos=list(pos), size=[0.005, 0.005, 0.005], group=4)
     add_capture_camera(spec, scene)
