@@ -17,15 +17,23 @@ def yaw_quat(yaw: float) -> np.ndarray:
 def inside_convex_polygon(xy: np.ndarray, polygon: np.ndarray, margin: float = 0.0) -> np.ndarray:
     """Mask of points inside a counter-clockwise convex polygon grown by ``margin``.
 
-    One edge at a time, so memory stays O(N) for full-resolution clouds.
+    One edge at a time into two reused buffers, so memory stays O(N) for full-resolution clouds.
     """
     edges = np.roll(polygon, -1, axis=0) - polygon
     lengths = np.linalg.norm(edges, axis=1)
     keep = lengths > 1e-12
+    x, y = np.ascontiguousarray(xy[:, 0]), np.ascontiguousarray(xy[:, 1])
     inside = np.ones(len(xy), dtype=bool)
+    cross, other, ok = np.empty(len(xy)), np.empty(len(xy)), np.empty(len(xy), dtype=bool)
     for e, start, length in zip(edges[keep], polygon[keep], lengths[keep]):
-        cross = e[0] * (xy[:, 1] - start[1]) - e[1] * (xy[:, 0] - start[0])
-        inside &= cross / length >= -margin
+        # e0 (y - s1) - e1 (x - s0), over the edge's length: the signed distance
+        np.subtract(y, start[1], out=cross)
+        cross *= e[0]
+        np.subtract(x, start[0], out=other)
+        other *= e[1]
+        cross -= other
+        cross /= length
+        inside &= np.greater_equal(cross, -margin, out=ok)
     return inside
 
 

@@ -15,7 +15,8 @@ from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from realsim.errors import InputError
-from realsim.geometry import fit_plane, inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
+from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
+from realsim.perception.plane_refit import refine_plane
 from realsim.perception.resolution import working_resolution
 from realsim.scene import Scene, SupportPlane
 
@@ -81,30 +82,6 @@ def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list
         keep[inliers] = False
         remaining = remaining[keep]
     return proposals
-
-
-def refine_plane(points: np.ndarray, normal: np.ndarray, d: float, band: float, passes: int = 3, max_passes: int = 12) -> tuple[np.ndarray, float, np.ndarray]:
-    """Refit a plane on the points within a band of it: the band shrinks for ``passes`` passes,
-    then the fit is iterated until its inlier set stops changing.
-
-    Iterating to a fixed point makes the result independent of small differences in the
-    starting plane (multi-threaded RANSAC does not always return the same model), so the same
-    input gives the same plane. Returns the normal, offset and the final inlier mask.
-    """
-    mask = np.zeros(len(points), dtype=bool)
-    for i in range(max_passes):
-        width = band * (0.6 ** min(i, passes - 1))
-        new_mask = np.abs(points @ normal + d) < width
-        if new_mask.sum() < 3:
-            break
-        if i >= passes and np.array_equal(new_mask, mask):
-            break
-        mask = new_mask
-        new_normal, new_d = fit_plane(points[mask])
-        if new_normal @ normal < 0:
-            new_normal, new_d = -new_normal, -new_d
-        normal, d = new_normal, new_d
-    return normal, d, mask
 
 
 def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
@@ -288,7 +265,8 @@ def _support_points(pts: np.ndarray, group: np.ndarray, params: PlaneParams) -> 
     z = float(np.median(group[:, 2]))
     polygon = polygon_and_rectangle(group[:, :2])[0]
     lo, hi = polygon.min(axis=0), polygon.max(axis=0)
-    near = (np.abs(pts[:, 2] - z) < params.distance_threshold) & np.all((pts[:, :2] >= lo) & (pts[:, :2] <= hi), axis=1)
+    near = np.flatnonzero(np.abs(pts[:, 2] - z) < params.distance_threshold)  # the height band first: few points
+    near = near[np.all((pts[near, :2] >= lo) & (pts[near, :2] <= hi), axis=1)]
     band = pts[near][inside_convex_polygon(pts[near, :2], polygon)]
     cell = params.voxel_size
     observed_area = _occupied_cells(band[:, :2], cell) * cell * cell

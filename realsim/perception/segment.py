@@ -52,8 +52,9 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
         candidate = candidate[inside_convex_polygon(points[candidate, :2], plane.polygon, params.polygon_margin)]
         for upper in planes:  # the space under a higher support is its furniture (legs, sides)
             if upper.observed and upper.height > plane.height + params.min_height:
-                under = inside_convex_polygon(points[candidate, :2], upper.polygon, params.structure_margin)
-                candidate = candidate[~(under & (z[candidate] < upper.height + params.min_height))]
+                below = np.flatnonzero(z[candidate] < upper.height + params.min_height)  # only these can be under it
+                under = below[inside_convex_polygon(points[candidate[below], :2], upper.polygon, params.structure_margin)]
+                candidate = np.delete(candidate, under)
         support[candidate] = i
         height[candidate] = h[candidate]
     return support, height

@@ -96,29 +96,48 @@ def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: f
 
     Each ray is sampled at every whole cell length along it; a sample in an empty block jumps to
     the first sample beyond that block (a line leaves a box once), so the samples tested, and the
-    counts, are those of a march through every cell. Coordinates are kept as one array per axis:
-    the rays still free are taken out by one index per step. ``table``: :func:`_block_table` of
-    these origins or of a set holding them."""
+    counts, are those of a march through every cell. Coordinates are kept as one array per axis
+    (an axis the direction does not move along keeps its cell): the rays still free are taken out
+    by one index per step. ``table``: :func:`_block_table` of these origins or of a set holding them."""
     last = float(np.floor(reach / cell + 1e-9))
     s, size = occupied.SHIFT, 1 << occupied.SHIFT
     m = size - 1
     flat_table, strides, offset = table if table is not None else _block_table(occupied, origin, last)
+    # 32-bit indices where every key and cell fits them (half the memory traffic of 64-bit)
+    small = len(flat_table) + abs(offset) < 2**31 and len(occupied.data) < 2**31 and np.abs(origin).max(initial=0) + last < 2**30
+    itype = np.int32 if small else np.int64
+    flat_table = flat_table.astype(itype, copy=False)
     count = np.zeros(len(origin), dtype=np.int64)
     for d in dirs:
         axes = np.flatnonzero(d)
         live, t = np.arange(len(origin)), np.zeros(len(origin))
-        start = [np.ascontiguousarray(origin[:, a]) for a in range(3)]
+        start = {int(a): np.ascontiguousarray(origin[:, a]) for a in axes}
+        fixed = {a: np.floor(origin[:, a]).astype(itype) for a in range(3) if a not in start}
         while len(live):  # only the rays still free are marched on
-            ijk = [np.floor(start[a] + t * d[a]).astype(np.int64) for a in range(3)]
+            ijk = []
+            for a in range(3):
+                if a in fixed:
+                    ijk.append(fixed[a])
+                    continue
+                x = t * d[a]
+                x += start[a]
+                ijk.append(np.floor(x, out=x).astype(itype))
             block = [c >> s for c in ijk]
-            ids = flat_table[block[0] * strides[0] + block[1] * strides[1] + block[2] * strides[2] + offset]
-            flat = (ids << (3 * s)) | ((ijk[0] & m) << (2 * s)) | ((ijk[1] & m) << s) | (ijk[2] & m)
+            key = block[0] * itype(strides[0])
+            key += block[1] * itype(strides[1])
+            key += block[2] * itype(strides[2])
+            key += itype(offset)
+            ids = flat_table[key]
+            flat = ids << (3 * s)
+            flat |= (ijk[0] & m) << (2 * s)
+            flat |= (ijk[1] & m) << s
+            flat |= ijk[2] & m
             nxt = t + 1.0
             skip = np.flatnonzero(ids == occupied.empty)
             if len(skip):
                 leave = np.full(len(skip), np.inf)
                 for axis in axes:  # the first whole step past the block's far face
-                    corner = block[axis][skip] << s
+                    corner = (block[axis][skip] << s).astype(np.int64)
                     if d[axis] > 0:
                         step = np.ceil((corner + size - start[axis][skip]) / d[axis])
                     else:
@@ -130,7 +149,8 @@ def _escapes(occupied: _Occupancy, origin: np.ndarray, dirs: np.ndarray, cell: f
             count[live[out]] += 1
             keep = np.flatnonzero(free & ~out)
             live, t = live[keep], nxt[keep]
-            start = [c[keep] for c in start]
+            start = {a: c[keep] for a, c in start.items()}
+            fixed = {a: c[keep] for a, c in fixed.items()}
     return count
 
 
