@@ -1,5 +1,6 @@
 """The contact cut's gate on a contact folded along most of its length but wider than a neck:
-kept when its unfolded (convex) rest is as narrow as a neck, refused when it is mostly convex."""
+kept when its unfolded (convex) rest is as narrow as a neck, refused when it is mostly convex,
+and refused when the two sides go on as narrow as the contact (one body's own neck)."""
 
 from __future__ import annotations
 
@@ -10,10 +11,12 @@ from realsim.perception.contact_cut import CutParams, _best_cut
 SIDE = 30  # nodes per row and column of each patch
 
 
-def _two_patches(weight: float) -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Two flat 30 x 30 patches (1 cm apart, on the support) side by side, linked inside with
+def _two_patches(weight: float, widen: float = 30.0) -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Two 30 x 30 patches (1 cm apart, on the support) side by side, linked inside with
     weight 1 and across their common edge by two links per row of the given weight: 59
-    crossing links, wider than a neck (sqrt(900) = 30)."""
+    crossing links, wider than a neck (sqrt(900) = 30). Each patch is a shallow trough whose
+    width and depth grow by ``widen`` per metre away from the common edge (two bodies widening
+    past their contact; 0: one body as wide beyond the edge as at it)."""
     idx = np.arange(2 * SIDE * SIDE).reshape(SIDE, 2 * SIDE)  # row j, column i
     a = [idx[:, :-1].ravel(), idx[:-1, :].ravel()]
     b = [idx[:, 1:].ravel(), idx[1:, :].ravel()]
@@ -24,13 +27,15 @@ def _two_patches(weight: float) -> tuple[int, np.ndarray, np.ndarray, np.ndarray
     b.append(diag_b)
     w = np.r_[inside, np.full(len(diag_a), weight)]
     j, i = np.divmod(np.arange(2 * SIDE * SIDE), 2 * SIDE)
-    points = np.stack([i * 0.01, j * 0.01, np.full(len(i), 0.005)], axis=1)
+    grow = 1.0 + widen * np.abs(i - (SIDE - 0.5)) * 0.01
+    across = (j - (SIDE - 1) / 2) * 0.01
+    points = np.stack([i * 0.01, across * grow, 0.005 + 0.3 * np.abs(across) * grow], axis=1)
     height = points[:, 2].copy()
     return len(points), np.concatenate(a), np.concatenate(b), w, points, height
 
 
-def _cut(weight: float, params: CutParams) -> np.ndarray | None:
-    n, a, b, w, points, height = _two_patches(weight)
+def _cut(weight: float, params: CutParams, widen: float = 30.0) -> np.ndarray | None:
+    n, a, b, w, points, height = _two_patches(weight, widen)
     return _best_cut(n, a, b, w, points, height, params)
 
 
@@ -48,3 +53,9 @@ def test_without_the_mixed_gate_the_same_contact_is_not_cut() -> None:
 def test_a_mostly_convex_contact_is_not_cut() -> None:
     assert _cut(0.505, CutParams()) is None  # mean 0.505: more convex than folded, though its weight 29.8 <= 30
     assert _cut(0.505, CutParams(max_mixed_weight=0.51)) is not None  # the mean gate alone refused it
+
+
+def test_a_contact_whose_sides_go_on_as_narrow_is_not_cut() -> None:
+    assert _cut(0.45, CutParams(), widen=0.0) is None  # the same links, but one body's neck
+    assert _cut(0.45, CutParams(min_section_ratio=0.0), widen=0.0) is not None  # the section gate alone refused it
+    assert _cut(0.3, CutParams(), widen=0.0) is not None  # a clear fold needs no widening

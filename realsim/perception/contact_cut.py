@@ -9,7 +9,10 @@ so the cheapest cut follows it, whichever clusters the first segmentation made o
 is kept only when the links it crosses are mostly concave and both sides are object-sized, so
 a convex object is never cut.
 Objects that touch over a small patch (a mug's side against a bowl's rim) show little fold but
-a narrow neck between two large sides, which the cut also takes.
+a narrow neck between two large sides, which the cut also takes. A body's own narrow part (a
+lying drill's grip, a bottle's neck) is narrow too, but it stays as wide past the cut as at it;
+two bodies in contact both widen beyond their contact. So a cut without a clear fold is kept
+only when each side's cross section a little beyond it is wider than the cut's.
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ from scipy.spatial import cKDTree
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.perception.object_relations import base_height
 
-__all__ = ["CutParams", "concave_link_weights", "cut_contacts"]
+__all__ = ["CutParams", "concave_link_weights", "cut_contacts", "section_ratio"]
 
 
 @dataclass(frozen=True)
@@ -39,6 +42,8 @@ class CutParams:
     max_mixed_weight: float = 0.5  # or they are mostly folded (the mean weight at most this, as a border more
     # concave than convex keeps regions apart) and their weight, the unfolded rest, is that narrow
     max_ncut: float = 0.2  # and its normalized-cut value is at most this
+    min_section_ratio: float = 1.3  # a cut kept without a clear fold: each side's cross section beyond it is
+    # this many times the cut's (a contact between bodies; a neck leads into a part as wide as itself)
     min_size: float = 0.02  # m: each side's largest extent is at least this
     min_points: int = 5  # and it holds at least this many points
     stand_height: float = 0.015  # m: a side whose base is higher above its support does not stand on it
@@ -98,6 +103,44 @@ def _supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact
     return bool(inside_convex_polygon(points[side][lowest, :2], hull).mean() >= 0.5)
 
 
+def _width(points: np.ndarray, axis: np.ndarray) -> float:
+    """Width of points across ``axis``: the geometric mean of their two spreads in the plane normal to it."""
+    if len(points) < 3:
+        return 0.0
+    q = points - points.mean(axis=0)
+    q -= np.outer(q @ axis, axis)
+    s = np.linalg.svd(q, compute_uv=False)[:2] / np.sqrt(len(q))
+    return float(np.sqrt(s[0] * s[1]))
+
+
+def section_ratio(points: np.ndarray, side: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    """How much wider than the cut the narrower side is just beyond it.
+
+    (a, b) are the links the cut crosses. The cut runs across the mean direction of those links;
+    its width is that of their end points across it. Each side's width is that of its points in
+    a slab one to two cut widths (at least one link length) beyond the cut's centre. A contact
+    between two bodies gives both sides well over 1 (each body widens past the contact patch);
+    a body's own neck about 1 (the narrow part goes on as wide as the cut)."""
+    near, far = np.where(side[a], a, b), np.where(side[a], b, a)
+    step = points[far] - points[near]
+    axis = step.sum(axis=0)
+    norm = float(np.linalg.norm(axis))
+    if norm == 0.0:
+        return 0.0
+    axis /= norm
+    ends = points[np.r_[near, far]]
+    cut = _width(ends, axis)
+    link = float(np.median(np.linalg.norm(step, axis=1)))
+    start = max(cut, link)
+    along = (points - ends.mean(axis=0)) @ axis
+    ratios = []
+    for own, sign in ((side, -1.0), (~side, 1.0)):
+        beyond = sign * along
+        slab = own & (beyond > start) & (beyond <= 2 * start + link)
+        ratios.append(_width(points[slab], axis) / max(cut, 1e-12))
+    return min(ratios)
+
+
 def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.ndarray, height: np.ndarray,
               params: CutParams) -> np.ndarray | None:
     """The side (bool per node) of the best acceptable normalized cut of a connected graph, or None."""
@@ -140,6 +183,8 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
         if _extent(points[side]) < params.min_size or _extent(points[~side]) < params.min_size:
             continue
         crossing = (lo <= t) & (hi > t)
+        if not folded[t] and section_ratio(points, side, a[crossing], b[crossing]) < params.min_section_ratio:
+            continue  # no clear fold, and one side goes on as narrow as the cut: a body's own neck
         contact = np.zeros(n, dtype=bool)
         contact[a[crossing]] = contact[b[crossing]] = True
         if _supported(points, height, side, contact, params) and _supported(points, height, ~side, contact, params):
