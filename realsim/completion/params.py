@@ -16,6 +16,9 @@ class CompletionParams:
     cylinder_max_rms: float = 0.08  # circle fit residual / radius below which a footprint is round
     cylinder_min_arc_deg: float = 100.0  # visible arc a cylinder fit needs
     cylinder_max_radius: float = 0.2
+    round_max_outside: float = 0.1  # a round body's points beyond its circle (a handle, a spout) are at most this share
+    round_outside_margin: float = 1.2  # beyond: farther from the axis than this many radii (a lip, a flaring rim) ...
+    round_outside_gap: float = 0.003  # ... plus this (m; the sensor noise)
     cylinder_sections: int = 32
     revolution_bands: int = 10  # height bands of a revolved profile (one convex frustum each)
     straight_profile_share: float = 0.12  # band radii within this share of the radius: a cylinder (one convex piece)

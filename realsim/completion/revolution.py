@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import trimesh
 
-from realsim.completion.circles import arc_coverage_deg, fit_circle
+from realsim.completion.circles import arc_coverage_deg, corner_rms, fit_circle
 from realsim.completion.hull import trimesh_hull
 from realsim.completion.params import CompletionParams
 
@@ -35,13 +35,21 @@ class Revolved:
 def round_axis(points: np.ndarray, base_z: float, top_z: float, params: CompletionParams,
                camera_xy: np.ndarray | None = None) -> tuple[np.ndarray, float] | None:
     """(axis centre, radius) when the visible side is a circular arc whose silhouette is as wide as
-    the circle (seen from ``camera_xy``), else None."""
+    the circle (seen from ``camera_xy``), else None.
+
+    The circle must also win against the alternatives the evidence allows: it fits the side closer
+    than a box corner (two perpendicular faces, :func:`corner_rms`) does, and the solid it makes
+    holds what was seen: at most ``params.round_max_outside`` of the points (a handle, a spout) lie
+    beyond it (a top face reaching back past the circle is a body longer than it is wide)."""
     side = points[points[:, 2] < top_z - 0.25 * (top_z - base_z)]
     xy = (side if len(side) >= params.min_points else points)[:, :2]
-    centre, radius, _ = fit_circle(xy)
+    centre, radius, rms = fit_circle(xy)
     if radius > params.cylinder_max_radius or _band_rms(points, centre, base_z, top_z, params.revolution_bands) > params.cylinder_max_rms * radius:
         return None
     if arc_coverage_deg(xy, centre) < params.cylinder_min_arc_deg:
+        return None
+    beyond = np.linalg.norm(points[:, :2] - centre, axis=1) > params.round_outside_margin * radius + params.round_outside_gap
+    if np.mean(beyond) > params.round_max_outside or rms >= corner_rms(xy):
         return None
     if camera_xy is not None:
         d = centre - camera_xy
