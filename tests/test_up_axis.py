@@ -39,3 +39,31 @@ def test_floor_mesh_converts_right_side_up(floor_scene, tmp_path: Path) -> None:
     # the floor's top, not its underside, is at z = 0 once the planes stage levels it: here the
     # transform only rotates, so the objects (up to 25 cm tall) lie above the slab
     assert np.percentile(world_z, 99.9) > 0.1 and np.percentile(world_z, 0.1) > -0.06
+
+
+@pytest.fixture(scope="module")
+def floorless_counter():
+    from realsim.synth.exports import without_floor
+
+    return without_floor(make_scene(SceneSpec(layout="counter", objects=None, seed=85)))
+
+
+@pytest.mark.parametrize("up", UP_AXES)
+def test_up_of_a_counter_under_a_larger_wall_without_floor(floorless_counter, up: str) -> None:
+    """The wall is the largest plane; the objects rest on the counter, so its normal is up."""
+    mesh_points, _, _ = sample_mesh(floorless_counter.mesh, 60_000, 0, Path("counter.obj"))
+    scan_points, _, _ = sample_cloud(floorless_counter, 60_000)
+    for points in (mesh_points, scan_points):
+        assert detect_up(points @ up_matrix(up).T, False, "ply", 0) == up
+
+
+def test_a_wall_with_nothing_resting_on_it_gives_no_resting_vote() -> None:
+    """Two perpendicular planes and no body: the vote abstains (the dominant-plane rule decides)."""
+    from realsim.perception.up_axis import resting_up
+
+    rng = np.random.default_rng(3)
+    wall = np.column_stack([rng.uniform(-1, 1, 20_000), np.zeros(20_000), rng.uniform(0, 1.5, 20_000)])
+    top = np.column_stack([rng.uniform(-0.8, 0.8, 8_000), rng.uniform(-0.6, 0, 8_000), np.full(8_000, 0.9)])
+    assert resting_up(np.vstack([wall, top]), 0.02, np.random.default_rng(0)) is None
+    box = np.column_stack([rng.uniform(-0.05, 0.05, 3_000), rng.uniform(-0.35, -0.25, 3_000), rng.uniform(0.9, 1.1, 3_000)])
+    assert resting_up(np.vstack([wall, top, box]), 0.02, np.random.default_rng(0)) == "+z"

@@ -135,15 +135,18 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
     """Guess the input's up axis.
 
     Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
-    axis closest to the dominant plane's normal, signed so that most of what stands clear of
-    that plane (farther than three RANSAC thresholds) lies above it: a scanned slab's underside
-    is as large as its top, so the median point alone cannot tell them apart.
+    axis that bodies rest on (:func:`realsim.perception.up_axis.resting_up`: a counter under a
+    wall larger than it, with no floor in view), and without such evidence the axis closest to
+    the dominant plane's normal, signed so that most of what stands clear of that plane (farther
+    than three RANSAC thresholds) lies above it: a scanned slab's underside is as large as its
+    top, so the median point alone cannot tell them apart.
     """
     if fmt_hint in ("glb", "gltf"):
         return "+y"
     if camera_view:
         return "-y"
     from realsim.geometry import ransac_plane
+    from realsim.perception.up_axis import resting_up
 
     pts = points[np.isfinite(points).all(axis=1)]
     rng = np.random.default_rng(seed)
@@ -151,6 +154,9 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
         pts = pts[rng.choice(len(pts), 50_000, replace=False)]
     extent = float(np.max(np.ptp(pts, axis=0)))
     threshold = max(extent * 0.01, 1e-6)
+    resting = resting_up(pts, threshold, np.random.default_rng(seed))
+    if resting is not None:
+        return resting
     normal, offset, _ = ransac_plane(pts, threshold, 500, rng)  # the project's one (seeded) RANSAC
     axis = int(np.argmax(np.abs(normal)))
     signed = normal.copy()
