@@ -124,3 +124,28 @@ def test_truncated_usd_is_an_input_error(tmp_path: Path, suffix: str) -> None:
     path.write_bytes(b"#usda 1.0\n(\n    metersPerUnit = 0.01\n" if suffix == ".usda" else b"PK\x03\x04\x14\x00\x00")
     with pytest.raises(InputError, match="cannot open the USD stage"):
         read_usd_mesh(path)
+
+
+def _counter_under_wall(seed: int = 0) -> np.ndarray:
+    """A 1.5 x 0.6 m counter top at 0.9 m, a 3 m wide wall behind it (larger than the counter,
+    from 0.85 to 1.65 m, its 8 cm top a ledge) and a 10 cm box on the counter; no floor."""
+    rng = np.random.default_rng(seed)
+    top = np.c_[rng.uniform([-0.75, -0.3], [0.75, 0.3], (9000, 2)), np.full(9000, 0.9)]
+    wall = np.c_[rng.uniform(-1.5, 1.5, 24000), np.full(24000, 0.32), rng.uniform(0.85, 1.65, 24000)]
+    ledge = np.c_[rng.uniform([-1.5, 0.32], [1.5, 0.4], (2400, 2)), np.full(2400, 1.65)]
+    box = rng.uniform([0, -0.1, 0.9], [0.1, 0.0, 1.0], (3000, 3))
+    return np.vstack([top, wall, ledge, box]) + rng.normal(0, 0.001, (38400, 3))
+
+
+def test_counter_under_a_wall_without_floor_is_up_and_alone(tmp_path: Path) -> None:
+    """The wall is the largest plane, yet the box rests on the counter: +z is up; the wall's top is
+    a ledge 8 cm wide, not a support 0.75 m over a 'floor' (the counter taken for the floor)."""
+    from realsim.perception.planes import detect_planes
+
+    (tmp_path / "cap").mkdir()
+    _write_ply_double(tmp_path / "cap" / "scene.ply", _counter_under_wall())
+    (tmp_path / "cap" / "capture.yaml").write_text("support_height: 0.9\n")
+    scene = detect_planes(load_capture(tmp_path / "cap"))
+    assert scene.capture.up == "+z"
+    observed = [p for p in scene.planes if p.observed]
+    assert len(observed) == 1 and abs(observed[0].height - 0.9) < 0.01

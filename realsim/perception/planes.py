@@ -35,6 +35,7 @@ class PlaneParams:
     refine_threshold: float = 0.006  # full-resolution refit band (m)
     region_cell: float = 0.02  # grid cell for splitting a plane into regions (m)
     min_support_area: float = 0.03  # observed area (occupied grid cells) of a support, m^2
+    min_support_width: float = 0.12  # m: a higher surface narrower than this is a ledge (a wall's top), no support
     merge_height_tol: float = 0.02  # regions within this height are one surface (m)
     merge_gap: float = 0.5  # ... when their hulls come this close in xy (m)
     min_support_gap: float = 0.25  # a flat top closer than this above a support is an object (m)
@@ -196,6 +197,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan; "
                          "check --up and --units")
     supports.sort(key=lambda r: r[0])
+    supports = supports[:1] + [s for s in supports[1:] if np.min(polygon_and_rectangle(s[1][:, :2])[2]) >= params.min_support_width]
     supports = _drop_object_tops(supports, params)
     planes, shift = _place_floor(scene, supports, params)
     _warn_implausible(scene, planes, params)
