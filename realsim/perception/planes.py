@@ -280,7 +280,12 @@ def _occupied_cells(xy: np.ndarray, cell: float) -> int:
     if len(xy) == 0:
         return 0
     ij = np.floor((xy - xy.min(axis=0)) / cell).astype(np.int64)
-    return len(np.unique(ij[:, 0] * (ij[:, 1].max() + 1) + ij[:, 1]))
+    span = ij.max(axis=0) + 1
+    if int(np.prod(span)) <= 1 << 25:  # a support's cells: marked on a dense grid (at most 32 MB)
+        mark = np.zeros(tuple(span), dtype=bool)
+        mark[ij[:, 0], ij[:, 1]] = True
+        return int(np.count_nonzero(mark))
+    return len(np.unique(ij[:, 0] * span[1] + ij[:, 1]))
 
 
 def _drop_object_tops(supports: list, params: PlaneParams) -> list:

@@ -32,7 +32,7 @@ class _Occupancy:
 
     def __init__(self, cells: np.ndarray) -> None:
         near = np.array([(a, b, c) for a in (-1, 0, 1) for b in (-1, 0, 1) for c in (-1, 0, 1)])
-        cells = _unique_rows(cells)
+        # repeated cells only write their neighbours again: no need to make them distinct
         blocks = _unique_rows(cells >> self.SHIFT)
         blocks = _unique_rows((blocks[:, None, :] + near[None]).reshape(-1, 3))
         # one empty block margin all round: a look-up clipped into it finds nothing
@@ -63,12 +63,21 @@ class _Occupancy:
         return (ids << (3 * s)) | ((ijk[:, 0] & m) << (2 * s)) | ((ijk[:, 1] & m) << s) | (ijk[:, 2] & m)
 
 
+_DENSE_ROWS = 1 << 25  # distinct rows are marked in a dense grid up to this many cells (32 MB)
+
+
 def _unique_rows(ijk: np.ndarray) -> np.ndarray:
-    """The distinct rows of integer triples (each within 2^20 of the smallest), sorted."""
+    """The distinct rows of integer triples (each within 2^20 of the smallest), sorted: marked in
+    a dense grid over their bounds where that is small (block indices), else by a key sort."""
     if len(ijk) == 0:
         return ijk
     lo = ijk.min(axis=0)
     d = ijk - lo
+    span = d.max(axis=0) + 1
+    if int(np.prod(span)) <= _DENSE_ROWS:
+        mark = np.zeros(tuple(span), dtype=bool)
+        mark[d[:, 0], d[:, 1], d[:, 2]] = True
+        return np.argwhere(mark).astype(ijk.dtype, copy=False) + lo
     key = np.unique((d[:, 0] << 42) | (d[:, 1] << 21) | d[:, 2])
     return np.stack([key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF], axis=1) + lo
 
