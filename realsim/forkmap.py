@@ -7,7 +7,8 @@ while the other has a long one. Only results are pickled back. The helper must r
 scipy work: nothing that uses OpenMP, which may hang after a fork. Whatever the helper does not
 deliver (it failed, died or went silent past ``timeout``) is computed here, so the results never
 depend on it: an exception is raised here, with its own traceback. Elsewhere than Linux, with
-``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, or for fewer than two items, it is the plain loop.
+``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, for fewer than two items, or when no
+process, pipe or semaphore can be had, it is the plain loop.
 """
 
 from __future__ import annotations
@@ -75,10 +76,13 @@ def fork_map(fn: Callable[[int], R], n: int, timeout: float = TIMEOUT) -> list[R
     if n < 2 or not can_fork():
         return [fn(i) for i in range(n)]
     ctx = multiprocessing.get_context("fork")
-    counter = ctx.Value("l", 0)
-    recv, send = ctx.Pipe(duplex=False)
-    helper = ctx.Process(target=_helper, args=(fn, n, counter, send), daemon=True)
-    helper.start()
+    try:  # a shared counter needs a semaphore (/dev/shm), the helper a process and a pipe
+        counter = ctx.Value("l", 0)
+        recv, send = ctx.Pipe(duplex=False)
+        helper = ctx.Process(target=_helper, args=(fn, n, counter, send), daemon=True)
+        helper.start()
+    except OSError:  # none to be had here: the plain loop
+        return [fn(i) for i in range(n)]
     send.close()
     results: dict[int, Any] = {}
     try:

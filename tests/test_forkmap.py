@@ -96,3 +96,17 @@ def test_a_pool_worker_does_not_fork() -> None:
 
     with multiprocessing.get_context("fork").Pool(1) as pool:
         assert pool.map(_in_pool_worker, [0]) == [False]
+
+
+def test_no_helper_to_be_had_is_the_plain_loop(monkeypatch: pytest.MonkeyPatch) -> None:
+    import multiprocessing.context
+
+    def refuse(*_: object, **__: object) -> None:
+        raise OSError("no semaphores here")
+
+    def work(i: int) -> tuple[int, int]:
+        time.sleep(0.05)  # long enough for a helper, were there one, to take some
+        return i, os.getpid()
+
+    monkeypatch.setattr(multiprocessing.context.ForkContext, "Value", refuse, raising=False)
+    assert fork_map(work, 8) == [(i, os.getpid()) for i in range(8)]
