@@ -17,7 +17,7 @@ import multiprocessing
 import os
 import sys
 from multiprocessing.connection import Connection
-from typing import Any, Callable, TypeVar
+from typing import Any, Callable, Generic, TypeVar
 
 R = TypeVar("R")
 
@@ -73,27 +73,59 @@ def _receive(recv: Connection, results: dict[int, Any], timeout: float | None) -
 
 def fork_map(fn: Callable[[int], R], n: int, timeout: float = TIMEOUT) -> list[R]:
     """``[fn(i) for i in range(n)]``, the items shared with a forked helper (see the module docstring)."""
-    if n < 2 or not can_fork():
-        return [fn(i) for i in range(n)]
-    ctx = multiprocessing.get_context("fork")
-    try:  # a shared counter needs a semaphore (/dev/shm), the helper a process and a pipe
-        counter = ctx.Value("l", 0)
-        recv, send = ctx.Pipe(duplex=False)
-        helper = ctx.Process(target=_helper, args=(fn, n, counter, send), daemon=True)
-        helper.start()
-    except OSError:  # none to be had here: the plain loop
-        return [fn(i) for i in range(n)]
-    send.close()
-    results: dict[int, Any] = {}
-    try:
-        while (i := _claim(counter, n)) is not None:
-            results[i] = fn(i)
-            _receive(recv, results, 0)
-        while len(results) < n and _receive(recv, results, timeout):
-            pass
-    finally:
-        recv.close()
-        if helper.is_alive() and len(results) < n:
-            helper.kill()
-        helper.join()
-    return [results[i] if i in results else fn(i) for i in range(n)]
+    return Ahead(fn, n, timeout, least=2).results()
+
+
+class Ahead(Generic[R]):
+    """``[fn(i) for i in range(n)]`` begun now by a forked helper, while this process does other work
+    that changes nothing ``fn`` reads; :meth:`results` takes the items left here too and returns
+    them all in order (see the module docstring). Fewer than ``least`` items: no helper. As a context
+    manager, a helper whose results were never asked for (an error in between) is stopped on exit."""
+
+    def __init__(self, fn: Callable[[int], R], n: int, timeout: float = TIMEOUT, least: int = 1) -> None:
+        self.fn, self.n, self.timeout = fn, n, timeout
+        self.helper: Any = None
+        if n < least or not can_fork():
+            return
+        ctx = multiprocessing.get_context("fork")
+        try:  # a shared counter needs a semaphore (/dev/shm), the helper a process and a pipe
+            self.counter = ctx.Value("l", 0)
+            self.recv, send = ctx.Pipe(duplex=False)
+            self.helper = ctx.Process(target=_helper, args=(fn, n, self.counter, send), daemon=True)
+            self.helper.start()
+        except OSError:  # none to be had here: the plain loop
+            self.helper = None
+            return
+        send.close()
+
+    def results(self) -> list[R]:
+        """Every item's result, in order (call once)."""
+        fn, n, helper = self.fn, self.n, self.helper
+        if helper is None:
+            return [fn(i) for i in range(n)]
+        results: dict[int, Any] = {}
+        try:
+            while (i := _claim(self.counter, n)) is not None:
+                results[i] = fn(i)
+                _receive(self.recv, results, 0)
+            while len(results) < n and _receive(self.recv, results, self.timeout):
+                pass
+        finally:
+            self.stop(kill=len(results) < n)
+        return [results[i] if i in results else fn(i) for i in range(n)]
+
+    def stop(self, kill: bool = True) -> None:
+        """Close the pipe and wait for the helper (killed first unless ``kill`` is False); then none is left."""
+        if self.helper is None:
+            return
+        self.recv.close()
+        if kill and self.helper.is_alive():
+            self.helper.kill()
+        self.helper.join()
+        self.helper = None
+
+    def __enter__(self) -> Ahead[R]:
+        return self
+
+    def __exit__(self, *_: object) -> None:
+        self.stop()

@@ -10,7 +10,7 @@ import pytest
 import trimesh
 
 from realsim.completion.hull import from_arrays, mesh_arrays, trimesh_hull
-from realsim.forkmap import can_fork, fork_map
+from realsim.forkmap import Ahead, can_fork, fork_map
 
 pytestmark = pytest.mark.skipif(not can_fork(), reason="fork_map forks on Linux with more than one worker")
 
@@ -110,3 +110,25 @@ def test_no_helper_to_be_had_is_the_plain_loop(monkeypatch: pytest.MonkeyPatch) 
 
     monkeypatch.setattr(multiprocessing.context.ForkContext, "Value", refuse, raising=False)
     assert fork_map(work, 8) == [(i, os.getpid()) for i in range(8)]
+
+
+def test_ahead_works_while_this_process_does_other_work() -> None:
+    parent = os.getpid()
+
+    def work(i: int) -> tuple[int, int]:
+        time.sleep(0.05)
+        return i * 3, os.getpid()
+
+    with Ahead(work, 6) as ahead:
+        time.sleep(0.2)  # the helper goes on meanwhile
+        out = ahead.results()
+    assert [r for r, _ in out] == [i * 3 for i in range(6)]
+    assert sum(pid != parent for _, pid in out) >= 3  # it took the items while this process slept
+
+
+def test_ahead_left_unasked_is_stopped() -> None:
+    with pytest.raises(RuntimeError):
+        with Ahead(lambda i: time.sleep(30), 3) as ahead:
+            helper = ahead.helper
+            raise RuntimeError("an error before the results are asked for")
+    assert helper is not None and not helper.is_alive()

@@ -31,7 +31,7 @@ from realsim.composition.appearance import (
 )
 from realsim.composition.arena import ArenaParams, add_arena
 from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
-from realsim.forkmap import fork_map
+from realsim.forkmap import Ahead
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
@@ -131,20 +131,22 @@ def add_visual_mesh(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: 
                   density=0.0, rgba=rgba or [1.0, 1.0, 1.0, 1.0], material=material)
 
 
+Prepared = tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]
+
+
 def collision_file(hull: trimesh.Trimesh) -> bytes:
     """The STL file of a collision hull: at most 64 vertices (scan pieces can have more)."""
     return mesh_bytes(capped(hull), "stl")
 
 
-def _prepared(objects: list[SceneObject], image: CaptureImage | None,
-              params: ComposeParams) -> list[tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]]:
-    """Per object, the mesh work of composing it, shared with a forked helper (:func:`realsim.forkmap.fork_map`):
+def _prepared(objects: list[SceneObject], image: CaptureImage | None, params: ComposeParams) -> Ahead[Prepared]:
+    """Per object, the mesh work of composing it, begun by a forked helper (:class:`realsim.forkmap.Ahead`):
     its textured visual (:func:`textured_visual`; None without a photo) and its collision files."""
-    def work(k: int) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]:
+    def work(k: int) -> Prepared:
         obj = objects[k]
         return textured_visual(obj, image, params.appearance) if image is not None else None, [
             b"" if h.metadata.get("mujoco_primitive") is not None else collision_file(h) for h in obj.collision]
-    return fork_map(work, len(objects))
+    return Ahead(work, len(objects))
 
 
 def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np.ndarray, np.ndarray]:
@@ -348,19 +350,20 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     spec = new_spec(params)
     assets: dict[str, bytes] = {}
     image = capture_image(scene) if params.appearance.enabled else None
-    prepared = _prepared(scene.objects, image, params)
     slabs: dict[int, list[float]] = {}
     lows: dict[int, float] = {}
-    if image is not None:
-        for obj, (texture, _) in zip(scene.objects, prepared):
-            if texture is not None:
-                obj.visual, obj.texture_png = textured_mesh(*texture[:3]), texture[3]
-        slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
-    elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
-        if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
-            for obj in scene.objects:
-                colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
-        slabs = _add_cloud_surfaces(spec, scene, params, assets)
+    with _prepared(scene.objects, image, params) as ahead:  # the objects' meshes by a helper, while this process does the surfaces
+        if image is not None:
+            slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
+        elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
+            if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
+                for obj in scene.objects:
+                    colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
+            slabs = _add_cloud_surfaces(spec, scene, params, assets)
+        prepared = ahead.results()
+    for obj, (texture, _) in zip(scene.objects, prepared):  # textures only with a photo
+        if texture is not None:
+            obj.visual, obj.texture_png = textured_mesh(*texture[:3]), texture[3]
     add_arena(spec, scene, params.arena, slabs)
     for pid, low in lows.items():  # a captured top dipping below its plane: the slab under it sinks with it (else it hides the dip)
         slab, dip = spec.geom(f"support{pid}_visual"), scene.plane(pid).height - low
