@@ -155,8 +155,12 @@ def sample_mesh(mesh: Any, count: int, seed: int, path: Path) -> tuple[np.ndarra
         visual = mesh.visual
         if visual.kind == "texture" and getattr(visual.material, "image", None) is not None:
             visual = visual.to_color()
-        if visual.kind == "vertex":
-            cols = np.asarray(visual.vertex_colors)[mesh.faces[face_idx], :3].mean(axis=1) / 255.0
+        if visual.kind == "vertex":  # a face's mean colour, once per face when the samples outnumber the faces
+            faces = np.asarray(mesh.faces)
+            if len(face_idx) > len(faces):
+                cols = np.asarray(visual.vertex_colors)[faces, :3].mean(axis=1)[face_idx] / 255.0
+            else:
+                cols = np.asarray(visual.vertex_colors)[faces[face_idx], :3].mean(axis=1) / 255.0
         elif visual.kind == "face":
             cols = np.asarray(visual.face_colors)[face_idx, :3] / 255.0
     except Exception:  # colour is optional: a broken material leaves the points uncoloured
