@@ -3,12 +3,12 @@
 The helper is a fork of this process, so it starts with everything already imported and computed
 (no pickling of inputs, no imports: a forkserver pool paid 1.45 s of imports per worker for 5.7 s
 of work). This process and the helper take items in turn from a shared counter, so neither waits
-while the other has a long one. Only results are pickled back. The helper must run pure numpy /
-scipy work: nothing that uses OpenMP, which may hang after a fork. Whatever the helper does not
-deliver (it failed, died or went silent past ``timeout``) is computed here, so the results never
-depend on it: an exception is raised here, with its own traceback. Elsewhere than Linux, with
-``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, for fewer than two items, or when no
-process, pipe or semaphore can be had, it is the plain loop.
+while the other has a long one. Only results are pickled back, all in one message at the end. The
+helper must run pure numpy / scipy work: nothing that uses OpenMP, which may hang after a fork.
+Whatever the helper does not deliver (it failed, died or went silent past ``timeout``) is computed
+here, so the results never depend on it: an exception is raised here, with its own traceback.
+Elsewhere than Linux, with ``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, for fewer
+than two items, or when no process, pipe or semaphore can be had, it is the plain loop.
 """
 
 from __future__ import annotations
@@ -45,30 +45,29 @@ def _claim(counter: Any, n: int) -> int | None:
 
 
 def _helper(fn: Callable[[int], Any], n: int, counter: Any, send: Connection) -> None:
+    """Take items until none is left, then send all the results in one message (never blocking on a
+    full pipe while there is work: the parent reads only when it asks for the results)."""
     _in_helper.append(True)
+    done: dict[int, Any] = {}
     try:
         while (i := _claim(counter, n)) is not None:
             try:
-                result = fn(i)
+                done[i] = fn(i)
             except BaseException:  # computed again by the parent, which raises it with its traceback
-                return
-            send.send((i, result))
+                break
+        send.send(done)
     finally:
         send.close()
 
 
-def _receive(recv: Connection, results: dict[int, Any], timeout: float | None) -> bool:
-    """Take what the helper sent (waiting up to ``timeout`` for the first message); False when it is done."""
+def _receive(recv: Connection, timeout: float) -> dict[int, Any]:
+    """The helper's results (its one message; waiting up to ``timeout``), none when it died or stayed silent."""
     try:
-        if not recv.poll(timeout):
-            return timeout is None or timeout == 0
-        while True:
-            i, result = recv.recv()
-            results[i] = result
-            if not recv.poll(0):
-                return True
+        if recv.poll(timeout):
+            return dict(recv.recv())
     except (EOFError, OSError):
-        return False
+        pass
+    return {}
 
 
 def fork_map(fn: Callable[[int], R], n: int, timeout: float = TIMEOUT) -> list[R]:
@@ -107,9 +106,7 @@ class Ahead(Generic[R]):
         try:
             while (i := _claim(self.counter, n)) is not None:
                 results[i] = fn(i)
-                _receive(self.recv, results, 0)
-            while len(results) < n and _receive(self.recv, results, self.timeout):
-                pass
+            results.update(_receive(self.recv, self.timeout))
         finally:
             self.stop(kill=len(results) < n)
         return [results[i] if i in results else fn(i) for i in range(n)]

@@ -14,7 +14,6 @@ import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
 
-from realsim.assets.hulls import capped
 from realsim.composition.appearance import (
     AppearanceParams,
     CaptureImage,
@@ -26,12 +25,11 @@ from realsim.composition.appearance import (
     support_mask,
     support_top,
     textured_mesh,
-    textured_visual,
     top_view_texture,
 )
 from realsim.composition.arena import ArenaParams, add_arena
 from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
-from realsim.forkmap import Ahead
+from realsim.composition.object_meshes import collision_file, mesh_bytes, object_meshes
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
@@ -59,30 +57,6 @@ class ComposeParams:
     headlight_ambient: float = 0.4
     headlight_diffuse: float = 0.15
     sun_diffuse: float = 0.15
-
-
-def mesh_bytes(mesh: trimesh.Trimesh, file_type: str) -> bytes:
-    """Deterministic bytes of a mesh file: binary STL, or OBJ with texture coordinates if any."""
-    if file_type == "stl":
-        return trimesh.exchange.stl.export_stl(mesh)
-    return obj_bytes(mesh)
-
-
-def obj_bytes(mesh: trimesh.Trimesh) -> bytes:
-    """A minimal OBJ (v, vt, f), formatted in one pass per block: far faster than trimesh's exporter."""
-    def rows(fmt: str, values: np.ndarray) -> str:  # one C-level % for the whole array (savetxt formats row by row)
-        return (fmt * len(values)) % tuple(values.ravel().tolist())
-
-    verts = np.asarray(mesh.vertices, dtype=np.float64)
-    uv = getattr(mesh.visual, "uv", None)
-    faces = np.asarray(mesh.faces, dtype=np.int64) + 1
-    parts = [rows("v %.6f %.6f %.6f\n", verts)]
-    if uv is not None and len(uv) == len(mesh.vertices):
-        parts.append(rows("vt %.6f %.6f\n", np.asarray(uv, dtype=np.float64)))
-        parts.append(rows("f %d/%d %d/%d %d/%d\n", np.repeat(faces, 2, axis=1)))
-    else:
-        parts.append(rows("f %d %d %d\n", faces))
-    return "".join(parts).encode()
 
 
 def new_spec(params: ComposeParams) -> mujoco.MjSpec:
@@ -131,24 +105,6 @@ def add_visual_mesh(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: 
                   density=0.0, rgba=rgba or [1.0, 1.0, 1.0, 1.0], material=material)
 
 
-Prepared = tuple[tuple[np.ndarray, np.ndarray, np.ndarray, bytes] | None, list[bytes]]
-
-
-def collision_file(hull: trimesh.Trimesh) -> bytes:
-    """The STL file of a collision hull: at most 64 vertices (scan pieces can have more)."""
-    return mesh_bytes(capped(hull), "stl")
-
-
-def _prepared(objects: list[SceneObject], image: CaptureImage | None, params: ComposeParams) -> Ahead[Prepared]:
-    """Per object, the mesh work of composing it, begun by a forked helper (:class:`realsim.forkmap.Ahead`):
-    its textured visual (:func:`textured_visual`; None without a photo) and its collision files."""
-    def work(k: int) -> Prepared:
-        obj = objects[k]
-        return textured_visual(obj, image, params.appearance) if image is not None else None, [
-            b"" if h.metadata.get("mujoco_primitive") is not None else collision_file(h) for h in obj.collision]
-    return Ahead(work, len(objects))
-
-
 def _mass_properties(obj: SceneObject, params: ComposeParams) -> tuple[float, np.ndarray, np.ndarray]:
     """Mass, centre of mass and inertia (about the com, object frame) of an object."""
     if obj.mass is not None and obj.com is not None and obj.inertia is not None:
@@ -179,7 +135,7 @@ def add_object(spec: mujoco.MjSpec, obj: SceneObject, params: ComposeParams, ass
     optionally ``"handle"``, in the object frame) the body is instead a child of ``parent`` on that
     joint (a drawer in its cabinet), with a site ``<name>_handle`` where a hand pulls it; its world
     pose is still ``obj.position``/``obj.quat``. ``collision_stl``: the collision meshes' files when
-    already made (see :func:`_prepared`).
+    already made (see :func:`realsim.composition.object_meshes.object_meshes`).
     """
     if parent is None or joint is None:
         body = spec.worldbody.add_body(name=obj.name, pos=obj.position.tolist(), quat=obj.quat.tolist())
@@ -352,7 +308,7 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     image = capture_image(scene) if params.appearance.enabled else None
     slabs: dict[int, list[float]] = {}
     lows: dict[int, float] = {}
-    with _prepared(scene.objects, image, params) as ahead:  # the objects' meshes by a helper, while this process does the surfaces
+    with object_meshes(scene, image, params.appearance) as ahead:  # by a helper (perhaps begun already), while this process does the surfaces
         if image is not None:
             slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
         elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
