@@ -5,8 +5,9 @@ The helper is a fork of this process, so it starts with everything already impor
 of work). This process and the helper take items in turn from a shared counter, so neither waits
 while the other has a long one. Only results are pickled back, all in one message at the end. The
 helper must run pure numpy / scipy work: nothing that uses OpenMP, which may hang after a fork.
-Whatever the helper does not deliver (it failed, died or went silent past ``timeout``) is computed
-here, so the results never depend on it: an exception is raised here, with its own traceback.
+Whatever the helper does not deliver (it failed, died, or is not done ``timeout`` after this
+process) is computed here, so the results never depend on it: an exception is raised here, with
+its own traceback.
 Elsewhere than Linux, with ``$REALSIM_WORKERS=1``, inside a helper or a pool's worker, for fewer
 than two items, or when no process, pipe or semaphore can be had, it is the plain loop.
 """
@@ -21,7 +22,7 @@ from typing import Any, Callable, Generic, TypeVar
 
 R = TypeVar("R")
 
-TIMEOUT = 120.0  # s: the helper silent this long is given up (its items are computed here)
+TIMEOUT = 120.0  # s: a helper not done this long after this process ran out of items is given up
 _in_helper: list[bool] = []
 
 
