@@ -1,7 +1,8 @@
 """Scan-to-simulation benchmark on the labelled Kinect scenes (mOSD) and the other PCL scans.
 
 Prints, per scene: conversion time (in process, imports excluded, output written; wall and this
-process's CPU time, the fastest of ``--repeat``; every conversion is run, none restored from the
+process's CPU time, the fastest of ``--repeat``, and the CPU of the forked helpers
+(``+fork``, realsim.forkmap) in that run; every conversion is run, none restored from the
 warm-rerun store: ``REALSIM_REUSE=0``), table-plane
 error against the plane fitted to the ground-truth table points, object count, mean
 Hungarian-matched point IoU, and the 2 s rest check; then the same quality figures and time
@@ -15,6 +16,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import sys
 import tempfile
 import time
@@ -35,21 +37,28 @@ MOSD = ["test0", "test31", "test45", "test55"]
 OTHERS = ["table_scene_mug_stereo_textured", "milk_cartoon_all_small_clorox", "region_growing_rgb_tutorial"]
 
 
+def children_cpu() -> float:
+    """CPU seconds of this process's finished children (forkmap's helpers share the conversion)."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run(repeat: int, scenes: list[str]) -> None:
     rows, all_ious, base_ious = [], [], []
     right = base_right = 0
     with tempfile.TemporaryDirectory() as tmp:
         for name in scenes:
             path = DATA / ("mOSD" if name in MOSD else "") / f"{name}.pcd"
-            times, cpu = [], []
+            times, cpu, helper_cpu = [], [], []
             for r in range(repeat):
-                started, cpu_started = time.perf_counter(), time.process_time()
+                started, cpu_started, helpers_started = time.perf_counter(), time.process_time(), children_cpu()
                 convert(path, Path(tmp) / f"{name}_{r}")
                 times.append(time.perf_counter() - started)
                 cpu.append(time.process_time() - cpu_started)
+                helper_cpu.append(children_cpu() - helpers_started)
             out = Path(tmp) / f"{name}_0"
             record = json.loads((out / "scene.json").read_text())
-            row = {"scene": name, "time": min(times), "cpu": min(cpu), "objects": len(record["objects"]), "rest_mm": record["settle"]["max_displacement"] * 1000}
+            row = {"scene": name, "time": min(times), "cpu": min(cpu), "helper_cpu": helper_cpu[int(np.argmin(cpu))], "objects": len(record["objects"]), "rest_mm": record["settle"]["max_displacement"] * 1000}
             if name in MOSD:
                 data = read_pcd(path)
                 t = np.asarray(record["capture"]["input_to_world"])
@@ -71,12 +80,12 @@ def run(repeat: int, scenes: list[str]) -> None:
                 row.update(gt=n_gt, plane_mm=dist * 1000, plane_deg=angle, iou=float(np.mean(ious)), base_objects=n_base,
                            base_iou=float(np.mean(b_ious)), base_time=base_time)
             rows.append(row)
-    print(f"{'scene':34s} {'wall s':>7s} {'cpu s':>6s} {'plane mm':>8s} {'deg':>5s} {'gt':>3s} {'found':>5s} {'IoU':>5s} {'rest mm':>7s} | {'O3D found':>9s} {'O3D IoU':>7s} {'O3D s':>6s}")
+    print(f"{'scene':34s} {'wall s':>7s} {'cpu s':>6s} {'+fork':>6s} {'plane mm':>8s} {'deg':>5s} {'gt':>3s} {'found':>5s} {'IoU':>5s} {'rest mm':>7s} | {'O3D found':>9s} {'O3D IoU':>7s} {'O3D s':>6s}")
     for r in rows:
         if "gt" in r:
-            print(f"{r['scene']:34s} {r['time']:7.2f} {r['cpu']:6.2f} {r['plane_mm']:8.2f} {r['plane_deg']:5.2f} {r['gt']:3d} {r['objects']:5d} {r['iou']:5.3f} {r['rest_mm']:7.2f} | {r['base_objects']:9d} {r['base_iou']:7.3f} {r['base_time']:6.2f}")
+            print(f"{r['scene']:34s} {r['time']:7.2f} {r['cpu']:6.2f} {r['helper_cpu']:6.2f} {r['plane_mm']:8.2f} {r['plane_deg']:5.2f} {r['gt']:3d} {r['objects']:5d} {r['iou']:5.3f} {r['rest_mm']:7.2f} | {r['base_objects']:9d} {r['base_iou']:7.3f} {r['base_time']:6.2f}")
         else:
-            print(f"{r['scene']:34s} {r['time']:7.2f} {r['cpu']:6.2f} {'':8s} {'':5s} {'':3s} {r['objects']:5d} {'':5s} {r['rest_mm']:7.2f} |")
+            print(f"{r['scene']:34s} {r['time']:7.2f} {r['cpu']:6.2f} {r['helper_cpu']:6.2f} {'':8s} {'':5s} {'':3s} {r['objects']:5d} {'':5s} {r['rest_mm']:7.2f} |")
     n_mosd = sum(name in MOSD for name in scenes)
     print(f"\nmOSD: mean IoU over {len(all_ious)} objects {np.mean(all_ious):.3f} (Open3D baseline {np.mean(base_ious):.3f}); "
           f"right count in {right}/{n_mosd} scenes (baseline {base_right}/{n_mosd}); slowest conversion {max(r['time'] for r in rows):.2f} s wall, "
