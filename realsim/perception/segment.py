@@ -24,6 +24,7 @@ from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
+from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 from realsim.perception.visibility import OccupancyGrid, visibility_score
 from realsim.scene import SupportPlane
@@ -357,11 +358,14 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
-        point_normals = _point_outward(points[ids], _orient(normals[ids], -nrm[part]), working, params, grid)
+        patch_normals = _orient(normals[ids], -nrm[part])
+        point_normals = _point_outward(points[ids], patch_normals, working, params, grid)
         if point_normals is not None:  # a coarse cloud's point normals span whole small objects: no cut
             cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
                             stand_height=params.stack_min_height)
             obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
+        obj_labels[ids] = split_resting(points[ids], patch_normals if point_normals is None else point_normals,
+                                        obj_labels[ids], la, lb, working, params.min_object_points, params.min_object_size)
         obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]
