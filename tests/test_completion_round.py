@@ -6,7 +6,7 @@ import numpy as np
 
 from realsim.completion import CompletionParams
 from realsim.completion.circles import corner_rms, fit_circle
-from realsim.completion.revolution import round_axis
+from realsim.completion.revolution import round_axis, silhouette_circle
 
 CAMERA = np.array([-1.0, -0.2])
 VIEW_DEG = float(np.degrees(np.arctan2(CAMERA[1], CAMERA[0])))  # a turn that lays a body's length along the line of sight
@@ -30,9 +30,9 @@ def _rounded_rect(half: tuple[float, float], corner: float, turn_deg: float = 0.
     return pts @ np.array([[np.cos(turn), np.sin(turn)], [-np.sin(turn), np.cos(turn)]])
 
 
-def _seen(outline: np.ndarray, seed: int, height: float = 0.08) -> np.ndarray:
+def _seen(outline: np.ndarray, seed: int, height: float = 0.08, noise: float = 0.001) -> np.ndarray:
     """What the camera at CAMERA sees of a prism with this closed ``outline`` (counter-clockwise): the
-    sides facing it at every height and the top face, 1 mm noise."""
+    sides facing it at every height and the top face, ``noise`` (m) in every direction."""
     rng = np.random.default_rng(seed)
     tangent = np.roll(outline, -1, axis=0) - np.roll(outline, 1, axis=0)
     normal = np.column_stack([tangent[:, 1], -tangent[:, 0]])
@@ -46,7 +46,7 @@ def _seen(outline: np.ndarray, seed: int, height: float = 0.08) -> np.ndarray:
         xy[:, None, 0] < a[None, :, 0] + (xy[:, None, 1] - a[None, :, 1]) * (b[None, :, 0] - a[None, :, 0]) / (b[None, :, 1] - a[None, :, 1] + 1e-12))
     top = xy[np.count_nonzero(crosses, axis=1) % 2 == 1][:1500]
     pts = np.vstack([walls, np.column_stack([top, np.full(len(top), height)])])
-    return pts + rng.normal(0, 0.001, pts.shape)
+    return pts + rng.normal(0, noise, pts.shape)
 
 
 def test_a_can_is_round_and_its_radius_kept() -> None:
@@ -75,3 +75,18 @@ def test_a_rounded_box_seen_end_on_is_not_round_its_top_reaches_back() -> None:
     end = pts[pts[:, 2] < 0.06]
     assert round_axis(end, 0.0, 0.08, CompletionParams(), CAMERA) is not None  # the end alone passes as round
     assert round_axis(pts, 0.0, 0.08, CompletionParams(), CAMERA) is None
+
+
+def test_a_straight_round_side_takes_its_silhouette_circle() -> None:
+    # a can 33 mm in radius seen with 2 mm depth noise: the circle through the near arc is bent by the
+    # noise, the silhouette is not (its width across the line of sight is exact up to the lateral noise)
+    rng = np.random.default_rng(4)
+    pts = _seen(_rounded_rect((0.033, 0.033), 0.033), seed=4, noise=0.0)
+    pts[:, :2] += rng.normal(0, 0.002, (len(pts), 1)) * -CAMERA / np.linalg.norm(CAMERA)  # depth noise: along the line of sight
+    side = pts[pts[:, 2] < 0.06]
+    centre, radius, _ = fit_circle(side[:, :2])
+    seen = silhouette_circle(side, centre, radius, CAMERA)
+    assert seen is not None
+    assert abs(seen[1] - 0.033) < 0.0005 and np.linalg.norm(seen[0]) < 0.0005 < np.linalg.norm(centre)
+    hidden = side[side[:, :2] @ np.array([CAMERA[1], -CAMERA[0]]) / np.linalg.norm(CAMERA) < 0.02]  # a neighbour hides one side
+    assert silhouette_circle(hidden, centre, radius, CAMERA) is None

@@ -62,6 +62,33 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
     return centre, radius
 
 
+def silhouette_circle(side: np.ndarray, centre: np.ndarray, radius: float, camera_xy: np.ndarray,
+                      grazing: float = 0.35) -> tuple[np.ndarray, float] | None:
+    """The circle of a straight round side (``side``: its points) from its silhouette: the diameter is
+    the side's width across the line of sight (a circle fitted to the near arc alone is as much as 2 mm
+    off a 33 mm can, as the noise bends the arc), the axis midway between the two grazing lines and
+    one radius behind the arc (the median over the points in the middle 70 % of the width). None when
+    the silhouette does not end where the line of sight grazes the circle (the outermost points on a
+    side are more than ``grazing`` radii in front of the axis: a neighbour hides that side)."""
+    d = centre - camera_xy
+    if len(side) < 20 or np.linalg.norm(d) < 1e-6:
+        return None
+    d = d / np.linalg.norm(d)
+    lateral = np.array([-d[1], d[0]])
+    w, s = side[:, :2] @ lateral, side[:, :2] @ d
+    left, right = float(w.min()), float(w.max())
+    r, mid = 0.5 * (right - left), 0.5 * (left + right)
+    inner = np.abs(w - mid) < 0.7 * r
+    if r <= 0 or inner.sum() < 10:
+        return None
+    axis_s = float(np.median(s[inner] + np.sqrt(r * r - (w[inner] - mid) ** 2)))
+    for sign in (-1.0, 1.0):
+        outer = sign * (w - mid) >= 0.98 * r
+        if not outer.any() or float(np.median(s[outer])) < axis_s - grazing * r:
+            return None
+    return axis_s * d + mid * lateral, r
+
+
 def _band_rms(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: float, bands: int) -> float:
     """RMS distance of the points from the circle about ``centre`` through their own height band (a
     solid of revolution: each band a circle about the common axis, whatever the profile)."""
@@ -109,6 +136,8 @@ def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: C
     z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile)
     n = params.cylinder_sections
     if float(np.ptp(r[1:-1])) <= params.straight_profile_share * radius:  # a straight side: the fitted cylinder
+        if camera_xy is not None and (seen := silhouette_circle(points[points[:, 2] < top_z - 0.25 * (top_z - base_z)], centre, radius, camera_xy)):
+            centre, radius = seen
         height = top_z - base_z
         cylinder = trimesh.creation.cylinder(radius=radius, height=height, sections=n)
         cylinder.apply_translation([centre[0], centre[1], base_z + height / 2])
