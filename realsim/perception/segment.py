@@ -224,15 +224,15 @@ def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, count
 
 
 def _outward_by_free_space(points: np.ndarray, centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray,
-                           radius: float, step: float, grid: OccupancyGrid | None) -> np.ndarray:
+                           radius: float, step: float, grid: OccupancyGrid | None, tree: cKDTree | None = None) -> np.ndarray:
     """For clouds without a viewpoint: a surface was seen from its outside, so the space in front
     of it is empty. Each segment normal points to the side along which fewer points lie in a thin
     cylinder (probes every ``step`` up to ``radius``); ties fall back to the local-centre rule.
     With a ``grid`` (the cloud's occupancy at its resolution, fine enough), patches are oriented by what each side
     sees (:mod:`realsim.perception.visibility`) where that decides: at a contact between two
     objects the free space in front of a side is the other object's. Near-horizontal surfaces
-    face up: scans see tops, and an object stacked on a top fills the space above it."""
-    tree = cKDTree(points)
+    face up: scans see tops, and an object stacked on a top fills the space above it. ``tree``: one of ``points``."""
+    tree = tree if tree is not None else cKDTree(points)
     ts = np.arange(2 * step, radius + 1e-9, step)
     score = np.zeros(len(centroids))
     for t in ts:
@@ -265,12 +265,13 @@ def _point_outward(points: np.ndarray, normals: np.ndarray, working: float, para
     return normals * np.where(seen <= -2, -1.0, 1.0)[:, None]
 
 
-def _spacing(points: np.ndarray) -> float:
-    """Median distance from a point to its nearest neighbour (on a deterministic subset)."""
+def _spacing(points: np.ndarray, tree: cKDTree | None = None) -> float:
+    """Median distance from a point to its nearest neighbour (on a deterministic subset); ``tree``:
+    a cKDTree of ``points`` built before."""
     if len(points) < 2:
         return float("inf")
     sample = points[:: max(1, len(points) // 5000)]
-    return float(np.median(cKDTree(points).query(sample, k=2)[0][:, 1]))
+    return float(np.median((tree if tree is not None else cKDTree(points)).query(sample, k=2)[0][:, 1]))
 
 
 def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
@@ -336,11 +337,12 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         # pixel normals point toward the camera: their sum gives the outward side of each segment
         away_seg = -np.stack([np.bincount(part, normals[ids, i], minlength=n_seg) for i in range(3)], axis=1)
     else:
-        cell = _spacing(points[ids])  # voxel centres lie closer than their voxels: a finer, still closed grid
+        tree = cKDTree(points[ids]) if len(ids) >= 2 else None  # one tree for the spacing and the free-space probes
+        cell = _spacing(points[ids], tree)  # voxel centres lie closer than their voxels: a finer, still closed grid
         working = resolution if resolution is not None else cell
         if working <= params.visibility_cell:  # fine enough to see which side of a patch is open
             grid = OccupancyGrid(points[ids] if context is None else np.vstack([points[ids], context]), cell)
-        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance, grid)
+        nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance, grid, tree)
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 
