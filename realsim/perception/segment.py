@@ -53,9 +53,8 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
         candidate = candidate[inside_convex_polygon(points[candidate, :2], plane.polygon, params.polygon_margin)]
         for upper in planes:  # the space under a higher support is its furniture (legs, sides)
             if upper.observed and upper.height > plane.height + params.min_height:
-                below = np.flatnonzero(z[candidate] < upper.height + params.min_height)  # only these can be under it
-                under = below[inside_convex_polygon(points[candidate[below], :2], upper.polygon, params.structure_margin)]
-                candidate = np.delete(candidate, under)
+                under = inside_convex_polygon(points[candidate, :2], upper.polygon, params.structure_margin)
+                candidate = candidate[~(under & (z[candidate] < upper.height + params.min_height))]
         support[candidate] = i
         height[candidate] = h[candidate]
     return support, height
@@ -208,7 +207,6 @@ def merge_regions(n_seg: int, si: np.ndarray, sj: np.ndarray, weight: np.ndarray
 # objects
 
 
-
 def _outward_from_local_centre(centroids: np.ndarray, normals: np.ndarray, counts: np.ndarray, radius: float) -> np.ndarray:
     """For clouds without a viewpoint: each segment normal points away from the (point-weighted)
     centre of the segments within ``radius``, which lies inside the object the segment bounds."""
@@ -266,8 +264,7 @@ def _point_outward(points: np.ndarray, normals: np.ndarray, working: float, para
 
 
 def _spacing(points: np.ndarray, tree: cKDTree | None = None) -> float:
-    """Median distance from a point to its nearest neighbour (on a deterministic subset); ``tree``:
-    a cKDTree of ``points`` built before."""
+    """Median distance from a point to its nearest neighbour (on a deterministic subset); ``tree``: one of ``points``."""
     if len(points) < 2:
         return float("inf")
     sample = points[:: max(1, len(points) // 5000)]
