@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 import time
 
 import numpy as np
@@ -12,7 +13,13 @@ import trimesh
 from realsim.completion.hull import from_arrays, mesh_arrays, trimesh_hull
 from realsim.forkmap import Ahead, can_fork, fork_map
 
-pytestmark = pytest.mark.skipif(not can_fork(), reason="fork_map forks on Linux with more than one worker")
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork_map forks on Linux only")
+
+
+@pytest.fixture(autouse=True)
+def _two_workers(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The suite runs with one worker per process (tests/conftest.py): these tests allow the fork."""
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
 
 
 def test_results_in_order_and_both_processes_work() -> None:

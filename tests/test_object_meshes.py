@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 import pytest
 import trimesh
@@ -14,6 +16,12 @@ from realsim.forkmap import can_fork
 from realsim.scene import Scene, SceneObject
 
 NO_PHOTO = AppearanceParams(enabled=False)
+
+
+@pytest.fixture(autouse=True)
+def _two_workers(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The suite runs with one worker per process (tests/conftest.py): these tests allow the fork."""
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
 
 
 def _scene(n: int = 4) -> Scene:
@@ -30,8 +38,9 @@ def _expected(scene: Scene) -> list[list[bytes]]:
     return [[collision_file(h) for h in o.collision] for o in scene.objects]
 
 
-@pytest.mark.skipif(not can_fork(), reason="begin forks on Linux with more than one worker")
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="begin forks on Linux only")
 def test_begun_work_is_taken_when_unchanged() -> None:
+    assert can_fork()
     scene = _scene()
     begin(scene, NO_PHOTO)
     ahead = object_meshes._begun[-1][3]

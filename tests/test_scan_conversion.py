@@ -101,9 +101,11 @@ def test_keyframe_is_at_rest(converted: dict[str, Path]) -> None:
 
 def test_same_input_and_seed_give_identical_scene_xml(converted: dict[str, Path], tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Two conversions from scratch (each with its own empty cache: nothing restored or reused):
-    the shared one of test0 (seed 0, maybe made by another pytest-xdist worker process) and one here."""
+    the shared one of test0 (seed 0, maybe made by another pytest-xdist worker process, one worker:
+    no fork) and one here with forked helpers sharing the per-object work (realsim.forkmap)."""
     first = converted["test0"]
     monkeypatch.setenv("REALSIM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
     convert(MOSD / "test0.pcd", tmp_path / "again", seed=0)
     assert (first / "scene.xml").read_bytes() == (tmp_path / "again" / "scene.xml").read_bytes()
     for f in (first / "assets").iterdir():

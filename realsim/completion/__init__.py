@@ -30,10 +30,10 @@ from realsim.completion.mirror import mirror_hidden_half
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_cylinder
-from realsim.completion.stage import complete_objects
+from realsim.completion.stage import complete_and_begin_meshes, complete_objects
 from realsim.completion.view import DepthView
 
 __all__ = [
     "CompletionParams", "ContainerParams", "DepthView", "OpenContainer", "carve_free_space", "clip_convex", "complete_cylinder",
-    "complete_hull", "complete_objects", "complete_open_container", "fit_circle", "mirror_hidden_half", "round_rim",
+    "complete_and_begin_meshes", "complete_hull", "complete_objects", "complete_open_container", "fit_circle", "mirror_hidden_half", "round_rim",
 ]

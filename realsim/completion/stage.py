@@ -100,3 +100,13 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         if obj.resting_on is None and params.balance_margin > 0:
             brace(obj, params.balance_margin)
     return scene
+
+
+def complete_and_begin_meshes(scene: Scene, params: CompletionParams = CompletionParams()) -> Scene:
+    """:func:`complete_objects`, then the objects' mesh files for compose begun by a forked helper
+    while the next stages run (:func:`realsim.composition.object_meshes.begin`)."""
+    from realsim.composition.object_meshes import begin  # here: composition imports completion
+
+    scene = complete_objects(scene, params)
+    begin(scene)
+    return scene
