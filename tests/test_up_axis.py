@@ -23,12 +23,17 @@ def floor_scene():
     return make_scene(SceneSpec(layout="floor", objects=None, seed=80))
 
 
-@pytest.mark.parametrize("up", UP_AXES)
-def test_up_of_a_closed_floor_slab_mesh_and_of_a_scan(floor_scene, up: str) -> None:
-    mesh_points, _, _ = sample_mesh(floor_scene.mesh, 60_000, 0, Path("room.ply"))
-    scan_points, _, _ = sample_cloud(floor_scene, 60_000)
+def assert_up_found(scene, file_name: str, up: str) -> None:
+    """The scene's closed mesh and a scan of it, turned so ``up`` is up: ``detect_up`` names ``up``."""
+    mesh_points, _, _ = sample_mesh(scene.mesh, 60_000, 0, Path(file_name))
+    scan_points, _, _ = sample_cloud(scene, 60_000)
     for points in (mesh_points, scan_points):
         assert detect_up(points @ up_matrix(up).T, False, "ply", 0) == up
+
+
+@pytest.mark.parametrize("up", UP_AXES)
+def test_up_of_a_closed_floor_slab_mesh_and_of_a_scan(floor_scene, up: str) -> None:
+    assert_up_found(floor_scene, "room.ply", up)
 
 
 def test_floor_mesh_converts_right_side_up(floor_scene, tmp_path: Path) -> None:
@@ -51,10 +56,7 @@ def floorless_counter():
 @pytest.mark.parametrize("up", UP_AXES)
 def test_up_of_a_counter_under_a_larger_wall_without_floor(floorless_counter, up: str) -> None:
     """The wall is the largest plane; the objects rest on the counter, so its normal is up."""
-    mesh_points, _, _ = sample_mesh(floorless_counter.mesh, 60_000, 0, Path("counter.obj"))
-    scan_points, _, _ = sample_cloud(floorless_counter, 60_000)
-    for points in (mesh_points, scan_points):
-        assert detect_up(points @ up_matrix(up).T, False, "ply", 0) == up
+    assert_up_found(floorless_counter, "counter.obj", up)
 
 
 def test_a_wall_with_nothing_resting_on_it_gives_no_resting_vote() -> None:
