@@ -67,11 +67,19 @@ def test_too_little_to_show_gives_no_backdrop() -> None:
 
 
 @pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared/data/ycb_google16k")
-def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path) -> None:
+def test_unorganized_scan_gets_a_visual_only_backdrop(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A visual-only backdrop, textured support tops and objects coloured from the points; the same
+    files when forked helpers make the tops' textures and the rest check (a second conversion from
+    scratch with two workers; the suite runs with one)."""
     scene = make_scene(SceneSpec(layout="table", objects=("077_rubiks_cube",), seed=0))
     cloud = tmp_path / "cloud.ply"
     write_point_cloud(scene, cloud, count=200_000, seed=0)
     convert(cloud, tmp_path / "out", overrides={"robot": {"enabled": False}})
+    monkeypatch.setenv("REALSIM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
+    convert(cloud, tmp_path / "forked", overrides={"robot": {"enabled": False}})
+    for name in ["scene.xml", *(f"assets/{f.name}" for f in (tmp_path / "out" / "assets").iterdir())]:
+        assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "forked" / name).read_bytes(), name
     model = mujoco.MjModel.from_xml_path(str(tmp_path / "out" / "scene.xml"))
     backdrop = model.geom("backdrop_visual")
     assert backdrop.group[0] == 2 and backdrop.contype[0] == 0 and backdrop.conaffinity[0] == 0

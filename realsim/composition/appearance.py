@@ -231,7 +231,7 @@ def top_view_texture(plane: SupportPlane, top: trimesh.Trimesh, xy: np.ndarray, 
     v = 0.5 - (np.arange(h) + 0.5) / h  # image rows run from the far (+y) edge down
     gx, gy = np.meshgrid(u * size[0], v * size[1])
     world = np.column_stack([plane.rect_center[0] + c * gx.ravel() - s * gy.ravel(), plane.rect_center[1] + s * gx.ravel() + c * gy.ravel()])
-    _, nearest = cKDTree(xy).query(world)
+    _, nearest = cKDTree(xy, balanced_tree=False, compact_nodes=False).query(world)  # built in half the time (sliding midpoint)
     image = (np.clip(rgb[nearest], 0.0, 1.0) * 255 + 0.5).astype(np.uint8).reshape(h, w, 3)
     local = (np.asarray(top.vertices)[:, :2] - plane.rect_center) @ np.array([[c, -s], [s, c]])
     uv = np.clip(local / size + 0.5, 0.0, 1.0)  # OpenGL: v up, the far edge at the top of the image

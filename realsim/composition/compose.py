@@ -30,8 +30,9 @@ from realsim.composition.appearance import (
 from realsim.composition.arena import ArenaParams, add_arena
 from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
 from realsim.composition.object_meshes import collision_file, mesh_bytes, object_meshes
+from realsim.forkmap import Ahead
 from realsim.geometry import inside_convex_polygon
-from realsim.scene import Scene, SceneObject
+from realsim.scene import Scene, SceneObject, SupportPlane
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 
 
@@ -272,30 +273,36 @@ def _add_backdrop(spec: mujoco.MjSpec, backdrop: Backdrop, params: ComposeParams
 def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams, assets: dict[str, bytes]) -> dict[int, list[float]]:
     """An unorganized capture's look: each observed support's top as seen from above (and its
     median colour for the box under it) and the backdrop of what is neither object nor support;
-    returns the supports' colours."""
+    returns the supports' colours. The objects' colours (with the capture's colours) and the
+    backdrop are made here while a forked helper makes the tops' textures (:class:`Ahead`)."""
     assert scene.points is not None and scene.labels is not None
     points = np.asarray(scene.points, float)
     colors = np.asarray(scene.colors, float) if scene.colors is not None else np.full(points.shape, UNCOLOURED)  # geometry only: grey
     background = scene.labels <= 0
-    colours: dict[int, list[float]] = {}
+    tops: list[tuple[SupportPlane, trimesh.Trimesh, np.ndarray]] = []
     for plane in [p for p in scene.planes if p.observed]:
         near = background & (np.abs(np.nan_to_num(points[:, 2], nan=1e9) - plane.height) < params.appearance.support_tolerance)
         idx = np.flatnonzero(near)
         on = idx[inside_convex_polygon(points[idx, :2], np.asarray(plane.polygon, float))]
         background[on] = False
-        if len(on) < 3:
-            continue
+        if len(on) >= 3:
+            tops.append((plane, support_top(plane, params.appearance.support_cell, params.appearance.top_lift), on))
+    with Ahead(lambda k: top_view_texture(tops[k][0], tops[k][1], points[tops[k][2], :2], colors[tops[k][2]]), len(tops)) as textures:
+        if scene.colors is not None:  # no photo to project: the objects' colours from the points
+            for obj in scene.objects:
+                colour_object_from_points(obj, points, colors, scene.labels, params.appearance)
+        observed = [p for p in scene.planes if p.observed] or list(scene.planes)
+        centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
+            else np.nanmean(points, axis=0)
+        spacing = scene.capture.point_spacing or float("nan")
+        backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
+        made = textures.results()
+    colours: dict[int, list[float]] = {}
+    for (plane, top, on), (png, uv) in zip(tops, made):
         colours[plane.id] = [*np.median(np.clip(colors[on], 0.0, 1.0), axis=0).tolist(), 1.0]
-        top = support_top(plane, params.appearance.support_cell, params.appearance.top_lift)
-        png, uv = top_view_texture(plane, top, points[on, :2], colors[on])
         top.visual = trimesh.visual.TextureVisuals(uv=uv)
         name = f"support{plane.id}_top"
         add_visual_mesh(spec, spec.worldbody, f"{name}_visual", top, assets, add_baked_material(spec, name, png, assets, params.baked_emission))
-    observed = [p for p in scene.planes if p.observed] or list(scene.planes)
-    centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
-        else np.nanmean(points, axis=0)
-    spacing = scene.capture.point_spacing or float("nan")
-    backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
     if backdrop is not None:
         _add_backdrop(spec, backdrop, params, assets)
     return colours
@@ -311,10 +318,7 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
     with object_meshes(scene, image, params.appearance) as ahead:  # by a helper (perhaps begun already), while this process does the surfaces
         if image is not None:
             slabs = _add_captured_surfaces(spec, scene, image, params, assets, lows)
-        elif params.appearance.enabled and scene.points is not None and scene.labels is not None:
-            if scene.colors is not None:  # an unorganized capture: no photo to project, colours from the points
-                for obj in scene.objects:
-                    colour_object_from_points(obj, np.asarray(scene.points, float), np.asarray(scene.colors, float), scene.labels, params.appearance)
+        elif params.appearance.enabled and scene.points is not None and scene.labels is not None:  # unorganized: no photo
             slabs = _add_cloud_surfaces(spec, scene, params, assets)
         prepared = ahead.results()
     for obj, (texture, _) in zip(scene.objects, prepared):  # textures only with a photo
