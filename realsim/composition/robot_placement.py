@@ -9,7 +9,8 @@ at table height is what real setups do and gives top-down grasps over ~0.25-0.8 
 Candidate poses lie along each side of the support rectangle, facing inward; each is scored by
 solving IK for top-down grasps above every graspable object (and for the sideways pull of each
 drawer handle) and summing reachability and manipulability sqrt(det J J^T); the best candidate wins (ties broken by candidate order, so the
-choice is deterministic).
+choice is deterministic). Every candidate is scored on its own (no solve carries over), so they are
+shared with a forked helper (:func:`realsim.forkmap.fork_map`).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from realsim.forkmap import fork_map
 from realsim.geometry import yaw_quat
 from realsim.robot.grasps import frame_from
 from realsim.robot.ik import ArmIK, IKParams, mat_to_quat
@@ -199,9 +201,11 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     base_z = inputs.rect[3] - params.pedestal_drop
     targets = [np.array(t) for t in inputs.targets]
     oriented = [(np.array(p), np.array(q)) for p, q in inputs.oriented]
+    poses = _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], params.ik_candidates)
+    _scoring_ik(SCORING_IK)  # built once, before the helper forks, for both processes
+    scores = fork_map(lambda i: score_pose(poses[i], base_z, targets, oriented=oriented)[0], len(poses))  # each pose on its own
     best, best_score = None, -np.inf
-    for pose in _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], params.ik_candidates):
-        s, _, _ = score_pose(pose, base_z, targets, oriented=oriented)
+    for pose, s in zip(poses, scores):
         if s > best_score + 1e-9:
             best, best_score = pose, s
     assert best is not None
