@@ -94,14 +94,15 @@ def output_key(stage: str, *, data: bytes | None = None, params: Any = None) -> 
     return cache_key(stage, data=data, params={"code": code_digest(), "params": params})
 
 
-def spec_digest(spec: Any, assets: dict[str, bytes]) -> bytes:
-    """SHA-256 of an MjSpec's XML and its in-memory asset files (call it on a freshly compiled
-    spec: ``to_xml`` of a modified spec compiles it again)."""
-    h = hashlib.sha256(spec.to_xml().encode())
-    for name in sorted(assets):
-        h.update(f"{name}\0".encode())
-        h.update(hashlib.sha256(assets[name]).digest())
-    return h.digest()
+def model_digest(model: Any) -> bytes:
+    """SHA-256 of a compiled MjModel (its MJB bytes: everything a simulation of it reads). Cheaper
+    than the spec's XML, which MuJoCo compiles again to write."""
+    import mujoco
+    import numpy as np
+
+    buffer = np.empty(mujoco.mj_sizeModel(model), np.uint8)
+    mujoco.mj_saveModel(model, None, buffer)
+    return hashlib.sha256(buffer).digest()
 
 
 class BlobStore:

@@ -2,8 +2,9 @@
 
 Objects are released at their captured poses and simulated until they stop (or a time limit);
 that state becomes the keyframe. A check then resets to the keyframe and simulates again,
-measuring how far each object still moves: the figure the conversion report shows. Both are
-cached under the spec's content (XML, assets, parameters, code digest), so a rerun reuses them.
+measuring how far each object still moves: the figure the conversion report shows (a forked
+helper runs it while the contact capacity is measured). Both are cached under the compiled model
+(its MJB bytes), the parameters and the code digest, so a rerun reuses them.
 """
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from realsim.cache import DiskCache, output_key, spec_digest
+from realsim.cache import DiskCache, model_digest, output_key
+from realsim.forkmap import Ahead
 from realsim.physics.capacity import CapacityParams, LandingPeaks, measure_capacity
 from realsim.physics.divergence import check_state
 from realsim.scene import Scene
@@ -137,13 +139,12 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     spec = scene.spec
     model = spec.compile()
     cache = DiskCache()
-    cache_id = output_key("settle", data=spec_digest(spec, scene.assets), params=params)
-    settled = cache.get(cache_id)  # this very spec settled before: reuse its rest state and check
+    cache_id = output_key("settle", data=model_digest(model), params=params)
+    settled = cache.get(cache_id)  # this very model settled before: reuse its rest state and check
     if settled is None:
         with awake(model):
             settled = _settle(model, params)
-            settled["capacity"] = measure_capacity(model, (settled["key_qpos"], settled["key_ctrl"]), params.capacity,
-                                                   landing=settled.pop("landing"))
+        settled.pop("landing")  # measure_capacity's input, already in the capacity
         cache.put(cache_id, settled)
     spec.nconmax, spec.njmax = settled["capacity"]["nconmax"], settled["capacity"]["njmax"]  # read by MJX / MuJoCo Warp users
     qpos, key_qpos, key_ctrl, report = settled["qpos"], settled["key_qpos"], settled["key_ctrl"], dict(settled["report"])
@@ -173,7 +174,8 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
 
 def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
     """Simulate from keyframe ``home`` to rest and check the rest state: the keyframe's qpos
-    (canonical quaternion signs) and ctrl, and the rest-check report."""
+    (canonical quaternion signs) and ctrl, the rest-check report, the contact capacity and the
+    landing run's peaks read off the settling (None when it was shorter)."""
     data = mujoco.MjData(model)
     home = _home_key(model)
     if home is not None:
@@ -190,10 +192,12 @@ def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
         qpos[q + 3 : q + 7] = quat / np.linalg.norm(quat) * (1 if quat[0] >= 0 else -1)
     key_qpos, key_ctrl = np.round(qpos, 6), np.round(data.ctrl, 6)
     # The same state the keyframe holds, checked on the model already compiled (the written
-    # scene.xml is compiled again by the writer).
-    report = rest_check(model, params.check_time, state=(key_qpos, key_ctrl))
+    # scene.xml is compiled again by the writer), by a forked helper while the capacity is measured here.
+    with Ahead(lambda _: rest_check(model, params.check_time, state=(key_qpos, key_ctrl)), 1) as check:
+        capacity = measure_capacity(model, (key_qpos, key_ctrl), params.capacity, landing=None if landing is None else landing.peaks())
+        report = check.results()[0]
     report["settle_time"] = settle_time
-    return {"qpos": qpos, "key_qpos": key_qpos, "key_ctrl": key_ctrl, "report": report,
+    return {"qpos": qpos, "key_qpos": key_qpos, "key_ctrl": key_ctrl, "report": report, "capacity": capacity,
             "landing": None if landing is None else landing.peaks()}
 
 
