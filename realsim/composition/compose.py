@@ -288,9 +288,11 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
         if len(on) >= 3:
             tops.append((plane, support_top(plane, params.appearance.support_cell, params.appearance.top_lift), on))
     with Ahead(lambda k: top_view_texture(tops[k][0], tops[k][1], points[tops[k][2], :2], colors[tops[k][2]]), len(tops)) as textures:
-        if scene.colors is not None:  # no photo to project: the objects' colours from the points
+        if scene.colors is not None:  # no photo to project: the objects' colours from their points (those taken once)
+            mine = np.isin(scene.labels, [o.id for o in scene.objects])
+            taken = points[mine], colors[mine], scene.labels[mine]
             for obj in scene.objects:
-                colour_object_from_points(obj, points, colors, scene.labels, params.appearance)
+                colour_object_from_points(obj, *taken, params.appearance)
         observed = [p for p in scene.planes if p.observed] or list(scene.planes)
         centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
             else np.nanmean(points, axis=0)
