@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from realsim.completion.containers import round_rim
-from realsim.completion.parts import one_container
+from realsim.completion.parts import one_container, outer_wall_part
 
 
 def _bowl(centre: tuple[float, float], radius: float = 0.07, height: float = 0.055, seed: int = 0) -> np.ndarray:
@@ -51,3 +51,24 @@ def test_neighbours_that_are_not_one_container_stay_apart() -> None:
     d = rng.normal(size=(600, 3))
     ball = 0.02 * d / np.linalg.norm(d, axis=1, keepdims=True) + [0.0, 0.0, 0.03]
     assert not one_container(a, ball, 0.0, 0.2)  # a ball lying in the bowl has no point on its rim
+
+
+def test_the_lower_outside_of_a_near_wall_is_the_container_and_a_ball_in_it_is_not() -> None:
+    camera = np.array([-0.6, 0.0, 0.5])  # at -x, above: it sees the near wall's outside and the far wall's inside
+    bowl = _bowl((0.0, 0.0), seed=5)
+    outside = np.zeros(len(bowl), bool)
+    outside[:4000:2] = True
+    wall = np.arange(len(bowl)) < 4000
+    near, low = bowl[:, 0] < 0, bowl[:, 2] <= 0.03
+    part = bowl[wall & outside & near & low]  # split off where the wall curves in under the rim
+    seen = (wall & outside & near & ~low) | (wall & ~outside & ~near) | (np.arange(len(bowl)) >= 4000)
+    container = bowl[seen & ~(wall & outside & near & low)]
+    assert not one_container(container, part, 0.0, 0.2)  # no point of the part on the rim
+    assert outer_wall_part(container, part, 0.0, 0.2, camera)
+    rng = np.random.default_rng(6)
+    d = rng.normal(size=(1500, 3))
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    ball = 0.015 * d + [-0.03, 0.0, 0.03]  # lying in the bowl against its near wall: seen over the rim
+    ball = ball[(d @ (camera - [-0.03, 0.0, 0.03]) > 0) & (d[:, 2] > 0.3)]
+    assert not outer_wall_part(container, ball, 0.0, 0.2, camera)
+    assert not outer_wall_part(container, part + [0.25, 0.0, 0.0], 0.0, 0.2, camera)  # a neighbour beyond the rim

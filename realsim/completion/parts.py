@@ -6,13 +6,19 @@ on one rim circle: the top band of the two together is one ring (a circle, not a
 top), and each part has points on that circle. Two neighbours that are not one container fail that
 test: two cups side by side have two rims, a box beside a bowl no circle at all, two halves of a
 closed can a filled disc on top, and a fruit lying in a bowl has no points on its rim.
+
+The lower outside of a bowl's near wall, where it curves in under the rim, may be split off with no
+point on the rim. Such a part is the container's wall when the container alone is open and round
+(a rim circle over a hollow top), and the part lies under its rim, on the camera's side of its axis
+and outside its cavity: the lines of sight to it enter the rim's vertical cylinder below the rim
+(into the cavity the camera sees only over the rim: a fruit lying in the bowl is seen so).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from realsim.completion.containers import ContainerParams, round_rim
+from realsim.completion.containers import ContainerParams, cavity_floor, round_rim
 from realsim.scene import Scene, SceneObject
 
 NEAR = 0.02  # m: parts whose footprints' bounds lie farther apart are not tested
@@ -43,10 +49,45 @@ def one_container(a: np.ndarray, b: np.ndarray, base_z: float, max_radius: float
     return True
 
 
-def merge_container_parts(scene: Scene, max_radius: float, params: ContainerParams = ContainerParams()) -> list[tuple[int, int]]:
+def outer_wall_part(container: np.ndarray, part: np.ndarray, base_z: float, max_radius: float, camera: np.ndarray,
+                    params: ContainerParams = ContainerParams()) -> bool:
+    """True when the points ``part`` are the outside of the near wall under the rim of the open round
+    container whose points are ``container`` (see the module's notes), seen from ``camera``."""
+    top_z = float(np.percentile(container[:, 2], 98))
+    height = top_z - base_z
+    rim = round_rim(container, base_z, top_z, max_radius) if height > 0 else None
+    if rim is None:
+        return False
+    centre, radius = rim
+    toward = camera[:2] - centre
+    if np.linalg.norm(toward) < 1e-6 or cavity_floor(container, centre, radius, height, params.min_depth, camera[:2]) is None:
+        return False
+    rel = part[:, :2] - centre
+    under = (np.linalg.norm(rel, axis=1) <= (1 + RIM_BAND) * radius) & (part[:, 2] < top_z - RIM_BAND * height) & (rel @ toward > 0)
+    if np.mean(under) < 1 - RIM_BAND:
+        return False
+    return bool(np.median(_entry_height(camera, part, centre, radius)) < top_z - RIM_BAND * height)
+
+
+def _entry_height(camera: np.ndarray, points: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:
+    """Where the line of sight to each point enters the vertical cylinder of ``radius`` about ``centre``:
+    its height there (-inf when it reaches the point without entering: the point is outside). Inside
+    an open container, the camera sees only what its lines of sight reach over the rim."""
+    c = camera[:2] - centre
+    d = points[:, :2] - camera[:2]
+    a, b, k = np.einsum("ij,ij->i", d, d), d @ c, float(c @ c) - radius * radius
+    disc = b * b - a * k
+    t = (-b - np.sqrt(np.maximum(disc, 0.0))) / np.maximum(a, 1e-12)
+    enters = (disc > 0) & (t >= 0) & (t <= 1)
+    return np.where(enters, camera[2] + t * (points[:, 2] - camera[2]), -np.inf)
+
+
+def merge_container_parts(scene: Scene, max_radius: float, params: ContainerParams = ContainerParams(),
+                          camera: np.ndarray | None = None) -> list[tuple[int, int]]:
     """Give the pixels of every object that is a part of the same open round container as another
-    (see :func:`one_container`) that object's id and drop it from ``scene.objects``; the (kept,
-    merged) id pairs. Objects standing on something else, or on different supports, are never merged."""
+    (see :func:`one_container`, and with the ``camera`` centre :func:`outer_wall_part`) that object's id and
+    drop it from ``scene.objects``; the (kept, merged) id pairs. Objects standing on something else,
+    or on different supports, are never merged."""
     if scene.labels is None or scene.points is None or not params.enabled:
         return []
     labels, points = scene.labels, scene.points
@@ -62,7 +103,9 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
                 if a.support_id != b.support_id or len(pa) == 0 or len(pb) == 0:
                     continue
                 gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
-                if np.any(gap > NEAR) or not one_container(pa, pb, _base(scene, a, pa), max_radius):
+                base_z = _base(scene, a, pa)
+                if np.any(gap > NEAR) or not (one_container(pa, pb, base_z, max_radius) or (camera is not None and (
+                        outer_wall_part(pa, pb, base_z, max_radius, camera, params) or outer_wall_part(pb, pa, base_z, max_radius, camera, params)))):
                     continue
                 keep, gone = (a, b) if len(pa) >= len(pb) else (b, a)
                 labels[labels == gone.id] = keep.id

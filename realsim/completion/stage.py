@@ -31,13 +31,13 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
     labels, points = scene.labels, scene.points
     if points is None:
         return scene
-    merge_container_parts(scene, params.cylinder_max_radius, params.containers)
+    view = DepthView.of(scene) if params.carve else None  # its labels are the scene's: the merge below shows in them
+    merge_container_parts(scene, params.cylinder_max_radius, params.containers, view.camera if view is not None else None)
     by_id = {o.id: o for o in scene.objects}
     done: dict[int, trimesh.Trimesh] = {}
     observed: dict[int, np.ndarray] = {}
     hollow: set[int] = set()
     pieces: dict[int, list[trimesh.Trimesh]] = {}
-    view = DepthView.of(scene) if params.carve else None
     tolerance = free_space_tolerance(view, params, points, scene.planes) if view is not None else 0.0
     if view is not None and params.join_fragments:  # before anything reads the labels: a fragment is its object's points
         join_occluded_fragments(scene, view, tolerance, params.min_points, params.fragment_max_gap)
