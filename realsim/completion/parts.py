@@ -104,8 +104,13 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
                     continue
                 gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
                 base_z = _base(scene, a, pa)
-                if np.any(gap > NEAR) or not (one_container(pa, pb, base_z, max_radius) or (camera is not None and (
-                        outer_wall_part(pa, pb, base_z, max_radius, camera, params) or outer_wall_part(pb, pa, base_z, max_radius, camera, params)))):
+                if np.any(gap > NEAR):
+                    continue
+                if one_container(pa, pb, base_z, max_radius):
+                    why = "their top is one ring"
+                elif camera is not None and (outer_wall_part(pa, pb, base_z, max_radius, camera, params) or outer_wall_part(pb, pa, base_z, max_radius, camera, params)):
+                    why = "one is the outside of the other's near wall under its rim"
+                else:
                     continue
                 keep, gone = (a, b) if len(pa) >= len(pb) else (b, a)
                 labels[labels == gone.id] = keep.id
@@ -114,7 +119,7 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
                 for o in scene.objects:
                     if o.resting_on == gone.id:
                         o.resting_on = keep.id
-                keep.notes.append(f"joined with object {gone.id}: parts of one open round container (their top is one ring)")
+                keep.notes.append(f"joined with object {gone.id}: parts of one open round container ({why})")
                 merged.append((keep.id, gone.id))
                 changed = True
                 break
