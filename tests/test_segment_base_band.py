@@ -1,11 +1,12 @@
-"""The base band of unorganized clouds is looked for only near object footprints (segment_scene._near_cells)."""
+"""The base band of unorganized clouds: looked for only near object footprints
+(segment_scene._near_cells), given to an object only under its outline (segment_scene._under_outline)."""
 
 from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-from realsim.perception.segment_scene import _near_cells
+from realsim.perception.segment_scene import _near_cells, _under_outline
 
 
 def test_near_cells_keeps_every_point_within_reach_and_drops_far_ones() -> None:
@@ -28,3 +29,19 @@ def test_near_cells_keeps_every_point_within_reach_and_drops_far_ones() -> None:
 
 def test_near_cells_with_nothing_to_be_near() -> None:
     assert not _near_cells(np.zeros((4, 2)), np.zeros((0, 2), dtype=np.int64), 0.01, 0.02).any()
+
+
+def test_under_outline_is_the_owners_hull_grown_by_the_margin() -> None:
+    rng = np.random.default_rng(7)
+    box = rng.uniform([0.0, 0.0], [0.10, 0.06], size=(400, 2))  # object 1: a 10 x 6 cm footprint
+    disc = rng.normal([0.3, 0.0], 0.02, size=(300, 2))  # object 2, apart
+    line = np.c_[np.linspace(-0.3, -0.2, 20), np.zeros(20)]  # object 3: collinear, no outline
+    all_xy = np.vstack([box, disc, line, rng.uniform(-0.5, 0.5, size=(500, 2))])
+    labels = np.repeat(np.array([1, 2, 3, 0]), [400, 300, 20, 500])
+    probes = np.array([[0.05, 0.03], [0.101, 0.03], [0.12, 0.03], [0.05, -0.03], [0.05, 0.03], [-0.25, 0.0]])
+    owner = np.array([1, 1, 1, 1, 2, 3])
+    inside = _under_outline(probes, owner, all_xy, labels, margin=0.002)
+    # inside the box; just outside its hull but within the margin; a cell (2 cm) beside it: not
+    # its foot; under another object's outline only for that object; a line has no inside
+    assert inside[0] and inside[1]
+    assert not inside[2] and not inside[3] and not inside[4] and not inside[5]

@@ -8,7 +8,7 @@ import numpy as np
 from scipy import ndimage
 from scipy.spatial import cKDTree
 
-from realsim.geometry import inside_convex_polygon
+from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.perception.resolution import working_resolution
 from realsim.perception.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 from realsim.scene import Scene, SceneObject
@@ -134,8 +134,9 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
     """Give the points between the support's noise and ``min_height`` to the object whose foot
     they are, once the objects are found (the objects are never joined through it): above 4 sigma
     of the noise (never under 2 mm), to the object within ``reach``; between 1 and 4 sigma, only
-    inside that object's footprint (its occupied cells of side ``cell``): the support under an
-    object is hidden, so what rises there is the object's foot, not the support's noise. Inside
+    under that object's outline (the convex hull of its points, grown by the noise): the support
+    under an object is hidden, so what rises there is the object's foot, not the support's noise
+    (the cells of side ``cell`` it occupies would take the support's noise up to a cell around it). Inside
     the footprint's holes (cells its outline encloses: a bowl's or a mug's inner floor) nothing
     of the support is seen at all, so every point there down to 4 sigma under it is the object's."""
     low, sure = max(noise, MIN_OBJECT_HEIGHT), max(4 * noise, MIN_OBJECT_HEIGHT)
@@ -169,8 +170,22 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
     dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
     near = np.isfinite(dist)
     band, mine, height, owner = band[near], mine[near], height[near], foot_labels[nn[near]]
-    keep = (height > sure) | np.isin(key(owner, mine), key(foot_labels, foot))
+    keep = (height > sure) | _under_outline(scene.points[band, :2], owner, scene.points[:, :2], labels, noise)
     labels[band[keep]] = owner[keep]
+
+
+def _under_outline(xy: np.ndarray, owner: np.ndarray, all_xy: np.ndarray, labels: np.ndarray, margin: float) -> np.ndarray:
+    """Mask of the points ``xy`` inside the xy convex hull (grown by ``margin``) of the points of
+    ``all_xy`` labelled as their ``owner``."""
+    out = np.zeros(len(xy), dtype=bool)
+    for k in np.unique(owner):
+        mine = owner == k
+        try:
+            polygon = polygon_and_rectangle(all_xy[labels == k])[0]
+        except ValueError:  # a degenerate object (collinear points): no outline to be under
+            continue
+        out[mine] = inside_convex_polygon(xy[mine], polygon, margin)
+    return out
 
 
 def _near_cells(xy: np.ndarray, cells: np.ndarray, cell: float, reach: float) -> np.ndarray:
