@@ -117,6 +117,26 @@ def test_the_scanned_bowl_is_one_hollow_piece_set_that_holds_a_ball() -> None:
     assert np.hypot(x - centre[0], y - centre[1]) < radius and table < z - 0.015 < bowl.floor_z + 0.01  # resting on the cavity floor
 
 
+def test_an_object_in_a_mug_rests_on_its_cavity_floor_not_through_it_on_the_table() -> None:
+    """rest_inside: an object seen inside the completed (hollow) scanned mug stops at its cavity
+    floor, one lying across the rim at the rim; neither is carried down through it to the table."""
+    from realsim.completion.stacking import rest_inside
+
+    view, points, mine, truth, table, tolerance = _capture("025_mug")
+    pts = points[mine]
+    top = float(np.percentile(pts[:, 2], 98))
+    centre, radius = round_rim(pts, table, top, 0.2) or (np.zeros(2), 0.0)
+    within = (np.linalg.norm(points[:, :2] - centre, axis=1) < radius) & (points[:, 2] > table) & (points[:, 2] < top) & ~mine
+    mug = complete_open_container(pts, centre, radius, table, top, camera_xy=view.camera[:2], seen_inside=points[within])
+    assert mug is not None and mug.floor_z - table > 0.01
+    grid = np.stack(np.meshgrid(np.linspace(-0.01, 0.01, 5), np.linspace(-0.01, 0.01, 5)), axis=-1).reshape(-1, 2)
+    block = np.column_stack([centre + grid, np.full(len(grid), mug.floor_z + 0.02)])  # the seen top of a 2 cm block on the floor
+    assert abs(rest_inside(mug.pieces, block, tolerance) - mug.floor_z) < 0.002  # (before: the table)
+    across = np.column_stack([centre[0] + np.linspace(-1.3, 1.3, 40) * radius, np.full(40, centre[1]), np.full(40, top + 0.01)])
+    assert abs(rest_inside(mug.pieces, across, tolerance) - top) < 0.003  # a stick lying across the rim
+    assert rest_inside(mug.pieces, block + [3 * radius, 0.0, 0.0], tolerance) is None  # nothing of the mug under it
+
+
 def test_the_free_space_cuts_keep_what_the_camera_saw_of_the_object() -> None:
     view, points, mine, truth, table, tolerance = _capture("003_cracker_box", seed=1)
     pts = points[mine]

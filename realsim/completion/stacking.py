@@ -10,6 +10,7 @@ import trimesh
 
 from realsim.completion.hull import trimesh_hull
 from realsim.completion.params import CompletionParams
+from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.scene import SceneObject
 
 
@@ -81,6 +82,23 @@ def top_under(under: trimesh.Trimesh, pts: np.ndarray) -> float:
     """Height of the top of the convex shape ``under`` below the footprint of ``pts``: its highest
     point there."""
     return float(_tops(under, pts[:, :2]).max())
+
+
+def rest_inside(pieces: list[trimesh.Trimesh], pts: np.ndarray, tolerance: float) -> float | None:
+    """Height of what an object seen as ``pts`` rests on inside a hollow body made of convex
+    ``pieces``: the highest top of a piece under one of its points that lies below that point (within
+    ``tolerance``: the cavity floor, an inner wall's slope, the rim it lies across), never a wall's
+    foot under a point inside it; None when no piece lies under any point."""
+    best: float | None = None
+    for piece in pieces:
+        inside = inside_convex_polygon(pts[:, :2], polygon_and_rectangle(np.asarray(piece.vertices)[:, :2])[0])
+        if not inside.any():
+            continue
+        tops = _tops(piece, pts[inside, :2])
+        below = tops[tops <= pts[inside, 2] + tolerance]
+        if len(below):
+            best = max(best if best is not None else -np.inf, float(below.max()))
+    return best
 
 
 def sloping_top(under: trimesh.Trimesh, pts: np.ndarray, min_slope: float = 0.02, max_residual: float = 0.001) -> np.ndarray | None:

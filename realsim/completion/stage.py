@@ -13,7 +13,7 @@ from realsim.completion.object_shape import Context, Shape, complete_object
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
 from realsim.completion.parts import merge_container_parts
-from realsim.completion.stacking import bottom_up, flatten_top, seat_on, set_shape, sloping_top, top_under
+from realsim.completion.stacking import bottom_up, flatten_top, rest_inside, seat_on, set_shape, sloping_top, top_under
 from realsim.completion.view import DepthView
 from realsim.forkmap import fork_map
 from realsim.scene import Scene, SceneObject
@@ -62,8 +62,9 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
                 slope = sloping_top(done[obj.resting_on], pts)
                 if slope is None:  # a level top is cut flat (a face-face contact); a sloping one is kept
                     done[obj.resting_on] = flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
-            else:
-                base_z = ctx.floor_under(obj, pts)
+            else:  # on a hollow body: down to what is under it inside (its cavity floor), not through it
+                inside = rest_inside(pieces[obj.resting_on], pts, tolerance) if obj.resting_on in hollow else None
+                base_z = ctx.floor_under(obj, pts) if inside is None else inside + params.base_clearance
             shape = complete_object(obj, ctx, base_z)
         mesh, parts, visual, base_centre, kind = shape.mesh, shape.parts, shape.visual, shape.base_centre, shape.kind
         if shape.hollow:
