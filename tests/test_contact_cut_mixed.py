@@ -59,3 +59,26 @@ def test_a_contact_whose_sides_go_on_as_narrow_is_not_cut() -> None:
     assert _cut(0.45, CutParams(), widen=0.0) is None  # the same links, but one body's neck
     assert _cut(0.45, CutParams(min_section_ratio=0.0), widen=0.0) is not None  # the section gate alone refused it
     assert _cut(0.3, CutParams(), widen=0.0) is not None  # a clear fold needs no widening
+
+
+def _with_loose_pair() -> tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The folded two-patch contact plus two linked points just behind the left patch's far
+    corners whose every other link folds right back (weight 1e-20, as a thin wall's far side
+    between near ones)."""
+    n, a, b, w, points, height = _two_patches(0.3)
+    corner = np.array([0, SIDE * 2 * (SIDE - 1)])  # the far left edge's ends
+    back = points[corner] + [0.0, 0.0, -0.002]
+    a = np.r_[a, n, n, n + 1]
+    b = np.r_[b, n + 1, corner]
+    w = np.r_[w, 1.0, 1e-20, 1e-20]
+    return n + 2, a, b, w, np.vstack([points, back]), np.r_[height, back[:, 2]]
+
+
+def test_points_linked_by_nothing_but_full_folds_do_not_hide_the_contact() -> None:
+    """Alone they are a component of their own to the Laplacian: its Fiedler vector was their
+    indicator, whose cut is too small to keep, and the contact was never tried."""
+    n, a, b, w, points, height = _with_loose_pair()
+    side = _best_cut(n, a, b, w, points, height, CutParams())
+    assert side is not None
+    left = np.r_[np.arange(n - 2) % (2 * SIDE) < SIDE, True, True]  # the loose pair joins its neighbours' side
+    assert (side == left).all() or (side == ~left).all()

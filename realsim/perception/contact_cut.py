@@ -30,6 +30,9 @@ from realsim.perception.object_relations import base_height
 
 __all__ = ["CutParams", "concave_link_weights", "cut_contacts", "section_ratio"]
 
+EIGEN_TOL = 1e-6  # relative accuracy of the Fiedler vector
+LINK_FLOOR = EIGEN_TOL  # a link lighter than this holds nothing the eigen solver can tell from no link
+
 
 @dataclass(frozen=True)
 class CutParams:
@@ -141,25 +144,66 @@ def section_ratio(points: np.ndarray, side: np.ndarray, a: np.ndarray, b: np.nda
     return min(ratios)
 
 
-def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.ndarray, height: np.ndarray,
-              params: CutParams) -> np.ndarray | None:
-    """The side (bool per node) of the best acceptable normalized cut of a connected graph, or None."""
-    if n < 2 * params.min_points:
-        return None
-    graph = sparse.coo_matrix((np.r_[w, w], (np.r_[a, b], np.r_[b, a])), shape=(n, n)).tocsr()
+def _loose_nodes(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, min_points: int) -> np.ndarray:
+    """Nodes (bool) held to the rest only by links weighing less than the eigen solver resolves
+    (``LINK_FLOOR``), in pieces too small to be a side: a point whose every link folds right
+    back (a thin wall's far side between two near ones) is a component of its own to the
+    Laplacian, and its indicator, not the cut, becomes the Fiedler vector."""
+    held = w >= LINK_FLOOR
+    _, comp = connected_components(sparse.coo_matrix((np.ones(int(held.sum())), (a[held], b[held])), shape=(n, n)),
+                                   directed=False)
+    return np.asarray(np.bincount(comp)[comp] < min_points, dtype=bool)
+
+
+def _graph(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray) -> sparse.csr_matrix:
+    """The symmetric weighted adjacency of links (a, b)."""
+    return sparse.coo_matrix((np.r_[w, w], (np.r_[a, b], np.r_[b, a])), shape=(n, n)).tocsr()
+
+
+def _fiedler(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray) -> np.ndarray | None:
+    """The Fiedler vector of the normalized cut (second eigenvector of I - D^-1/2 W D^-1/2, scaled
+    by D^-1/2) of a connected graph, or None when the solver does not converge."""
+    graph = _graph(n, a, b, w)
     degree = np.asarray(graph.sum(axis=1)).ravel()
     scale = 1.0 / np.sqrt(np.maximum(degree, 1e-12))
     laplacian = (sparse.identity(n) - sparse.diags(scale) @ graph @ sparse.diags(scale)).tocsc()
     shift = -1e-3
-    try:  # the two smallest eigenvectors of I - D^-1/2 W D^-1/2 (shift-invert: a near cut has an
-        # eigenvalue close to 0, where plain Lanczos converges slowly); the second is the Fiedler direction
+    try:  # the two smallest eigenvectors (shift-invert: a near cut has an eigenvalue close to 0,
+        # where plain Lanczos converges slowly); the second is the Fiedler direction
         lu = splu((laplacian - shift * sparse.identity(n)).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                   options={"SymmetricMode": True})  # symmetric positive definite: a symmetric ordering, no pivoting
         inverse = LinearOperator((n, n), matvec=lu.solve, dtype=np.float64)
-        vals, vecs = eigsh(laplacian, k=2, sigma=shift, which="LM", OPinv=inverse, v0=np.sqrt(degree), tol=1e-6, maxiter=5000)
+        vals, vecs = eigsh(laplacian, k=2, sigma=shift, which="LM", OPinv=inverse, v0=np.sqrt(degree), tol=EIGEN_TOL,
+                           maxiter=5000)
     except (ArpackNoConvergence, RuntimeError):
         return None
-    order = np.argsort(vecs[:, int(np.argmax(vals))] * scale, kind="stable")
+    return np.asarray(vecs[:, int(np.argmax(vals))] * scale, dtype=np.float64)
+
+
+def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.ndarray, height: np.ndarray,
+              params: CutParams) -> np.ndarray | None:
+    """The side (bool per node) of the best acceptable normalized cut of a connected graph, or None.
+
+    Candidate cuts split the nodes in the order of the Fiedler vector, computed without the
+    loose nodes (:func:`_loose_nodes`); each of those takes the value of the nearest other point."""
+    if n < 2 * params.min_points:
+        return None
+    loose = _loose_nodes(n, a, b, w, params.min_points)
+    core = np.flatnonzero(~loose)
+    if len(core) < 2 * params.min_points:
+        return None
+    index = np.full(n, -1, dtype=np.int64)
+    index[core] = np.arange(len(core))
+    inner = (index[a] >= 0) & (index[b] >= 0)
+    core_value = _fiedler(len(core), index[a[inner]], index[b[inner]], w[inner])
+    if core_value is None:
+        return None
+    value = np.empty(n)
+    value[core] = core_value
+    if loose.any():
+        value[loose] = core_value[cKDTree(points[core]).query(points[loose])[1]]
+    degree = np.asarray(_graph(n, a, b, w).sum(axis=1)).ravel()
+    order = np.argsort(value, kind="stable")
     rank = np.empty(n, dtype=np.int64)
     rank[order] = np.arange(n)
     lo, hi = np.minimum(rank[a], rank[b]), np.maximum(rank[a], rank[b])
