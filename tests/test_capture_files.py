@@ -149,3 +149,45 @@ def test_counter_under_a_wall_without_floor_is_up_and_alone(tmp_path: Path) -> N
     assert scene.capture.up == "+z"
     observed = [p for p in scene.planes if p.observed]
     assert len(observed) == 1 and abs(observed[0].height - 0.9) < 0.01
+
+
+def _video(folder: Path, frames: int, codec: str = "libx265") -> None:
+    """Replace the sequence's rgb/ by an rgb.mp4 of ``frames`` frames (HEVC, as Stray Scanner writes)."""
+    import imageio.v3 as iio
+    from PIL import Image
+
+    pictures = [np.asarray(Image.open(p)) for p in sorted((folder / "rgb").glob("*.png"))][:frames]
+    iio.imwrite(folder / "rgb.mp4", np.stack(pictures), fps=30, codec=codec)
+    for p in (folder / "rgb").glob("*.png"):
+        p.unlink()
+    (folder / "rgb").rmdir()
+
+
+@pytest.mark.parametrize("codec", ["libx265", "libx264"])
+def test_sequence_with_a_colour_video_fuses_like_its_frames(tmp_path: Path, codec: str) -> None:
+    """Stray Scanner's rgb.mp4 in place of rgb/: the same surface as the PNG frames, coloured from the video."""
+    from realsim.perception.rgbd import fuse_sequence
+
+    _sequence(tmp_path / "png", 4)
+    _sequence(tmp_path / "mp4", 4)
+    _video(tmp_path / "mp4", 4, codec)
+    pts_png, _ = fuse_sequence(tmp_path / "png")
+    pts, cols = fuse_sequence(tmp_path / "mp4")
+    assert np.array_equal(pts, pts_png)  # colour never moves the surface
+    assert abs(float(np.median(cols)) - 120 / 255) < 0.03  # the frames' grey, through the codec
+
+
+@pytest.mark.parametrize("damage", ["junk", "truncated", "too short"])
+def test_broken_colour_video_is_an_input_error(tmp_path: Path, damage: str) -> None:
+    from realsim.perception.rgbd import fuse_sequence
+
+    folder = tmp_path / "seq"
+    _sequence(folder, 6)
+    _video(folder, 2 if damage == "too short" else 6)
+    video = folder / "rgb.mp4"
+    if damage == "junk":
+        video.write_bytes(b"not a video")
+    elif damage == "truncated":
+        video.write_bytes(video.read_bytes()[: video.stat().st_size // 3])
+    with pytest.raises(InputError, match="rgb.mp4"):
+        fuse_sequence(folder)

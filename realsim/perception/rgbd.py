@@ -2,7 +2,8 @@
 
 The accepted layout is Stray Scanner's (iPhone/iPad LiDAR), a folder holding::
 
-    rgb/000000.png ...        colour frames (PNG or JPG; or one video ``rgb.mp4``, frame i = row i)
+    rgb/000000.png ...        colour frames (PNG or JPG), or instead one video ``rgb.mp4`` (any
+                              codec ffmpeg reads; its i-th decoded picture is frame i)
     depth/000000.png ...      depth, uint16 millimetres, 0 = no depth (or ``.npy`` float metres);
                               may be smaller than the colour frames (e.g. 256x192)
     camera_matrix.csv         3x3 intrinsics of the colour frames, comma separated, one row a line
@@ -11,13 +12,15 @@ The accepted layout is Stray Scanner's (iPhone/iPad LiDAR), a folder holding::
                               world gravity-aligned, Y up, metres)
     confidence/000000.png     optional, ARKit depth confidence 0/1/2; pixels below 1 are dropped
 
-Frames are matched by number; depth beyond ``max_depth`` is dropped. The frames are fused into
+Frames are matched by number (a video's frames by their order, decoded one at a time, so a
+long 1920x1440 recording is never held in memory); depth beyond ``max_depth`` is dropped. The frames are fused into
 a truncated signed distance field and its zero level is the capture's surface, in the poses'
 frame (Y up, metres), so the load stage knows units and up without detection.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -79,12 +82,45 @@ def _frames(folder: Path, sub: str, suffixes: tuple[str, ...]) -> dict[int, Path
     return out
 
 
-def _color_frames(folder: Path) -> dict[int, np.ndarray] | dict[int, Path]:
+class _VideoFrames:
+    """The pictures of a colour video by number, decoded in order as they are asked for (a frame
+    is asked for once, in increasing order); the frame numbers are the depth frames' until the
+    video ends (a video's frame count is only known once decoded)."""
+
+    def __init__(self, path: Path, numbers: list[int]) -> None:
+        import imageio.v3 as iio
+
+        self.path = path
+        self.numbers = set(numbers)
+        self._pictures = enumerate(iio.imiter(path))  # a generator: the file is opened on the first frame
+        self.decoded = 0
+
+    def __contains__(self, i: object) -> bool:
+        return i in self.numbers
+
+    def __iter__(self) -> Iterator[int]:
+        return iter(sorted(self.numbers))
+
+    def __len__(self) -> int:
+        return len(self.numbers)
+
+    def __getitem__(self, i: int) -> np.ndarray | None:
+        """Frame ``i`` (H, W, 3), or None when the video ends before it."""
+        try:
+            for k, picture in self._pictures:
+                self.decoded = k + 1
+                if k == i:
+                    return np.asarray(picture)
+        except (OSError, RuntimeError) as exc:  # imageio-ffmpeg: "Could not load meta information", or a stream cut short
+            where = f"breaks off after frame {self.decoded - 1}" if self.decoded else "cannot be read"
+            raise InputError(f"{self.path}: the colour video {where} ({str(exc).splitlines()[0][:80]}); re-export it") from None
+        return None
+
+
+def _color_frames(folder: Path, depth_numbers: list[int]) -> dict[int, Path] | _VideoFrames:
     if (folder / "rgb").is_dir():
         return _frames(folder, "rgb", (".png", ".jpg", ".jpeg"))
-    import imageio.v3 as iio
-
-    return {i: frame for i, frame in enumerate(iio.imiter(folder / "rgb.mp4"))}
+    return _VideoFrames(folder / "rgb.mp4", depth_numbers)
 
 
 def _image(p: Path | np.ndarray) -> np.ndarray:
@@ -139,7 +175,7 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         raise InputError(f"{folder / 'camera_matrix.csv'}: expected a 3x3 matrix")
     poses = read_poses(folder)
     depths = _frames(folder, "depth", (".png", ".npy"))
-    colors = _color_frames(folder)
+    colors = _color_frames(folder, sorted(depths))
     conf = _frames(folder, "confidence", (".png",)) if (folder / "confidence").is_dir() else {}
     frames = sorted(set(depths) & set(colors) & set(poses))
     if not frames:
@@ -150,8 +186,13 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
     v = params.voxel
     steps = np.arange(-params.trunc, params.trunc + 1e-9, v)
     keys, sdfs, weights, cols = [], [], [], []
+    fused = 0
     for i in frames:
-        depth, rgb, kk = _frame_rgbd(folder, k, depths[i], colors[i], conf.get(i), params)
+        color = colors[i]
+        if color is None:  # the colour video ended
+            break
+        fused += 1
+        depth, rgb, kk = _frame_rgbd(folder, k, depths[i], color, conf.get(i), params)
         h, w = depth.shape
         stride = max(1, int(round(min(h, w) / 240)))  # about 320x240 rays a frame
         vv, uu = np.mgrid[0:h:stride, 0:w:stride]
@@ -169,6 +210,9 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         sdfs.append(np.repeat(-steps, len(d)).astype(np.float32))
         weights.append(np.tile((1.0 / d**2).astype(np.float32), len(steps)))
         cols.append(np.tile(rgb[vv, uu], (len(steps), 1)))
+    if fused < 0.5 * len(frames):
+        raise InputError(f"{folder / 'rgb.mp4'}: the video holds {fused} frame(s) for {len(frames)} depth frames: "
+                         "the export is incomplete; re-export the sequence")
     if not any(len(c) for c in keys):
         raise InputError(f"{folder}: no frame holds depth within {params.max_depth} m (check depth units: uint16 millimetres)")
     keys = [c for c in keys if len(c)]

@@ -39,7 +39,7 @@ def restyle_sequence(folder: Path, jpg: bool = False, depth_size: tuple[int, int
         import imageio.v3 as iio
 
         frames = np.stack([np.asarray(Image.open(p))[..., :3] for p in rgb_files])
-        iio.imwrite(folder / "rgb.mp4", frames, fps=30, codec="libx264", quality=9)
+        iio.imwrite(folder / "rgb.mp4", frames, fps=30, codec="libx265", quality=9)  # HEVC, as Stray Scanner writes
         for p in rgb_files:
             p.unlink()
         (folder / "rgb").rmdir()
