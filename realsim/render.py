@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import mujoco
@@ -40,13 +42,26 @@ def render_image(model: mujoco.MjModel, data: mujoco.MjData | None = None, *, ca
             initial = [k for k in range(model.nkey) if model.key(k).name == KEYFRAME]
             mujoco.mj_resetDataKeyframe(model, data, initial[0] if initial else 0)
     mujoco.mj_forward(model, data)
-    with mujoco.Renderer(model, height=height, width=width) as renderer:
+    with _offscreen(model, width, height), mujoco.Renderer(model, height=height, width=width) as renderer:
         if camera is not None:
             renderer.update_scene(data, camera=camera)
         else:
             renderer.update_scene(data, camera=overview_camera(model))
         image: np.ndarray = renderer.render().copy()
         return image
+
+
+@contextmanager
+def _offscreen(model: mujoco.MjModel, width: int, height: int) -> Iterator[None]:
+    """``model``'s offscreen buffer sized to the picture for the block (the renderer allocates and
+    clears the whole buffer; the pixels drawn into a ``width`` x ``height`` viewport are the same). A
+    picture larger than the buffer is still refused by the renderer."""
+    size = model.vis.global_.offwidth, model.vis.global_.offheight
+    model.vis.global_.offwidth, model.vis.global_.offheight = min(width, size[0]), min(height, size[1])  # never larger
+    try:
+        yield
+    finally:
+        model.vis.global_.offwidth, model.vis.global_.offheight = size
 
 
 def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:
