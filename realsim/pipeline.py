@@ -176,7 +176,10 @@ def run_pipeline(
         started = time.perf_counter()
         if console is not None:
             console.log(f"[bold]{name}[/bold]")
+        left = scene.compiled
         scene = stage.run(scene, params)
+        if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
+            scene.compiled = None
         scene.timings[name] = round(time.perf_counter() - started, 4)
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
     return scene

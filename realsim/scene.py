@@ -110,6 +110,7 @@ class Scene:
     timings: dict[str, float] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     spec: Any = None  # mujoco.MjSpec once composed
+    compiled: Any = None  # (spec, mujoco.MjModel): the spec as the stage just run compiled and left it, for the next stage (the pipeline keeps it one stage)
     assets: dict[str, bytes] = field(default_factory=dict)  # files of assets/, by name
     keyframe_qpos: np.ndarray | None = None
     settle_report: dict[str, Any] = field(default_factory=dict)

@@ -50,6 +50,7 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
             handles = attach_robot(scene.spec, tuple(found), base_z=scene.floor_height,
                                    pedestal_height=pedestal_height(scene, params.placement))
             scene.assets.update(handles.assets)
+    scene.compiled = (scene.spec, handles.model)  # settle simulates this very model instead of compiling it again
     scene.robot = {
         "model": "franka_emika_panda (mujoco-menagerie panda.xml)",
         **handles.record(),

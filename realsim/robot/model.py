@@ -83,6 +83,7 @@ class RobotHandles(RobotNames):
     pedestal_height: float = 0.0
     home_key: str = "home"
     assets: dict[str, bytes] = field(default_factory=dict, repr=False)
+    model: Any = field(default=None, repr=False, compare=False)  # mujoco.MjModel: the spec compiled as attach_robot left it
 
     def record(self) -> dict[str, Any]:
         """What scene.json records about the robot: the names the runtime looks up in scene.xml."""
@@ -195,7 +196,9 @@ def attach_robot(
     ``base_z`` is the floor under the robot; with ``pedestal_height`` > 0 a fixed box pedestal
     (collision group 3 plus a visual twin) lifts link0 to ``base_z + pedestal_height``. The
     robot's meshes are added to ``spec.assets``, and a ``home`` keyframe replaces any existing
-    one (robot at home posture, gripper open, every other joint at its ``qpos0``).
+    one (robot at home posture, gripper open, every other joint at its ``qpos0``). The handles'
+    ``model`` is ``spec`` compiled as it is left here (the keyframe written into the compiled model
+    too: the same MJB bytes as compiling ``spec`` again).
     """
     x, y, yaw = (float(v) for v in base_pos_xy_yaw)
     top = float(base_z) + max(float(pedestal_height), 0.0)
@@ -218,6 +221,7 @@ def attach_robot(
     for key in list(spec.keys):
         if key.name in ("home", f"{prefix}home"):
             spec.delete(key)
+    home = spec.add_key(name="home")  # at qpos0 until its values, which need the compiled layout, are known
     model = spec.compile()
     qpos = model.qpos0.copy()
     for name, value in zip(ARM_JOINTS, HOME_ARM):
@@ -228,7 +232,9 @@ def attach_robot(
     for name, value in zip(ARM_ACTUATORS, HOME_ARM):
         ctrl[model.actuator(prefix + name).id] = value
     ctrl[model.actuator(prefix + GRIPPER_ACTUATOR).id] = GRIPPER_OPEN_CTRL
-    spec.add_key(name="home", qpos=qpos.tolist(), qvel=np.zeros(model.nv).tolist(), ctrl=ctrl.tolist())
+    home.qpos, home.qvel, home.ctrl = qpos.tolist(), np.zeros(model.nv).tolist(), ctrl.tolist()
+    k = model.key("home").id
+    model.key_qpos[k], model.key_qvel[k], model.key_ctrl[k] = qpos, 0.0, ctrl
     return RobotHandles(
         prefix=prefix,
         base_body=prefix + "link0",
@@ -243,6 +249,7 @@ def attach_robot(
         base_z=top,
         pedestal_height=max(float(pedestal_height), 0.0),
         assets=assets,
+        model=model,
     )
 
 
