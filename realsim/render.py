@@ -54,14 +54,17 @@ def render_image(model: mujoco.MjModel, data: mujoco.MjData | None = None, *, ca
 @contextmanager
 def _offscreen(model: mujoco.MjModel, width: int, height: int) -> Iterator[None]:
     """``model``'s offscreen buffer sized to the picture for the block (the renderer allocates and
-    clears the whole buffer; the pixels drawn into a ``width`` x ``height`` viewport are the same). A
-    picture larger than the buffer is still refused by the renderer."""
-    size = model.vis.global_.offwidth, model.vis.global_.offheight
+    clears the whole buffer; the pixels drawn into a ``width`` x ``height`` viewport are the same), and
+    no shadow map when no light casts shadows (none is drawn). A picture larger than the buffer is
+    still refused by the renderer."""
+    size, shadow = (model.vis.global_.offwidth, model.vis.global_.offheight), model.vis.quality.shadowsize
     model.vis.global_.offwidth, model.vis.global_.offheight = min(width, size[0]), min(height, size[1])  # never larger
+    if not np.any(model.light_castshadow):
+        model.vis.quality.shadowsize = 0
     try:
         yield
     finally:
-        model.vis.global_.offwidth, model.vis.global_.offheight = size
+        (model.vis.global_.offwidth, model.vis.global_.offheight), model.vis.quality.shadowsize = size, shadow
 
 
 def render_file(scene_xml: Path, out_png: Path, camera: str | None = None, width: int = 960, height: int = 720) -> Path:
