@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from realsim.cache import model_digest
+from realsim.composition.compiled import handed_model
 from realsim.composition.compose import compose_scene
-from realsim.composition.settle import compiled_spec
 from realsim.robot.model import attach_robot
 from tests.test_robot import box_object, table_scene
 
@@ -18,10 +18,10 @@ def test_attach_robot_model_is_the_spec_compiled_again() -> None:
 
 def test_a_held_model_serves_only_its_own_spec_and_once() -> None:
     scene = compose_scene(table_scene([box_object(1, "box_a", (0.1, 0.05), (0.05, 0.05, 0.06))]))
-    held = scene.spec.compile()
-    scene.compiled = (scene.spec, held)
-    assert compiled_spec(scene) is held and scene.compiled is None
-    assert compiled_spec(scene) is not held  # taken once: compiled anew
+    held = scene.compiled[1]
+    assert scene.compiled[0] is scene.spec
+    assert handed_model(scene) is held and scene.compiled is None
+    assert handed_model(scene) is None  # taken once
     other = compose_scene(table_scene([]))
     scene.compiled = (other.spec, held)
-    assert compiled_spec(scene) is not held and scene.compiled is None  # another spec's model is never used
+    assert handed_model(scene) is None and scene.compiled is None  # another spec's model is never used

@@ -342,7 +342,7 @@ def compose_scene(scene: Scene, params: ComposeParams = ComposeParams()) -> Scen
             bodies[obj.name].add_site(name=f"{obj.name}_{site}", pos=list(pos), size=[0.005, 0.005, 0.005], group=4)
     add_capture_camera(spec, scene)
     spec.assets = assets
-    spec.compile()
+    scene.compiled = (spec, spec.compile())  # the robot stage reads the objects' poses from it
     scene.spec = spec
     scene.assets = assets
     return scene

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import mujoco
 import numpy as np
 
 from realsim.cache import DiskCache, output_key
@@ -30,8 +31,10 @@ class RobotStageParams:
     placement: PlacementParams = field(default_factory=PlacementParams)
 
 
-def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> Scene:
-    """Attach the Panda (pose searched for reach and manipulability unless given) to the spec."""
+def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams(), model: mujoco.MjModel | None = None) -> Scene:
+    """Attach the Panda (pose searched for reach and manipulability unless given) to the spec.
+    ``model`` is ``scene.spec`` compiled as it is now, when the caller has it (else compiled here);
+    ``scene.compiled`` is left holding the spec compiled with the robot."""
     if not params.enabled or scene.spec is None or not scene.planes:
         return scene
     pose = tuple(float(v) for v in params.pose) if params.pose is not None else None
@@ -40,7 +43,7 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams()) -> 
         handles = add_robot(scene, pose=pose, params=params.placement)
     else:
         cache = DiskCache()
-        inputs = search_inputs(scene, scene.spec.compile(), params.placement)
+        inputs = search_inputs(scene, scene.spec.compile() if model is None else model, params.placement)
         key = _placement_key(scene, params.placement, inputs)
         found = cache.get(key)
         if found is None:

@@ -134,10 +134,11 @@ def _rest_check(model: mujoco.MjModel, duration: float, key: str, state: tuple[n
     return {"duration": duration, "displacement": moved, "max_displacement": max(moved.values(), default=0.0), "max_sink": max(sunk.values(), default=0.0)}
 
 
-def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
-    """Simulate the composed spec to rest, store keyframe ``initial``, and run the rest check."""
+def settle_scene(scene: Scene, params: SettleParams = SettleParams(), model: mujoco.MjModel | None = None) -> Scene:
+    """Simulate the composed spec to rest, store keyframe ``initial``, and run the rest check.
+    ``model`` is ``scene.spec`` compiled as it is now, when the caller has it (else compiled here)."""
     spec = scene.spec
-    model = compiled_spec(scene)
+    model = spec.compile() if model is None else model
     cache = DiskCache()
     cache_id = output_key("settle", data=model_digest(model), params=params)
     settled = cache.get(cache_id)  # this very model settled before: reuse its rest state and check
@@ -170,16 +171,6 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams()) -> Scene:
     scene.keyframe_qpos = qpos
     scene.settle_report = report
     return scene
-
-
-def compiled_spec(scene: Scene) -> mujoco.MjModel:
-    """``scene.spec`` compiled: the model the stage before compiled from this very spec and left
-    unchanged (``scene.compiled``, taken once), else a new compile."""
-    held, scene.compiled = scene.compiled, None
-    if held is not None and held[0] is scene.spec:
-        model: mujoco.MjModel = held[1]
-        return model
-    return scene.spec.compile()
 
 
 def _settle(model: mujoco.MjModel, params: SettleParams) -> dict[str, Any]:
