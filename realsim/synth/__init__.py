@@ -37,7 +37,7 @@ Write capture forms (each returns its ``ground_truth.json`` entry with ``capture
     render(scene, look_at(eye, target)) -> Frame(color, depth, part, object_id)   # one ray-cast view
 """
 
-from realsim.synth.camera import Camera, Frame, backproject, kinect_noise, kinect_view, look_at, orbit, render
+from realsim.synth.camera import Camera, Frame, backproject, kinect_noise, kinect_view, look_at, orbit, out_of_view, render
 from realsim.synth.forms import (
     ground_truth,
     sample_cloud,
@@ -62,7 +62,7 @@ from realsim.synth.scene import (
 from realsim.synth.splat import write_splat
 
 __all__ = [
-    "Camera", "Frame", "backproject", "kinect_noise", "kinect_view", "look_at", "orbit", "render",
+    "Camera", "Frame", "backproject", "kinect_noise", "kinect_view", "look_at", "orbit", "out_of_view", "render",
     "ground_truth", "sample_cloud", "visible_faces", "world_to_capture", "write_all", "write_mesh",
     "write_organized_view", "write_point_cloud", "write_rgbd_sequence", "write_splat",
     "DEFAULT_OBJECTS", "LAYOUTS", "GtObject", "GtSupport", "SceneSpec", "SynthScene", "make_scene", "ycb_root",

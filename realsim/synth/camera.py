@@ -46,15 +46,70 @@ def look_at(eye: np.ndarray, target: np.ndarray, width: int = 640, height: int =
     return Camera(width, height, f, f, (width - 1) / 2, (height - 1) / 2, pose)
 
 
-def kinect_view(scene: SynthScene, rng: np.random.Generator, width: int = 640, height: int = 480) -> Camera:
-    """A tripod camera in front of the primary support looking down at its middle (like mOSD)."""
+MAX_RANGE = 3.0  # m: farthest depth ``render`` returns (a Kinect's working range)
+NEAR = 0.4  # m: nearest depth a Kinect measures
+
+
+def object_points(scene: SynthScene) -> list[np.ndarray]:
+    """World vertices of each ground-truth object, in ``scene.objects`` order."""
+    faces = scene.mesh.faces
+    return [scene.mesh.vertices[np.unique(faces[scene.face_object == obj.id])] for obj in scene.objects]
+
+
+def out_of_view(scene: SynthScene, cam: Camera, margin_px: float = 0.0, max_range: float = MAX_RANGE) -> list[str]:
+    """Names of the objects not wholly in the picture: a vertex projecting outside the image (less
+    ``margin_px``), behind the camera or beyond ``max_range``."""
+    world_to_optical = np.linalg.inv(cam.pose)
+    names = []
+    for obj, pts in zip(scene.objects, object_points(scene)):
+        c = pts @ world_to_optical[:3, :3].T + world_to_optical[:3, 3]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            u, v = cam.fx * c[:, 0] / c[:, 2] + cam.cx, cam.fy * c[:, 1] / c[:, 2] + cam.cy
+        inside = ((c[:, 2] > 0) & (c[:, 2] <= max_range) & (u >= margin_px - 0.5) & (u <= cam.width - 0.5 - margin_px)
+                  & (v >= margin_px - 0.5) & (v <= cam.height - 0.5 - margin_px))
+        if not inside.all():
+            names.append(obj.name)
+    return names
+
+
+def frame_points(points: np.ndarray, fwd: np.ndarray, distance: float, width: int = 640, height: int = 480,
+                 fovy_deg: float = 45.0, margin_px: float = 24.0) -> Camera:
+    """A level camera looking along ``fwd`` that holds every point in the picture ``margin_px`` in from
+    the edges: aimed at the points' middle in the image, as far back as ``distance`` or as needed."""
+    cam = look_at(np.zeros(3), np.asarray(fwd, float), width, height, fovy_deg)
+    rot = cam.pose[:3, :3]
+    kx = (width / 2 - margin_px) / cam.fx  # the largest |x / z| and |y / z| in the picture
+    ky = (height / 2 - margin_px) / cam.fy
+
+    def back(a: np.ndarray) -> float:  # the least distance holding points ``a`` (optical, about the target)
+        return max(distance, float(np.max(np.maximum(np.abs(a[:, 0]) / kx, np.abs(a[:, 1]) / ky) - a[:, 2])), NEAR - float(a[:, 2].min()))
+
+    target = points.mean(axis=0)
+    for _ in range(4):  # centre the projected bounds (the last distance holds them whatever the centring)
+        a = (points - target) @ rot  # optical coordinates about the target; depth is a_z + d
+        d = back(a)
+        x, y = a[:, 0] / (a[:, 2] + d), a[:, 1] / (a[:, 2] + d)
+        target = target + rot[:, :2] @ (d * np.array([(x.min() + x.max()) / 2, (y.min() + y.max()) / 2]))
+    d = back((points - target) @ rot)
+    return look_at(target - d * rot[:, 2], target, width, height, fovy_deg)
+
+
+def kinect_view(scene: SynthScene, rng: np.random.Generator, width: int = 640, height: int = 480,
+                margin_px: float = 24.0) -> Camera:
+    """A tripod camera in front of the primary support looking down at its middle (like mOSD), seeded;
+    when that picture would not hold every object wholly (``margin_px`` in from the edges), the same
+    pitch and yaw re-aimed at the objects and pulled back as far as needed (``out_of_view`` names
+    any the range still cannot hold)."""
     sup = scene.primary_support()
     distance = rng.uniform(1.0, 1.2) * (1.5 if sup.kind == "floor" else 1.0)
     pitch = math.radians(rng.uniform(38.0, 48.0))
     yaw = math.radians(90.0 + rng.uniform(-10.0, 10.0))  # in front (-y), looking along +y
     target = np.array([sup.center[0] + rng.uniform(-0.05, 0.05), sup.center[1] + rng.uniform(-0.05, 0.05), sup.height])
     fwd = np.array([math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), -math.sin(pitch)])
-    return look_at(target - distance * fwd, target, width, height)
+    cam = look_at(target - distance * fwd, target, width, height)
+    if not scene.objects or not out_of_view(scene, cam, margin_px):
+        return cam
+    return frame_points(np.vstack(object_points(scene)), fwd, distance, width, height, margin_px=margin_px)
 
 
 def orbit(scene: SynthScene, frames: int, rng: np.random.Generator, width: int = 640, height: int = 480,

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.synth.camera import backproject, kinect_noise, kinect_view, orbit, render
+from realsim.synth.camera import backproject, kinect_noise, kinect_view, orbit, out_of_view, render
 from realsim.synth.meshes import raycaster
 from realsim.synth.scene import SynthScene
 
@@ -39,7 +39,8 @@ def apply(t: np.ndarray, pts: np.ndarray) -> np.ndarray:
 
 def write_organized_view(scene: SynthScene, path: Path, seed: int = 0, width: int = 640, height: int = 480) -> dict[str, Any]:
     """A Kinect-like organized PCD in the camera optical frame (metres, +y down) with the mOSD
-    ``label`` field (1 support top, 2 other furniture, 3 floor, 4 background, 10 * id objects)."""
+    ``label`` field (1 support top, 2 other furniture, 3 floor, 4 background, 10 * id objects). The
+    camera frames every object; ``out_of_view`` names any it could not hold in the picture."""
     from realsim.perception.pcd_io import write_pcd
 
     rng = np.random.default_rng([seed, 11])
@@ -50,7 +51,7 @@ def write_organized_view(scene: SynthScene, path: Path, seed: int = 0, width: in
     labels = np.where(np.isfinite(pts).all(axis=1), frame.part.reshape(-1), 0)
     write_pcd(path, pts, colors=frame.color.reshape(-1, 3), labels=labels, grid_shape=(height, width), encoding="binary_compressed")
     return {"file": path.name, "form": "organized_view", "units": "m", "up": "-y", "capture_to_world": cam.pose,
-            "intrinsics": cam.matrix, "label_field": "mOSD: 1 support top, 2 furniture, 3 floor, 4 background, 10*id object"}
+            "intrinsics": cam.matrix, "out_of_view": out_of_view(scene, cam), "label_field": "mOSD: 1 support top, 2 furniture, 3 floor, 4 background, 10*id object"}
 
 
 def write_rgbd_sequence(scene: SynthScene, folder: Path, frames: int = 30, seed: int = 0, width: int = 640,
