@@ -32,13 +32,18 @@ class Camera:
         return np.array([[self.fx, 0.0, self.cx], [0.0, self.fy, self.cy], [0.0, 0.0, 1.0]])
 
 
-def look_at(eye: np.ndarray, target: np.ndarray, width: int = 640, height: int = 480, fovy_deg: float = 45.0) -> Camera:
-    """A level camera at ``eye`` looking at ``target`` (no roll)."""
+def look_at(eye: np.ndarray, target: np.ndarray, width: int = 640, height: int = 480, fovy_deg: float = 45.0,
+            roll_deg: float = 0.0) -> Camera:
+    """A camera at ``eye`` looking at ``target``, level or turned ``roll_deg`` about its optical axis
+    (positive: the picture's +x axis dips below the horizon)."""
     fwd = np.asarray(target, float) - np.asarray(eye, float)
     fwd /= np.linalg.norm(fwd)
     right = np.cross(fwd, [0.0, 0.0, 1.0])
     right /= np.linalg.norm(right)
     down = np.cross(fwd, right)
+    if roll_deg:
+        c, s = math.cos(math.radians(roll_deg)), math.sin(math.radians(roll_deg))
+        right, down = c * right + s * down, c * down - s * right
     pose = np.eye(4)
     pose[:3, :3] = np.stack([right, down, fwd], axis=1)
     pose[:3, 3] = eye
@@ -73,10 +78,11 @@ def out_of_view(scene: SynthScene, cam: Camera, margin_px: float = 0.0, max_rang
 
 
 def frame_points(points: np.ndarray, fwd: np.ndarray, distance: float, width: int = 640, height: int = 480,
-                 fovy_deg: float = 45.0, margin_px: float = 24.0) -> Camera:
-    """A level camera looking along ``fwd`` that holds every point in the picture ``margin_px`` in from
-    the edges: aimed at the points' middle in the image, as far back as ``distance`` or as needed."""
-    cam = look_at(np.zeros(3), np.asarray(fwd, float), width, height, fovy_deg)
+                 fovy_deg: float = 45.0, margin_px: float = 24.0, roll_deg: float = 0.0) -> Camera:
+    """A camera looking along ``fwd`` (turned ``roll_deg``) that holds every point in the picture
+    ``margin_px`` in from the edges: aimed at the points' middle in the image, as far back as
+    ``distance`` or as needed."""
+    cam = look_at(np.zeros(3), np.asarray(fwd, float), width, height, fovy_deg, roll_deg)
     rot = cam.pose[:3, :3]
     kx = (width / 2 - margin_px) / cam.fx  # the largest |x / z| and |y / z| in the picture
     ky = (height / 2 - margin_px) / cam.fy
@@ -91,25 +97,26 @@ def frame_points(points: np.ndarray, fwd: np.ndarray, distance: float, width: in
         x, y = a[:, 0] / (a[:, 2] + d), a[:, 1] / (a[:, 2] + d)
         target = target + rot[:, :2] @ (d * np.array([(x.min() + x.max()) / 2, (y.min() + y.max()) / 2]))
     d = back((points - target) @ rot)
-    return look_at(target - d * rot[:, 2], target, width, height, fovy_deg)
+    return look_at(target - d * rot[:, 2], target, width, height, fovy_deg, roll_deg)
 
 
 def kinect_view(scene: SynthScene, rng: np.random.Generator, width: int = 640, height: int = 480,
-                margin_px: float = 24.0) -> Camera:
-    """A tripod camera in front of the primary support looking down at its middle (like mOSD), seeded;
-    when that picture would not hold every object wholly (``margin_px`` in from the edges), the same
-    pitch and yaw re-aimed at the objects and pulled back as far as needed (``out_of_view`` names
-    any the range still cannot hold)."""
+                margin_px: float = 24.0, pitch_deg: tuple[float, float] = (38.0, 48.0), roll_deg: float = 0.0) -> Camera:
+    """A tripod camera in front of the primary support looking down at its middle (like mOSD), seeded
+    (pitch drawn from ``pitch_deg``; ``roll_deg`` tips it as a hand-held camera is tipped); when
+    that picture would not hold every object wholly (``margin_px`` in from the edges), the same
+    pitch, yaw and roll re-aimed at the objects and pulled back as far as needed (``out_of_view``
+    names any the range still cannot hold)."""
     sup = scene.primary_support()
     distance = rng.uniform(1.0, 1.2) * (1.5 if sup.kind == "floor" else 1.0)
-    pitch = math.radians(rng.uniform(38.0, 48.0))
+    pitch = math.radians(rng.uniform(*pitch_deg))
     yaw = math.radians(90.0 + rng.uniform(-10.0, 10.0))  # in front (-y), looking along +y
     target = np.array([sup.center[0] + rng.uniform(-0.05, 0.05), sup.center[1] + rng.uniform(-0.05, 0.05), sup.height])
     fwd = np.array([math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), -math.sin(pitch)])
-    cam = look_at(target - distance * fwd, target, width, height)
+    cam = look_at(target - distance * fwd, target, width, height, roll_deg=roll_deg)
     if not scene.objects or not out_of_view(scene, cam, margin_px):
         return cam
-    return frame_points(np.vstack(object_points(scene)), fwd, distance, width, height, margin_px=margin_px)
+    return frame_points(np.vstack(object_points(scene)), fwd, distance, width, height, margin_px=margin_px, roll_deg=roll_deg)
 
 
 def orbit(scene: SynthScene, frames: int, rng: np.random.Generator, width: int = 640, height: int = 480,
@@ -174,6 +181,13 @@ def kinect_noise(depth: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Axial Kinect-like noise (Nguyen et al. 2012, softened): ~1.2 mm at 1 m, 2.3 mm at 1.5 m."""
     z = np.nan_to_num(depth, nan=1.0)
     return depth + rng.standard_normal(depth.shape) * (0.0008 + 0.0012 * (z - 0.4) ** 2)
+
+
+def view_cloud(scene: SynthScene, cam: Camera, rng: np.random.Generator) -> tuple[np.ndarray, Frame]:
+    """What a Kinect-like camera captures: optical-frame points (H * W, 3) with seeded depth noise
+    (NaN where nothing is in range) and the rendered frame (colour, parts, object ids)."""
+    frame = render(scene, cam)
+    return backproject(kinect_noise(frame.depth, rng), cam).reshape(-1, 3), frame
 
 
 def backproject(depth: np.ndarray, cam: Camera) -> np.ndarray:
