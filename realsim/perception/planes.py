@@ -31,6 +31,8 @@ class PlaneParams:
     max_planes: int = 8  # proposals examined
     min_plane_points: int = 100  # (downsampled) points for a proposal to count
     level_max_tilt_deg: float = 60.0  # dominant support searched within this of the coarse up
+    min_support_share: float = 0.04  # of a camera view's planar points: a smaller plane facing the picture's up is a thing's face
+    view_max_tilt_deg: float = 75.0  # ... of a camera view's picture up: its seen, upper side (a camera looking down steeply)
     support_max_tilt_deg: float = 8.0  # a support is horizontal within this after levelling
     refine_threshold: float = 0.006  # full-resolution refit band (m)
     region_cell: float = 0.02  # grid cell for splitting a plane into regions (m)
@@ -136,10 +138,11 @@ def _support_kind(height: float) -> str:
 def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     """Level the scene on its dominant support, find every horizontal support, floor at z = 0.
 
-    1. Seeded RANSAC proposals on a downsampled copy. The largest one within
-       ``level_max_tilt_deg`` of the loaded up axis (size weighted by cos^2 of the tilt) is the
-       dominant support; its normal, refitted
-       on full-resolution points and signed toward the camera for camera views, becomes +Z.
+    1. Seeded RANSAC proposals on a downsampled copy, each signed up (toward the camera for
+       camera views). The largest one within ``level_max_tilt_deg`` of the loaded up axis
+       (``view_max_tilt_deg`` of the picture's up for camera views; of its down when no plane of
+       ``min_support_share`` faces up: an upside-down picture), size weighted by cos^2 of the
+       tilt, is the dominant support; its normal, refitted on full-resolution points, becomes +Z.
     2. Every horizontal proposal is split into connected xy regions; regions at one height close
        to each other are one support (a table broken up by the objects occluding it), refitted by
        least squares on the full-resolution points in a thin band.
@@ -159,17 +162,26 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         work = work[np.sort(np.random.default_rng(scene.seed).choice(len(work), params.max_work_points, replace=False))]
     proposals = ransac_proposals(work, params, scene.seed)
     viewpoint = scene.capture.input_to_world[:3, 3] if scene.capture.camera_view else None
-    cos_level = np.cos(np.radians(params.level_max_tilt_deg))
-    candidates = [prop for prop in proposals if abs(prop[0][2]) >= cos_level]
+    max_tilt = params.view_max_tilt_deg if viewpoint is not None else params.level_max_tilt_deg
+    cos_level = np.cos(np.radians(max_tilt))
+    # Each plane signed up (a camera sees a support's upper side: toward the camera), then the
+    # largest near the loaded up, weighted by cos^2 of its tilt. Cameras are held roughly
+    # upright, so a wall facing a camera that looks down on a counter faces away from the
+    # picture's up and never levels the scene, and a big wall seen at a grazing angle does not
+    # win over the table.
+    oriented = [(*_orient_up(n, d, viewpoint), inl) for n, d, inl in proposals]
+    candidates = [prop for prop in oriented if prop[0][2] >= cos_level]
+    planar = sum(len(prop[2]) for prop in proposals)
+    if viewpoint is not None and not any(len(c[2]) >= params.min_support_share * planar for c in candidates):
+        # no support faces the picture's up, only small faces of things: the picture is upside down
+        candidates = [prop for prop in oriented if -prop[0][2] >= cos_level]
     if not candidates:
+        facing = " facing the camera" if viewpoint is not None else ""
         raise InputError(
-            f"{scene.capture.environment_file}: no support plane found (no large flat surface within "
-            f"{params.level_max_tilt_deg:.0f} deg of the up axis '{scene.capture.up}'); check --up"
+            f"{scene.capture.environment_file}: no support plane found (no large flat surface{facing} within "
+            f"{max_tilt:.0f} deg of the up axis '{scene.capture.up}'); check --up"
         )
-    # Largest plane, weighted by cos^2 of its tilt from the loaded up axis: cameras are held
-    # roughly upright, so a big wall seen at a grazing angle does not win over the table.
     normal, d, _ = max(candidates, key=lambda c: len(c[2]) * c[0][2] ** 2)
-    normal, d = _orient_up(normal, d, viewpoint)
     normal, d, _ = refine_plane(work, normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))
     pts = work @ rotation.T
