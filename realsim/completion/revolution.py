@@ -40,7 +40,10 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
     The circle must also win against the alternatives the evidence allows: it fits the side closer
     than a box corner (two perpendicular faces, :func:`corner_rms`) does, and the solid it makes
     holds what was seen: at most ``params.round_max_outside`` of the points (a handle, a spout) lie
-    beyond it (a top face reaching back past the circle is a body longer than it is wide)."""
+    beyond it (a top face reaching back past the circle is a body longer than it is wide). Seen from
+    ``camera_xy``, the silhouette is the circle's: as wide (within ``params.silhouette_min_share``)
+    and centred on it within the same share of the radius (the line of sight grazes a circle abreast
+    of its centre on both sides; an oval turned across the line of sight fits a circle off its middle)."""
     side = points[points[:, 2] < top_z - 0.25 * (top_z - base_z)]
     xy = (side if len(side) >= params.min_points else points)[:, :2]
     centre, radius, rms = fit_circle(xy)
@@ -55,10 +58,12 @@ def round_axis(points: np.ndarray, base_z: float, top_z: float, params: Completi
         d = centre - camera_xy
         if np.linalg.norm(d) > 1e-6:
             lateral = np.array([-d[1], d[0]]) / np.linalg.norm(d)
-            w = points[:, :2] @ lateral
-            share = float(np.percentile(w, 99) - np.percentile(w, 1)) / (2 * radius)
+            left, right = np.percentile(points[:, :2] @ lateral - centre @ lateral, [1, 99])
+            share = float(right - left) / (2 * radius)
             if not params.silhouette_min_share <= share <= 1 / params.silhouette_min_share:
                 return None  # narrower or wider across the line of sight than the circle: not round
+            if abs(0.5 * float(left + right)) > (1 - params.silhouette_min_share) * radius:
+                return None  # the silhouette is not centred on the circle: the arc is a turned oval's
     return centre, radius
 
 
