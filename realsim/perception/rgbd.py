@@ -14,7 +14,8 @@ The accepted layout is Stray Scanner's (iPhone/iPad LiDAR), a folder holding::
 
 Frames are matched by number (a video's frames by their order, decoded one at a time, so a
 long 1920x1440 recording is never held in memory); depth beyond ``max_depth`` is dropped. The frames are fused into
-a truncated signed distance field and its zero level is the capture's surface, in the poses'
+a truncated signed distance field, at a voxel the size of the rays' spacing on the surface (the
+frames' own resolution), and its zero level is the capture's surface, in the poses'
 frame (Y up, metres), so the load stage knows units and up without detection.
 """
 
@@ -32,14 +33,31 @@ from realsim.perception.unique_keys import unique_inverse
 _ARKIT_TO_OPTICAL = np.diag([1.0, -1.0, -1.0, 1.0])
 
 
+RAYS_ACROSS = 240  # rays cast across a frame's shorter side (about 320 x 240 a frame)
+
+
 @dataclass(frozen=True)
 class FusionParams:
     """TSDF fusion settings (metres)."""
 
-    voxel: float = 0.004  # TSDF voxel: fine enough for 3 cm objects
-    trunc: float = 0.012  # truncation distance
+    voxel: float | None = None  # TSDF voxel; None: the spacing of the rays on the surface (:func:`ray_spacing`)
+    trunc_voxels: float = 3.0  # truncation distance, in voxels
     max_depth: float = 3.0
     min_confidence: int = 1
+
+
+def _stride(h: int, w: int) -> int:
+    """Pixel step between the rays cast in a (h, w) depth frame."""
+    return max(1, int(round(min(h, w) / RAYS_ACROSS)))
+
+
+def ray_spacing(depth: np.ndarray, focal: float) -> float:
+    """Distance (m) between neighbouring rays of a depth frame where they meet the surface: its
+    median depth times the ray step over the focal length (pixels); NaN for a frame without depth.
+    A TSDF voxel this size holds about one ray's sample: the fused surface is as fine as the frames
+    see it (the crease between two touching objects stays a crease), never finer."""
+    seen = depth[depth > 0]
+    return float(np.median(seen)) * _stride(*depth.shape) / focal if len(seen) else float("nan")
 
 
 def is_rgbd_sequence(folder: Path) -> bool:
@@ -136,14 +154,20 @@ def _image(p: Path | np.ndarray) -> np.ndarray:
         raise InputError(f"{p}: cannot read the frame ({str(exc)[:80] or type(exc).__name__}); re-export or remove it") from None
 
 
-def _frame_rgbd(folder: Path, k: np.ndarray, depth: Path, color: Path | np.ndarray, conf: Path | None,
-                params: FusionParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Depth (H, W) metres (0 none), colour (H, W, 3) uint8 at the depth resolution, intrinsics scaled to it."""
+def _frame_depth(depth: Path, conf: Path | None, params: FusionParams) -> np.ndarray:
+    """Depth (H, W) metres, 0 where none, unconfident or beyond ``max_depth``."""
     raw = _image(depth)
     depth_m = raw.astype(np.float32) / (1000.0 if raw.dtype.kind in "ui" else 1.0)
     if conf is not None:
         depth_m[_image(conf) < params.min_confidence] = 0.0
     depth_m[~np.isfinite(depth_m) | (depth_m > params.max_depth)] = 0.0
+    return depth_m
+
+
+def _frame_rgbd(folder: Path, k: np.ndarray, depth: Path, color: Path | np.ndarray, conf: Path | None,
+                params: FusionParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Depth (H, W) metres (0 none), colour (H, W, 3) uint8 at the depth resolution, intrinsics scaled to it."""
+    depth_m = _frame_depth(depth, conf, params)
     rgb = _image(color)[..., :3]
     h, w = depth_m.shape
     kk = k.copy()
@@ -184,7 +208,17 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         raise InputError(f"{folder}: only {len(frames)} frame(s) have colour, depth and a pose ({len(colors)} colour, "
                          f"{len(depths)} depth, {len(poses)} poses): the export is incomplete; re-export the sequence")
     v = params.voxel
-    steps = np.arange(-params.trunc, params.trunc + 1e-9, v)
+    if v is None:  # the frames' own resolution: their depth is read first (cheap beside the colour)
+        spacing = []
+        for i in frames:
+            depth = _frame_depth(depths[i], conf.get(i), params)
+            # the intrinsics are the colour frames' (principal point at their centre), scaled to the depth frame
+            spacing.append(ray_spacing(depth, float(np.sqrt(k[0, 0] * k[1, 1])) * depth.shape[1] / (2.0 * k[0, 2])))
+        if np.isnan(spacing).all():
+            raise InputError(f"{folder}: no frame holds depth within {params.max_depth} m (check depth units: uint16 millimetres)")
+        v = float(np.nanmedian(spacing))
+    trunc = params.trunc_voxels * v
+    steps = np.arange(-trunc, trunc + 1e-9 * v, v)
     keys, sdfs, weights, cols = [], [], [], []
     fused = 0
     for i in frames:
@@ -194,7 +228,7 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         fused += 1
         depth, rgb, kk = _frame_rgbd(folder, k, depths[i], color, conf.get(i), params)
         h, w = depth.shape
-        stride = max(1, int(round(min(h, w) / 240)))  # about 320x240 rays a frame
+        stride = _stride(h, w)
         vv, uu = np.mgrid[0:h:stride, 0:w:stride]
         d = depth[vv, uu].ravel()
         ok = d > 0
