@@ -11,6 +11,7 @@ from scipy.spatial import cKDTree
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.perception.resolution import working_resolution
 from realsim.perception.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
+from realsim.perception.stack_split import give_resting_base
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import safe_name
 
@@ -107,6 +108,8 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
                              resolution=resolution, context=context)
     result = filter_by_size(centres, result, scene.planes, working, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
+    labels[fg] = give_resting_base(scene.points[fg], labels[fg], result.resting_on, max(2 * noise, MIN_OBJECT_HEIGHT),
+                                   working.jump_distance, resolution)
     _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
                     resolution)
     return labels, result

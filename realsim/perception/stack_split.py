@@ -15,14 +15,16 @@ from __future__ import annotations
 import numpy as np
 from scipy import sparse
 from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 
-__all__ = ["split_resting"]
+__all__ = ["give_resting_base", "split_resting"]
 
 LEVEL_COS = float(np.cos(np.radians(20.0)))  # a normal this close to vertical lies on a level surface
 OVER_SHARE = 0.9  # this share of the points above the top lie over it (within one cell of its outline)
 MAX_COVER = 0.5  # the outline of what lies above holds at most this share of the top's points
+LEVEL_SHARE = 0.5  # a base's top is level around what rests on it: this share of its points there lie in one layer
 
 
 def _top(z: np.ndarray, level: np.ndarray, cell: float) -> float | None:
@@ -99,3 +101,58 @@ def split_resting(points: np.ndarray, normals: np.ndarray, labels: np.ndarray, a
             out[members[resting]] = next_label
             next_label += 1
     return out
+
+
+def give_resting_base(points: np.ndarray, labels: np.ndarray, resting_on: dict[int, int | None], band: float,
+                      reach: float, step: float) -> np.ndarray:
+    """Labels (per point; objects > 0) with the lowest part of each object resting on another's
+    level top taken back from that base.
+
+    Segments straddle the crease where a resting object meets the top it stands on, so a ring of
+    its lowest points can end up with the base. A top is the highest surface of what it tops:
+    the base's points inside the resting object's outline (grown by ``band``) more than ``band``
+    above the base's top are the resting object's when they continue its surface, reached from
+    its kept points in steps of at most ``step`` (the working resolution); a relief of the top
+    itself (a cap's dome) lies apart from the object's wall. The top is the most populated layer
+    (``band`` thick) of the base's points within ``reach`` of the outline, and is used only when
+    level: at least ``LEVEL_SHARE`` of those points lie in it (a ridge's slopes have no such layer)."""
+    out = labels.copy()
+    for a, b in resting_on.items():
+        if b is None:
+            continue
+        mine, base = labels == a, np.flatnonzero(labels == b)
+        if mine.sum() < 3 or len(base) < 3:
+            continue
+        try:
+            outline = polygon_and_rectangle(points[mine, :2])[0]
+        except ValueError:  # a degenerate object (collinear seen from above): no outline
+            continue
+        near = base[inside_convex_polygon(points[base, :2], outline, reach)]
+        if len(near) < 3:
+            continue
+        z = points[near, 2]
+        values, counts = np.unique(np.floor(z / band).astype(np.int64), return_counts=True)
+        layer = np.abs(np.floor(z / band) - values[np.argmax(counts)]) <= 1
+        if layer.mean() < LEVEL_SHARE:
+            continue
+        top = float(np.median(z[layer]))
+        cand = near[(z > top + band) & inside_convex_polygon(points[near, :2], outline, band)]
+        out[cand[_reached(points[cand], points[mine], step)]] = a
+    return out
+
+
+def _reached(candidates: np.ndarray, start: np.ndarray, step: float) -> np.ndarray:
+    """Mask of the ``candidates`` reached from the ``start`` points in steps of at most ``step``
+    through other candidates."""
+    reached = np.zeros(len(candidates), dtype=bool)
+    if len(candidates) == 0:
+        return reached
+    fresh = cKDTree(start).query(candidates, distance_upper_bound=step)[0] <= step
+    while fresh.any():
+        reached |= fresh
+        rest = np.flatnonzero(~reached)
+        if len(rest) == 0:
+            break
+        fresh = np.zeros(len(candidates), dtype=bool)
+        fresh[rest] = cKDTree(candidates[reached]).query(candidates[rest], distance_upper_bound=step)[0] <= step
+    return reached
