@@ -1,12 +1,19 @@
 """The base band of unorganized clouds: looked for only near object footprints
-(segment_scene._near_cells), given to an object only under its outline (segment_scene._under_outline)."""
+(segment_scene._near_cells), given to an object only under its outline (segment_scene._under_outline),
+the outline of its foot: the support under an overhang stays the support's."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
+import pytest
 from scipy.spatial import cKDTree
 
 from realsim.perception.segment_scene import _near_cells, _under_outline
+from realsim.pipeline import run_pipeline
+from realsim.synth import SceneSpec, make_scene, write_point_cloud
+from realsim.synth.scene import ycb_root
 
 
 def test_near_cells_keeps_every_point_within_reach_and_drops_far_ones() -> None:
@@ -45,3 +52,24 @@ def test_under_outline_is_the_owners_hull_grown_by_the_margin() -> None:
     # its foot; under another object's outline only for that object; a line has no inside
     assert inside[0] and inside[1]
     assert not inside[2] and not inside[3] and not inside[4] and not inside[5]
+
+
+@pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared/data/ycb_google16k")
+def test_support_under_an_overhang_stays_the_supports(tmp_path: Path) -> None:
+    """The support is hidden only under an object's foot: under a lying drill's body, a mug's
+    handle or a pitcher's spout the scan still sees it, so its noise there is not the object's
+    (a 2 mm-noise 200k cloud; with the outline of all an object's points the three took 4.0 % of
+    their size in support points, the drill 7.6 %)."""
+    scene_gt = make_scene(SceneSpec(layout="table", objects=("035_power_drill", "019_pitcher_base", "025_mug"),
+                                    stacked=False, touching=False, seed=1))
+    _, ids = write_point_cloud(scene_gt, tmp_path / "overhangs.ply", 200_000)
+    detect = tmp_path / "detect.yaml"
+    detect.write_text("name: detect\nstages:\n  - load\n  - planes\n  - segment\n")
+    scene = run_pipeline(tmp_path / "overhangs.ply", pipeline=detect)
+    taken = []
+    for k in range(1, 4):
+        mine = ids == k
+        found = np.bincount(scene.labels[mine].clip(0)).argmax()
+        assert found > 0 and (scene.labels[mine] == 0).mean() < 0.03, scene_gt.objects[k - 1].name  # feet kept
+        taken.append(((scene.labels == found) & (ids == 0)).sum() / mine.sum())
+    assert np.mean(taken) < 0.035, taken

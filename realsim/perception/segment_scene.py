@@ -110,8 +110,8 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     labels[fg] = result.labels[inverse]
     labels[fg] = give_resting_base(scene.points[fg], labels[fg], result.resting_on, max(2 * noise, MIN_OBJECT_HEIGHT),
                                    working.jump_distance, resolution)
-    _extend_to_base(scene, labels, support, centres, result.labels, params, noise, at_resolution(params, resolution).jump_distance,
-                    resolution)
+    _extend_to_base(scene, labels, support, height, centres, result.labels, params, noise,
+                    at_resolution(params, resolution).jump_distance, resolution)
     return labels, result
 
 
@@ -132,13 +132,15 @@ def _in_tall_columns(points: np.ndarray, support: np.ndarray, height: np.ndarray
     return (top - low)[col] > params.max_object_size
 
 
-def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centres: np.ndarray, centre_labels: np.ndarray,
-                    params: SegmentParams, noise: float, reach: float, cell: float) -> None:
+def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, above: np.ndarray, centres: np.ndarray,
+                    centre_labels: np.ndarray, params: SegmentParams, noise: float, reach: float, cell: float) -> None:
     """Give the points between the support's noise and ``min_height`` to the object whose foot
     they are, once the objects are found (the objects are never joined through it): above 4 sigma
     of the noise (never under 2 mm), to the object within ``reach``; between 1 and 4 sigma, only
-    under that object's outline (the convex hull of its points, grown by the noise): the support
-    under an object is hidden, so what rises there is the object's foot, not the support's noise
+    under the outline of that object's foot (the convex hull of its points less than a cell over
+    ``min_height`` above their support, ``above``; grown by the noise): the support under an
+    object's foot is hidden, so what rises there is the object's foot, not the support's noise; an
+    overhang (a handle, a spout, a lying drill's body) leaves the support under it in view
     (the cells of side ``cell`` it occupies would take the support's noise up to a cell around it). Inside
     the footprint's holes (cells its outline encloses: a bowl's or a mug's inner floor) nothing
     of the support is seen at all, so every point there down to 4 sigma under it is the object's."""
@@ -173,7 +175,9 @@ def _extend_to_base(scene: Scene, labels: np.ndarray, support: np.ndarray, centr
     dist, nn = cKDTree(centres[obj]).query(scene.points[band], distance_upper_bound=reach)
     near = np.isfinite(dist)
     band, mine, height, owner = band[near], mine[near], height[near], foot_labels[nn[near]]
-    keep = (height > sure) | _under_outline(scene.points[band, :2], owner, scene.points[:, :2], labels, noise)
+    with np.errstate(invalid="ignore"):
+        footing = np.where((labels > 0) & ~(above < params.min_height + cell), 0, labels)
+    keep = (height > sure) | _under_outline(scene.points[band, :2], owner, scene.points[:, :2], footing, noise)
     labels[band[keep]] = owner[keep]
 
 
