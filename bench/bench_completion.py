@@ -57,16 +57,28 @@ def volume_iou(parts: list[trimesh.Trimesh], b: trimesh.Trimesh) -> float:
 def volume_overlap(parts: list[trimesh.Trimesh], b: trimesh.Trimesh) -> tuple[float, float, float]:
     """IoU of the union of convex ``parts`` with the solid bounded by ``b``, the share of the parts'
     volume inside ``b`` (too much: below 1) and the share of ``b`` the parts cover (too little)."""
-    lo = np.minimum(np.min([p.bounds[0] for p in parts], axis=0), b.bounds[0])
-    hi = np.maximum(np.max([p.bounds[1] for p in parts], axis=0), b.bounds[1])
-    axes = [np.arange(x + GRID / 2, y, GRID) for x, y in zip(lo, hi)]
-    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-    ia = np.any([occupancy(p, grid) for p in parts], axis=0)
-    ib = occupancy(b, grid)
-    union, both = np.count_nonzero(ia | ib), float(np.count_nonzero(ia & ib))
+    a_lo, a_hi = np.min([p.bounds[0] for p in parts], axis=0), np.max([p.bounds[1] for p in parts], axis=0)
+    origin = np.minimum(a_lo, b.bounds[0])  # one lattice for all counts; each count only over its own boxes
+    n_a = int(np.count_nonzero(np.any([occupancy(p, g) for p in parts], axis=0))) if len(g := _lattice(origin, a_lo, a_hi)) else 0
+    n_b = int(np.count_nonzero(occupancy(b, g))) if len(g := _lattice(origin, *b.bounds)) else 0
+    g = _lattice(origin, np.maximum(a_lo, b.bounds[0]), np.minimum(a_hi, b.bounds[1]))  # both: only where the boxes overlap
+    both = float(np.count_nonzero(np.any([occupancy(p, g) for p in parts], axis=0) & occupancy(b, g))) if len(g) else 0.0
+    union = n_a + n_b - both
     if not union:
         return 0.0, 0.0, 0.0
-    return both / union, both / max(1, np.count_nonzero(ia)), both / max(1, np.count_nonzero(ib))
+    return both / union, both / max(1, n_a), both / max(1, n_b)
+
+
+def _lattice(origin: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The GRID cell centres of the lattice anchored at ``origin`` that lie in the box ``lo``-``hi``
+    (the same cells as one grid over the union of the boxes: a completed shape far off its truth
+    spans a large union, but each box is an object's)."""
+    first = np.ceil((lo - origin) / GRID - 0.5).astype(np.int64)
+    last = np.floor((hi - origin) / GRID - 0.5).astype(np.int64)
+    if np.any(last < first):
+        return np.zeros((0, 3))
+    axes = [origin[i] + (np.arange(first[i], last[i] + 1) + 0.5) * GRID for i in range(3)]
+    return np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
 
 
 def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray,

@@ -3,9 +3,10 @@
 The axis is the centre of a circle fitted to the visible side; the check that the body is round is
 the evidence itself: each height band a circle about that axis, the arc it covers, and (for a
 camera view) the silhouette, whose width across the line of sight is the body's diameter (neither
-narrower nor wider). A straight side is the fitted cylinder; otherwise the solid is the revolution
-of the observed outer radius per height band (a bottle keeps its neck), built as one convex
-frustum per band so the collision shape follows a profile that is not convex.
+narrower nor wider) and whose middle is the axis (an oval turned aslant is not). A straight side is
+the fitted cylinder; otherwise the solid is the revolution of the observed outer radius per height
+band (a bottle keeps its neck), built as one convex frustum per band so the collision shape follows
+a profile that is not convex.
 """
 
 from __future__ import annotations
