@@ -61,3 +61,20 @@ def test_upside_down_view_without_a_wall_is_levelled_on_its_support(seed: int, t
     assert math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3])))) < 0.2
     heights = sorted(p.height for p in converted.planes if p.observed)
     assert abs(heights[-1] - scene.primary_support().height) < 0.003  # the floor is in view: heights are absolute
+
+
+@pytest.mark.parametrize(("layout", "seed", "pitch"), [("table", 48, 77.0), ("counter", 49, 83.0), ("table", 50, 89.0)])
+def test_overhead_view_is_levelled_on_its_support(layout: str, seed: int, pitch: float, tmp_path: Path) -> None:
+    """A camera looking (nearly) straight down on a counter against a wall: the top is tilted past
+    the picture's up, faces back along the optical axis and is larger than any thing's top."""
+    rng = np.random.default_rng(seed)
+    scene = without_floor(make_scene(SceneSpec(layout=layout, seed=seed, n_objects=3, wall=True)))
+    cam = kinect_view(scene, rng, pitch_deg=(pitch, pitch), roll_deg=float(rng.uniform(-15.0, 15.0)))
+    points, frame = view_cloud(scene, cam, rng)
+    write_pcd(tmp_path / "view.pcd", points, grid_shape=frame.depth.shape)
+    converted = detect_planes(load_capture(tmp_path / "view.pcd", seed=seed))
+    to_world = converted.capture.input_to_world
+    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])
+    assert math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3])))) < 0.2
+    top = max((p for p in converted.planes if p.observed), key=lambda p: p.inlier_count)
+    assert abs(to_world[2, 3] - top.height - (cam.pose[2, 3] - scene.primary_support().height)) < 0.003

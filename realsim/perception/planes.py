@@ -33,6 +33,7 @@ class PlaneParams:
     level_max_tilt_deg: float = 60.0  # dominant support searched within this of the coarse up
     min_support_share: float = 0.04  # of a camera view's planar points: a smaller plane facing the picture's up is a thing's face
     view_max_tilt_deg: float = 75.0  # ... of a camera view's picture up: its seen, upper side (a camera looking down steeply)
+    overhead_max_tilt_deg: float = 20.0  # ... else of the camera's backward axis: a camera looking (nearly) straight down
     support_max_tilt_deg: float = 8.0  # a support is horizontal within this after levelling
     refine_threshold: float = 0.006  # full-resolution refit band (m)
     region_cell: float = 0.02  # grid cell for splitting a plane into regions (m)
@@ -127,6 +128,16 @@ def _apply_rigid(scene: Scene, rotation: np.ndarray, translation: np.ndarray) ->
     scene.capture.input_to_world = step @ scene.capture.input_to_world
 
 
+def _size(candidate: tuple[np.ndarray, float, np.ndarray]) -> int:
+    """A plane proposal's inlier count."""
+    return len(candidate[2])
+
+
+def _has_support(candidates: list[tuple[np.ndarray, float, np.ndarray]], planar: int, params: PlaneParams) -> bool:
+    """Whether a candidate holds ``params.min_support_share`` of a view's ``planar`` points (else all are things' faces)."""
+    return any(len(c[2]) >= params.min_support_share * planar for c in candidates)
+
+
 def _support_kind(height: float) -> str:
     if height < 0.1:
         return "floor"
@@ -140,9 +151,12 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
 
     1. Seeded RANSAC proposals on a downsampled copy, each signed up (toward the camera for
        camera views). The largest one within ``level_max_tilt_deg`` of the loaded up axis
-       (``view_max_tilt_deg`` of the picture's up for camera views; of its down when no plane of
-       ``min_support_share`` faces up: an upside-down picture), size weighted by cos^2 of the
+       (``view_max_tilt_deg`` of the picture's up for camera views), size weighted by cos^2 of the
        tilt, is the dominant support; its normal, refitted on full-resolution points, becomes +Z.
+       A camera view looks (nearly) straight down when a plane facing back along its optical axis
+       (within ``overhead_max_tilt_deg``) is larger than every one facing up; it is upside down
+       when none of ``min_support_share`` of its planar points faces up nor back (the support
+       faces the picture's down).
     2. Every horizontal proposal is split into connected xy regions; regions at one height close
        to each other are one support (a table broken up by the objects occluding it), refitted by
        least squares on the full-resolution points in a thin band.
@@ -172,16 +186,25 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     oriented = [(*_orient_up(n, d, viewpoint), inl) for n, d, inl in proposals]
     candidates = [prop for prop in oriented if prop[0][2] >= cos_level]
     planar = sum(len(prop[2]) for prop in proposals)
-    if viewpoint is not None and not any(len(c[2]) >= params.min_support_share * planar for c in candidates):
-        # no support faces the picture's up, only small faces of things: the picture is upside down
-        candidates = [prop for prop in oriented if -prop[0][2] >= cos_level]
+    weight = lambda c: len(c[2]) * c[0][2] ** 2  # noqa: E731 - size by cos^2 of the tilt from the loaded up
+    if viewpoint is not None:
+        # A camera looking (nearly) straight down sees the support facing back along its optical
+        # axis, tilted past the picture's up: it is larger than any plane facing up (those are
+        # things' tops). Failing both, only small faces of things face up: the picture is upside down.
+        backward = -scene.capture.input_to_world[:3, 2] / np.linalg.norm(scene.capture.input_to_world[:3, 2])
+        cos_overhead = np.cos(np.radians(params.overhead_max_tilt_deg))
+        overhead = [prop for prop in oriented if prop[0] @ backward >= cos_overhead and prop[0][2] >= 0.0]
+        if max(map(_size, overhead), default=0) > max(map(_size, candidates), default=0):
+            candidates, weight = overhead, lambda c: len(c[2]) * float(c[0] @ backward) ** 2
+        elif not _has_support(candidates, planar, params):
+            candidates = [prop for prop in oriented if -prop[0][2] >= cos_level]
     if not candidates:
         facing = " facing the camera" if viewpoint is not None else ""
         raise InputError(
             f"{scene.capture.environment_file}: no support plane found (no large flat surface{facing} within "
             f"{max_tilt:.0f} deg of the up axis '{scene.capture.up}'); check --up"
         )
-    normal, d, _ = max(candidates, key=lambda c: len(c[2]) * c[0][2] ** 2)
+    normal, d, _ = max(candidates, key=weight)
     normal, d, _ = refine_plane(work, normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))
     pts = work @ rotation.T
