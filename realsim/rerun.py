@@ -75,7 +75,7 @@ def conversion_key(source: Path | None, kwargs: dict[str, Any]) -> str | None:
 def _light(scene: Scene) -> Scene:
     """The Scene as a record: no points, spec, asset bytes or visual meshes (the files hold them)."""
     objects = [dataclasses.replace(o, visual=None, texture_png=None) for o in scene.objects]
-    return dataclasses.replace(scene, points=None, colors=None, annotations=None, spec=None, assets={}, objects=objects)
+    return dataclasses.replace(scene, points=None, colors=None, normals=None, annotations=None, spec=None, assets={}, objects=objects)
 
 
 def remember(key: str | None, dest: Path, scene: Scene, cache: DiskCache | None = None) -> None:

@@ -101,6 +101,7 @@ class Scene:
     seed: int = 0
     points: np.ndarray | None = None  # (N, 3) world frame, input order, NaN kept
     colors: np.ndarray | None = None  # (N, 3) float in [0, 1], or None
+    normals: np.ndarray | None = None  # (N, 3) world-frame outward unit normals (a mesh capture's faces), or None
     grid_shape: tuple[int, int] | None = None  # (H, W) for organized clouds
     annotations: np.ndarray | None = None  # (N,) per-point labels shipped with the capture, if any
     planes: list[SupportPlane] = field(default_factory=list)

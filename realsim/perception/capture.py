@@ -73,6 +73,7 @@ class RawCloud:
     units_hint: str | None = None  # units and up axis the file itself declares (USD, RGB-D sequences)
     up_hint: str | None = None
     splat: Path | None = None  # a Gaussian splat PLY read as its centres
+    normals: np.ndarray | None = None  # (N, 3) unit face normals of points sampled from a consistently wound mesh
 
 
 def up_rotation(up: str) -> np.ndarray:
@@ -179,7 +180,16 @@ def resample_mesh(cloud: RawCloud, to_world: np.ndarray, params: LoadParams, see
     up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # world +Z in input coordinates
     keep = normals @ up > -0.3
     pts = pts if origin is None else pts - origin
-    return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt)
+    outward = normals[keep] if cloud.mesh.is_winding_consistent else None  # else the sides of faces cannot be told
+    return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt, normals=outward)
+
+
+def normals_to_world(normals: np.ndarray | None, to_world: np.ndarray) -> np.ndarray | None:
+    """Unit normals through the linear part of ``to_world`` (inverse transpose; None stays None)."""
+    if normals is None:
+        return None
+    out = normals @ np.linalg.inv(to_world[:3, :3])
+    return out / np.maximum(np.linalg.norm(out, axis=1, keepdims=True), 1e-12)
 
 
 def check_mesh_arrays(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
@@ -316,7 +326,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     if up is not None and up not in UP_AXES:
         raise InputError(f"unknown up axis {up!r}: use one of {', '.join(UP_AXES)}")
 
-    scene_points = scene_colors = annotations = None
+    scene_points = scene_colors = scene_normals = annotations = None
     grid_shape = None
     kind = "text" if config.text and env is None and not object_files else "objects"
     units_reason = splat = None
@@ -347,6 +357,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         spacing = point_spacing(scene_points, seed)
         splat = cloud.splat
         scene_colors = cloud.colors
+        scene_normals = normals_to_world(cloud.normals, transform)
         grid_shape = cloud.grid_shape
         annotations = cloud.annotations
         camera_view = cloud.is_camera_view
@@ -371,6 +382,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         seed=seed,
         points=scene_points,
         colors=scene_colors,
+        normals=scene_normals,
         grid_shape=grid_shape,
         annotations=annotations,
         object_files=object_files,

@@ -120,11 +120,13 @@ def _orient_up(normal: np.ndarray, d: float, viewpoint: np.ndarray | None) -> tu
 
 
 def _apply_rigid(scene: Scene, rotation: np.ndarray, translation: np.ndarray) -> None:
-    """Apply a rigid motion to the scene's points and compose it into input_to_world."""
+    """Apply a rigid motion to the scene's points (and their normals) and compose it into input_to_world."""
     step = np.eye(4)
     step[:3, :3] = rotation
     step[:3, 3] = translation
     scene.points = _transform(scene.points, rotation, translation)
+    if scene.normals is not None:
+        scene.normals = scene.normals @ rotation.T
     scene.capture.input_to_world = step @ scene.capture.input_to_world
 
 

@@ -271,6 +271,16 @@ def _spacing(points: np.ndarray, tree: cKDTree | None = None) -> float:
     return float(np.median((tree if tree is not None else cKDTree(points)).query(sample, k=2)[0][:, 1]))
 
 
+def _with_known(normals: np.ndarray | None, known: np.ndarray | None, ids: np.ndarray) -> np.ndarray | None:
+    """``normals`` (of the points ``ids``) turned to the outward side ``known`` gives (a mesh's
+    winding) where it decides (finite, not square to them): the direction stays the estimate at the
+    working resolution, the side is the capture's own rather than guessed from free space."""
+    if normals is None or known is None:
+        return normals
+    side = np.nan_to_num((normals * known[ids]).sum(axis=1))
+    return normals * np.where(side < 0, -1.0, 1.0)[:, None]
+
+
 def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
     """Flip normals so that they point against ``away`` (vectors pointing away from the viewer)."""
     sign = np.where((normals * away).sum(axis=1) > 0, -1.0, 1.0)
@@ -279,13 +289,17 @@ def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
 
 def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[SupportPlane],
                     grid_shape: tuple[int, int] | None, params: SegmentParams = SegmentParams(),
-                    seed: int = 0, resolution: float | None = None, context: np.ndarray | None = None) -> SegmentResult:
+                    seed: int = 0, resolution: float | None = None, context: np.ndarray | None = None,
+                    known_normals: np.ndarray | None = None) -> SegmentResult:
     """Label each point: 0 support/background, -1 noise, k > 0 object k (ordered by centroid x, then y).
 
     ``points`` (N, 3) are in the world frame (Z up) in input order, NaN rows allowed; ``colors``
     (N, 3) in [0, 1] or None; ``grid_shape`` (H, W) when the cloud is an organized image grid;
     ``resolution`` (m) the working resolution of an unorganized cloud (None: its measured spacing);
-    ``context`` (M, 3) points that are not segmented but block the view (walls left out before).
+    ``context`` (M, 3) points that are not segmented but block the view (walls left out before);
+    ``known_normals`` (N, 3) outward normals the capture knows (a mesh's faces, not necessarily unit;
+    NaN or zero rows where unknown): they decide the outward side of an unorganized cloud's
+    estimated point normals.
     The method is deterministic (``seed`` is accepted for interface uniformity; nothing is random).
     """
     points = np.asarray(points, dtype=np.float64)
@@ -357,8 +371,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
-        patch_normals = _orient(normals[ids], -nrm[part])
-        point_normals = _point_outward(points[ids], patch_normals, working, params, grid)
+        patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
+        point_normals = _with_known(_point_outward(points[ids], patch_normals, working, params, grid), known_normals, ids)
         if point_normals is not None:  # a coarse cloud's point normals span whole small objects: no cut
             cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
                             stand_height=params.stack_min_height)

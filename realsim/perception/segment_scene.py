@@ -99,13 +99,14 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
 
     centres = mean(scene.points[fg])
     colors = None if scene.colors is None else mean(np.nan_to_num(np.asarray(scene.colors, dtype=np.float64)[fg]))
+    normals = None if scene.normals is None else mean(scene.normals[fg])  # a voxel's outward side: its faces' resultant
     context = scene.points[walls][:: max(1, int(round((resolution / (scene.capture.point_spacing or resolution)) ** 2)))]
     noise = _noise(scene, params)
     working = at_resolution(params, resolution)
     if resolution < 2 * noise:  # neighbours' offsets are mostly noise: a fold cannot be told at one cell
         working = dataclasses.replace(working, contact_cut_cell=0.0)
     result = segment_objects(centres, colors, scene.planes, None, working, seed=scene.seed,
-                             resolution=resolution, context=context)
+                             resolution=resolution, context=context, known_normals=normals)
     result = filter_by_size(centres, result, scene.planes, working, max_sheet=max(params.min_object_size / 2, 6 * noise))
     labels[fg] = result.labels[inverse]
     labels[fg] = give_resting_base(scene.points[fg], labels[fg], result.resting_on, max(2 * noise, MIN_OBJECT_HEIGHT),
