@@ -189,7 +189,8 @@ def normals_to_world(normals: np.ndarray | None, to_world: np.ndarray) -> np.nda
     if normals is None:
         return None
     out = normals @ np.linalg.inv(to_world[:3, :3])
-    return out / np.maximum(np.linalg.norm(out, axis=1, keepdims=True), 1e-12)
+    unit: np.ndarray = out / np.maximum(np.linalg.norm(out, axis=1, keepdims=True), 1e-12)
+    return unit
 
 
 def check_mesh_arrays(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
