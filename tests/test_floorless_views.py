@@ -18,8 +18,9 @@ import pytest
 from realsim.perception.capture import load_capture
 from realsim.perception.pcd_io import write_pcd
 from realsim.perception.planes import detect_planes
-from realsim.synth import SceneSpec, kinect_view, make_scene
-from realsim.synth.camera import view_cloud
+from realsim.scene import Scene
+from realsim.synth import SceneSpec, SynthScene, kinect_view, make_scene
+from realsim.synth.camera import Camera, view_cloud
 from realsim.synth.exports import without_floor
 from realsim.synth.scene import ycb_root
 
@@ -27,18 +28,25 @@ pytestmark = pytest.mark.skipif(not ycb_root().is_dir(), reason="needs ../shared
 CASES = [("counter", 40), ("counter", 41), ("counter", 42), ("table", 43), ("table", 44), ("counter", 45)]
 
 
+def _levelled(scene: SynthScene, cam: Camera, rng: np.random.Generator, seed: int, tmp_path: Path) -> tuple[Scene, float]:
+    """The view rendered, loaded and levelled, and the angle (degrees) between its up and the true up."""
+    points, frame = view_cloud(scene, cam, rng)
+    write_pcd(tmp_path / "view.pcd", points, grid_shape=frame.depth.shape)
+    converted = detect_planes(load_capture(tmp_path / "view.pcd", seed=seed))
+    to_world = converted.capture.input_to_world
+    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # the converter's up in the optical frame
+    return converted, math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3]))))
+
+
 @pytest.mark.parametrize(("layout", "seed"), CASES)
 def test_floorless_view_is_levelled_on_its_support(layout: str, seed: int, tmp_path: Path) -> None:
     rng = np.random.default_rng(seed)
     scene = without_floor(make_scene(SceneSpec(layout=layout, seed=seed, n_objects=3, wall=True)))
     cam = kinect_view(scene, rng, pitch_deg=(30.0, 60.0), roll_deg=float(rng.uniform(-15.0, 15.0)))
-    points, frame = view_cloud(scene, cam, rng)
-    write_pcd(tmp_path / "view.pcd", points, grid_shape=frame.depth.shape)
-    converted = detect_planes(load_capture(tmp_path / "view.pcd", seed=seed))
+    converted, gravity_deg = _levelled(scene, cam, rng, seed, tmp_path)
 
     to_world = converted.capture.input_to_world
-    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # the converter's up in the optical frame
-    assert math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3])))) < 0.2
+    assert gravity_deg < 0.2
     assert not any(p.kind == "floor" and p.observed for p in converted.planes)
     assert any(w.startswith("no floor in view") for w in converted.warnings)
     top = max((p for p in converted.planes if p.observed), key=lambda p: p.inlier_count)
@@ -53,12 +61,8 @@ def test_upside_down_view_without_a_wall_is_levelled_on_its_support(seed: int, t
     rng = np.random.default_rng(seed)
     scene = make_scene(SceneSpec(layout="table", seed=seed, n_objects=3))
     cam = kinect_view(scene, rng, roll_deg=180.0 + float(rng.uniform(-15.0, 15.0)))
-    points, frame = view_cloud(scene, cam, rng)
-    write_pcd(tmp_path / "view.pcd", points, grid_shape=frame.depth.shape)
-    converted = detect_planes(load_capture(tmp_path / "view.pcd", seed=seed))
-    to_world = converted.capture.input_to_world
-    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])
-    assert math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3])))) < 0.2
+    converted, gravity_deg = _levelled(scene, cam, rng, seed, tmp_path)
+    assert gravity_deg < 0.2
     heights = sorted(p.height for p in converted.planes if p.observed)
     assert abs(heights[-1] - scene.primary_support().height) < 0.003  # the floor is in view: heights are absolute
 
@@ -70,11 +74,8 @@ def test_overhead_view_is_levelled_on_its_support(layout: str, seed: int, pitch:
     rng = np.random.default_rng(seed)
     scene = without_floor(make_scene(SceneSpec(layout=layout, seed=seed, n_objects=3, wall=True)))
     cam = kinect_view(scene, rng, pitch_deg=(pitch, pitch), roll_deg=float(rng.uniform(-15.0, 15.0)))
-    points, frame = view_cloud(scene, cam, rng)
-    write_pcd(tmp_path / "view.pcd", points, grid_shape=frame.depth.shape)
-    converted = detect_planes(load_capture(tmp_path / "view.pcd", seed=seed))
+    converted, gravity_deg = _levelled(scene, cam, rng, seed, tmp_path)
     to_world = converted.capture.input_to_world
-    up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])
-    assert math.degrees(math.acos(min(1.0, float(up @ cam.pose[2, :3])))) < 0.2
+    assert gravity_deg < 0.2
     top = max((p for p in converted.planes if p.observed), key=lambda p: p.inlier_count)
     assert abs(to_world[2, 3] - top.height - (cam.pose[2, 3] - scene.primary_support().height)) < 0.003
