@@ -15,17 +15,17 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy import sparse
-from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
+from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
+from realsim.perception.supervoxels import link_components as _components
 from realsim.perception.visibility import OccupancyGrid, visibility_score
 from realsim.scene import SupportPlane
 
@@ -62,12 +62,6 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
 
 # ----------------------------------------------------------------------------------------------
 # graphs over segments
-
-
-def _components(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Connected component index of each of ``n`` nodes linked by the pairs (a, b)."""
-    graph = sparse.coo_matrix((np.ones(len(a), dtype=np.int8), (a, b)), shape=(n, n))
-    return connected_components(graph, directed=False)[1]
 
 
 def _pair_counts(la: np.ndarray, lb: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -377,6 +371,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
                             stand_height=params.stack_min_height)
             obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
+        elif colors is not None:  # the fold is not seen: the colours tell touching objects apart
+            obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.absorb_points)
         obj_labels[ids] = split_resting(points[ids], patch_normals if point_normals is None else point_normals,
                                         obj_labels[ids], la, lb, working, params.min_object_points, params.min_object_size)
         obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)

@@ -8,12 +8,13 @@ supervoxels are SLIC on position, normal and colour.
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
+from scipy import ndimage, sparse
+from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.perception.segment_params import SegmentParams
 
-__all__ = ["cloud_supervoxels", "grid_links", "grid_normals", "grid_supervoxels", "knn_links", "knn_normals", "smallest_eigenvectors"]
+__all__ = ["cloud_supervoxels", "grid_links", "grid_normals", "grid_supervoxels", "knn_links", "link_components", "knn_normals", "smallest_eigenvectors"]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -43,6 +44,13 @@ def knn_links(points: np.ndarray, valid: np.ndarray, k: int) -> tuple[np.ndarray
     b = nn[:, 1:].ravel()
     keys = np.unique(np.minimum(a, b) * len(ids) + np.maximum(a, b))
     return ids[keys // len(ids)], ids[keys % len(ids)]
+
+
+def link_components(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Connected component index of each of ``n`` nodes linked by the pairs (a, b)."""
+    graph = sparse.coo_matrix((np.ones(len(a), dtype=np.int8), (a, b)), shape=(n, n))
+    out: np.ndarray = connected_components(graph, directed=False)[1]
+    return out
 
 
 def smallest_eigenvectors(cov: np.ndarray) -> np.ndarray:

@@ -1,0 +1,92 @@
+"""Colour split: touching objects of two colours in one sparse cluster become two; shading,
+6-bit colours and one-colour objects cut apart by shape do not make or keep extra objects."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realsim.perception.colour_split import colour_classes, split_by_colour
+from realsim.perception.supervoxels import knn_links
+
+
+def _box_surface(lo: tuple[float, float, float], hi: tuple[float, float, float], spacing: float, seed: int) -> np.ndarray:
+    """Points sampled uniformly on a box's five visible faces, about ``spacing`` apart."""
+    lo_a, hi_a = np.asarray(lo), np.asarray(hi)
+    size = hi_a - lo_a
+    area = 2 * (size[0] * size[2] + size[1] * size[2]) + size[0] * size[1]
+    n = max(8, int(area / spacing**2))
+    rng = np.random.default_rng(seed)
+    p = lo_a + rng.uniform(0, 1, (n, 3)) * size
+    face = rng.integers(0, 5, n)
+    p[face == 0, 0], p[face == 1, 0] = lo_a[0], hi_a[0]
+    p[face == 2, 1], p[face == 3, 1] = lo_a[1], hi_a[1]
+    p[face == 4, 2] = hi_a[2]
+    return p
+
+
+def _shaded(points: np.ndarray, rgb: tuple[float, float, float], seed: int) -> np.ndarray:
+    """A flat colour lit from one side (brightness 0.6-1.0 with height and x), with 1 % noise."""
+    light = 0.6 + 0.4 * (points[:, 0] - points[:, 0].min() + points[:, 2]) / max(np.ptp(points[:, 0]) + np.ptp(points[:, 2]), 1e-9)
+    noise = np.random.default_rng(seed).normal(0, 0.01, (len(points), 3))
+    return np.clip(np.asarray(rgb) * light[:, None] + noise, 0, 1)
+
+
+def _scene(spacing: float = 0.02) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A red can-sized box touching a green bowl-sized box, and the truth of every point."""
+    can = _box_surface((0.0, 0.0, 0.0), (0.1, 0.05, 0.08), spacing, 1)
+    bowl = _box_surface((0.1, -0.05, 0.0), (0.26, 0.11, 0.06), spacing, 2)
+    points = np.vstack([can, bowl])
+    colors = np.vstack([_shaded(can, (0.75, 0.18, 0.13), 3), _shaded(bowl, (0.5, 0.7, 0.15), 4)])
+    truth = np.r_[np.zeros(len(can), np.int64), np.ones(len(bowl), np.int64)]
+    return points, colors, truth
+
+
+def _links(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    return knn_links(points, np.ones(len(points), dtype=bool), 8)
+
+
+def test_two_colours_in_one_cluster_become_the_two_objects() -> None:
+    points, colors, truth = _scene()
+    a, b = _links(points)
+    out = split_by_colour(colors, np.zeros(len(points), np.int64), a, b, min_points=10)
+    assert len(np.unique(out)) == 2
+    for k in (0, 1):  # each object is (nearly all) one label of its own
+        share = np.bincount(out[truth == k]).max() / (truth == k).sum()
+        assert share > 0.95
+    assert np.bincount(out[truth == 0]).argmax() != np.bincount(out[truth == 1]).argmax()
+    # 6-bit colours (a phone's coarse colour) give the same objects
+    quantized = np.round(colors * 63) / 63
+    assert np.array_equal(split_by_colour(quantized, np.zeros(len(points), np.int64), a, b, min_points=10), out)
+
+
+def test_shading_and_noise_on_one_colour_are_one_object() -> None:
+    points, colors, truth = _scene()
+    one = truth == 1
+    assert colour_classes(colors[one]) is None  # light and shadow on one surface: one colour
+    a, b = _links(points[one])
+    out = split_by_colour(colors[one], np.zeros(int(one.sum()), np.int64), a, b, min_points=10)
+    assert np.all(out == 0)
+
+
+def test_pieces_of_one_colour_cut_apart_by_shape_rejoin_after_a_split() -> None:
+    """The bowl was cut in two by shape and one half took the can: the can leaves, the two bowl
+    halves join (one colour, touching), and the can stays its own."""
+    points, colors, truth = _scene()
+    labels = np.where((truth == 1) & (points[:, 0] > 0.18), 1, 0)
+    a, b = _links(points)
+    out = split_by_colour(colors, labels, a, b, min_points=10)
+    bowl, can = out[truth == 1], out[truth == 0]
+    assert np.bincount(bowl).max() / len(bowl) > 0.95
+    assert np.bincount(can).max() / len(can) > 0.95
+    assert np.bincount(bowl).argmax() != np.bincount(can).argmax()
+
+
+def test_a_piece_smaller_than_min_points_is_not_an_object() -> None:
+    """A few odd-coloured points (mixed cells at a contact) do not make an object."""
+    points, colors, truth = _scene()
+    one = np.flatnonzero(truth == 1)
+    colors = colors.copy()
+    colors[one[:4]] = (0.1, 0.1, 0.9)
+    a, b = _links(points[one])
+    out = split_by_colour(colors[one], np.zeros(len(one), np.int64), a, b, min_points=10)
+    assert np.all(out == 0)
