@@ -27,7 +27,7 @@ def _bowl(centre: tuple[float, float], radius: float = 0.07, height: float = 0.0
 def test_two_halves_of_a_bowl_are_one_container_and_their_rim_is_its_rim() -> None:
     bowl = _bowl((0.3, 0.1))
     left, right = bowl[bowl[:, 0] < 0.3], bowl[bowl[:, 0] >= 0.3]
-    assert round_rim(left, 0.0, 0.055, 0.2) is None  # half a rim is no circle to complete alone
+    assert round_rim(left[left[:, 1] < 0.1], 0.0, 0.055, 0.2) is None  # a quarter of a rim is no circle to complete alone
     assert one_container(left, right, 0.0, 0.2)
     centre, radius = round_rim(bowl, 0.0, 0.055, 0.2) or (np.zeros(2), 0.0)
     assert np.linalg.norm(centre - [0.3, 0.1]) < 0.002 and abs(radius - 0.07) < 0.003
@@ -72,3 +72,14 @@ def test_the_lower_outside_of_a_near_wall_is_the_container_and_a_ball_in_it_is_n
     ball = ball[(d @ (camera - [-0.03, 0.0, 0.03]) > 0) & (d[:, 2] > 0.3)]
     assert not outer_wall_part(container, ball, 0.0, 0.2, camera)
     assert not outer_wall_part(container, part + [0.25, 0.0, 0.0], 0.0, 0.2, camera)  # a neighbour beyond the rim
+
+
+def test_two_arcs_of_a_bowl_with_the_middle_hidden_are_one_container() -> None:
+    bowl = _bowl((0.1, -0.2), seed=7)
+    bowl = bowl[bowl[:, 2] > 0.02]  # the upper wall and the lip
+    angle = np.degrees(np.arctan2(bowl[:, 1] + 0.2, bowl[:, 0] - 0.1))
+    a, b = bowl[(angle > -160) & (angle < -20)], bowl[(angle > 50) & (angle < 130)]  # objects in front hide the rest
+    gap = np.maximum(a[:, :2].min(axis=0) - b[:, :2].max(axis=0), b[:, :2].min(axis=0) - a[:, :2].max(axis=0))
+    assert np.any(gap > 0.02)  # their footprints' bounds lie apart
+    assert one_container(a, b, 0.0, 0.2)
+    assert not one_container(bowl[(angle > -160) & (angle < -60)], bowl[(angle > 50) & (angle < 100)], 0.0, 0.2)  # less than half a turn

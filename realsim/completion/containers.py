@@ -67,8 +67,11 @@ def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: 
 
 
 def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float, max_rms: float = 0.08,
-              min_arc_deg: float = 240.0, sectors: int = 48) -> tuple[np.ndarray, float] | None:
+              min_arc_deg: float = 180.0, sectors: int = 48) -> tuple[np.ndarray, float] | None:
     """(centre, radius) of a circular rim seen from above (the top band of the points), or None.
+
+    The band spans at least ``min_arc_deg`` about the centre: half a turn, as objects in front may hide
+    the rest (over less, any bend fits a circle); whether the top is open is tested apart.
 
     The circle is fitted to the rim's crest (the highest points of each of ``sectors`` angular
     sectors), the middle of the wall on every side: the whole band would pull the centre toward the

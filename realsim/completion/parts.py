@@ -3,7 +3,9 @@
 Segmentation can split a bowl or a mug where its surface turns away from the camera: the two
 halves of its rim, or its outer wall and its inside seen over the rim. The points of such parts lie
 on one rim circle: the top band of the two together is one ring (a circle, not a filled disc: an open
-top), and each part has points on that circle. Two neighbours that are not one container fail that
+top) spanning at least half a turn (an object in front may hide the rest of it, and the ring's middle
+between the parts: parts are tested up to a rim's largest diameter apart), and each part has points on
+that circle. Two neighbours that are not one container fail that
 test: two cups side by side have two rims, a box beside a bowl no circle at all, two halves of a
 closed can a filled disc on top, and a fruit lying in a bowl has no points on its rim.
 
@@ -21,7 +23,6 @@ import numpy as np
 from realsim.completion.containers import ContainerParams, cavity_floor, round_rim
 from realsim.scene import Scene, SceneObject
 
-NEAR = 0.02  # m: parts whose footprints' bounds lie farther apart are not tested
 RIM_BAND = 0.15  # the rim: the top this share of the height, within this share of the radius of the circle
 MIN_RIM_POINTS = 15  # each part holds at least this many points on the rim circle
 
@@ -104,7 +105,7 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
                     continue
                 gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
                 base_z = _base(scene, a, pa)
-                if np.any(gap > NEAR):
+                if np.any(gap > 2 * max_radius):  # farther apart than a rim's diameter
                     continue
                 if one_container(pa, pb, base_z, max_radius):
                     why = "their top is one ring"
