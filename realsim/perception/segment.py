@@ -22,6 +22,7 @@ from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
+from realsim.perception.occlusion_bridge import occluded_pairs, view_axis
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
@@ -317,6 +318,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         normals = knn_normals(points, fg, params.normal_neighbors)
         a, b = knn_links(points, fg, params.knn_neighbors)
     keep = np.linalg.norm(points[a] - points[b], axis=1) < params.jump_distance
+    axis = view_axis(points, a[~keep], b[~keep], normals, params.jump_distance) if organized else None
     a, b = a[keep], b[keep]
 
     ids = np.flatnonzero(fg & np.isfinite(normals).all(axis=1))
@@ -364,6 +366,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     size = np.bincount(obj)
     obj_labels = np.full(n, -1, dtype=np.int64)
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
+    if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
+        obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
         patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
         point_normals = _with_known(_point_outward(points[ids], patch_normals, working, params, grid), known_normals, ids)
@@ -380,6 +384,32 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _bridge_occlusions(points: np.ndarray, labels: np.ndarray, normals: np.ndarray, grid_shape: tuple[int, int],
+                       axis: np.ndarray, params: SegmentParams) -> np.ndarray:
+    """Join the segments (``labels`` >= 0) that one nearer object parts in a camera view. Over the image
+    lines where only nearer pixels lie between them, the hidden connection of the surfaces seen at the
+    two ends mostly (all but ``max_concave_fraction``) curves away (:func:`convex_connections` without a
+    flat tolerance; two objects side by side behind the occluder meet at a concave one), and on at least
+    ``min_contact_links`` lines it also runs along both (within ``convex_tolerance`` of their tangent
+    planes; not into the view, as from an object to one behind it): one surface passing behind."""
+    pair, ends, end_normals = occluded_pairs(points, labels + 1, normals, grid_shape, axis, params.jump_distance)
+    if len(pair) == 0:
+        return labels
+    k = np.arange(len(pair))
+    convex = convex_connections(ends.reshape(-1, 3), end_normals.reshape(-1, 3), 2 * k, 2 * k + 1, 0.0)  # curving away, not flat
+    chord = ends[:, 1] - ends[:, 0]
+    chord /= np.maximum(np.linalg.norm(chord, axis=1, keepdims=True), 1e-12)
+    with np.errstate(invalid="ignore"):  # the hidden stretch runs along the surface seen at both ends, not into the view
+        along = np.all(np.abs((end_normals * chord[:, None]).sum(axis=2)) < np.sin(np.radians(params.convex_tolerance)), axis=1)
+    keys, inverse, lines = np.unique(np.sort(pair, axis=1) - 1, axis=0, return_inverse=True, return_counts=True)
+    mostly_convex = lines - np.bincount(inverse.ravel(), convex, minlength=len(keys)) <= params.max_concave_fraction * lines
+    keys = keys[mostly_convex & (np.bincount(inverse.ravel(), convex & along, minlength=len(keys)) >= params.min_contact_links)]
+    if len(keys) == 0:
+        return labels
+    root = _components(int(labels.max()) + 1, keys[:, 0], keys[:, 1])
+    return np.where(labels >= 0, root[np.maximum(labels, 0)], labels)
 
 
 def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray, height: np.ndarray,
