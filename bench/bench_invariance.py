@@ -4,10 +4,13 @@ converted (load, planes, segment) and compared with the plain one.
 
 A variant is invariant when it finds as many objects as the plain cloud and its labels match the
 plain labels with mean IoU >= ``--iou`` (Hungarian-matched, the plain objects as reference).
-Also printed: F1 against the ground truth (IoU >= 0.5 matches), plain and per variant.
+Also printed: F1 against the ground truth (IoU >= 0.5 matches), plain and per variant, and the
+point spacing the loader measured (every working length of detection follows it). ``--fine`` adds
+shifts of 1 and 3 mm, well under one working cell: a detector that changes with them depends on
+where its grids fall, not on the spacing measure.
 
     .venv/bin/python bench/bench_invariance.py [--scenes table:72,counter:73,floor:74] [--points 100000]
-        [--only yaw] [--iou 0.9]
+        [--only yaw] [--iou 0.9] [--fine]
 """
 
 from __future__ import annotations
@@ -28,11 +31,14 @@ from realsim.synth.forms import apply
 DETECT = Path(__file__).resolve().parent / "_detect_only.yaml"
 YAWS = (30.0, 90.0, 145.0, 260.0)
 SHIFTS = ((1.0, 0.0, 0.0), (0.37, -0.81, 0.25), (-3.3, 7.1, 0.0))
+FINE_SHIFTS = ((0.001, 0.0, 0.0), (0.003, 0.003, 0.003))
 
 
-def variants() -> dict[str, tuple[np.ndarray, str | None]]:
-    """Name -> (world -> capture transform, colour change)."""
+def variants(fine: bool = False) -> dict[str, tuple[np.ndarray, str | None]]:
+    """Name -> (world -> capture transform, colour change); ``fine`` adds the sub-cell shifts."""
     v: dict[str, tuple[np.ndarray, str | None]] = {"plain": (np.eye(4), None)}
+    if fine:
+        v |= {f"shift {s}": (capture_transform(offset_m=s), None) for s in FINE_SHIFTS}
     v |= {f"yaw {y:g}": (capture_transform(yaw_deg=y), None) for y in YAWS}
     v |= {f"shift {s}": (capture_transform(offset_m=s), None) for s in SHIFTS}
     v |= {"colour noise 2": (np.eye(4), "noise"), "colour 6 bit": (np.eye(4), "quantize"),
@@ -50,9 +56,13 @@ def recolour(cols: np.ndarray, how: str | None, seed: int) -> np.ndarray:
     return np.clip(c, 0, 255).astype(np.uint8)
 
 
-def convert(path: Path) -> np.ndarray:
+def convert(path: Path) -> tuple[np.ndarray, float]:
+    """Per-point labels (0 where none) and the point spacing (m) the loader measured."""
     scene = run_pipeline(path, pipeline=DETECT, overrides={})
-    return scene.labels if scene.labels is not None else np.zeros(len(scene.points), np.int32)
+    if scene.labels is None:
+        raise RuntimeError(f"{path}: the segment stage gave no labels")
+    labels = scene.labels
+    return labels, float(scene.capture.point_spacing or float("nan"))
 
 
 def f1(pred: np.ndarray, truth: np.ndarray) -> float:
@@ -67,8 +77,9 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=100_000)
     parser.add_argument("--only", default="", help="the variants whose name holds this text (and the plain one)")
     parser.add_argument("--iou", type=float, default=0.9, help="mean IoU to the plain labels that counts as the same")
+    parser.add_argument("--fine", action="store_true", help="also shift by 1 and 3 mm (under one working cell)")
     args = parser.parse_args()
-    todo = {k: v for k, v in variants().items() if k == "plain" or args.only in k}
+    todo = {k: v for k, v in variants(args.fine).items() if k == "plain" or args.only in k}
     same = total = 0
     cpu = time.process_time()
     with tempfile.TemporaryDirectory() as tmp:
@@ -80,18 +91,19 @@ def main() -> None:
             for name, (t, colour) in todo.items():
                 path = write_cloud(Path(tmp) / f"{layout}_{seed}_{len(name)}_{abs(hash(name))}.ply", apply(t, pts),
                                    recolour(cols, colour, int(seed)), "ply_double")
-                labels = convert(path)
+                labels, spacing = convert(path)
                 count = len(np.unique(labels[labels > 0]))
                 if plain is None:
                     plain, plain_count = labels, count
-                    print(f"{key:11s} {name:22s} {count} objects, F1 {f1(labels, truth):.2f}", flush=True)
+                    print(f"{key:11s} {name:22s} {count} objects, F1 {f1(labels, truth):.2f}, spacing {spacing * 1000:.2f} mm",
+                          flush=True)
                     continue
                 ious, _ = matched_iou(labels, plain)
                 iou = float(ious.mean()) if len(ious) else 1.0
                 ok = count == plain_count and iou >= args.iou
                 same, total = same + ok, total + 1
-                print(f"{key:11s} {name:22s} {count} objects, IoU to plain {iou:.3f}, F1 {f1(labels, truth):.2f}  "
-                      f"{'same' if ok else 'DIFFERENT'}", flush=True)
+                print(f"{key:11s} {name:22s} {count} objects, IoU to plain {iou:.3f}, F1 {f1(labels, truth):.2f}, "
+                      f"spacing {spacing * 1000:.2f} mm  {'same' if ok else 'DIFFERENT'}", flush=True)
     print(f"\ninvariant {same}/{total} variants; {time.process_time() - cpu:.1f} s CPU")
 
 
