@@ -18,6 +18,7 @@ from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
 from realsim.perception.plane_refit import refine_plane
 from realsim.perception.resolution import working_resolution
+from realsim.perception.up_axis import evidence_points, resting_normal
 from realsim.scene import Scene, SupportPlane
 
 
@@ -31,6 +32,7 @@ class PlaneParams:
     max_planes: int = 8  # proposals examined
     min_plane_points: int = 100  # (downsampled) points for a proposal to count
     level_max_tilt_deg: float = 60.0  # dominant support searched within this of the coarse up
+    resting_max_tilt_deg: float = 20.0  # ... or within this of the plane bodies rest on, when large planes disagree
     min_support_share: float = 0.04  # of a camera view's planar points: a smaller plane facing the picture's up is a thing's face
     view_max_tilt_deg: float = 75.0  # ... of a camera view's picture up: its seen, upper side (a camera looking down steeply)
     overhead_max_tilt_deg: float = 20.0  # ... else of the camera's backward axis: a camera looking (nearly) straight down
@@ -53,7 +55,7 @@ class PlaneParams:
 
 
 def _finite(points: np.ndarray) -> np.ndarray:
-    return np.isfinite(points).all(axis=1)
+    return np.asarray(np.isfinite(points).all(axis=1))
 
 
 def voxel_downsample(points: np.ndarray, voxel: float) -> np.ndarray:
@@ -107,7 +109,7 @@ def _regions(xy: np.ndarray, cell: float, min_area: float) -> list[np.ndarray]:
 
 
 def _transform(points: np.ndarray, rotation: np.ndarray, translation: np.ndarray) -> np.ndarray:
-    return points @ rotation.T + translation
+    return np.asarray(points @ rotation.T + translation)
 
 
 def _orient_up(normal: np.ndarray, d: float, viewpoint: np.ndarray | None) -> tuple[np.ndarray, float]:
@@ -124,7 +126,8 @@ def _apply_rigid(scene: Scene, rotation: np.ndarray, translation: np.ndarray) ->
     step = np.eye(4)
     step[:3, :3] = rotation
     step[:3, 3] = translation
-    scene.points = _transform(scene.points, rotation, translation)
+    if scene.points is not None:
+        scene.points = _transform(scene.points, rotation, translation)
     if scene.normals is not None:
         scene.normals = scene.normals @ rotation.T
     scene.capture.input_to_world = step @ scene.capture.input_to_world
@@ -138,6 +141,29 @@ def _size(candidate: tuple[np.ndarray, float, np.ndarray]) -> int:
 def _has_support(candidates: list[tuple[np.ndarray, float, np.ndarray]], planar: int, params: PlaneParams) -> bool:
     """Whether a candidate holds ``params.min_support_share`` of a view's ``planar`` points (else all are things' faces)."""
     return any(len(c[2]) >= params.min_support_share * planar for c in candidates)
+
+
+def _resting_direction(work: np.ndarray, proposals: list[tuple[np.ndarray, float, np.ndarray]], planar: int,
+                       params: PlaneParams, seed: int) -> np.ndarray | None:
+    """The normal bodies rest on (:func:`resting_normal`, on :func:`evidence_points` of ``work``) when two
+    large proposals (``min_support_share`` of the planar points each) are far from parallel, so
+    the size-and-tilt rule could level on a wall; else None (one support direction: nothing to decide)."""
+    big = [n for n, _, inl in proposals if len(inl) >= params.min_support_share * planar]
+    cos_rest = np.cos(np.radians(params.resting_max_tilt_deg))
+    if not any(abs(float(a @ b)) < cos_rest for i, a in enumerate(big) for b in big[i + 1:]):
+        return None
+    rng = np.random.default_rng(seed)
+    sample, threshold = evidence_points(work, rng)
+    return resting_normal(sample, threshold, rng)
+
+
+def _facing(proposals: list[tuple[np.ndarray, float, np.ndarray]], direction: np.ndarray, resign: bool,
+            params: PlaneParams) -> list[tuple[np.ndarray, float, np.ndarray]]:
+    """The proposals whose normals lie within ``resting_max_tilt_deg`` of ``direction``; with
+    ``resign`` each is first signed toward it (an unorganized cloud has no side to sign it by)."""
+    cos_rest = np.cos(np.radians(params.resting_max_tilt_deg))
+    signed = [(-n, -d, inl) if resign and n @ direction < 0 else (n, d, inl) for n, d, inl in proposals]
+    return [c for c in signed if float(c[0] @ direction) >= cos_rest]
 
 
 def _support_kind(height: float) -> str:
@@ -189,7 +215,13 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     candidates = [prop for prop in oriented if prop[0][2] >= cos_level]
     planar = sum(len(prop[2]) for prop in proposals)
     weight = lambda c: len(c[2]) * c[0][2] ** 2  # noqa: E731 - size by cos^2 of the tilt from the loaded up
-    if viewpoint is not None:
+    rest = _resting_direction(work, proposals, planar, params, scene.seed)
+    resting = [] if rest is None else _facing(oriented if viewpoint is not None else proposals, rest, viewpoint is None, params)
+    if resting:
+        # Bodies stand on the support, never on a wall: whichever way the capture was held (a file
+        # turned 40 degrees, a picture upside down), the plane they rest on is searched first.
+        candidates, weight = resting, lambda c: len(c[2]) * float(c[0] @ rest) ** 2
+    elif viewpoint is not None:
         # A camera looking (nearly) straight down sees the support facing back along its optical
         # axis, tilted past the picture's up: it is larger than any plane facing up (those are
         # things' tops). Failing both, only small faces of things face up: the picture is upside down.
@@ -325,7 +357,10 @@ def _occupied_cells(xy: np.ndarray, cell: float) -> int:
     return len(np.unique(ij[:, 0] * span[1] + ij[:, 1]))
 
 
-def _drop_object_tops(supports: list, params: PlaneParams) -> list:
+Support = tuple[float, np.ndarray, np.ndarray]  # height, inlier points, normal
+
+
+def _drop_object_tops(supports: list[Support], params: PlaneParams) -> list[Support]:
     """Keep real supports only.
 
     A plane within ``min_support_gap`` above a larger support under it is a flat object top; a
@@ -333,7 +368,7 @@ def _drop_object_tops(supports: list, params: PlaneParams) -> list:
     edge) is dropped too.
     """
     primary_height = max(supports, key=lambda s: len(s[1]))[0]
-    kept: list = []
+    kept: list[tuple[float, np.ndarray, np.ndarray, np.ndarray]] = []
     for height, pts, normal in supports:  # sorted by height
         if 0 < primary_height - height < params.min_support_gap:
             continue
@@ -348,7 +383,7 @@ def _drop_object_tops(supports: list, params: PlaneParams) -> list:
     return [(h, p, n) for h, p, n, _ in kept]
 
 
-def _place_floor(scene: Scene, supports: list, params: PlaneParams) -> tuple[list[SupportPlane], float]:
+def _place_floor(scene: Scene, supports: list[Support], params: PlaneParams) -> tuple[list[SupportPlane], float]:
     """Decide which support is the floor; return the planes with the floor at z = 0 and the z shift."""
     lowest, lowest_pts, _ = supports[0]
     highest = supports[-1][0]

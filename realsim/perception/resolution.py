@@ -135,8 +135,9 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
     """Guess the input's up axis.
 
     Camera views (organized clouds) use the optical frame, +y down; glTF is Y-up; otherwise the
-    axis that bodies rest on (:func:`realsim.perception.up_axis.resting_up`: a counter under a
-    wall larger than it, with no floor in view), and without such evidence the axis closest to
+    axis nearest the normal of the plane bodies rest on (:func:`realsim.perception.up_axis.resting_up`:
+    a counter under a wall larger than it, with no floor in view, however the file is turned; the
+    planes stage then levels on that plane itself), and without such evidence the axis closest to
     the dominant plane's normal, signed so that most of what stands clear of that plane (farther
     than three RANSAC thresholds) lies above it: a scanned slab's underside is as large as its
     top, so the median point alone cannot tell them apart.
@@ -146,23 +147,15 @@ def detect_up(points: np.ndarray, camera_view: bool, fmt_hint: str, seed: int) -
     if camera_view:
         return "-y"
     from realsim.geometry import ransac_plane
-    from realsim.perception.up_axis import resting_up
+    from realsim.perception.up_axis import axis_name, evidence_points, resting_up
 
-    pts = points[np.isfinite(points).all(axis=1)]
     rng = np.random.default_rng(seed)
-    if len(pts) > 50_000:
-        pts = pts[rng.choice(len(pts), 50_000, replace=False)]
-    extent = float(np.max(np.ptp(pts, axis=0)))
-    threshold = max(extent * 0.01, 1e-6)
+    pts, threshold = evidence_points(points, rng)
     resting = resting_up(pts, threshold, np.random.default_rng(seed))
     if resting is not None:
         return resting
     normal, offset, _ = ransac_plane(pts, threshold, 500, rng)  # the project's one (seeded) RANSAC
-    axis = int(np.argmax(np.abs(normal)))
-    signed = normal.copy()
     height = pts @ normal + offset
     clear = height[np.abs(height) > 3 * threshold]
     below = (clear < 0).sum() > (clear > 0).sum() if len(clear) >= max(50, 0.001 * len(height)) else np.median(height) < 0
-    if below:
-        signed = -signed
-    return ("+" if signed[axis] > 0 else "-") + "xyz"[axis]
+    return axis_name(-normal if below else normal)
