@@ -131,6 +131,12 @@ def measure_cloud(kind: str, seed: int, tilt_deg: float, folder: Path) -> dict[s
     return score(scene, path, to_world, lambda floor: True, seed)
 
 
+def seed_range(text: str) -> range:
+    """The seeds of one ``--seeds`` item: ``7`` or ``a-b`` (inclusive)."""
+    lo, _, hi = text.partition("-")
+    return range(int(lo), int(hi or lo) + 1)
+
+
 def failed(exc: Exception) -> dict[str, Any]:
     """The row of a conversion that raised: a wrong capture, reported."""
     return {"gravity": float("nan"), "err_mm": float("nan"), "missing": -1, "right": False, "floor_seen": False,
@@ -139,12 +145,11 @@ def failed(exc: Exception) -> dict[str, Any]:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--seeds", default="0-29", help="a range a-b or a comma list")
+    ap.add_argument("--seeds", default="0-29", help="a comma list of seeds and ranges a-b")
     ap.add_argument("--kinds", nargs="+", default=["view", "hand"], choices=VIEW_KINDS + CLOUD_KINDS)
     ap.add_argument("--tilts", default="0,20,40,60,90", help="degrees the clouds are turned (comma list)")
     args = ap.parse_args()
-    lo, _, hi = args.seeds.partition("-")
-    seeds = list(range(int(lo), int(hi) + 1)) if hi else [int(s) for s in args.seeds.split(",")]
+    seeds = [seed for part in args.seeds.split(",") for seed in seed_range(part)]
     tilts = [float(t) for t in args.tilts.split(",")]
     print(f"{'kind':10s} {'seed':>4s} {'layout':8s} {'tilt':>4s} {'grav deg':>8s} {'sup mm':>7s} {'miss':>4s} {'floor':>5s} right  warnings")
     tally: dict[str, list[bool]] = {}

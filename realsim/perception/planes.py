@@ -143,14 +143,13 @@ def _has_support(candidates: list[tuple[np.ndarray, float, np.ndarray]], planar:
     return any(len(c[2]) >= params.min_support_share * planar for c in candidates)
 
 
-def _resting_direction(work: np.ndarray, proposals: list[tuple[np.ndarray, float, np.ndarray]], planar: int,
-                       params: PlaneParams, seed: int) -> np.ndarray | None:
+def _resting_direction(work: np.ndarray, big: list[tuple[np.ndarray, float, np.ndarray]], params: PlaneParams,
+                       seed: int) -> np.ndarray | None:
     """The normal bodies rest on (:func:`resting_normal`, on :func:`evidence_points` of ``work``) when two
-    large proposals (``min_support_share`` of the planar points each) are far from parallel, so
-    the size-and-tilt rule could level on a wall; else None (one support direction: nothing to decide)."""
-    big = [n for n, _, inl in proposals if len(inl) >= params.min_support_share * planar]
+    of the ``big`` proposals are far from parallel, so the size-and-tilt rule could level on a
+    wall; else None (one support direction: nothing to decide)."""
     cos_rest = np.cos(np.radians(params.resting_max_tilt_deg))
-    if not any(abs(float(a @ b)) < cos_rest for i, a in enumerate(big) for b in big[i + 1:]):
+    if not any(abs(float(a[0] @ b[0])) < cos_rest for i, a in enumerate(big) for b in big[i + 1:]):
         return None
     rng = np.random.default_rng(seed)
     sample, threshold = evidence_points(work, rng)
@@ -215,8 +214,10 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     candidates = [prop for prop in oriented if prop[0][2] >= cos_level]
     planar = sum(len(prop[2]) for prop in proposals)
     weight = lambda c: len(c[2]) * c[0][2] ** 2  # noqa: E731 - size by cos^2 of the tilt from the loaded up
-    rest = _resting_direction(work, proposals, planar, params, scene.seed)
-    resting = [] if rest is None else _facing(oriented if viewpoint is not None else proposals, rest, viewpoint is None, params)
+    # Only large planes (min_support_share of the planar points) are supports or walls; a smaller one is a thing's face.
+    big = [c for c in (oriented if viewpoint is not None else proposals) if len(c[2]) >= params.min_support_share * planar]
+    rest = _resting_direction(work, big, params, scene.seed)
+    resting = [] if rest is None else _facing(big, rest, viewpoint is None, params)
     if resting:
         # Bodies stand on the support, never on a wall: whichever way the capture was held (a file
         # turned 40 degrees, a picture upside down), the plane they rest on is searched first.
