@@ -52,6 +52,7 @@ def _planes(points: np.ndarray, threshold: float, rng: np.random.Generator) -> t
         normal, offset, _ = ransac_plane(points[idx], threshold, 300, rng)
         normal, offset, _ = refine_plane(points[idx], normal, offset, threshold)  # a thin top is not fit tilted
         inliers = np.flatnonzero(np.abs(points[idx] @ normal + offset) < threshold)
+        inliers = inliers[_largest_patch(points[idx[inliers]], 2 * threshold)]  # one surface, not a slab through two
         if len(inliers) < MIN_PLANE_SHARE * len(points):
             break
         planes.append((normal, offset, idx[inliers]))
@@ -59,7 +60,14 @@ def _planes(points: np.ndarray, threshold: float, rng: np.random.Generator) -> t
     return planes, rest
 
 
-def _bodies(points: np.ndarray, cell: float) -> list[np.ndarray]:
+def _largest_patch(points: np.ndarray, cell: float) -> np.ndarray:
+    """Indices of the largest connected group (26-neighbour voxels of side ``cell``) of ``points``:
+    a RANSAC plane through two groups far apart (a wall's ledge and a box's side) is no surface."""
+    groups = _bodies(points, cell, least=1)
+    return max(groups, key=len) if groups else np.arange(len(points))
+
+
+def _bodies(points: np.ndarray, cell: float, least: int = MIN_BODY) -> list[np.ndarray]:
     """Connected groups (26-neighbour voxels of side ``cell``) of ``points``, as index arrays."""
     if len(points) == 0:
         return []
@@ -71,7 +79,7 @@ def _bodies(points: np.ndarray, cell: float) -> list[np.ndarray]:
     of_point = labels[ijk[:, 0], ijk[:, 1], ijk[:, 2]] - 1
     order = np.argsort(of_point, kind="stable")
     bounds = np.searchsorted(of_point[order], np.arange(count + 1))
-    return [order[bounds[k]:bounds[k + 1]] for k in range(count) if bounds[k + 1] - bounds[k] >= MIN_BODY]
+    return [order[bounds[k]:bounds[k + 1]] for k in range(count) if bounds[k + 1] - bounds[k] >= least]
 
 
 def _touches(foot: np.ndarray, tree: cKDTree, cell: float) -> bool:
