@@ -8,11 +8,15 @@
 4. LCCP-style merging: adjacent supervoxels whose connection is convex (or flat within a
    tolerance) are joined, flattest first; two regions never join when their common border is
    mostly concave, so a stray convex pair at the contact of two objects cannot merge them.
-5. Small pieces join their best neighbour; small isolated clusters are noise. Objects standing
-   on other objects are found from what lies right under their base.
+5. Small pieces join their best neighbour; small isolated clusters are noise. In a camera view
+   sizes are surface areas (:mod:`realsim.perception.pixel_area`), and a segment as large as an
+   object that lies in front of its neighbours (:mod:`realsim.perception.in_front`) stays. Objects
+   standing on other objects are found from what lies right under their base.
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -21,8 +25,10 @@ from realsim.geometry import inside_convex_polygon
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.footprints import merge_shared_footprints
+from realsim.perception.in_front import in_front
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.occlusion_bridge import occluded_pairs, view_axis
+from realsim.perception.pixel_area import pixel_areas
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
@@ -74,8 +80,29 @@ def _pair_counts(la: np.ndarray, lb: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return keys // base, keys % base, counts
 
 
-def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int = 3,
-                 among_small: bool = False) -> np.ndarray:
+@dataclass(frozen=True)
+class Sizes:
+    """How :func:`absorb_small` sizes segments: each point's ``weight`` (its surface area in a camera
+    view; None: one per point) and ``whole``, the points of segments that are objects whatever their
+    size (None: none), which are never absorbed."""
+
+    weight: np.ndarray | None = None
+    whole: np.ndarray | None = None
+
+    def of(self, labels: np.ndarray) -> np.ndarray:
+        """Size of each segment."""
+        return np.bincount(labels, weights=self.weight)
+
+    def small(self, labels: np.ndarray, min_size: float) -> np.ndarray:
+        """Whether each segment is smaller than ``min_size`` and not an object by itself."""
+        size = self.of(labels) < min_size
+        if self.whole is not None:
+            size &= np.bincount(labels, weights=self.whole, minlength=len(size)) == 0
+        return size
+
+
+def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: float, passes: int = 3,
+                 among_small: bool = False, sizes: Sizes = Sizes()) -> np.ndarray:
     """Give each segment smaller than ``min_size`` to the neighbour it shares most links with.
 
     ``labels`` are segment indices (>= 0) of the linked points; segments with no neighbour stay.
@@ -83,22 +110,22 @@ def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int
     best larger neighbour, where together they reach ``min_size`` (an object seen small is all
     pieces, none of which is an object by itself); smaller gatherings stay as they were.
     """
-    out = _absorb(labels, a, b, min_size, passes, False)
+    out = _absorb(labels, a, b, min_size, passes, False, sizes)
     if among_small:
-        gathered = _absorb(out, a, b, min_size, passes, True)
-        whole = np.bincount(gathered)[gathered] >= min_size
+        gathered = _absorb(out, a, b, min_size, passes, True, sizes)
+        whole = sizes.of(gathered)[gathered] >= min_size
         out = np.where(whole, gathered, out + int(gathered.max(initial=0)) + 1)
     return np.unique(out, return_inverse=True)[1].ravel()
 
 
-def _absorb(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int,
-            among_small: bool) -> np.ndarray:
+def _absorb(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: float, passes: int,
+            among_small: bool, sizes: Sizes) -> np.ndarray:
     """:func:`absorb_small`'s passes; ``among_small``: a small segment with no large neighbour
     joins its best larger (small) one."""
     labels = labels.copy()
     for _ in range(passes):
-        size = np.bincount(labels)
-        small = size < min_size
+        size = sizes.of(labels)
+        small = sizes.small(labels, min_size)
         if not small.any():
             break
         i, j, c = _pair_counts(labels[a], labels[b])
@@ -362,10 +389,13 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         convex &= np.linalg.norm(col[si] - col[sj], axis=1) < params.color_edge
     cos = np.clip((nrm[si] * nrm[sj]).sum(axis=1), -1, 1)
     obj = merge_regions(n_seg, si, sj, cnt[contact], convex, np.argsort(-cos, kind="stable"), params.max_concave_fraction)[part]
-    obj = absorb_small(obj, la, lb, params.absorb_points, among_small=organized)
-    size = np.bincount(obj)
+    if organized and grid_shape is not None:  # sizes are areas: the same objects whatever the sensor and its distance
+        obj, big = _absorb_view(points, ids, obj, local, grid_links(fg, grid_shape), la, lb, grid_shape, axis, params)
+    else:
+        obj = absorb_small(obj, la, lb, params.absorb_points)
+        big = np.bincount(obj)[obj] >= params.min_object_points
     obj_labels = np.full(n, -1, dtype=np.int64)
-    obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
+    obj_labels[ids] = np.where(big, obj, -1)
     if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
@@ -384,6 +414,25 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _absorb_view(points: np.ndarray, ids: np.ndarray, obj: np.ndarray, local: np.ndarray, pairs: tuple[np.ndarray, np.ndarray],
+                 la: np.ndarray, lb: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray | None,
+                 params: SegmentParams) -> tuple[np.ndarray, np.ndarray]:
+    """A camera view's small segments (``obj`` over ``ids``, linked by ``la``-``lb``) joined to their
+    neighbours, sizes as surface areas; a segment as large as an object lying in front of its
+    neighbours (:func:`in_front`, over the image ``pairs``) stays. Returns the labels and whether
+    each point's segment is large enough to be an object."""
+    area = pixel_areas(points, grid_shape, params.jump_distance)[ids]
+    sizes = Sizes(area)
+    if axis is not None:
+        pa, pb = local[pairs[0]], local[pairs[1]]
+        both = (pa >= 0) & (pb >= 0)
+        front = in_front(obj, pa[both], pb[both], points[ids] @ axis, params.jump_distance, params.front_share)
+        front &= sizes.of(obj) >= params.min_view_area
+        sizes = Sizes(area, front[obj])
+    obj = absorb_small(obj, la, lb, params.absorb_view_area, among_small=True, sizes=sizes)
+    return obj, sizes.of(obj)[obj] >= params.min_view_area
 
 
 def _bridge_occlusions(points: np.ndarray, labels: np.ndarray, normals: np.ndarray, grid_shape: tuple[int, int],
