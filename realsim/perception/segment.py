@@ -8,15 +8,13 @@
 4. LCCP-style merging: adjacent supervoxels whose connection is convex (or flat within a
    tolerance) are joined, flattest first; two regions never join when their common border is
    mostly concave, so a stray convex pair at the contact of two objects cannot merge them.
-5. Small pieces join their best neighbour; small isolated clusters are noise. In a camera view
-   sizes are surface areas (:mod:`realsim.perception.pixel_area`), and a segment as large as an
-   object that lies in front of its neighbours (:mod:`realsim.perception.in_front`) stays. Objects
-   standing on other objects are found from what lies right under their base.
+5. Small pieces join their best neighbour; small isolated clusters are noise. In a camera view a
+   segment covering an object's surface area (:mod:`realsim.perception.pixel_area`) that lies in
+   front of its neighbours (:mod:`realsim.perception.in_front`) stays. Objects standing on other
+   objects are found from what lies right under their base.
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -80,52 +78,34 @@ def _pair_counts(la: np.ndarray, lb: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return keys // base, keys % base, counts
 
 
-@dataclass(frozen=True)
-class Sizes:
-    """How :func:`absorb_small` sizes segments: each point's ``weight`` (its surface area in a camera
-    view; None: one per point) and ``whole``, the points of segments that are objects whatever their
-    size (None: none), which are never absorbed."""
-
-    weight: np.ndarray | None = None
-    whole: np.ndarray | None = None
-
-    def of(self, labels: np.ndarray) -> np.ndarray:
-        """Size of each segment."""
-        return np.bincount(labels, weights=self.weight)
-
-    def small(self, labels: np.ndarray, min_size: float) -> np.ndarray:
-        """Whether each segment is smaller than ``min_size`` and not an object by itself."""
-        size = self.of(labels) < min_size
-        if self.whole is not None:
-            size &= np.bincount(labels, weights=self.whole, minlength=len(size)) == 0
-        return size
-
-
-def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: float, passes: int = 3,
-                 among_small: bool = False, sizes: Sizes = Sizes()) -> np.ndarray:
+def absorb_small(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int = 3,
+                 among_small: bool = False, whole: np.ndarray | None = None) -> np.ndarray:
     """Give each segment smaller than ``min_size`` to the neighbour it shares most links with.
 
     ``labels`` are segment indices (>= 0) of the linked points; segments with no neighbour stay.
     With ``among_small``, small segments whose neighbours are all small then gather, each in its
     best larger neighbour, where together they reach ``min_size`` (an object seen small is all
-    pieces, none of which is an object by itself); smaller gatherings stay as they were.
+    pieces, none of which is an object by itself); smaller gatherings stay as they were. Segments
+    holding a point marked in ``whole`` are objects whatever their size: never absorbed.
     """
-    out = _absorb(labels, a, b, min_size, passes, False, sizes)
+    out = _absorb(labels, a, b, min_size, passes, False, whole)
     if among_small:
-        gathered = _absorb(out, a, b, min_size, passes, True, sizes)
-        whole = sizes.of(gathered)[gathered] >= min_size
-        out = np.where(whole, gathered, out + int(gathered.max(initial=0)) + 1)
+        gathered = _absorb(out, a, b, min_size, passes, True, whole)
+        enough = np.bincount(gathered)[gathered] >= min_size
+        out = np.where(enough, gathered, out + int(gathered.max(initial=0)) + 1)
     return np.unique(out, return_inverse=True)[1].ravel()
 
 
-def _absorb(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: float, passes: int,
-            among_small: bool, sizes: Sizes) -> np.ndarray:
+def _absorb(labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_size: int, passes: int,
+            among_small: bool, whole: np.ndarray | None) -> np.ndarray:
     """:func:`absorb_small`'s passes; ``among_small``: a small segment with no large neighbour
     joins its best larger (small) one."""
     labels = labels.copy()
     for _ in range(passes):
-        size = sizes.of(labels)
-        small = sizes.small(labels, min_size)
+        size = np.bincount(labels)
+        small = size < min_size
+        if whole is not None:
+            small &= np.bincount(labels, weights=whole, minlength=len(size)) == 0
         if not small.any():
             break
         i, j, c = _pair_counts(labels[a], labels[b])
@@ -389,13 +369,13 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         convex &= np.linalg.norm(col[si] - col[sj], axis=1) < params.color_edge
     cos = np.clip((nrm[si] * nrm[sj]).sum(axis=1), -1, 1)
     obj = merge_regions(n_seg, si, sj, cnt[contact], convex, np.argsort(-cos, kind="stable"), params.max_concave_fraction)[part]
-    if organized and grid_shape is not None:  # sizes are areas: the same objects whatever the sensor and its distance
-        obj, big = _absorb_view(points, ids, obj, local, grid_links(fg, grid_shape), la, lb, grid_shape, axis, params)
+    if organized and grid_shape is not None:  # a small object in front of its neighbours is no piece of them
+        obj = _absorb_view(points, normals, ids, obj, local, grid_links(fg, grid_shape), la, lb, grid_shape, axis, params)
     else:
         obj = absorb_small(obj, la, lb, params.absorb_points)
-        big = np.bincount(obj)[obj] >= params.min_object_points
+    size = np.bincount(obj)
     obj_labels = np.full(n, -1, dtype=np.int64)
-    obj_labels[ids] = np.where(big, obj, -1)
+    obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
@@ -416,23 +396,22 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     return SegmentResult(labels, support_of, resting_on)
 
 
-def _absorb_view(points: np.ndarray, ids: np.ndarray, obj: np.ndarray, local: np.ndarray, pairs: tuple[np.ndarray, np.ndarray],
-                 la: np.ndarray, lb: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray | None,
-                 params: SegmentParams) -> tuple[np.ndarray, np.ndarray]:
+def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: np.ndarray, local: np.ndarray,
+                 pairs: tuple[np.ndarray, np.ndarray], la: np.ndarray, lb: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray | None,
+                 params: SegmentParams) -> np.ndarray:
     """A camera view's small segments (``obj`` over ``ids``, linked by ``la``-``lb``) joined to their
-    neighbours, sizes as surface areas; a segment as large as an object lying in front of its
-    neighbours (:func:`in_front`, over the image ``pairs``) stays. Returns the labels and whether
-    each point's segment is large enough to be an object."""
-    area = pixel_areas(points, grid_shape, params.jump_distance)[ids]
-    sizes = Sizes(area)
+    neighbours, except those covering an object's surface area (``min_view_area``, m^2) that lie in
+    front of their neighbours (:func:`in_front`, over the image ``pairs``). The pieces the
+    supervoxels leave are counted in pixels, as the supervoxels are seeded."""
+    whole = None
     if axis is not None:
         pa, pb = local[pairs[0]], local[pairs[1]]
         both = (pa >= 0) & (pb >= 0)
-        front = in_front(obj, pa[both], pb[both], points[ids] @ axis, params.jump_distance, params.front_share)
-        front &= sizes.of(obj) >= params.min_view_area
-        sizes = Sizes(area, front[obj])
-    obj = absorb_small(obj, la, lb, params.absorb_view_area, among_small=True, sizes=sizes)
-    return obj, sizes.of(obj)[obj] >= params.min_view_area
+        front = in_front(obj, pa[both], pb[both], points[ids] @ axis, normals[ids], params.jump_distance,
+                         params.convex_tolerance, params.front_share)
+        front &= np.bincount(obj, weights=pixel_areas(points, grid_shape, params.jump_distance)[ids]) >= params.min_view_area
+        whole = front[obj]
+    return absorb_small(obj, la, lb, params.absorb_points, among_small=True, whole=whole)
 
 
 def _bridge_occlusions(points: np.ndarray, labels: np.ndarray, normals: np.ndarray, grid_shape: tuple[int, int],

@@ -45,8 +45,7 @@ class SegmentParams:
     # (realsim.perception.contact_cut); coarser, a point's normal spans half a small object
     # objects
     absorb_points: int = 600  # smaller segments touching another segment join it
-    absorb_view_area: float = 0.0075  # m^2 of surface: camera views, smaller segments touching another join it
-    min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller isolated clusters are noise
+    min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller segments are never objects by themselves
     front_share: float = 0.8  # camera views: a segment whose border steps toward the camera this much is an object
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
     stack_min_height: float = 0.015  # an object whose base is this high rests on another one
