@@ -17,6 +17,8 @@ def is_point_cloud_ply(path: Path) -> bool:
     """True when a PLY file declares vertices but no faces."""
     with path.open("rb") as fh:
         header = fh.read(4096)
+    if not header:
+        raise InputError(f"{path}: the file is empty")
     if not header.startswith(b"ply"):
         raise InputError(f"{path}: not a PLY file (missing 'ply' magic)")
     head = header.split(b"end_header")[0]
