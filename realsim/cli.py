@@ -10,6 +10,7 @@ import argparse
 import math
 import os
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -66,12 +67,12 @@ def seed_arg(text: str) -> int:
     return value
 
 
-def bounded(kind: type, low: float, high: float):
+def bounded(kind: type[int] | type[float], low: float, high: float) -> Callable[[str], float]:
     """An argparse type: a finite ``kind`` number in [low, high]."""
 
     def parse(text: str) -> float:
         try:
-            value = kind(text)
+            value: float = kind(text)
         except ValueError:
             raise argparse.ArgumentTypeError(f"{text!r} is not a {kind.__name__}") from None
         if not (math.isfinite(value) and low <= value <= high):
@@ -261,7 +262,7 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("-o", "--output", required=True, help="output folder: a new path, an empty folder, or earlier realsim output (with --force)")
     convert.add_argument("--force", action="store_true", help="replace an output folder realsim wrote before (atomically; nothing else is touched)")
     convert.add_argument("--seed", type=seed_arg, default=0, help="seed of every random source (default 0)")
-    convert.add_argument("--units", choices=["m", "cm", "mm"], help="input units (detected by default)")
+    convert.add_argument("--units", choices=["m", "cm", "mm", "in", "ft"], help="input units (m, cm or mm detected by default; name in or ft)")
     convert.add_argument("--up", choices=["+x", "-x", "+y", "-y", "+z", "-z"], help="input up axis (detected by default)")
     convert.add_argument("--robot-pose", metavar="X,Y,YAW", help="place the Panda's base here (m, m, rad) instead of searching")
     convert.add_argument("--no-robot", action="store_true", help="compose the scene without the Panda")
@@ -356,7 +357,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return args.func(args)
+        return int(args.func(args))
     except RealsimError as exc:
         print(f"realsim: error: {exc}", file=sys.stderr)
         return exc.exit_code

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from realsim.errors import InputError
-from realsim.perception.capture_config import CaptureConfig, read_capture_config
+from realsim.perception.capture_config import NAMED_ONLY_UNITS, CaptureConfig, read_capture_config
 from realsim.perception.formats import (
     MESH_SUFFIXES,
     POINT_CLOUD_SUFFIXES,
@@ -243,7 +243,7 @@ def read_environment(path: Path, params: LoadParams, seed: int) -> RawCloud:
         raise InputError(f"{path}: corrupt point data (shape {cloud.points.shape}, expected (N, 3))")
     finite = np.isfinite(cloud.points).all(axis=1)
     if not finite.any():
-        raise InputError(f"{path}: the point cloud has no finite points (all NaN)")
+        raise InputError(f"{path}: the point cloud has no finite points (all NaN or infinite)")
     if finite.sum() < MIN_CAPTURE_POINTS:
         raise InputError(f"{path}: only {int(finite.sum())} finite point(s); a scene capture needs at least {MIN_CAPTURE_POINTS}")
     return cloud
@@ -279,6 +279,16 @@ def _photo_capture(photo: Path, config: CaptureConfig, seed: int) -> Scene:
     return Scene(capture=capture, seed=seed, support=config.support)
 
 
+def _description(path: Path) -> str:
+    """The scene description a ``.txt`` file holds; binary bytes (a scan saved under a wrong
+    suffix) are refused, never read as words."""
+    raw = path.read_bytes()
+    text = raw.decode("utf-8", errors="replace")  # a Latin-1 accent is one odd letter, not binary
+    if any(not (c.isprintable() or c.isspace()) for c in text):
+        raise InputError(f"{path}: not a text description (binary data); a scan needs its format's suffix (.ply, .pcd, ...)")
+    return text.strip()
+
+
 def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int = 0) -> Scene:
     """Read a capture file or folder into a Scene in a gravity-agnostic Z-up frame.
 
@@ -294,8 +304,10 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: no such file or folder")
+    if path.is_file() and path.stat().st_size == 0:  # before any reader guesses its kind from the bytes
+        raise InputError(f"{path}: the file is empty")
     if path.is_file() and path.suffix.lower() == ".txt":
-        text = params.text or path.read_text(errors="replace").strip()
+        text = params.text or _description(path)
         if not text:
             raise InputError(f"{path}: the description file is empty")
         scene = _text_capture(text, path)
@@ -322,8 +334,9 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         env = path
     units = params.units or config.units
     up = params.up or config.up
-    if units is not None and units not in UNIT_SCALE:
-        raise InputError(f"unknown units {units!r}: use m, cm or mm")
+    scales = {**UNIT_SCALE, **NAMED_ONLY_UNITS}
+    if units is not None and units not in scales:
+        raise InputError(f"unknown units {units!r}: use {', '.join(scales)}")
     if up is not None and up not in UP_AXES:
         raise InputError(f"unknown up axis {up!r}: use one of {', '.join(UP_AXES)}")
 
@@ -348,13 +361,14 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
             units, units_reason = plausible_units(cloud.points, up_rotation(up)[2])
             units_detected = True
         else:
-            check_scale(cloud.points * UNIT_SCALE[units], units)
-        transform[:3, :3] = up_rotation(up) * UNIT_SCALE[units]
+            check_scale(cloud.points * scales[units], units)
+        transform[:3, :3] = up_rotation(up) * scales[units]
         if cloud.mesh is not None:
             cloud = resample_mesh(cloud, transform, params, seed, env, origin)
         if origin is not None:
             transform[:3, 3] = -transform[:3, :3] @ origin
-        scene_points = cloud.points @ transform[:3, :3].T
+        with np.errstate(invalid="ignore", over="ignore"):  # an infinite coordinate becomes non-finite, as NaN ones stay
+            scene_points = cloud.points @ transform[:3, :3].T
         spacing = point_spacing(scene_points, seed)
         splat = cloud.splat
         scene_colors = cloud.colors

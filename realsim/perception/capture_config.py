@@ -20,6 +20,9 @@ Positive = Annotated[float, Field(gt=0.0, allow_inf_nan=False)]
 Height = Annotated[float, Field(ge=0.0, le=3.0, allow_inf_nan=False)]  # metres above the floor
 
 
+NAMED_ONLY_UNITS = {"in": 0.0254, "ft": 0.3048}  # m per unit: CAD and US apps; detection never guesses them (an inch scene looks like a cm one)
+
+
 class DeclaredSupport(BaseModel):
     """``support:`` the table object meshes are placed on (no scan)."""
 
@@ -63,7 +66,7 @@ class CaptureConfig(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    units: Literal["m", "cm", "mm"] | None = None
+    units: Literal["m", "cm", "mm", "in", "ft"] | None = None
     up: Literal["+x", "-x", "+y", "-y", "+z", "-z"] | None = None
     support_height: Height | None = None
     support: DeclaredSupport | None = None
