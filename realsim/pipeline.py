@@ -16,13 +16,14 @@ from __future__ import annotations
 import time
 from dataclasses import asdict, dataclass, field, is_dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import yaml
 from rich.console import Console
 
 from realsim import rerun
 from realsim.alloc import reuse_freed_memory
+from realsim.composition import backdrop_ahead
 from realsim.destination import check_destination
 from realsim.errors import InputError
 from realsim.perception.capture_config import read_capture_config
@@ -36,6 +37,14 @@ from realsim.validation import build_params, check_seed, unknown_names
 
 Overrides = dict[str, Any]
 """Stage name -> ``{parameter: value}`` or that stage's parameter dataclass."""
+
+BEGUN_AFTER: dict[str, tuple[str, Callable[[Scene, Any], None]]] = {
+    "segment": ("compose", lambda scene, compose: backdrop_ahead.begin(scene, compose.appearance, compose.backdrop)),
+}
+"""Work for a later stage begun beside the stages in between as soon as a stage has made what it
+reads: stage -> (the later stage, a function of the Scene and that stage's parameters beginning the
+work). The later stage takes the work only when what it read is unchanged; it is begun only when
+that stage is still to run."""
 
 
 def as_mapping(value: Any) -> Any:
@@ -168,7 +177,7 @@ def run_pipeline(
     spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
     reuse_freed_memory()  # numpy temporaries reuse freed heap instead of fresh page-faulted mmaps
     scene = Scene.unread(source, seed)
-    for name, params in plan:
+    for i, (name, params) in enumerate(plan):
         if name == "write" and not write:
             break
         stage = STAGES[name]
@@ -180,6 +189,10 @@ def run_pipeline(
         scene = stage.run(scene, params)
         if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
             scene.compiled = None
+        later, begin = BEGUN_AFTER.get(name, ("", None))
+        ahead = {n: p for n, p in plan[i + 1:] if n != "write" or write}
+        if begin is not None and later in ahead:
+            begin(scene, ahead[later])
         scene.timings[name] = round(time.perf_counter() - started, 4)
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
     return scene

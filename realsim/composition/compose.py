@@ -28,11 +28,11 @@ from realsim.composition.appearance import (
     top_view_texture,
 )
 from realsim.composition.arena import ArenaParams, add_arena
-from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop, build_cloud_backdrop
+from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdrop
+from realsim.composition.backdrop_ahead import cloud_backdrop, cloud_layers
 from realsim.composition.object_meshes import collision_file, mesh_bytes, object_meshes
 from realsim.forkmap import Ahead
-from realsim.geometry import inside_convex_polygon
-from realsim.scene import Scene, SceneObject, SupportPlane
+from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 
 
@@ -261,9 +261,6 @@ def _add_captured_surfaces(spec: mujoco.MjSpec, scene: Scene, image: CaptureImag
     return colours
 
 
-UNCOLOURED = 0.6  # grey of a capture without colours
-
-
 def _add_backdrop(spec: mujoco.MjSpec, backdrop: Backdrop, params: ComposeParams, assets: dict[str, bytes]) -> None:
     """The backdrop as one textured visual-only mesh in the world body."""
     material = add_baked_material(spec, "backdrop", backdrop.texture_png, assets, params.baked_emission)
@@ -274,30 +271,18 @@ def _add_cloud_surfaces(spec: mujoco.MjSpec, scene: Scene, params: ComposeParams
     """An unorganized capture's look: each observed support's top as seen from above (and its
     median colour for the box under it) and the backdrop of what is neither object nor support;
     returns the supports' colours. The objects' colours (with the capture's colours) and the
-    backdrop are made here while a forked helper makes the tops' textures (:class:`Ahead`)."""
-    assert scene.points is not None and scene.labels is not None
-    points = np.asarray(scene.points, float)
-    colors = np.asarray(scene.colors, float) if scene.colors is not None else np.full(points.shape, UNCOLOURED)  # geometry only: grey
-    background = scene.labels <= 0
-    tops: list[tuple[SupportPlane, trimesh.Trimesh, np.ndarray]] = []
-    for plane in [p for p in scene.planes if p.observed]:
-        near = background & (np.abs(np.nan_to_num(points[:, 2], nan=1e9) - plane.height) < params.appearance.support_tolerance)
-        idx = np.flatnonzero(near)
-        on = idx[inside_convex_polygon(points[idx, :2], np.asarray(plane.polygon, float))]
-        background[on] = False
-        if len(on) >= 3:
-            tops.append((plane, support_top(plane, params.appearance.support_cell, params.appearance.top_lift), on))
+    backdrop are made here (the backdrop perhaps by a thread begun before completion:
+    :mod:`realsim.composition.backdrop_ahead`) while a forked helper makes the tops' textures (:class:`Ahead`)."""
+    layers = cloud_layers(scene, params.appearance, params.backdrop)
+    points, colors, tops = layers.points, layers.colors, layers.tops
     with Ahead(lambda k: top_view_texture(tops[k][0], tops[k][1], points[tops[k][2], :2], colors[tops[k][2]]), len(tops)) as textures:
         if scene.colors is not None:  # no photo to project: the objects' colours from their points (those taken once)
+            assert scene.labels is not None
             mine = np.isin(scene.labels, [o.id for o in scene.objects])
             taken = points[mine], colors[mine], scene.labels[mine]
             for obj in scene.objects:
                 colour_object_from_points(obj, *taken, params.appearance)
-        observed = [p for p in scene.planes if p.observed] or list(scene.planes)
-        centre = np.array([*np.mean([p.rect_center for p in observed], axis=0), max(p.height for p in observed)]) if observed \
-            else np.nanmean(points, axis=0)
-        spacing = scene.capture.point_spacing or float("nan")
-        backdrop = build_cloud_backdrop(points, colors, background, spacing, centre + [0.0, 0.0, 1.2], params.backdrop)
+        backdrop = cloud_backdrop(layers.backdrop)
         made = textures.results()
     colours: dict[int, list[float]] = {}
     for (plane, top, on), (png, uv) in zip(tops, made):
