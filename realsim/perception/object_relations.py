@@ -13,13 +13,21 @@ from realsim.scene import SupportPlane
 __all__ = ["base_height", "filter_by_size", "sheet_thickness", "support_relations"]
 
 
-def base_height(heights: np.ndarray, lowest: int = 5) -> float:
-    """Height of an object's base: its ``lowest``-th lowest point (a few stray points aside).
+def base_height(heights: np.ndarray, gap: float | None = None, lowest: int = 5) -> float:
+    """Height of an object's base: its lowest point that is no stray.
 
+    With a ``gap`` (m; clouds worked on a grid, whose clusters hold a point per cell): the lowest
+    point with another of the object's points within ``gap`` above it (a point alone more than a
+    cell beneath the rest is a stray); a sparse object has few points near its base, so no count
+    of them is its base. Without (a camera view): its ``lowest``-th lowest point.
     A percentile would rise with the object's shape (a bottle lying on its side, a round-bottomed
     pitcher have few points near the support) and call objects standing on the support floating."""
     if len(heights) == 0:
         return float("nan")
+    if gap is not None:
+        h = np.sort(heights)
+        joined = np.flatnonzero(np.diff(h) <= gap)
+        return float(h[joined[0]] if len(joined) else h[-1])
     k = min(lowest, len(heights)) - 1
     return float(np.partition(heights, k)[k])
 
@@ -30,7 +38,9 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
 
     An object whose base (:func:`base_height`) is more than ``stack_min_height`` above its
     support rests on the lower-based object owning most points right under its bottom points
-    (within 1.5 cm in xy, from 5 cm below to 1 cm above the base).
+    (those within 1 cm and a ``base_gap`` of its base; the points under them within 1.5 cm or a
+    link, ``jump_distance``, in xy, from 5 cm below to 1 cm above the base): on a coarse grid a
+    resting object's lowest cells lie a cell apart, so what is under them is as far.
     """
     k = int(labels.max(initial=0))
     support_of: dict[int, int] = {}
@@ -42,7 +52,7 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
     order = np.argsort(owner, kind="stable")
     starts = np.searchsorted(owner[order], np.arange(1, k + 2))
     members = [order[starts[o - 1]:starts[o]] for o in range(1, k + 1)]
-    base = np.array([base_height(h[m]) for m in members])
+    base = np.array([base_height(h[m], params.base_gap) for m in members])
     tree = cKDTree(pts[:, :2])
     for o in range(1, k + 1):
         m = members[o - 1]
@@ -50,9 +60,9 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
         support_of[o] = planes[plane_idx].id
         if base[o - 1] < params.stack_min_height:
             continue
-        bottom = m[h[m] < base[o - 1] + 0.01]
+        bottom = m[h[m] < base[o - 1] + 0.01 + (params.base_gap or 0.0)]
         bottom = bottom[:: max(1, len(bottom) // 300)]
-        dist, nn = tree.query(pts[bottom, :2], k=16, distance_upper_bound=0.015)
+        dist, nn = tree.query(pts[bottom, :2], k=16, distance_upper_bound=max(0.015, params.jump_distance))
         nn = nn[np.isfinite(dist)]
         base_z = pts[bottom, 2].min()
         nn = nn[(owner[nn] != o) & (pts[nn, 2] < base_z + 0.01) & (pts[nn, 2] > base_z - 0.05)]
@@ -105,7 +115,7 @@ def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[Suppo
         if len(pts) == 0:
             continue
         extent = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
-        base = base_height(pts[:, 2]) - height_of.get(result.support_of.get(o, -1), float(pts[:, 2].min()))
+        base = base_height(pts[:, 2], params.base_gap) - height_of.get(result.support_of.get(o, -1), float(pts[:, 2].min()))
         if extent > params.max_object_size:
             fate[o] = 0
         elif max_sheet is not None and _is_sheet(pts, max_sheet):

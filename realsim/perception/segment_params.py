@@ -49,6 +49,8 @@ class SegmentParams:
     front_share: float = 0.8  # camera views: a segment whose border steps toward the camera this much is an object
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
     stack_min_height: float = 0.015  # an object whose base is this high rests on another one
+    base_gap: float | None = None  # m: clouds worked on a grid (its cell): an object's base is its lowest point
+    # with another within this above it (None: camera views, the 5th-lowest point; object_relations.base_height)
     # sizes of objects (unorganized clouds): larger clusters are structure (walls, furniture sides),
     # smaller ones and floating ones (resting on nothing) are noise
     min_object_size: float = 0.02  # m, largest extent

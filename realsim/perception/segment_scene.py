@@ -38,7 +38,8 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
     1.5 mm apart) become the same areas counted in cells of this size, and object sizes are areas.
     The base of an object standing on its support shows on the grid up to one cell above the
     foreground's lower bound (a cell's centre averages what lies in it), so only a base higher
-    than that rests on something else."""
+    than that rests on something else; the base is a cluster's lowest cell with another within a
+    cell above it (a sparse object has few cells near its base: no count of them is its base)."""
     kinect_cell = 0.0015**2
 
     def count(points: int, floor: int) -> int:
@@ -53,6 +54,7 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
         absorb_points=max(6, int(round(params.absorb_area / resolution**2))),
         min_object_points=max(5, int(round(params.min_object_area / resolution**2))),
         stack_min_height=max(params.stack_min_height, params.min_height + resolution),
+        base_gap=resolution,
     )
 
 
