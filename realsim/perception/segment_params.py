@@ -42,7 +42,7 @@ class SegmentParams:
     # on textured real objects any useful threshold splits objects, see bench)
     max_concave_fraction: float = 0.5  # regions whose border is more concave than this stay apart
     contact_cut_cell: float = 0.015  # m: clouds this fine re-cut touching clusters at concave folds
-    # (realsim.perception.contact_cut); coarser, a point's normal spans half a small object
+    # (realsim.perception.contact_cut), and no coarser than segment_scene.fold_resolution (8 mm by default)
     # objects
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller segments are never objects by themselves

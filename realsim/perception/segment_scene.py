@@ -55,7 +55,16 @@ def at_resolution(params: SegmentParams, resolution: float) -> SegmentParams:
         min_object_points=max(5, int(round(params.min_object_area / resolution**2))),
         stack_min_height=max(params.stack_min_height, params.min_height + resolution),
         base_gap=resolution,
+        contact_cut_cell=min(params.contact_cut_cell, fold_resolution(params)),
     )
+
+
+def fold_resolution(params: SegmentParams) -> float:
+    """The coarsest cell (m) at which a concave fold between two touching objects can be seen: a
+    point's normal is fitted over its ``normal_neighbors`` nearest cells, a disc of radius
+    ``cell * sqrt(k / pi)``; wider than the smallest object (``min_object_size``), it spans whole
+    objects and their contact alike (coarser clouds tell touching objects apart by colour)."""
+    return float(params.min_object_size / np.sqrt(params.normal_neighbors / np.pi))
 
 
 MIN_OBJECT_HEIGHT = 0.002  # m: the lowest an object's point can be above its support (noiseless meshes)
