@@ -36,7 +36,7 @@ def test_point_order_gives_one_world(tmp_path: Path) -> None:
     assert max(compare(metres, permuted)) < 1e-9 and len(permuted.objects) == len(metres.objects) >= 3  # sums in another order
 
 
-@pytest.mark.xfail(strict=True, reason="issue 13: RANSAC proposals on a voxel copy change with float rounding (3 vs 5 objects)")
+@pytest.mark.xfail(strict=True, reason="issue 13: RANSAC proposals on a voxel copy change with float rounding (the counter's world moves 8.8 mm between m and cm)")
 def test_cloud_in_metres_and_centimetres_gives_one_world(tmp_path: Path) -> None:
     gt = bench_scene("counter:42")  # a counter against walls: its RANSAC proposals differ with the rounding
     cloud = cloud_of(gt, 200_000)

@@ -36,6 +36,7 @@ class SettleParams:
     rest_window: float = 0.25  # s: an object that stayed within rest_speed * rest_window of its pose this long is at rest too
     check_time: float = 2.0  # simulated seconds of the rest check
     max_drift: float = 0.005  # m an object may move during the check
+    max_capture_move: float = 0.02  # m a captured object may move while settling before it is reported as not where the capture shows it
     capacity: CapacityParams = field(default_factory=CapacityParams)  # nconmax / njmax recorded for batched engines
 
 
@@ -165,6 +166,11 @@ def settle_scene(scene: Scene, params: SettleParams = SettleParams(), model: muj
                 report["moved_during_settling"][name] = float(np.linalg.norm(settled - obj.position))
                 obj.position = settled.copy()
                 obj.quat = qpos[q + 3 : q + 7].copy()
+    moved = {n: d for n, d in report["moved_during_settling"].items() if d > params.max_capture_move}
+    if moved and scene.labels is not None:  # a captured object (not a generated one) stood still where it was seen
+        scene.warn(f"{len(moved)} object(s) moved more than {params.max_capture_move * 1000:.0f} mm while settling, so they are not "
+                   f"where the capture shows them (their completed shapes or supports do not hold them as seen): "
+                   + ", ".join(f"{n} {d * 1000:.0f} mm" for n, d in sorted(moved.items())))
     unstable = [n for n, d in report["displacement"].items() if d > params.max_drift]
     if unstable:
         scene.warn(f"{len(unstable)} object(s) still move more than {params.max_drift * 1000:.0f} mm after settling: {', '.join(unstable)}")
