@@ -29,14 +29,28 @@ def test_inside_and_outside_of_a_bowl_join_stacked_and_neighbours_stay() -> None
     points = np.concatenate(clusters)
     labels = np.concatenate([np.full(len(c), k) for k, c in enumerate(clusters)])
     standing = np.array([True, True, True, False, True])
-    out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), standing)
+    out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), standing, 0.006)
     assert len(np.unique(out[labels <= 1])) == 1  # the bowl
     assert len(np.unique(out)) == 4
     for k in (2, 3, 4):
         assert np.all(out[labels == k] == k)
     # on different supports, nothing joins
     other = np.where(labels == 1, 1, 0)
-    assert len(np.unique(merge_shared_footprints(points[:, :2], labels, other, standing))) == 5
+    assert len(np.unique(merge_shared_footprints(points[:, :2], labels, other, standing, 0.006))) == 5
+
+
+def test_an_object_in_the_bay_of_an_l_shaped_one_stays_apart() -> None:
+    """A can standing in the bay of an L-shaped object (a lying drill: body and grip) lies inside
+    the L's convex hull but beside its footprint: it keeps its own label, whatever the grid."""
+    body = _box((0.0, 0.0, 0.0), (0.2, 0.05, 0.06), 3000, 4)
+    grip = _box((0.0, 0.05, 0.0), (0.05, 0.2, 0.05), 2000, 5)
+    can = _ring(0.035, 0.1, (0.1, 0.11))
+    points = np.concatenate([body, grip, can])
+    labels = np.concatenate([np.zeros(len(body) + len(grip), dtype=np.int64), np.ones(len(can), dtype=np.int64)])
+    standing = np.array([True, True])
+    for cell in (0.004, 0.01, 0.02):
+        out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), standing, cell)
+        assert np.array_equal(out, labels)
 
 
 def test_walls_are_tall_columns_objects_beside_them_are_not() -> None:

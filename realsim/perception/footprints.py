@@ -1,7 +1,10 @@
 """Footprints: two objects standing on the same support cannot stand in the same place.
 
 A cluster of the 3D segmentation that stands on its support (its base is on it) occupies the
-area under it, the convex hull of its points seen from above. When most of another standing
+area under it: the cells its points fill seen from above, closed across the gaps sampling leaves
+and with the openings they enclose filled (a bowl's, a mug's inside). Not their convex hull: an
+object standing in the bay of an L-shaped one (a can beside a lying drill's grip) lies in the
+drill's hull but beside its footprint. When most of another standing
 cluster lies inside that area, the two are pieces of one object that the surface-based
 segmentation cut apart at a concave crease of its own (a bowl's inside from its outside, the
 underside of a lying drill from its body). An object stacked on another does not stand on the
@@ -11,34 +14,53 @@ support and is never joined this way.
 from __future__ import annotations
 
 import numpy as np
+from scipy import ndimage
 
-from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
+__all__ = ["filled_footprint", "merge_shared_footprints"]
 
-__all__ = ["merge_shared_footprints"]
+
+def filled_footprint(cells: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The footprint of the occupied xy ``cells`` (K, 2 ints): (closed, filled, origin), boolean
+    grids whose cell (0, 0) is ``origin``. ``closed``: the cells closed across the one-cell gaps
+    sampling leaves in a surface; ``filled``: with the openings they enclose filled as well."""
+    lo = cells.min(axis=0) - 2
+    grid = np.zeros(tuple(cells.max(axis=0) - lo + 3), dtype=bool)
+    grid[cells[:, 0] - lo[0], cells[:, 1] - lo[1]] = True
+    closed = ndimage.binary_closing(grid, structure=np.ones((3, 3), dtype=bool))
+    return closed, ndimage.binary_fill_holes(closed), lo
+
+
+def _inside(cells: np.ndarray, grid: np.ndarray, origin: np.ndarray) -> np.ndarray:
+    """Mask of the ``cells`` that are set in ``grid`` (cell (0, 0) at ``origin``)."""
+    at = cells - origin
+    ok = np.all((at >= 0) & (at < grid.shape), axis=1)
+    out = np.zeros(len(cells), dtype=bool)
+    out[ok] = grid[at[ok, 0], at[ok, 1]]
+    return out
 
 
 def merge_shared_footprints(xy: np.ndarray, labels: np.ndarray, support: np.ndarray, standing: np.ndarray,
-                            min_share: float = 0.5) -> np.ndarray:
+                            cell: float, min_share: float = 0.5) -> np.ndarray:
     """Cluster labels (>= 0; -1 none) with standing clusters that share a footprint joined.
 
     ``xy`` (N, 2) are the points' horizontal positions (m), ``support`` the support index of each
-    point, ``standing`` (per label) whether the cluster stands on its support. Two standing
-    clusters on the same support join when at least ``min_share`` of one's points lie inside the
-    other's convex hull; the larger share first, each pair judged on the clusters as found."""
+    point, ``standing`` (per label) whether the cluster stands on its support, ``cell`` (m) the
+    grid the points were worked at (about one point per cell of a surface). Two standing
+    clusters on the same support join when at least ``min_share`` of one's points lie in the
+    other's filled footprint (:func:`filled_footprint`); the larger share first, each pair judged
+    on the clusters as found."""
     ks = [k for k in np.unique(labels[labels >= 0]).tolist() if standing[k]]
-    if len(ks) < 2:
+    if len(ks) < 2 or not np.isfinite(cell) or cell <= 0:
         return labels
     members = {k: np.flatnonzero(labels == k) for k in ks}
     home = {k: int(np.bincount(support[m] - support[m].min()).argmax() + support[m].min()) for k, m in members.items()}
-    hulls = {}
-    for k, m in members.items():
-        if len(m) >= 3 and np.ptp(xy[m], axis=0).min() > 0:
-            hulls[k] = polygon_and_rectangle(xy[m])[0]
+    cells = {k: np.floor(xy[m] / cell).astype(np.int64) for k, m in members.items()}
     shares = []
-    for a in hulls:
+    for a in ks:
+        _, filled, origin = filled_footprint(cells[a])
         for b in ks:
             if a != b and home[a] == home[b]:
-                share = float(inside_convex_polygon(xy[members[b]], hulls[a]).mean())
+                share = float(_inside(cells[b], filled, origin).mean())
                 if share >= min_share:
                     shares.append((share, a, b))
     if not shares:

@@ -389,7 +389,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points)
         obj_labels[ids] = split_resting(points[ids], patch_normals if point_normals is None else point_normals,
                                         obj_labels[ids], la, lb, working, params.min_object_points, params.min_object_size)
-        obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params)
+        obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params, working)
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
@@ -441,14 +441,14 @@ def _bridge_occlusions(points: np.ndarray, labels: np.ndarray, normals: np.ndarr
 
 
 def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray, height: np.ndarray,
-                     params: SegmentParams) -> np.ndarray:
-    """:func:`merge_shared_footprints` of the clusters whose base is on their support."""
+                     params: SegmentParams, cell: float) -> np.ndarray:
+    """:func:`merge_shared_footprints` (on a grid of ``cell``, m) of the clusters whose base is on their support."""
     if not (labels >= 0).any():
         return labels
     standing = np.zeros(int(labels.max()) + 1, dtype=bool)
     for k in np.unique(labels[labels >= 0]):
         standing[k] = base_height(height[labels == k], params.base_gap) < params.stack_min_height
-    return merge_shared_footprints(points[:, :2], labels, support, standing)
+    return merge_shared_footprints(points[:, :2], labels, support, standing, cell)
 
 
 def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:

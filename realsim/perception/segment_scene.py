@@ -9,6 +9,7 @@ from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
+from realsim.perception.footprints import filled_footprint
 from realsim.perception.resolution import working_resolution
 from realsim.perception.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
 from realsim.perception.stack_split import give_resting_base
@@ -233,12 +234,8 @@ def _footprint_holes(labels: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray,
     box top seen from above has those, and the support under it is no floor of the box's)."""
     out_l, out_c = [np.zeros(0, np.int64)], [np.zeros((0, 2), np.int64)]
     for k in np.unique(labels):
-        ij = cells[labels == k]
-        lo = ij.min(axis=0) - 2
-        grid = np.zeros(tuple(ij.max(axis=0) - lo + 3), dtype=bool)
-        grid[ij[:, 0] - lo[0], ij[:, 1] - lo[1]] = True
-        closed = ndimage.binary_closing(grid, structure=np.ones((3, 3), dtype=bool))
-        holes = np.argwhere(ndimage.binary_fill_holes(closed) & ~closed)
+        closed, filled, lo = filled_footprint(cells[labels == k])
+        holes = np.argwhere(filled & ~closed)
         out_l.append(np.full(len(holes), k, dtype=np.int64))
         out_c.append(holes + lo)
     return np.concatenate(out_l), np.concatenate(out_c)
