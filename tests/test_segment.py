@@ -395,3 +395,14 @@ def test_coarse_cloud_standing_object_is_not_floating() -> None:
     out = filter_by_size(points, result, [_table()], at_resolution(SegmentParams(), cell))
     assert np.all(out.labels[: len(centres[0])] == 1)
     assert np.all(out.labels[len(centres[0]):] == -1)
+
+
+def test_flush_boxes_of_two_colours_in_a_fine_cloud_are_two_objects() -> None:
+    """Two equal boxes pressed flush side by side form one box's shape: no fold tells them apart,
+    so a cloud fine enough for contact cuts still tells them apart by colour."""
+    boxes = [([-0.1, -0.05, TABLE_Z], [0.0, 0.05, TABLE_Z + 0.08], [0.8, 0.1, 0.1]),
+             ([0.0, -0.05, TABLE_Z], [0.1, 0.05, TABLE_Z + 0.08], [0.1, 0.2, 0.8])]
+    points, colors, gt = _synthetic_scene(boxes)
+    result = segment_objects(points, colors, [_table()], None, SegmentParams(), seed=0, resolution=0.003)
+    assert len(np.unique(result.labels[result.labels > 0])) == 2
+    assert matched_ious(result.labels, gt).min() > 0.9

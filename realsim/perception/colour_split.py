@@ -1,7 +1,9 @@
 """Colour: two touching objects a sparse cloud cannot tell apart by shape, told apart by colour.
 
 In a cloud whose points lie about as far apart as a small object is wide, a point's normal spans
-the object, and the fold where two touching objects meet is not seen. The colours still differ:
+the object, and the fold where two touching objects meet is not seen; in a finer cloud the contact
+cut (:mod:`realsim.perception.contact_cut`) misses contacts that show no fold (flush faces, a
+small object pressed into a large one's side). The colours still differ:
 a cluster whose points fall into two colour populations, each far apart compared with its own
 spread, and each (mostly) one connected piece, is two objects. A print on one object is
 rarely one such connected population in each colour of its own; a colour gradient (shading)
