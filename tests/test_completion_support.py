@@ -51,6 +51,33 @@ def test_a_body_leaning_on_a_box_is_parted_along_the_plane_touching_it() -> None
     assert done[2].volume > 0.4 * slab.volume
 
 
+def test_a_body_curved_round_a_neighbour_gives_way_piece_by_piece() -> None:
+    # A can seen all round (radius 5 cm) and a body of five tiles curved round it (a banana lying
+    # against a pitcher); the middle tile's hidden far side pokes 1 cm into the can. No plane touching
+    # the can keeps the curved body's seen tops (their hull wraps the can), so only the poking tile is cut.
+    can = trimesh.creation.cylinder(radius=0.05, height=0.1, sections=48)
+    can.apply_translation([0.0, 0.0, 0.05])
+    angle = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    can_seen = np.column_stack([0.05 * np.cos(angle), 0.05 * np.sin(angle), np.full(200, 0.05)])
+    tiles, tops = [], []
+    for k, a in enumerate(np.radians([-60.0, -30.0, 0.0, 30.0, 60.0])):
+        inner = 0.04 if k == 2 else 0.06
+        ring = [(r * np.cos(a + da), r * np.sin(a + da)) for r in (inner, 0.08) for da in (-0.2, 0.2)]
+        tiles.append(trimesh.convex.convex_hull(np.array([(x, y, z) for x, y in ring for z in (0.0, 0.03)])))
+        r, da = np.meshgrid(np.linspace(0.065, 0.08, 5), np.linspace(-0.15, 0.15, 5))
+        tops.append(np.column_stack([(r * np.cos(a + da)).ravel(), (r * np.sin(a + da)).ravel(), np.full(r.size, 0.03)]))
+    seen = np.vstack(tops)
+    body = trimesh.convex.convex_hull(np.vstack([t.vertices for t in tiles]))
+    objects = [_object(1, can), _object(2, body)]
+    done, pieces = {1: can, 2: body}, {2: list(tiles)}
+    part_overlapping(objects, done, {1: can_seen, 2: seen}, CompletionParams(), pieces)
+    assert done[1] is can  # the can, seen all round, is not cut
+    assert len(pieces[2]) == 5 and all(pieces[2][k] is tiles[k] for k in (0, 1, 3, 4))  # only the poking tile changed
+    assert max(_depth_inside(can, np.asarray(p.vertices)).max() for p in pieces[2]) < 1e-4  # none in the can
+    assert min(max(_depth_inside(p, seen)[i] for p in pieces[2]) for i in range(len(seen))) > -0.003  # every seen top kept (within the noise)
+    assert len(objects[1].collision) == 5
+
+
 def test_a_body_on_a_sloping_top_is_seated_along_it() -> None:
     book = trimesh.convex.convex_hull(np.vstack([_top_points(np.array([0.0, 0.0]), np.array([0.3, 0.2, 0.02]), 0.1),
                                                  [[0, 0, 0], [0.3, 0, 0], [0, 0.2, 0], [0.3, 0.2, 0]]]))

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.hull import volume
+from realsim.completion.hull import trimesh_hull, volume
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -50,7 +50,7 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     normals = np.vstack([_sphere(DIRECTIONS), -fixed.face_normals[:: max(1, len(fixed.faces) // 64)]])
     offsets = (fixed.vertices @ normals.T).max(axis=0)
     low = (moved.vertices @ normals.T).min(axis=0)
-    kept = np.mean(seen @ normals.T >= offsets - SEEN_TOLERANCE, axis=0) >= KEEP_SEEN
+    kept = np.mean(seen @ normals.T >= offsets - SEEN_TOLERANCE, axis=0) >= KEEP_SEEN if len(seen) else np.ones(len(normals), bool)
     best: tuple[float, np.ndarray, float] | None = None
     whole = volume(moved)
     for j in np.argsort(offsets - low):  # shallow cuts first
@@ -65,29 +65,78 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     return best
 
 
+def _within(points: np.ndarray, piece: trimesh.Trimesh, margin: float = SEEN_TOLERANCE) -> np.ndarray:
+    """The ``points`` inside the convex ``piece`` or within ``margin`` of it: what the camera saw of it."""
+    planes = np.einsum("fk,fk->f", piece.face_normals, piece.triangles[:, 0, :])
+    return points[np.all(points @ piece.face_normals.T - planes[None, :] <= margin, axis=1)]
+
+
+Part = tuple[float, np.ndarray | None, float]  # volume removed, the kept side's normal and offset (None: the piece dropped)
+
+
+def _piece_part(piece: trimesh.Trimesh, other: trimesh.Trimesh, seen: np.ndarray) -> Part | None:
+    """How ``piece`` gives way to the convex ``other``: the cheapest cut of :func:`_best_part` keeping
+    what the camera saw in it, or, when it holds nothing seen and no cut leaves any of it, dropped."""
+    found = _best_part(piece, other, seen)
+    if found is not None:
+        return found[0], found[1], found[2]
+    return (volume(piece), None, 0.0) if not len(seen) else None
+
+
+def _visual(obj: SceneObject, base: np.ndarray) -> trimesh.Trimesh | None:
+    """The object's painted surface (world frame) kept through a parting, or None when it is its
+    single hull (remade from the cut hull); a painted surface is visual only and stays as it was."""
+    if obj.visual is None or (len(obj.collision) == 1 and obj.visual is obj.collision[0]):
+        return None
+    visual = obj.visual.copy()
+    visual.apply_translation(base)
+    return visual
+
+
+def _part_pair(a: SceneObject, b: SceneObject, done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],
+               params: CompletionParams, pieces: dict[int, list[trimesh.Trimesh]]) -> None:
+    """Part every overlapping pair of convex pieces of ``a`` and ``b``: each time the one piece cut (or
+    dropped, when it holds nothing the camera saw and lies wholly in the other) that loses the least."""
+    seen = {o.id: [_within(observed[o.id], p) for p in pieces.get(o.id, [done[o.id]])] for o in (a, b)}
+    own: dict[int, list[trimesh.Trimesh | None]] = {o.id: list(pieces.get(o.id, [done[o.id]])) for o in (a, b)}
+    for i in range(len(own[a.id])):
+        for j in range(len(own[b.id])):
+            p, q = own[a.id][i], own[b.id][j]
+            if p is None or q is None or _apart(p, q):
+                continue
+            options = [(found, key, k) for (key, k, piece, fixed) in ((a.id, i, p, q), (b.id, j, q, p))
+                       if (found := _piece_part(piece, fixed, seen[key][k])) is not None]
+            if not options:
+                continue
+            (_, normal, offset), key, k = min(options, key=lambda o: o[0][0])
+            piece = own[key][k]
+            own[key][k] = None if normal is None or piece is None else clip_convex(piece, normal, offset)
+    for obj in (a, b):
+        parts = [p for p in own[obj.id] if p is not None]
+        before = pieces.get(obj.id, [done[obj.id]])
+        if not parts or (len(parts) == len(before) and all(p is q for p, q in zip(parts, before))):
+            continue
+        visual = _visual(obj, obj.position - np.array([0.0, 0.0, params.base_clearance]))
+        whole = parts[0] if len(parts) == 1 else trimesh_hull(np.vstack([p.vertices for p in parts]))
+        done[obj.id] = whole
+        lo, hi = whole.bounds
+        base = np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]])
+        if obj.id in pieces:
+            pieces[obj.id] = parts
+            set_shape(obj, whole, base, params, parts, visual)
+        else:
+            set_shape(obj, whole, base, params)
+        obj.notes.append(f"parted from object {(b if obj is a else a).id} by the plane touching it that keeps what the camera saw")
+
+
 def part_overlapping(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],
                      params: CompletionParams, pieces: dict[int, list[trimesh.Trimesh]]) -> None:
-    """Cut one of every two completed shapes that still overlap (objects stacked on one another
-    are left to :func:`realsim.completion.stacking.flatten_top`): the cut that removes the least
-    volume while keeping what the camera saw of the object cut."""
+    """Part every two completed shapes that still overlap (objects stacked on one another are left to
+    :func:`realsim.completion.stacking.flatten_top`), piece by convex piece: of each two overlapping
+    pieces, the one cut that loses the least volume while keeping what the camera saw of it (a body
+    that is not convex gives way where it does, not across its hull)."""
     for i, a in enumerate(objects):
         for b in objects[i + 1:]:
             if a.resting_on == b.id or b.resting_on == a.id or _apart(done[a.id], done[b.id]):
                 continue
-            options = [(found, obj, other) for obj, other in ((a, b), (b, a))
-                       if (found := _best_part(done[obj.id], done[other.id], observed[obj.id])) is not None]
-            if not options:
-                continue
-            (_, normal, offset), obj, other = min(options, key=lambda o: o[0][0])
-            cut = clip_convex(done[obj.id], normal, offset)
-            if cut is None:
-                continue
-            done[obj.id] = cut
-            lo, hi = cut.bounds
-            base = np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]])
-            parts = None
-            if obj.id in pieces:
-                parts = [p for p in (clip_convex(q, normal, offset) for q in pieces[obj.id]) if p is not None]
-                pieces[obj.id] = parts
-            set_shape(obj, cut, base, params, parts or None)
-            obj.notes.append(f"parted from object {other.id} by the plane touching it that keeps what the camera saw")
+            _part_pair(a, b, done, observed, params, pieces)
