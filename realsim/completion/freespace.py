@@ -19,7 +19,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.cutsearch import best_cut
-from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, trimesh_hull, volume
+from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, trimesh_hull, volume, within_convex
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -37,7 +37,7 @@ KEEP_MARGIN = 0.002  # m: seen points this far outside a piece still bind its cu
 
 
 def _unit_rows(rows: np.ndarray) -> np.ndarray:
-    return rows / np.linalg.norm(rows, axis=1, keepdims=True)
+    return np.asarray(rows / np.linalg.norm(rows, axis=1, keepdims=True))
 
 
 _AZIMUTH = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
@@ -109,8 +109,7 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
     noise): the wrong guess behind a seen face is cut, not the face (only points in this piece bind)."""
     whole = volume(piece)
     if seen is not None and len(seen):
-        planes = np.einsum("fk,fk->f", piece.face_normals, piece.triangles[:, 0, :])
-        seen = seen[np.all(seen @ piece.face_normals.T - planes[None, :] <= KEEP_MARGIN, axis=1)]  # within this piece
+        seen = seen[within_convex(piece, seen, KEEP_MARGIN)]  # within this piece
         towards = piece.centroid - seen
         far = np.maximum(np.linalg.norm(towards, axis=1, keepdims=True), 1e-9)
         seen = seen + towards / far * np.minimum(far, tolerance)

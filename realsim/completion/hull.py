@@ -43,6 +43,12 @@ def solid_hull(points: np.ndarray) -> trimesh.Trimesh | None:
     return hull if volume(hull) > 1e-9 else None
 
 
+def within_convex(mesh: trimesh.Trimesh, points: np.ndarray, margin: float) -> np.ndarray:
+    """Mask of the ``points`` inside the convex ``mesh`` or within ``margin`` outside one of its faces."""
+    planes = np.einsum("fk,fk->f", mesh.face_normals, mesh.triangles[:, 0, :])
+    return np.asarray(np.all(points @ mesh.face_normals.T - planes[None, :] <= margin, axis=1))
+
+
 def extreme_points(points: np.ndarray, margin: float = 1e-9) -> np.ndarray:
     """The ``points`` within ``margin`` of their convex hull's boundary: the only ones that can hold
     the maximum of ``n . x`` for any direction ``n`` (or, as their perspective images, of any line
@@ -54,7 +60,7 @@ def extreme_points(points: np.ndarray, margin: float = 1e-9) -> np.ndarray:
         eq = ConvexHull(points).equations
     except QhullError:
         return points
-    return points[(points @ eq[:, :-1].T + eq[:, -1]).max(axis=1) > -margin]
+    return np.asarray(points[(points @ eq[:, :-1].T + eq[:, -1]).max(axis=1) > -margin])
 
 
 def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
@@ -75,7 +81,7 @@ def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
     crosses = triangles.cross(vertices[faces])
     normals, valid = util.unitize(crosses, check_valid=True)
     faces, crosses = faces[valid], crosses[valid]
-    area = triangles.area(crosses=crosses)
+    area = triangles.area(crosses=crosses)  # type: ignore[no-untyped-call]
     centre = vertices[faces].mean(axis=1)
     if area.sum() <= 0:
         return _by_trimesh(points)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.hull import trimesh_hull, volume
+from realsim.completion.hull import trimesh_hull, volume, within_convex
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -65,12 +65,6 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     return best
 
 
-def _within(points: np.ndarray, piece: trimesh.Trimesh, margin: float = SEEN_TOLERANCE) -> np.ndarray:
-    """The ``points`` inside the convex ``piece`` or within ``margin`` of it: what the camera saw of it."""
-    planes = np.einsum("fk,fk->f", piece.face_normals, piece.triangles[:, 0, :])
-    return points[np.all(points @ piece.face_normals.T - planes[None, :] <= margin, axis=1)]
-
-
 Part = tuple[float, np.ndarray | None, float]  # volume removed, the kept side's normal and offset (None: the piece dropped)
 
 
@@ -97,7 +91,7 @@ def _part_pair(a: SceneObject, b: SceneObject, done: dict[int, trimesh.Trimesh],
                params: CompletionParams, pieces: dict[int, list[trimesh.Trimesh]]) -> None:
     """Part every overlapping pair of convex pieces of ``a`` and ``b``: each time the one piece cut (or
     dropped, when it holds nothing the camera saw and lies wholly in the other) that loses the least."""
-    seen = {o.id: [_within(observed[o.id], p) for p in pieces.get(o.id, [done[o.id]])] for o in (a, b)}
+    seen = {o.id: [observed[o.id][within_convex(p, observed[o.id], SEEN_TOLERANCE)] for p in pieces.get(o.id, [done[o.id]])] for o in (a, b)}
     own: dict[int, list[trimesh.Trimesh | None]] = {o.id: list(pieces.get(o.id, [done[o.id]])) for o in (a, b)}
     for i in range(len(own[a.id])):
         for j in range(len(own[b.id])):
