@@ -146,7 +146,7 @@ def _image(p: Path | np.ndarray) -> np.ndarray:
         return p
     try:
         if p.suffix == ".npy":
-            return np.load(p)
+            return np.asarray(np.load(p))
         from PIL import Image
 
         return np.asarray(Image.open(p))
@@ -164,10 +164,9 @@ def _frame_depth(depth: Path, conf: Path | None, params: FusionParams) -> np.nda
     return depth_m
 
 
-def _frame_rgbd(folder: Path, k: np.ndarray, depth: Path, color: Path | np.ndarray, conf: Path | None,
-                params: FusionParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Depth (H, W) metres (0 none), colour (H, W, 3) uint8 at the depth resolution, intrinsics scaled to it."""
-    depth_m = _frame_depth(depth, conf, params)
+def _frame_rgbd(k: np.ndarray, depth_m: np.ndarray, color: Path | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Depth (H, W) metres (0 none, :func:`_frame_depth`), colour (H, W, 3) uint8 at the depth
+    resolution, intrinsics scaled to it."""
     rgb = _image(color)[..., :3]
     h, w = depth_m.shape
     kk = k.copy()
@@ -176,7 +175,7 @@ def _frame_rgbd(folder: Path, k: np.ndarray, depth: Path, color: Path | np.ndarr
 
         kk[0] *= w / rgb.shape[1]
         kk[1] *= h / rgb.shape[0]
-        rgb = np.asarray(Image.fromarray(np.ascontiguousarray(rgb)).resize((w, h), Image.BILINEAR))
+        rgb = np.asarray(Image.fromarray(np.ascontiguousarray(rgb)).resize((w, h), Image.Resampling.BILINEAR))
     return depth_m, rgb, kk
 
 
@@ -208,10 +207,11 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         raise InputError(f"{folder}: only {len(frames)} frame(s) have colour, depth and a pose ({len(colors)} colour, "
                          f"{len(depths)} depth, {len(poses)} poses): the export is incomplete; re-export the sequence")
     v = params.voxel
+    read: dict[int, np.ndarray] = {}  # frame -> depth read for the spacing, decoded once
     if v is None:  # the frames' own resolution: their depth is read first (cheap beside the colour)
         spacing = []
         for i in frames:
-            depth = _frame_depth(depths[i], conf.get(i), params)
+            depth = read[i] = _frame_depth(depths[i], conf.get(i), params)
             # the intrinsics are the colour frames' (principal point at their centre), scaled to the depth frame
             spacing.append(ray_spacing(depth, float(np.sqrt(k[0, 0] * k[1, 1])) * depth.shape[1] / (2.0 * k[0, 2])))
         if np.isnan(spacing).all():
@@ -226,7 +226,8 @@ def fuse_sequence(folder: Path, params: FusionParams = FusionParams()) -> tuple[
         if color is None:  # the colour video ended
             break
         fused += 1
-        depth, rgb, kk = _frame_rgbd(folder, k, depths[i], color, conf.get(i), params)
+        depth = read.pop(i) if i in read else _frame_depth(depths[i], conf.get(i), params)
+        depth, rgb, kk = _frame_rgbd(k, depth, color)
         h, w = depth.shape
         stride = _stride(h, w)
         vv, uu = np.mgrid[0:h:stride, 0:w:stride]
