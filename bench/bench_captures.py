@@ -44,6 +44,7 @@ SCENES = {
     "table": ("003_cracker_box", "077_rubiks_cube", "005_tomato_soup_can", "025_mug"),
     "counter": ("010_potted_meat_can", "012_strawberry", "021_bleach_cleanser", "024_bowl"),
     "floor": ("003_cracker_box", "006_mustard_bottle", "019_pitcher_base", "035_power_drill"),
+    "rooms": ("003_cracker_box", "005_tomato_soup_can", "006_mustard_bottle", "024_bowl", "025_mug", "077_rubiks_cube"),
 }
 DETECT = Path(__file__).resolve().parent / "_detect_only.yaml"
 
@@ -69,7 +70,7 @@ def bench_scene(key: str) -> SynthScene:
     """The scene of a ``--layouts`` entry: ``table`` (the fixed objects) or ``table:7`` (seeded draw)."""
     layout, _, seed = key.partition(":")
     if layout not in SCENES or (seed and not seed.isdigit()):
-        raise SystemExit(f"unknown layout {key!r}: use table, counter or floor, optionally :seed")
+        raise SystemExit(f"unknown layout {key!r}: use table, counter, floor or rooms, optionally :seed")
     if not seed or int(seed) == 0:
         return make_scene(SceneSpec(layout=layout, objects=SCENES[layout], seed=0))
     return make_scene(SceneSpec(layout=layout, seed=int(seed)))

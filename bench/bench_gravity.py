@@ -20,7 +20,7 @@ view's assumed floor does not count). A view is right when gravity is within 0.5
 such support is found within 5 mm. Run:
 
     .venv/bin/python bench/bench_gravity.py [--seeds 0-29] [--kinds view hand roll overhead cloud]
-        [--tilts 0,20,40,60,90]
+        [--tilts 0,20,40,60,90] [--layouts table,counter,floor]
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from scipy.spatial.transform import Rotation
 from realsim.perception.capture import load_capture
 from realsim.perception.pcd_io import write_pcd
 from realsim.perception.planes import detect_planes
-from realsim.synth import LAYOUTS, SceneSpec, SynthScene, kinect_view, make_scene
+from realsim.synth import SceneSpec, SynthScene, kinect_view, make_scene
 from realsim.synth.camera import Camera, view_cloud
 from realsim.synth.exports import without_floor, write_cloud
 from realsim.synth.forms import sample_cloud
@@ -50,6 +50,7 @@ HEIGHT_MM = 5.0
 VIEW_KINDS = ("view", "hand", "roll", "overhead")
 CLOUD_KINDS = ("cloud", "cloudfloor", "cloudbare")
 ROLLS = (90.0, 135.0, 180.0)
+LAYOUTS = ["table", "counter", "floor"]  # by seed in turn; --layouts replaces them (e.g. rooms)
 
 
 def walled_scene(seed: int, floor: bool = False, wall: bool = True) -> SynthScene:
@@ -148,7 +149,9 @@ def main() -> None:
     ap.add_argument("--seeds", default="0-29", help="a comma list of seeds and ranges a-b")
     ap.add_argument("--kinds", nargs="+", default=["view", "hand"], choices=VIEW_KINDS + CLOUD_KINDS)
     ap.add_argument("--tilts", default="0,20,40,60,90", help="degrees the clouds are turned (comma list)")
+    ap.add_argument("--layouts", default=",".join(LAYOUTS), help="generator layouts taken by seed in turn (comma list)")
     args = ap.parse_args()
+    LAYOUTS[:] = args.layouts.split(",")
     seeds = [seed for part in args.seeds.split(",") for seed in seed_range(part)]
     tilts = [float(t) for t in args.tilts.split(",")]
     print(f"{'kind':10s} {'seed':>4s} {'layout':8s} {'tilt':>4s} {'grav deg':>8s} {'sup mm':>7s} {'miss':>4s} {'floor':>5s} right  warnings")

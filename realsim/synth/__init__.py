@@ -6,7 +6,7 @@ primitive tabletop (``realsim example DEST`` without ``--layout``) is :mod:`real
 Build a scene (world frame: right-handed, Z up, metres, floor top at z = 0)::
 
     from realsim.synth import SceneSpec, make_scene, write_all
-    scene = make_scene(SceneSpec(layout="table",            # "table" | "counter" | "floor"
+    scene = make_scene(SceneSpec(layout="table",            # "table" | "counter" | "floor" | "rooms" (2-3 tables)
                                  objects=("025_mug", "003_cracker_box", "005_tomato_soup_can"),  # or None:
                                  n_objects=4,               #   n_objects drawn from DEFAULT_OBJECTS
                                  stacked=True,              # one object on a flat-topped one (boxes lie flat)

@@ -121,14 +121,18 @@ def kinect_view(scene: SynthScene, rng: np.random.Generator, width: int = 640, h
 
 def orbit(scene: SynthScene, frames: int, rng: np.random.Generator, width: int = 640, height: int = 480,
           arc_deg: float = 200.0) -> list[Camera]:
-    """A hand-held sweep: ``frames`` cameras on an arc around the primary support, looking at it."""
+    """A hand-held sweep: ``frames`` cameras on an arc around the primary support, looking at it
+    (around the middle of all the tables, further out by their spread, when there are several)."""
     sup = scene.primary_support()
-    target = np.array([sup.center[0], sup.center[1], sup.height + 0.05])
+    centres = np.array([s.center for s in scene.supports if s.kind != "floor"] or [sup.center])
+    middle = centres.mean(axis=0)
+    spread = float(np.max(np.linalg.norm(centres - middle, axis=1)))
+    target = np.array([middle[0], middle[1], sup.height + 0.05])
     start = math.radians(-90.0 - arc_deg / 2 + rng.uniform(-10, 10))
     cams = []
     for i in range(frames):
         ang = start + math.radians(arc_deg) * i / max(frames - 1, 1)
-        radius = 0.95 + 0.05 * math.sin(3 * ang) + rng.normal(0, 0.01)
+        radius = 0.95 + spread + 0.05 * math.sin(3 * ang) + rng.normal(0, 0.01)
         eye = target + np.array([radius * math.cos(ang), radius * math.sin(ang), 0.55 + rng.normal(0, 0.01)])
         cams.append(look_at(eye, target + rng.normal(0, 0.01, size=3), width, height))
     return cams

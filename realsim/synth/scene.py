@@ -26,7 +26,7 @@ PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
 PART_SUPPORT_OTHER = 2  # legs, edges, sides and the underside of furniture
 PART_FLOOR = 3  # the floor's top surface
 PART_BACKGROUND = 4  # walls, the floor slab's sides and underside
-LAYOUTS = ("table", "counter", "floor")
+LAYOUTS = ("table", "counter", "floor", "rooms")  # rooms: realsim.synth.rooms (several tables)
 DEFAULT_OBJECTS = (
     "003_cracker_box", "005_tomato_soup_can", "006_mustard_bottle", "010_potted_meat_can", "011_banana",
     "019_pitcher_base", "021_bleach_cleanser", "024_bowl", "025_mug", "035_power_drill", "061_foam_brick",
@@ -40,6 +40,7 @@ _PALETTE = np.array([
 _CLEARANCE = 0.03  # gap between objects that are not meant to touch (m)
 _CONTACT_GAP = 0.0005  # gap left between touching or stacked objects (m)
 _STACK_BASE = "003_cracker_box"  # in drawn subsets with a stack: lying flat, it holds any small object
+Furniture = list[tuple[trimesh.Trimesh, np.ndarray, np.ndarray]]  # (mesh, part per face, colour)
 
 
 def ycb_root() -> Path:
@@ -52,7 +53,7 @@ def ycb_root() -> Path:
 class SceneSpec:
     """What to build. ``objects``: YCB folder names (None: ``n_objects`` drawn from DEFAULT_OBJECTS)."""
 
-    layout: str = "table"  # "table" | "counter" | "floor"
+    layout: str = "table"  # "table" | "counter" | "floor" | "rooms"
     objects: tuple[str, ...] | None = None
     n_objects: int = 4
     stacked: bool = True  # one object resting on another (a flat-topped base is chosen)
@@ -111,8 +112,8 @@ class SynthScene:
         return self.mesh.bounds
 
     def primary_support(self) -> GtSupport:
-        """The support the objects stand on (the floor for the floor layout)."""
-        return next(s for s in self.supports if s.name == ("floor" if self.spec.layout == "floor" else self.spec.layout))
+        """The support the objects stand on (the floor for the floor layout; rooms: the main table)."""
+        return self.supports[0 if self.spec.layout == "floor" else 1]
 
     def label_points(self, points: np.ndarray, max_distance: float = 0.015) -> np.ndarray:
         """Ground-truth object id (0 none) of world points: the object owning the nearest face, when
@@ -131,7 +132,7 @@ class SynthScene:
 # furniture
 
 
-def _box_parts(box: trimesh.Trimesh, top_z: float | None, top_part: int, other_part: int) -> np.ndarray:
+def box_parts(box: trimesh.Trimesh, top_z: float | None, top_part: int, other_part: int) -> np.ndarray:
     """Per-face part: ``top_part`` for the upward faces at ``top_z``, ``other_part`` elsewhere."""
     parts = np.full(len(box.faces), other_part, dtype=np.int32)
     if top_z is not None:
@@ -140,36 +141,43 @@ def _box_parts(box: trimesh.Trimesh, top_z: float | None, top_part: int, other_p
     return parts
 
 
-def _furniture(spec: SceneSpec, rng: np.random.Generator) -> tuple[list[GtSupport], list[tuple[trimesh.Trimesh, np.ndarray, np.ndarray]]]:
+def _furniture(spec: SceneSpec, rng: np.random.Generator) -> tuple[list[GtSupport], Furniture]:
     fx, fy = spec.floor_size
     slab = 0.05
     floor = box_mesh((fx, fy, slab), (0.0, 0.0, -slab / 2))
     supports = [GtSupport("floor", "floor", 0.0, (0.0, 0.0), (fx, fy), 0.0, slab)]
-    parts = [(floor, _box_parts(floor, 0.0, PART_FLOOR, PART_BACKGROUND), np.array([0.55, 0.52, 0.48]))]
+    parts = [(floor, box_parts(floor, 0.0, PART_FLOOR, PART_BACKGROUND), np.array([0.55, 0.52, 0.48]))]
     wood = np.array([0.72, 0.58, 0.42])
     if spec.layout == "table":
         h = round(float(rng.uniform(0.70, 0.78)), 4)
         sx, sy, t = round(float(rng.uniform(1.0, 1.3)), 3), round(float(rng.uniform(0.7, 0.9)), 3), 0.04
-        top = box_mesh((sx, sy, t), (0.0, 0.0, h - t / 2))
-        parts.append((top, _box_parts(top, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), wood))
-        for ix in (-1, 1):
-            for iy in (-1, 1):
-                leg = box_mesh((0.05, 0.05, h - t), (ix * (sx / 2 - 0.06), iy * (sy / 2 - 0.06), (h - t) / 2))
-                parts.append((leg, _box_parts(leg, None, 0, PART_SUPPORT_OTHER), wood * 0.7))
         supports.append(GtSupport("table", "table", h, (0.0, 0.0), (sx, sy), 0.0, t))
+        parts += table_parts(supports[-1], wood)
     elif spec.layout == "counter":
         h = round(float(rng.uniform(0.86, 0.94)), 4)
         sx, sy = round(float(rng.uniform(1.4, 1.8)), 3), round(float(rng.uniform(0.55, 0.65)), 3)
         body = box_mesh((sx, sy, h), (0.0, 0.0, h / 2))
-        parts.append((body, _box_parts(body, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), np.array([0.85, 0.85, 0.82])))
+        parts.append((body, box_parts(body, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), np.array([0.85, 0.85, 0.82])))
         supports.append(GtSupport("counter", "table", h, (0.0, 0.0), (sx, sy), 0.0, h))
     elif spec.layout != "floor":
         raise InputError(f"unknown layout {spec.layout!r}: use one of {', '.join(LAYOUTS)}")
     if spec.wall if spec.wall is not None else spec.layout == "counter":
         back = supports[-1].size[1] / 2 + 0.02 if spec.layout != "floor" else fy / 2 - 0.1
         wall = box_mesh((fx, 0.1, 1.6), (0.0, back + 0.05, 0.8))
-        parts.append((wall, _box_parts(wall, None, 0, PART_BACKGROUND), np.array([0.88, 0.86, 0.80])))
+        parts.append((wall, box_parts(wall, None, 0, PART_BACKGROUND), np.array([0.88, 0.86, 0.80])))
     return supports, parts
+
+
+def table_parts(table: GtSupport, wood: np.ndarray) -> Furniture:
+    """A table's top (its upper face PART_SUPPORT_TOP) and four legs 6 cm in from its corners."""
+    (cx, cy), (sx, sy), h, t = table.center, table.size, table.height, table.thickness
+    top = box_mesh((sx, sy, t), (cx, cy, h - t / 2))
+    parts = [(top, box_parts(top, h, PART_SUPPORT_TOP, PART_SUPPORT_OTHER), wood)]
+    for ix in (-1, 1):
+        for iy in (-1, 1):
+            leg = box_mesh((0.05, 0.05, h - t), (cx + ix * (sx / 2 - 0.06), cy + iy * (sy / 2 - 0.06), (h - t) / 2))
+            parts.append((leg, box_parts(leg, None, 0, PART_SUPPORT_OTHER), wood * 0.7))
+    return parts
 
 
 # ---------------------------------------------------------------------------------------------
@@ -364,14 +372,29 @@ def make_scene(spec: SceneSpec = SceneSpec()) -> SynthScene:
     for n in names:
         if not (root / n / "textured.obj").is_file():
             raise InputError(f"{root / n}: no YCB scan textured.obj here (set REALSIM_YCB_ROOT)")
+    if spec.layout == "rooms":
+        from realsim.synth.rooms import make_rooms  # builds on this module's furniture and placement
+
+        return make_rooms(spec, names, rng)
     supports, furniture = _furniture(spec, rng)
     support = supports[-1] if spec.layout != "floor" else supports[0]
+    objects = place_on(spec, names, support, furniture, rng)
+    return assemble(spec, supports, furniture, objects)
+
+
+def place_on(spec: SceneSpec, names: list[str], support: GtSupport, furniture: Furniture,
+             rng: np.random.Generator) -> list[GtObject]:
+    """The named objects placed on ``support`` (30 seeded attempts), or InputError."""
     for _ in range(30):
         objects = _place_objects(spec, names, support, [m for m, _, _ in furniture], rng)
         if objects is not None:
-            break
-    else:
-        raise InputError(f"could not place {len(names)} objects on the {spec.layout}; use fewer or smaller objects")
+            return objects
+    raise InputError(f"could not place {len(names)} objects on the {support.name}; use fewer or smaller objects")
+
+
+def assemble(spec: SceneSpec, supports: list[GtSupport], furniture: Furniture, objects: list[GtObject]) -> SynthScene:
+    """The scene of this furniture and these objects: one merged, vertex-coloured mesh with the
+    object id and part code of every face."""
     meshes, face_obj, face_part, colors = [], [], [], []
     for mesh, parts, color in furniture:
         meshes.append(mesh)
