@@ -110,3 +110,12 @@ def test_rooms_example_writes_every_form(tmp_path: Path) -> None:
     truth = json.loads((dest / "ground_truth.json").read_text())
     assert [s["name"] for s in truth["supports"]][:2] == ["floor", "table"] and len(truth["supports"]) >= 3
     assert {f["form"] for f in truth["forms"]} == {"organized_view", "rgbd_sequence", "point_cloud", "mesh"}
+
+
+def test_primary_support_of_a_floorless_scene() -> None:
+    """Without its floor (a table-top scan), a scene still names the table its objects stand on."""
+    from realsim.synth.exports import without_floor
+
+    for layout in ("table", "counter", "rooms"):
+        scene = without_floor(make_scene(SceneSpec(layout=layout, seed=1, n_objects=3)))
+        assert scene.primary_support().name == ("table" if layout == "rooms" else layout)

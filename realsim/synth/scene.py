@@ -113,7 +113,8 @@ class SynthScene:
 
     def primary_support(self) -> GtSupport:
         """The support the objects stand on (the floor for the floor layout; rooms: the main table)."""
-        return self.supports[0 if self.spec.layout == "floor" else 1]
+        layout = self.spec.layout
+        return next(s for s in self.supports if s.name == ("table" if layout == "rooms" else layout))
 
     def label_points(self, points: np.ndarray, max_distance: float = 0.015) -> np.ndarray:
         """Ground-truth object id (0 none) of world points: the object owning the nearest face, when
