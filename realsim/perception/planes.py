@@ -16,6 +16,7 @@ from scipy.spatial import cKDTree
 
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
+from realsim.perception.plane_patches import surface_of
 from realsim.perception.plane_refit import refine_plane
 from realsim.perception.resolution import working_resolution
 from realsim.perception.up_axis import evidence_points, resting_normal
@@ -239,6 +240,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
             f"{scene.capture.environment_file}: no support plane found (no large flat surface{facing} within "
             f"{max_tilt:.0f} deg of the up axis '{scene.capture.up}'); check --up"
         )
+    candidates = [surface_of(c, params.region_cell, params.distance_threshold, params.min_plane_points) for c in candidates]
     normal, d, _ = max(candidates, key=weight)
     normal, d, _ = refine_plane(work, normal, d, params.refine_threshold)
     rotation = rotation_between(normal, np.array([0.0, 0.0, 1.0]))

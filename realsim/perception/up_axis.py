@@ -11,10 +11,10 @@ and the table top above it) pool their bodies. The file's axes only name it (rou
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from realsim.geometry import ransac_plane
+from realsim.perception.plane_patches import connected_groups
 from realsim.perception.plane_refit import refine_plane
 
 MAX_PLANES = 5  # large planes taken out in turn (floor, table top and underside, wall, counter front)
@@ -63,23 +63,8 @@ def _planes(points: np.ndarray, threshold: float, rng: np.random.Generator) -> t
 def _largest_patch(points: np.ndarray, cell: float) -> np.ndarray:
     """Indices of the largest connected group (26-neighbour voxels of side ``cell``) of ``points``:
     a RANSAC plane through two groups far apart (a wall's ledge and a box's side) is no surface."""
-    groups = _bodies(points, cell, least=1)
+    groups = connected_groups(points, cell)
     return max(groups, key=len) if groups else np.arange(len(points))
-
-
-def _bodies(points: np.ndarray, cell: float, least: int = MIN_BODY) -> list[np.ndarray]:
-    """Connected groups (26-neighbour voxels of side ``cell``) of ``points``, as index arrays."""
-    if len(points) == 0:
-        return []
-    ijk = np.floor((points - points.min(axis=0)) / cell).astype(np.int64)
-    shape = tuple(ijk.max(axis=0) + 1)
-    grid = np.zeros(shape, dtype=bool)
-    grid[ijk[:, 0], ijk[:, 1], ijk[:, 2]] = True
-    labels, count = ndimage.label(grid, structure=np.ones((3, 3, 3), dtype=bool))
-    of_point = labels[ijk[:, 0], ijk[:, 1], ijk[:, 2]] - 1
-    order = np.argsort(of_point, kind="stable")
-    bounds = np.searchsorted(of_point[order], np.arange(count + 1))
-    return [order[bounds[k]:bounds[k + 1]] for k in range(count) if bounds[k + 1] - bounds[k] >= least]
 
 
 def _touches(foot: np.ndarray, tree: cKDTree, cell: float) -> bool:
@@ -118,7 +103,7 @@ def resting_normal(points: np.ndarray, threshold: float, rng: np.random.Generato
     trees = [cKDTree(points[inl]) for _, _, inl in planes]
     votes = np.zeros((len(planes), 2))  # points of bodies resting on each plane's (+, -) side
     cos_parallel = np.cos(np.radians(PARALLEL_DEG))
-    for body in _bodies(points[residual], cell):
+    for body in connected_groups(points[residual], cell, MIN_BODY):
         pts = points[residual[body]]
         heights = [pts @ normal + offset for normal, offset, _ in planes]
         lo, hi = pts.min(axis=0) - 2 * cell, pts.max(axis=0) + 2 * cell
