@@ -10,8 +10,10 @@
    mostly concave, so a stray convex pair at the contact of two objects cannot merge them.
 5. Small pieces join their best neighbour; small isolated clusters are noise. In a camera view a
    segment covering an object's surface area (:mod:`realsim.perception.pixel_area`) that lies in
-   front of its neighbours (:mod:`realsim.perception.in_front`) stays. Objects standing on other
-   objects are found from what lies right under their base.
+   front of its neighbours (:mod:`realsim.perception.in_front`) stays; a container's inside seen
+   past its rim joins the rim (:mod:`realsim.perception.container_inside`), and a cluster whose
+   outline continues the surface behind it is backdrop (:mod:`realsim.perception.backdrop_patch`).
+   Objects standing on other objects are found from what lies right under their base.
 """
 
 from __future__ import annotations
@@ -20,8 +22,10 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
+from realsim.perception.backdrop_patch import continues_backdrop
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
+from realsim.perception.container_inside import join_insides
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.in_front import in_front
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
@@ -152,7 +156,8 @@ def convex_connections(centroids: np.ndarray, normals: np.ndarray, i: np.ndarray
     d /= np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-12)
     cos = np.clip((normals[i] * normals[j]).sum(axis=1), -1, 1)
     flat = cos > np.cos(np.radians(tolerance_deg))
-    return flat | (((normals[i] - normals[j]) * d).sum(axis=1) > 0)
+    out: np.ndarray = flat | (((normals[i] - normals[j]) * d).sum(axis=1) > 0)
+    return out
 
 
 def merge_regions(n_seg: int, si: np.ndarray, sj: np.ndarray, weight: np.ndarray, convex: np.ndarray,
@@ -319,6 +324,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     grid: OccupancyGrid | None = None  # unorganized clouds fine enough: their occupancy, for visibility
     working = float("inf")
     if organized:
+        assert grid_shape is not None
         normals = grid_normals(points, fg, grid_shape, params.normal_window, params.jump_distance)
         a, b = grid_links(fg, grid_shape)
     else:
@@ -330,6 +336,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
 
     ids = np.flatnonzero(fg & np.isfinite(normals).all(axis=1))
     if organized:
+        assert grid_shape is not None
         sv_local = grid_supervoxels(points, colors, normals, ids, grid_shape, params)
     else:
         sv_local = cloud_supervoxels(points, colors, normals, ids, params)
@@ -380,6 +387,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
         patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
+        assert patch_normals is not None  # given normals, _with_known returns normals
         point_normals = _with_known(_point_outward(points[ids], patch_normals, working, params, grid), known_normals, ids)
         if point_normals is not None:  # a coarse cloud's point normals span whole small objects: no cut
             cut = CutParams(min_size=params.min_object_size, min_points=params.min_object_points,
@@ -393,7 +401,27 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+    if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
+        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, params)
+        support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _drop_backdrop_patches(points: np.ndarray, labels: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray,
+                           params: SegmentParams) -> np.ndarray:
+    """A camera view's ``labels`` with the clusters that mostly continue into unlabelled pixels
+    (:func:`continues_backdrop`, over normals of every measured pixel) made 0 and the rest renumbered."""
+    valid = np.isfinite(points).all(axis=1)
+    normals = grid_normals(points, valid, grid_shape, params.normal_window, params.jump_distance)
+    a, b = grid_links(valid, grid_shape)
+    patch = continues_backdrop(labels, a, b, points @ axis, normals, params.jump_distance, params.convex_tolerance,
+                               params.backdrop_share)
+    if not patch.any():
+        return labels
+    out = np.where(patch[np.maximum(labels, 0)] & (labels > 0), 0, labels).astype(labels.dtype)
+    obj = out > 0
+    out[obj] = _ordered(points, np.where(obj, out, -1))[obj]
+    return out
 
 
 def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: np.ndarray, local: np.ndarray,
@@ -401,8 +429,9 @@ def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: 
                  params: SegmentParams) -> np.ndarray:
     """A camera view's small segments (``obj`` over ``ids``, linked by ``la``-``lb``) joined to their
     neighbours, except those covering an object's surface area (``min_view_area``, m^2) that lie in
-    front of their neighbours (:func:`in_front`, over the image ``pairs``). The pieces the
-    supervoxels leave are counted in pixels, as the supervoxels are seeded."""
+    front of their neighbours (:func:`in_front`, over the image ``pairs``); a container's inside seen
+    through its rim then joins the rim (:func:`join_insides`). The pieces the supervoxels leave are
+    counted in pixels, as the supervoxels are seeded."""
     whole = None
     if axis is not None:
         pa, pb = local[pairs[0]], local[pairs[1]]
@@ -411,7 +440,15 @@ def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: 
                          params.convex_tolerance, params.front_share)
         front &= np.bincount(obj, weights=pixel_areas(points, grid_shape, params.jump_distance)[ids]) >= params.min_view_area
         whole = front[obj]
-    return absorb_small(obj, la, lb, params.absorb_points, among_small=True, whole=whole)
+    obj = absorb_small(obj, la, lb, params.absorb_points, among_small=True, whole=whole)
+    if axis is None:
+        return obj
+    full = np.full(len(points), -1, dtype=np.int64)
+    full[ids] = obj
+    full = join_insides(full, grid_shape, points, normals, points @ axis, params.jump_distance, params.inside_concavity,
+                        params.inside_rim_share)
+    out: np.ndarray = full[ids]
+    return out
 
 
 def _bridge_occlusions(points: np.ndarray, labels: np.ndarray, normals: np.ndarray, grid_shape: tuple[int, int],

@@ -47,6 +47,12 @@ class SegmentParams:
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller segments are never objects by themselves
     front_share: float = 0.8  # camera views: a segment whose border steps toward the camera this much is an object
+    inside_concavity: float = 0.05  # camera views: a segment bending toward its centre more than this (of its radius)
+    # is seen from inside: a container's inside, joined to the rim that hides it (realsim.perception.container_inside)
+    inside_rim_share: float = 0.1  # camera views: ... when that rim holds this share of its image outline (it runs
+    # along the inside's near side; an object merely leaning on a container touches it over a few pixels)
+    backdrop_share: float = 0.5  # camera views: a cluster whose border continues the surface behind it on more
+    # than this share of its pairs is backdrop, cut out of a wall (realsim.perception.backdrop_patch)
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
     stack_min_height: float = 0.015  # an object whose base is this high rests on another one
     base_gap: float | None = None  # m: clouds worked on a grid (its cell): an object's base is its lowest point
