@@ -51,3 +51,12 @@ def test_a_cluster_bordering_only_other_objects_is_no_backdrop() -> None:
     labels = np.where(labels == 0, 2, labels)  # the surface around is an object, not backdrop
     a, b = _grid_pairs(40, 40)
     assert not continues_backdrop(labels, a, b, depth, normals, 0.008, 40.0, 0.5)[1]
+
+
+def test_a_cluster_continuing_into_its_own_foot_is_no_backdrop() -> None:
+    """The pixels of a support's top (an object's foot under the height threshold) are marked < 0 by
+    the caller: a low object continuing into them is no patch of the backdrop."""
+    labels, depth, normals = _wall_with(1.0)
+    labels = np.where(labels == 0, -1, labels)
+    a, b = _grid_pairs(40, 40)
+    assert not continues_backdrop(labels, a, b, depth, normals, 0.008, 40.0, 0.5)[1]

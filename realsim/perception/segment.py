@@ -402,19 +402,27 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
-        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, params)
+        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params)
         support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
 
 
 def _drop_backdrop_patches(points: np.ndarray, labels: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray,
-                           params: SegmentParams) -> np.ndarray:
+                           planes: list[SupportPlane], params: SegmentParams) -> np.ndarray:
     """A camera view's ``labels`` with the clusters that mostly continue into unlabelled pixels
-    (:func:`continues_backdrop`, over normals of every measured pixel) made 0 and the rest renumbered."""
+    (:func:`continues_backdrop`, over normals of every measured pixel) made 0 and the rest renumbered.
+    Pixels on a support's top (within ``min_height`` of it, inside its polygon) are no backdrop: an
+    object's own foot lies there."""
     valid = np.isfinite(points).all(axis=1)
     normals = grid_normals(points, valid, grid_shape, params.normal_window, params.jump_distance)
     a, b = grid_links(valid, grid_shape)
-    patch = continues_backdrop(labels, a, b, points @ axis, normals, params.jump_distance, params.convex_tolerance,
+    behind = labels.copy()
+    for plane in planes:
+        if plane.observed:
+            with np.errstate(invalid="ignore"):
+                near = np.flatnonzero((labels == 0) & (np.abs(points[:, 2] - plane.height) <= params.min_height))
+            behind[near[inside_convex_polygon(points[near, :2], plane.polygon, params.polygon_margin)]] = -1
+    patch = continues_backdrop(behind, a, b, points @ axis, normals, params.jump_distance, params.convex_tolerance,
                                params.backdrop_share)
     if not patch.any():
         return labels
