@@ -283,7 +283,7 @@ def build_parser() -> argparse.ArgumentParser:
     example.add_argument("dest", help="folder to write the capture into (new, empty, or an earlier example with --force)")
     example.add_argument("--force", action="store_true", help="replace an example realsim wrote before")
     example.add_argument("--seed", type=seed_arg, default=0)
-    example.add_argument("--layout", choices=["table", "counter", "floor"], help="YCB scans on this support, in every capture form")
+    example.add_argument("--layout", choices=["table", "counter", "floor", "rooms"], help="YCB scans on this support (rooms: several tables at different heights), in every capture form")
     example.add_argument("--objects", help="with --layout: comma-separated YCB names (default: --count drawn)")
     example.add_argument("--count", type=int, default=4, help="with --layout: objects drawn when --objects is absent")
     example.add_argument("--forms", default="view,sequence,cloud,mesh", help="with --layout: any of view,sequence,cloud,mesh,splat")

@@ -119,3 +119,23 @@ def test_primary_support_of_a_floorless_scene() -> None:
     for layout in ("table", "counter", "rooms"):
         scene = without_floor(make_scene(SceneSpec(layout=layout, seed=1, n_objects=3)))
         assert scene.primary_support().name == ("table" if layout == "rooms" else layout)
+
+
+@pytest.mark.parametrize("seed", [3, 81])
+def test_a_camera_view_keeps_a_lower_table_beside_the_main_one(seed: int, tmp_path: Path) -> None:
+    """A table 10-30 cm lower than the main one and beside it (not under it) is a support of its own:
+    it was dropped as noise under the largest support."""
+    from realsim.pipeline import run_pipeline
+    from realsim.synth import write_organized_view
+
+    gt = make_scene(SceneSpec(layout="rooms", seed=seed))
+    entry = write_organized_view(gt, tmp_path / "view.pcd")
+    (tmp_path / "detect.yaml").write_text("name: detect\nstages:\n  - load\n  - planes\n")
+    scene = run_pipeline(tmp_path / "view.pcd", pipeline=tmp_path / "detect.yaml")
+    to_gt = np.asarray(entry["capture_to_world"]) @ np.linalg.inv(scene.capture.input_to_world)
+    heights = [float((to_gt @ np.r_[p.rect_center, p.height, 1.0])[2]) for p in scene.planes if p.observed]
+    main = gt.supports[1].height
+    lower = [t for t in gt.supports[1:] if 0.05 <= main - t.height <= 0.25]
+    assert lower, "the layout was meant to hold a lower table"
+    for table in lower:
+        assert min(abs(h - table.height) for h in heights) < 0.005, (table.name, table.height, heights)
