@@ -52,7 +52,6 @@ class PlaneParams:
     max_support_height: float = 2.5  # planes higher than this above the floor are ceilings
     max_covered_fraction: float = 0.5  # a surface mostly covered by another just above it is an underside
     covered_band: tuple[float, float] = (0.01, 0.08)  # ... within this height band above it (m)
-    covered_noise_sigmas: float = 3.0  # ... whose lower edge clears this many of the surface's own noise spreads
     max_work_points: int = 500_000  # denser captures are worked on a seeded subset (3x denser: voxels at their resolution first)
     table_heights: tuple[float, float] = (0.4, 1.2)  # plausible table or counter tops above the floor (m)
 
@@ -291,27 +290,13 @@ def _covered_from_above(pts: np.ndarray, height: float, support_pts: np.ndarray,
     """Fraction of a support's points with another surface right above them (``covered_band``):
     the underside of a table top or of a floor slab, never the surface things stand on."""
     lo, hi = params.covered_band
-    rng = np.random.default_rng(seed)
-    sample = support_pts[rng.choice(len(support_pts), min(len(support_pts), 3000), replace=False)]
-    reach = max(0.01, params.voxel_size)
-    lo = max(lo, min(params.covered_noise_sigmas * _noise_below(pts, height, sample, reach, hi), hi / 2))
     above = pts[(pts[:, 2] > height + lo) & (pts[:, 2] < height + hi)]
     if len(above) == 0:
         return 0.0
-    dist, _ = cKDTree(above[:, :2]).query(sample[:, :2], distance_upper_bound=reach)
+    rng = np.random.default_rng(seed)
+    sample = support_pts[rng.choice(len(support_pts), min(len(support_pts), 3000), replace=False)]
+    dist, _ = cKDTree(above[:, :2]).query(sample[:, :2], distance_upper_bound=max(0.01, params.voxel_size))
     return float(np.isfinite(dist).mean())
-
-
-def _noise_below(pts: np.ndarray, height: float, sample: np.ndarray, reach: float, depth: float) -> float:
-    """Robust spread (m) of a surface's own points below its plane over its footprint: the capture's
-    noise there (a far camera view scatters a table top by a centimetre), which no surface above it
-    can be told from."""
-    below = pts[(pts[:, 2] <= height) & (pts[:, 2] > height - depth)]
-    if len(below) == 0:
-        return 0.0
-    dist, _ = cKDTree(sample[:, :2]).query(below[:, :2], distance_upper_bound=reach)
-    under = height - below[np.isfinite(dist), 2]
-    return float(1.4826 * np.median(under)) if len(under) else 0.0
 
 
 def _warn_implausible(scene: Scene, planes: list[SupportPlane], params: PlaneParams) -> None:
