@@ -50,3 +50,22 @@ def test_extreme_points_hold_every_directions_maximum_bit_for_bit() -> None:
         assert np.array_equal((image @ lines.T).max(axis=0), (image_kept @ lines.T).max(axis=0)), trial
     flat = np.column_stack([rng.uniform(size=(50, 2)), np.zeros(50)])
     assert len(extreme_points(flat)) == 50
+
+
+def test_cross_and_kept_normals_are_trimeshs_bit_for_bit() -> None:
+    """The edge cross products are trimesh's (numpy's) bits; the hull keeps the face normals it was
+    built with exactly when trimesh's constructor would (a wrong normal is dropped, then recomputed)."""
+    from trimesh import triangles
+
+    from realsim.completion.hull import _cross, _normals_match
+
+    rng = np.random.default_rng(8)
+    tri = rng.normal(size=(500, 3, 3)) * rng.uniform(1e-6, 10.0, size=(500, 1, 1))
+    assert _cross(tri).tobytes() == triangles.cross(tri).tobytes()
+    for trial in range(40):
+        mesh = trimesh_hull(rng.normal(size=(int(rng.integers(5, 80)), 3)))
+        normals = np.array(mesh.face_normals)
+        if trial % 2:
+            normals[int(rng.integers(0, min(20, len(normals))))] *= -1.0
+        built = trimesh.Trimesh(mesh.vertices, mesh.faces, face_normals=normals, process=False, validate=False)
+        assert _normals_match(np.asarray(mesh.vertices), np.asarray(mesh.faces), normals) == ("face_normals" in built._cache), trial

@@ -78,7 +78,7 @@ def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
     index[vid] = np.arange(len(vid))
     faces = index[hull.simplices].copy()
     vertices = hull.points[vid].copy()
-    crosses = triangles.cross(vertices[faces])
+    crosses = _cross(vertices[faces])
     normals, valid = util.unitize(crosses, check_valid=True)
     faces, crosses = faces[valid], crosses[valid]
     area = triangles.area(crosses=crosses)  # type: ignore[no-untyped-call]
@@ -97,7 +97,33 @@ def trimesh_hull(points: np.ndarray) -> trimesh.Trimesh:
     volume = float(np.einsum("fk,fk->", vertices[faces[:, 0]], np.where(backwards[:, None], -crosses, crosses))) / 6.0
     if repeated or np.any(directed[1:] == directed[:-1]) or not np.array_equal(directed, reverse) or volume <= 1e-15:
         return _by_trimesh(points)  # every directed edge once and its reverse too: closed and consistently wound
-    return trimesh.Trimesh(vertices=vertices, faces=faces, face_normals=normals, process=False, validate=False)
+    mesh = trimesh.Trimesh(vertices=vertices, faces=faces, process=False, validate=False)
+    if _normals_match(vertices, faces, normals):  # what the constructor's ``face_normals`` check does, cheaper
+        mesh._cache["face_normals"] = normals
+    return mesh
+
+
+def _cross(tri: np.ndarray) -> np.ndarray:
+    """``trimesh.triangles.cross(tri)`` (numpy's cross product of the two edges: the same products and
+    differences, so the same bits) without ``np.cross``'s per-call overhead."""
+    edge = tri[:, 1:, :] - tri[:, :2, :]
+    a, b = edge[:, 0], edge[:, 1]
+    return np.column_stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+                            a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]])
+
+
+def _normals_match(vertices: np.ndarray, faces: np.ndarray, normals: np.ndarray) -> bool:
+    """Whether ``Trimesh(face_normals=normals)`` keeps them: finite, not all zero, and the first 20 within
+    ``np.allclose`` of the normals of those triangles (its setter's checks, for finite values)."""
+    if len(normals) == 0 or normals.shape != faces.shape:
+        return False
+    ptp = np.ptp(normals)
+    if not np.isfinite(ptp) or ptp < tol.merge:
+        return False
+    check, valid = util.unitize(_cross(vertices[faces[:20]]), check_valid=True)
+    compare = np.zeros((len(valid), 3))
+    compare[valid] = check
+    return bool(np.all(np.abs(compare - normals[:20]) <= 1e-8 + 1e-5 * np.abs(normals[:20])))
 
 
 def _by_trimesh(points: np.ndarray) -> trimesh.Trimesh:
