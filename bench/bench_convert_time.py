@@ -1,4 +1,4 @@
-"""Full conversion time per stage, cold: the four mOSD scans, a 1 M-point cloud, a 30-frame RGB-D sweep.
+"""Full conversion time per stage, cold: the four mOSD scans, two 640 x 480 PCL scans, a 1 M-point cloud, a 30-frame RGB-D sweep.
 
 Each input is converted (``realsim.convert``, every stage, written) in its own fresh Python
 process with an empty cache except the Panda's meshes (input-independent, converted once at
@@ -31,8 +31,10 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+from typing import Any
 
 DATA = Path(__file__).resolve().parents[2] / "shared" / "data"
+PCL_SCANS = {"region": "region_growing_rgb_tutorial", "milk": "milk_cartoon_all_small_clorox"}  # name -> pcl_scenes/<stem>.pcd
 STAGE_ORDER = ("load", "planes", "segment", "complete", "objects", "compose", "robot", "settle", "write")
 
 CHILD = r"""
@@ -114,7 +116,7 @@ def robot_cache(folder: Path) -> Path:
     return root
 
 
-def convert_cold(name: str, source: Path, work: Path, cache_seed: Path, workers: int | None) -> dict:
+def convert_cold(name: str, source: Path, work: Path, cache_seed: Path, workers: int | None) -> dict[str, Any]:
     """Convert ``source`` in a fresh process with a cold cache; the child's JSON report."""
     run = work / name
     shutil.rmtree(run, ignore_errors=True)
@@ -126,11 +128,11 @@ def convert_cold(name: str, source: Path, work: Path, cache_seed: Path, workers:
                          capture_output=True, text=True, env=env)
     if out.returncode:
         raise RuntimeError(f"{name}: {out.stderr.strip().splitlines()[-1] if out.stderr.strip() else out.returncode}")
-    report: dict = json.loads(out.stdout.strip().splitlines()[-1])
+    report: dict[str, Any] = json.loads(out.stdout.strip().splitlines()[-1])
     return report
 
 
-def print_table(rows: list[tuple[str, dict]], key: str) -> None:
+def print_table(rows: list[tuple[str, dict[str, Any]]], key: str) -> None:
     head = " ".join(f"{s[:8]:>8s}" for s in STAGE_ORDER)
     print(f"{'input':8s} {head} {'wall':>6s} {'main':>6s} {'cpu':>6s} {'cpu+':>6s} {'warm':>5s} {'peakMB':>6s} {'outMB':>5s} {'obj':>3s}"
           "  scene.xml sha256  files sha256")
@@ -143,7 +145,7 @@ def print_table(rows: list[tuple[str, dict]], key: str) -> None:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--only", default="", help="comma-separated input names (test0, test31, test45, test55, cloud1m, rgbd30, mesh)")
+    parser.add_argument("--only", default="", help="comma-separated input names (test0, test31, test45, test55, region, milk, cloud1m, rgbd30, mesh)")
     parser.add_argument("--workers", type=int, default=None, help="REALSIM_WORKERS for the conversions")
     parser.add_argument("--mesh", action="store_true", help="also the table scene as a merged glTF mesh")
     parser.add_argument("--data", type=Path, default=DATA, help="the shared data folder (mOSD scans)")
@@ -157,6 +159,7 @@ def main() -> None:
         inputs_dir = args.keep or tmp / "inputs"
         inputs_dir.mkdir(parents=True, exist_ok=True)
         inputs = {f"test{i}": args.data / "pcl_scenes" / "mOSD" / f"test{i}.pcd" for i in (0, 31, 45, 55)}
+        inputs.update({name: args.data / "pcl_scenes" / f"{stem}.pcd" for name, stem in PCL_SCANS.items()})
         wanted_generated = not only or bool(only & {"cloud1m", "rgbd30", "mesh"})
         if wanted_generated:
             inputs.update(generated_inputs(inputs_dir, args.mesh or "mesh" in only, args.data))
