@@ -204,7 +204,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
 
 
 RULES = (("open container", "hollow"), ("solid of revolution", "revolved"), ("cylinder", "cylinder"), ("silhouette", "mirror"),
-         ("crest", "crest"), ("tiles", "tiles"), ("slabs", "slabs"), ("bands", "bands"))
+         ("crest", "crest"), ("tiles", "tiles"), ("slabs", "slabs"), ("bands", "bands"), ("underside", "under"))
 
 
 def _rule(kind: str) -> str:

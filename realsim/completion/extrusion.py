@@ -16,15 +16,18 @@ from realsim.completion.neighbours import clip_convex
 
 
 def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False,
-                  drops: np.ndarray | None = None) -> tuple[trimesh.Trimesh, np.ndarray]:
+                  drops: np.ndarray | None = None, floors: np.ndarray | None = None) -> tuple[trimesh.Trimesh, np.ndarray]:
     """The observed points' convex hull extruded down to ``base_z`` (world frame); ``fast``: straight
     from Qhull (collision pieces), else trimesh's triangulation (a surface that gets painted).
     ``drops``: which points may be extruded (the space straight below them was not seen empty; a
-    tapered side seen below its top edge stays as seen), all when None or fewer than three."""
+    tapered side seen below its top edge stays as seen), all when None or fewer than three.
+    ``floors``: per point, the height it is extruded down to (a lying body's underside, see
+    :mod:`realsim.completion.underside`), ``base_z`` when None."""
     low = points[:, 2] <= top_z
     kept = points[low]
-    base = kept[drops[low]] if drops is not None and np.count_nonzero(drops[low]) >= 3 else kept.copy()
-    base[:, 2] = base_z
+    chosen = drops[low] if drops is not None and np.count_nonzero(drops[low]) >= 3 else np.ones(len(kept), bool)
+    base = kept[chosen]
+    base[:, 2] = base_z if floors is None else np.maximum(floors[low][chosen], base_z)
     top = kept.copy()
     top[:, 2] = np.maximum(top[:, 2], base_z + 1e-3)
     cloud = np.vstack([top, base])
@@ -40,18 +43,20 @@ def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = 
 
 def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float, max_slabs: int, max_fill: float,
                    whole: trimesh.Trimesh | None = None, min_elongation: float = 2.0,
-                   drops: np.ndarray | None = None) -> list[trimesh.Trimesh] | None:
+                   drops: np.ndarray | None = None, floors: np.ndarray | None = None) -> list[trimesh.Trimesh] | None:
     """Convex pieces: the points cut into slabs about ``slab`` long across their principal horizontal
     axis, each slab's hull extruded down (neighbouring slabs share their boundary points). None when
     the object is short or not ``min_elongation`` times longer than wide, or the pieces fill more than ``max_fill`` of the single extruded hull
-    (``whole``, when already made)."""
+    (``whole``, when already made). ``drops``, ``floors``: see :func:`complete_hull`."""
     low = points[:, 2] <= top_z
     kept = points[low]
     droppable = drops[low] if drops is not None else np.ones(len(kept), bool)
+    floor = floors[low] if floors is not None else np.full(len(kept), base_z)
     if len(kept) < 60:
         return None
     _, first = np.unique(np.floor(kept / 0.003).astype(np.int64), axis=0, return_index=True)
-    kept, droppable = kept[np.sort(first)], droppable[np.sort(first)]  # one point per 3 mm cell: the hulls need no more
+    one = np.sort(first)  # one point per 3 mm cell: the hulls need no more
+    kept, droppable, floor = kept[one], droppable[one], floor[one]
     xy = kept[:, :2] - kept[:, :2].mean(axis=0)
     _, _, vt = np.linalg.svd(xy, full_matrices=False)
     s, t = xy @ vt[0], xy @ vt[1]
@@ -69,7 +74,7 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
     pieces = []
     for i in filled:
         try:
-            pieces.append(complete_hull(kept[slabs[i]], base_z, top_z, fast=True, drops=droppable[slabs[i]])[0])
+            pieces.append(complete_hull(kept[slabs[i]], base_z, top_z, fast=True, drops=droppable[slabs[i]], floors=floor[slabs[i]])[0])
         except (QhullError, ValueError):
             continue
     for i, j in zip(filled[:-1], filled[1:]):  # a hidden middle (seen on both sides): bridged between the facing ends
@@ -77,12 +82,12 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
             continue
         face = ((s >= s[slabs[i]].max() - 2 * margin) & slabs[i]) | ((s <= s[slabs[j]].min() + 2 * margin) & slabs[j])
         try:
-            pieces.append(complete_hull(kept[face], base_z, top_z, fast=True, drops=droppable[face])[0])
+            pieces.append(complete_hull(kept[face], base_z, top_z, fast=True, drops=droppable[face], floors=floor[face])[0])
         except (QhullError, ValueError):
             continue
     if len(pieces) < 2:
         return None
-    whole = whole if whole is not None else complete_hull(kept, base_z, top_z, drops=droppable)[0]
+    whole = whole if whole is not None else complete_hull(kept, base_z, top_z, drops=droppable, floors=floor)[0]
     if sum(p.volume for p in pieces) > max_fill * whole.volume:
         return None
     return pieces

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import cast
 
 import numpy as np
@@ -18,6 +18,7 @@ from realsim.completion.mirror import mirror_about_crest, mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_revolved
+from realsim.completion.underside import underside_floors
 from realsim.completion.view import DepthView
 from realsim.scene import Scene, SceneObject
 
@@ -82,6 +83,7 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
         revolved = None
     parts: list[trimesh.Trimesh] | None = None
     visual: trimesh.Trimesh | None = None
+    floors: np.ndarray | None = None
     if revolved is not None and revolved.straight:
         kind = "cylinder"
         mesh, base_centre = revolved.outer, np.array([revolved.centre[0], revolved.centre[1], base_z])
@@ -97,6 +99,9 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
             kind = "hull mirrored behind its crest (the hidden far side of a body lying flat)" if mirrored is not None else kind
         body = pts if mirrored is None else mirrored
         drops = free_drops(body, base_z, ctx.view, ctx.tolerance) if ctx.view is not None else None
+        floors = (underside_floors(body, base_z, top_z, ctx.params.slab, ctx.params.underside_max_height_share, ctx.params.underside_edge)
+                  if ctx.params.underside else None)
+        kind = f"{kind}, its underside the mirror of its upper side" if floors is not None else kind
         mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops)
     container = None
     rim = round_rim(pts, base_z, top_z, ctx.params.cylinder_max_radius) if ctx.params.containers.enabled else None
@@ -120,11 +125,15 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
     elif revolved is None:
         seen = pts[pts[:, 2] <= top_z]
         carving = carve(mesh, ctx.view, base_z, seen, ctx.params, own=obj.id) if ctx.view is not None else None
+        if floors is not None:  # not convex or not: judged on the hull extruded down (the space under a round side says nothing of it)
+            mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops, floors=floors)
+            tiled = replace(ctx.params, tile_min_fraction=0.0 if carving is not None and carving.tiles is not None else np.inf)
+            carving = carve(mesh, ctx.view, base_z, seen, tiled, own=obj.id) if ctx.view is not None else None
         carved = carving.fraction if carving is not None else 0.0
         if carving is not None and carving.tiles is not None:  # much seen through: the body is not convex
             parts, visual = carving.tiles, carving.hull  # one closed surface to paint
             kind = f"{kind}, {len(parts)} convex tiles of what the camera's free space leaves"
-        elif (parts := complete_slabs(body, base_z, top_z, ctx.params.slab, ctx.params.max_slabs, ctx.params.slab_max_fill, mesh, drops=drops)) is not None:
+        elif (parts := complete_slabs(body, base_z, top_z, ctx.params.slab, ctx.params.max_slabs, ctx.params.slab_max_fill, mesh, drops=drops, floors=floors)) is not None:
             kind = f"{kind} in {len(parts)} slabs (not convex)"
             if ctx.view is not None:
                 parts, carved = carve_pieces(parts, ctx.view, base_z, ctx.params, own=obj.id)

@@ -53,6 +53,9 @@ class CompletionParams:
     mirror_crest_slice: float = 0.005  # m: the least width of the slices across the line of sight in which the crest is found
     mirror_crest_tolerance: float = 0.003  # m: points this close to a slice's highest are on its crest
     mirror_crest_reach: float = 0.75  # the near side mirrored reaches this share of the slice's height before its crest (a round section: half)
+    underside: bool = True  # a lying body's underside is its upper side mirrored below its widest level (not extruded straight down)
+    underside_max_height_share: float = 0.5  # lying: lower than this share of its longest horizontal extent
+    underside_edge: float = 0.002  # m: points this close to a slice's lateral extreme show the level where it is widest
     mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     veil_keep: bool = True  # veil pixels continuing the surface beside them (within the free-space tolerance) are kept: the edge

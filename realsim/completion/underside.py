@@ -1,0 +1,56 @@
+"""The hidden underside of a body lying on its support: the visible upper side mirrored below its widest level.
+
+A camera above sees a lying body (a marker, a banana, a bottle on its side) from above and from one
+side. Extruded straight down to the support its round cross-section becomes its bounding rectangle
+(a lying cylinder so completed fills 4 / pi of its volume). A body resting on a support touches it
+along a narrow contact: below the level where its side is widest (where the side seen from above
+turns vertical: its silhouette from above) its underside mirrors the visible upper side about that
+level, bounded by the support. A side seen vertical down to the support (a box lying flat) keeps
+its full width there: mirrored about any level at most halfway up, a box is its own image.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: float, max_height_share: float,
+                     edge: float) -> np.ndarray | None:
+    """The height down to which each of ``points`` (world frame) is extruded: its mirror image about
+    the widest level of its slice, at least ``base_z``, at most its own height (a point below the
+    widest level is not extruded: the mirrored upper side bounds the body there).
+
+    The body is cut into slices about ``slab`` long across its principal horizontal axis. In each the
+    widest level is the median height of the points within ``edge`` of either lateral extreme (the
+    silhouette from above: a round side is widest at its middle, a side seen vertical or flaring
+    down is widest low), the lower of the two sides, at most halfway between ``base_z`` and the
+    slice's top (a body is no narrower at its contact than its mirror image). None when the body is
+    not lying: higher than ``max_height_share`` of its longest horizontal extent, or too few points.
+    """
+    kept = points[:, 2] <= top_z
+    if np.count_nonzero(kept) < 30:
+        return None
+    xy = points[:, :2] - points[kept, :2].mean(axis=0)
+    _, _, vt = np.linalg.svd(xy[kept], full_matrices=False)
+    s, t = xy @ vt[0], xy @ vt[1]
+    length = float(np.percentile(s[kept], 99.5) - np.percentile(s[kept], 0.5))
+    if top_z - base_z >= max_height_share * length:
+        return None  # upright: its sides are the silhouette, seen (or mirrored) down to the support
+    count = max(1, int(round(length / slab)))
+    edges = np.linspace(float(s[kept].min()), float(s[kept].max()), count + 1)
+    slot = np.clip(np.searchsorted(edges, s, side="right") - 1, 0, count - 1)
+    widest = np.full(count, np.nan)
+    for k in range(count):
+        inside = kept & (slot == k)
+        if np.count_nonzero(inside) < 10:
+            continue
+        zs, ts = points[inside, 2], t[inside]
+        top = float(np.percentile(zs, 98))
+        sides = [float(np.median(zs[sign * ts >= np.max(sign * ts) - edge])) for sign in (-1.0, 1.0)]
+        widest[k] = min(0.5 * (base_z + top), *sides)
+    if np.all(np.isnan(widest)):
+        return None
+    known = np.flatnonzero(~np.isnan(widest))
+    widest = np.interp(np.arange(count), known, widest[known])  # a slice too thinly seen: its neighbours' level
+    level = widest[slot]
+    return np.asarray(np.clip(2.0 * level - points[:, 2], base_z, points[:, 2]))
