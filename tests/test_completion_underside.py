@@ -25,6 +25,9 @@ def test_a_lying_cylinder_is_round_below_its_widest_level_not_its_bounding_box()
     mirrored = complete_hull(seen, 0.0, 2 * r, floors=floors)[0].volume
     assert extruded > 1.13 * truth  # straight down: its lower half a rectangle ((pi / 2 + 2) / pi)
     assert abs(mirrored - truth) < 0.03 * truth
+    upper = seen[seen[:, 2] > 1.3 * r]  # seen only above its widest level: it may widen down to the support
+    unseen = _floors(upper, 2 * r)
+    assert unseen is not None and np.allclose(unseen, 0.0)
 
 
 def test_a_box_lying_flat_stays_a_box() -> None:

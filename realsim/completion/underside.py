@@ -6,7 +6,9 @@ side. Extruded straight down to the support its round cross-section becomes its 
 along a narrow contact: below the level where its side is widest (where the side seen from above
 turns vertical: its silhouette from above) its underside mirrors the visible upper side about that
 level, bounded by the support. A side seen vertical down to the support (a box lying flat) keeps
-its full width there: mirrored about any level at most halfway up, a box is its own image.
+its full width there: mirrored about any level at most halfway up, a box is its own image. Where
+the camera did not see the side below that level it may as well go on widening down to the support
+(a banana lying on its flat side): extruded, as before.
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     widest level is the median height of the points within ``edge`` of either lateral extreme (the
     silhouette from above: a round side is widest at its middle, a side seen vertical or flaring
     down is widest low), the lower of the two sides, at most halfway between ``base_z`` and the
-    slice's top (a body is no narrower at its contact than its mirror image). None when the body is
+    slice's top (a body is no narrower at its contact than its mirror image); the support, when no
+    point of the slice was seen below that level (the side was not seen turning in). None when the body is
     not lying: higher than ``max_height_share`` of its longest horizontal extent, or too few points.
     """
     kept = points[:, 2] <= top_z
@@ -47,7 +50,8 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
         zs, ts = points[inside, 2], t[inside]
         top = float(np.percentile(zs, 98))
         sides = [float(np.median(zs[sign * ts >= np.max(sign * ts) - edge])) for sign in (-1.0, 1.0)]
-        widest[k] = min(0.5 * (base_z + top), *sides)
+        middle = min(0.5 * (base_z + top), *sides)
+        widest[k] = middle if float(np.min(zs)) < middle else base_z  # the side not seen turning in below it: extruded
     if np.all(np.isnan(widest)):
         return None
     known = np.flatnonzero(~np.isnan(widest))
