@@ -278,6 +278,23 @@ def test_upright_sheet_is_structure_in_clouds_seen_from_around() -> None:
     assert np.all(out.labels[len(sheet):] == 1)
 
 
+def test_level_sheet_just_over_the_support_is_its_top() -> None:
+    """A 20 x 20 cm level sheet 4 mm thick lying 6-10 mm over the fitted table height (a patch of
+    the table's top whose height was fitted a little low) is structure; a 6 cm cube next to it
+    and a level 20 x 20 cm board 2 cm thick stay objects."""
+    from realsim.perception.object_relations import filter_by_size
+
+    rng = np.random.default_rng(3)
+    sheet = rng.uniform([0.1, 0.1, TABLE_Z + 0.006], [0.3, 0.3, TABLE_Z + 0.010], (3000, 3))
+    cube = _box_surface(np.array([-0.2, 0.0, TABLE_Z]), np.array([-0.14, 0.06, TABLE_Z + 0.06]), 0.004)
+    board = _box_surface(np.array([-0.3, -0.35, TABLE_Z]), np.array([-0.1, -0.15, TABLE_Z + 0.02]), 0.004)
+    cube, board = (c[c[:, 2] > TABLE_Z + 0.008] for c in (cube, board))
+    points, result = _labelled(sheet, cube, board)
+    out = filter_by_size(points, result, [_table()], SegmentParams(), max_sheet=0.01)
+    assert np.all(out.labels[: len(sheet)] == 0)
+    assert set(np.unique(out.labels[len(sheet):])) == {1, 2}
+
+
 def test_single_view_keeps_hidden_bases_drops_walls() -> None:
     """In one camera view (structure_only) a cluster whose base is hidden stays an object and a
     cluster larger than any object (a wall in view) becomes structure."""

@@ -89,9 +89,13 @@ def sheet_thickness(points: np.ndarray) -> tuple[float, float]:
     return float(t[1] - t[0]), float(abs(axis[2]))
 
 
-def _is_sheet(points: np.ndarray, max_thickness: float) -> bool:
+def _is_sheet(points: np.ndarray, max_thickness: float, rise: float, band: float) -> bool:
+    """Whether a cluster is a sheet of structure: no thicker than ``max_thickness`` and either
+    upright (a piece of a wall) or level and rising (``rise``, its top above its support) no more
+    than that thickness over the support's ``band`` (a patch of the support's own top, lifted by
+    an error of its fitted height: a thing with sides rises above the band by its depth)."""
     thickness, vertical = sheet_thickness(points)
-    return thickness < max_thickness and vertical < 0.5
+    return thickness < max_thickness and (vertical < 0.5 or rise < band + max_thickness)
 
 
 def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[SupportPlane], params: SegmentParams,
@@ -101,8 +105,9 @@ def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[Suppo
     nothing under them are noise (-1). The rest are renumbered 1..K in their order.
 
     With ``max_sheet`` (m; for captures that saw objects from around, never a single view), an
-    upright sheet no thicker than that (a piece of a wall or a cabinet side) is structure too: an
-    object standing on a support shows its sides and top, so its points have depth. With
+    upright sheet no thicker than that (a piece of a wall or a cabinet side), or a level one lying
+    within that of the support's ``min_height`` band (a patch of the support's top), is structure
+    too: an object standing on a support shows its sides and top, so its points have depth. With
     ``structure_only`` (a single camera view, where bases are hidden) only structure is removed."""
     labels = result.labels
     k = int(labels.max(initial=0))
@@ -115,10 +120,11 @@ def filter_by_size(points: np.ndarray, result: SegmentResult, planes: list[Suppo
         if len(pts) == 0:
             continue
         extent = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
-        base = base_height(pts[:, 2], params.base_gap) - height_of.get(result.support_of.get(o, -1), float(pts[:, 2].min()))
+        ground = height_of.get(result.support_of.get(o, -1), float(pts[:, 2].min()))
+        base = base_height(pts[:, 2], params.base_gap) - ground
         if extent > params.max_object_size:
             fate[o] = 0
-        elif max_sheet is not None and _is_sheet(pts, max_sheet):
+        elif max_sheet is not None and _is_sheet(pts, max_sheet, float(pts[:, 2].max()) - ground, params.min_height):
             fate[o] = 0
         elif structure_only:
             fate[o] = 1
