@@ -264,7 +264,8 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         n, dd, mask = refine_plane(band, np.array([0.0, 0.0, 1.0]), -float(np.median(band[:, 2])), params.refine_threshold)
         if n[2] < cos_support:  # a sliver (a table edge in a sparse capture) refits to a tilted plane
             continue
-        supports.append((float(-dd / n[2]), band[mask], n))
+        centre = band[mask].mean(axis=0)  # the plane's height where the support is, not at the origin
+        supports.append((float(-(dd + n[0] * centre[0] + n[1] * centre[1]) / n[2]), band[mask], n))
     supports = [sup for sup in supports if _covered_from_above(pts, sup[0], sup[1], params, scene.seed) <= params.max_covered_fraction]
     if not supports:
         raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan; "
