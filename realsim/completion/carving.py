@@ -30,7 +30,7 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
 
     def rhs(faces: np.ndarray) -> np.ndarray:  # (faces, M): n_z z <= rhs, made in place in its own copy
         out = products[faces]
-        return np.subtract(d[faces][:, None], out, out=out)
+        return np.asarray(np.subtract(d[faces][:, None], out, out=out))
 
     up, down, side = n[:, 2] > 1e-6, n[:, 2] < -1e-6, np.abs(n[:, 2]) <= 1e-6
     z_top = np.min(np.divide(top := rhs(up), n[up, 2][:, None], out=top), axis=0) if up.any() else np.full(len(xy), hi[2])
@@ -39,13 +39,14 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
-def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None) -> Voxels:
+def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
-    column xy centres (M, 2), each voxel's column and centre, and which voxels are free."""
+    column xy centres (M, 2), each voxel's column and centre, and which voxels are free (seen through,
+    or above the support at ``base_z`` where the camera saw that support: :meth:`DepthView.over_support`)."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
     xy, col, cells = _cells(mesh, step)
-    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own, footprint=False)
+    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own, footprint=False) | view.over_support(cells, base_z)
 
 
 def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -88,7 +89,7 @@ def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.nd
     the body is evidently not convex (at least ``tile_min_fraction`` is seen through, or the carved
     hull fills ``carve_min_fraction`` of the voxels again with space the camera saw through), its
     tiles (see :func:`carve_to_tiles`)."""
-    voxels = _voxels(mesh, view, params, own)
+    voxels = _voxels(mesh, view, params, own, base_z)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
@@ -137,7 +138,7 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
     voxel centres and the ``observed`` points in it. A hull of everything kept would fill the free
     space again wherever the body is not convex (under a pitcher's handle). None (and the share
     carved) when less than ``carve_min_fraction`` is free."""
-    voxels = _voxels(mesh, view, params, own)
+    voxels = _voxels(mesh, view, params, own, base_z)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return None, fraction

@@ -16,6 +16,7 @@ from realsim.perception.intrinsics import Intrinsics
 from realsim.scene import Scene
 
 OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space
+SUPPORT_MARGIN = 0.002  # m: a pixel's point this near the support plane shows the support; a point this far above it is off it
 
 
 @dataclass(frozen=True)
@@ -173,3 +174,26 @@ class DepthView:
             tol[~mine] = OTHER_SURFACE_TOLERANCE
         with np.errstate(invalid="ignore"):
             return np.asarray(opt[:, 2] / self.scale < seen - tol)
+
+
+    def over_support(self, points: np.ndarray, height: float, margin: float = SUPPORT_MARGIN) -> np.ndarray:
+        """Mask of world ``points`` more than ``margin`` above the support plane at ``height`` whose
+        nearest pixel shows that support (no object there, its point within ``margin`` of the plane) and
+        lies beyond them: the camera saw the support through them. The plane is known far better than
+        any one pixel's depth, so a thin body is not filled here down to the depth noise."""
+        out = np.zeros(len(points), bool)
+        if self.labels is None or not len(points):
+            return out
+        opt = points @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
+        h, w = self.depth.shape
+        with np.errstate(invalid="ignore", divide="ignore"):
+            uv = np.rint(self.intrinsics.project(opt))
+        inside = (opt[:, 2] > 0) & (points[:, 2] > height + margin) & np.all(np.isfinite(uv), axis=1)
+        inside &= (uv[:, 0] >= 0) & (uv[:, 0] < w) & (uv[:, 1] >= 0) & (uv[:, 1] < h)
+        u, v = uv[inside, 0].astype(np.int64), uv[inside, 1].astype(np.int64)
+        z = self.depth[v, u]
+        seen = np.column_stack([(u - self.intrinsics.cx) / self.intrinsics.fx * z, (v - self.intrinsics.cy) / self.intrinsics.fy * z, z]) * self.scale
+        world = (seen - self.world_to_optical[:3, 3]) @ np.linalg.inv(self.world_to_optical[:3, :3]).T
+        with np.errstate(invalid="ignore"):
+            out[inside] = (self.labels[v, u] == 0) & (np.abs(world[:, 2] - height) < margin) & (opt[inside, 2] / self.scale < z)
+        return out
