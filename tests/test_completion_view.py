@@ -60,3 +60,20 @@ def test_the_fit_gives_the_plain_computation_bit_for_bit() -> None:
     depth[rng.random(labels.shape) < 0.05] = np.nan
     out = _view(depth, labels).denoised(5).depth
     assert out.tobytes() == _denoised_reference(depth, labels).tobytes()
+
+
+DOWN = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, -1.0, 0.0, 0.0], [0.0, 0.0, -1.0, 1.0], [0.0, 0.0, 0.0, 1.0]])  # looking down from 1 m
+
+
+def test_the_support_seen_in_a_gap_frees_the_space_just_above_it() -> None:
+    depth = np.full((INTR.height, INTR.width), 1.0)  # the support plane z = 0, one metre below the camera
+    labels = np.zeros(depth.shape, np.int32)
+    u, v = (int(round(c)) for c in INTR.project(np.array([[0.0, 0.0, 1.0]]))[0])
+    labels[v - 10:v + 10, u - 30:u], depth[v - 10:v + 10, u - 30:u] = 1, 0.99  # a body 1 cm thin left of x = 0
+    view = DepthView(INTR, DOWN, 1.0, depth, labels)
+    points = np.array([[0.02, 0.0, 0.004], [0.02, 0.0, 0.001], [0.02, 0.0, -0.004], [-0.02, 0.0, 0.004]])
+    assert view.over_support(points, 0.0).tolist() == [True, False, False, False]  # in the gap, above the margin only
+    assert not view.seen_through(points[:1], 0.005).any()  # the depth test alone keeps it: within the noise
+    assert view.over_support(points, 0.01).tolist() == [False] * 4  # a support at another height is not the one seen
+    depth[v - 10:v + 10, u:u + 30] = 0.997  # what the pixel shows is 3 mm off the plane: not that support
+    assert not view.over_support(points[:1], 0.0).any()

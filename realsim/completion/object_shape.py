@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import cast
+from typing import Any, cast
 
 import numpy as np
 import trimesh
@@ -39,7 +39,7 @@ class Context:
     def observed(self, obj: SceneObject) -> np.ndarray:
         """The object's points, those under the veil left out when enough remain."""
         mask = self.labels == obj.id
-        return self.points[mask & ~self.veil] if (mask & ~self.veil).sum() >= self.params.min_points else self.points[mask]
+        return np.asarray(self.points[mask & ~self.veil] if (mask & ~self.veil).sum() >= self.params.min_points else self.points[mask])
 
     def floor_under(self, obj: SceneObject, pts: np.ndarray) -> float:
         """The base height of an object standing on no other object: its support plane, else its lowest point."""
@@ -59,13 +59,13 @@ class Shape:
     kind: str
     hollow: bool
 
-    def packed(self) -> tuple:
+    def packed(self) -> tuple[Any, ...]:
         """The shape as arrays (to send between processes; see :meth:`unpacked`)."""
         return (mesh_arrays(self.mesh), None if self.parts is None else [mesh_arrays(p) for p in self.parts],
                 None if self.visual is None else mesh_arrays(self.visual), self.base_centre, self.base_z, self.kind, self.hollow)
 
     @staticmethod
-    def unpacked(packed: tuple) -> Shape:
+    def unpacked(packed: tuple[Any, ...]) -> Shape:
         mesh, parts, visual, base_centre, base_z, kind, hollow = packed
         return Shape(from_arrays(mesh), None if parts is None else [from_arrays(p) for p in parts],
                      None if visual is None else from_arrays(visual), base_centre, base_z, kind, hollow)
