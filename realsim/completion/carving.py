@@ -41,12 +41,13 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
 
 def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
-    column xy centres (M, 2), each voxel's column and centre, and which voxels are free (seen through,
-    or above the support at ``base_z`` where the camera saw that support: :meth:`DepthView.over_support`)."""
+    column xy centres (M, 2), each voxel's column and centre, and which voxels are free (seen through;
+    with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`)."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
     xy, col, cells = _cells(mesh, step)
-    return step, xy, col, cells, view.seen_through(cells, params.carve_tolerance, own, footprint=False) | view.over_support(cells, base_z)
+    free = view.seen_through(cells, params.carve_tolerance, own, footprint=False)
+    return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free
 
 
 def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
