@@ -13,7 +13,7 @@ from realsim.completion.containers import complete_open_container, round_rim
 from realsim.completion.extrusion import complete_bands, complete_hull, complete_slabs
 from realsim.completion.freespace import free_drops
 from realsim.completion.handles import handle_pieces
-from realsim.completion.hull import fast_hull, from_arrays, mesh_arrays
+from realsim.completion.hull import from_arrays, mesh_arrays, solid_hull
 from realsim.completion.mirror import mirror_about_crest, mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction
 from realsim.completion.params import CompletionParams
@@ -144,9 +144,20 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
     elif ctx.view is not None and parts is not None:
         parts, carved = carve_pieces(parts, ctx.view, base_z, ctx.params, own=obj.id)
         if carved >= ctx.params.carve_min_fraction:  # the revolved surface no longer matches: paint the carved hull
-            visual = fast_hull(np.vstack([p.vertices for p in parts]))
+            carved_hull = _hull_of(parts)
+            visual = carved_hull if carved_hull is not None else visual
     if carved >= ctx.params.carve_min_fraction and container is None:
         kind = f"{kind} carved by the camera's free space ({100 * carved:.0f} % of its volume)"
     if parts is not None and container is None:
-        mesh = fast_hull(np.vstack([p.vertices for p in parts]))
+        parts = [p for p in parts if solid_hull(np.asarray(p.vertices)) is not None]  # a carved piece may be left flat
+        whole = _hull_of(parts)
+        if whole is None:  # the carved pieces enclose nothing (flat or none): the shape as completed before carving
+            parts, visual, kind = None, None, f"{kind}; its carved pieces enclosed no volume, so it is kept uncarved"
+        else:
+            mesh = whole
     return Shape(mesh, parts, visual, base_centre, base_z, kind, container is not None)
+
+
+def _hull_of(parts: list[trimesh.Trimesh]) -> trimesh.Trimesh | None:
+    """The convex hull of all ``parts`` when they enclose a volume, else None (none left, or flat)."""
+    return solid_hull(np.vstack([p.vertices for p in parts])) if parts else None
