@@ -35,15 +35,19 @@ def unique_edges(faces: np.ndarray) -> np.ndarray:
     return np.column_stack([key % size, key // size])
 
 
-def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> trimesh.Trimesh | None:
-    """The part of a convex mesh where ``normal . x >= offset`` (a convex hull), or None if too little is left."""
-    v = np.asarray(mesh.vertices)
+def kept_points(v: np.ndarray, edges: np.ndarray, normal: np.ndarray, offset: float) -> np.ndarray:
+    """The corners of the part of a convex body (vertices ``v``, ``edges``) where ``normal . x >= offset``:
+    the vertices on that side and where the plane crosses the edges."""
     side = v @ normal - offset
-    edges = unique_edges(mesh.faces)
     sa, sb = side[edges[:, 0]], side[edges[:, 1]]
     cross = (sa * sb) < 0
     t = sa[cross] / (sa[cross] - sb[cross])
-    points = np.vstack([v[side >= 0], v[edges[cross, 0]] + t[:, None] * (v[edges[cross, 1]] - v[edges[cross, 0]])])
+    return np.vstack([v[side >= 0], v[edges[cross, 0]] + t[:, None] * (v[edges[cross, 1]] - v[edges[cross, 0]])])
+
+
+def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> trimesh.Trimesh | None:
+    """The part of a convex mesh where ``normal . x >= offset`` (a convex hull), or None if too little is left."""
+    points = kept_points(np.asarray(mesh.vertices), unique_edges(mesh.faces), normal, offset)
     if len(points) < 4:
         return None
     try:

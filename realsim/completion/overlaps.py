@@ -12,9 +12,10 @@ from __future__ import annotations
 
 import numpy as np
 import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.hull import trimesh_hull, volume, within_convex
-from realsim.completion.neighbours import clip_convex
+from realsim.completion.neighbours import clip_convex, kept_points, unique_edges
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
@@ -22,6 +23,7 @@ from realsim.scene import SceneObject
 DIRECTIONS = 192  # candidate plane normals spread over the sphere (plus the other shape's face normals)
 KEEP_SEEN = 0.995  # a cut must keep this share of the cut object's observed points
 SEEN_TOLERANCE = 0.003  # m an observed point may lie beyond the cut and still count as kept
+ROUGH_MARGIN = 1e-7  # share of a piece's volume a Qhull-only estimate of a cut's loss is trusted to
 
 
 def _sphere(count: int) -> np.ndarray:
@@ -44,6 +46,17 @@ def _apart(a: trimesh.Trimesh, b: trimesh.Trimesh) -> bool:
     return False
 
 
+def _rough_volume(points: np.ndarray) -> float:
+    """The volume of the hull of ``points`` from Qhull alone (infinite when it cannot tell, 0 for too
+    few): within ``ROUGH_MARGIN`` of the exact hull's, at a fraction of the cost."""
+    if len(points) < 4:
+        return 0.0
+    try:
+        return float(ConvexHull(points).volume)
+    except QhullError:
+        return float("inf")
+
+
 def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray) -> tuple[float, np.ndarray, float] | None:
     """(volume removed, normal, offset) of the cheapest cut keeping ``moved`` where ``n . x >= offset``
     with the plane touching ``fixed`` from outside, keeping ``KEEP_SEEN`` of ``seen``; None if none does."""
@@ -53,9 +66,12 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     kept = np.mean(seen @ normals.T >= offsets - SEEN_TOLERANCE, axis=0) >= KEEP_SEEN if len(seen) else np.ones(len(normals), bool)
     best: tuple[float, np.ndarray, float] | None = None
     whole = volume(moved)
+    v, edges = np.asarray(moved.vertices), unique_edges(moved.faces)
     for j in np.argsort(offsets - low):  # shallow cuts first
         if not kept[j]:
             continue
+        if best is not None and whole - _rough_volume(kept_points(v, edges, normals[j], float(offsets[j]))) > best[0] + ROUGH_MARGIN * whole:
+            continue  # surely loses more than the best so far: not worth the exact hull
         part = clip_convex(moved, normals[j], float(offsets[j]))
         if part is None:
             continue
