@@ -121,7 +121,7 @@ def hidden_continuation(view: DepthView, labels: np.ndarray, points: np.ndarray,
     samples = edge[:, None, :] + t[..., None] * direction[:, None, :]
     column = np.repeat(samples[..., None, :], len(COLUMN), axis=-2)  # each sample and the points below it down to the base
     column[..., 2] -= COLUMN * (column[..., 2] - base_z)
-    free = view.seen_through(column.reshape(-1, 3), tolerance, own).reshape(*t.shape, len(COLUMN)).any(axis=-1)
+    free = np.any(view.seen_through(column.reshape(-1, 3), tolerance, own).reshape(*t.shape, len(COLUMN)), axis=-1)
     first = np.where(free.any(axis=1), np.argmax(free, axis=1), steps)  # steps before the first seen-through sample
     reach_t = np.where(first > 0, t[np.arange(len(t)), np.maximum(first - 1, 0)], 0.0)
     far = reach_t > 0
