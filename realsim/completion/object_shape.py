@@ -16,6 +16,7 @@ from realsim.completion.handles import handle_pieces
 from realsim.completion.hull import from_arrays, mesh_arrays, solid_hull
 from realsim.completion.mirror import mirror_about_crest, mirror_hidden_half
 from realsim.completion.neighbours import foreign_fraction
+from realsim.completion.occlusion import hidden_continuation, seen_through_added
 from realsim.completion.params import CompletionParams
 from realsim.completion.revolution import complete_revolved
 from realsim.completion.underside import underside_floors
@@ -98,6 +99,14 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
             mirrored = mirror_about_crest(pts, ctx.view, base_z, top_z, ctx.params)
             kind = "hull mirrored behind its crest (the hidden far side of a body lying flat)" if mirrored is not None else kind
         body = pts if mirrored is None else mirrored
+        if ctx.view is not None and ctx.params.occluded_continuation:
+            hidden = hidden_continuation(ctx.view, ctx.labels, ctx.points, ~ctx.veil, obj.id, body, base_z, ctx.tolerance,
+                                         ctx.params.occlusion_gap, ctx.params.occlusion_reach, ctx.params.occlusion_max_share,
+                                         tuple(o.id for o in ctx.scene.objects if o.resting_on == obj.id or o.id == obj.resting_on))
+            hidden = hidden[hidden[:, 2] <= top_z]
+            if len(hidden) and seen_through_added(ctx.view, body, hidden, base_z, top_z, obj.id, ctx.tolerance) <= ctx.params.occlusion_max_seen_through:
+                body = np.vstack([body, hidden])
+                kind = f"{kind}, continued behind the nearer objects hiding it"
         drops = free_drops(body, base_z, ctx.view, ctx.tolerance) if ctx.view is not None else None
         floors = (underside_floors(body, base_z, top_z, ctx.params.slab, ctx.params.underside_max_height_share, ctx.params.underside_edge)
                   if ctx.params.underside else None)

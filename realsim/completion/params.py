@@ -57,6 +57,11 @@ class CompletionParams:
     underside: bool = True  # a lying body's underside is its upper side mirrored below its widest level (not extruded straight down)
     underside_max_height_share: float = 0.5  # lying: lower than this share of its longest horizontal extent
     underside_edge: float = 0.002  # m: points this close to a slice's lateral extreme show the level where it is widest
+    occluded_continuation: bool = True  # a silhouette edge bordering a nearer object is continued behind it (see completion.occlusion)
+    occlusion_gap: float = 0.01  # m: a neighbour this much nearer than an edge pixel occludes it
+    occlusion_reach: int = 2  # pixels: an edge pixel this near an occluding pixel borders it
+    occlusion_max_share: float = 1.0  # continued at most this share of the body's visible extent along the hidden direction
+    occlusion_max_seen_through: float = 0.01  # a continuation whose added hull has more of its volume in seen free space is refuted (as mirror_max_seen_through)
     mirror_bands: int = 8  # height bands in which the occluding contour is found
     veil_deg: float = 80.0  # object pixels seen more edge-on than this are silhouette veils (mixed depths), not surface
     veil_keep: bool = True  # veil pixels continuing the surface beside them (within the free-space tolerance) are kept: the edge
