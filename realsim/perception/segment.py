@@ -26,6 +26,7 @@ from realsim.perception.backdrop_patch import continues_backdrop
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.container_inside import join_insides
+from realsim.perception.depth_jumps import pixel_jumps
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.in_front import in_front
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
@@ -327,10 +328,12 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         assert grid_shape is not None
         normals = grid_normals(points, fg, grid_shape, params.normal_window, params.jump_distance)
         a, b = grid_links(fg, grid_shape)
+        jumps = pixel_jumps(points, grid_shape, params.jump_distance, params.jump_links, params.normal_window)
     else:
         normals = knn_normals(points, fg, params.normal_neighbors)
         a, b = knn_links(points, fg, params.knn_neighbors)
-    keep = np.linalg.norm(points[a] - points[b], axis=1) < params.jump_distance
+    limit = np.minimum(jumps[a], jumps[b]) if organized else params.jump_distance
+    keep = np.linalg.norm(points[a] - points[b], axis=1) < limit
     axis = view_axis(points, a[~keep], b[~keep], normals, params.jump_distance) if organized else None
     a, b = a[keep], b[keep]
 
