@@ -41,7 +41,7 @@ def _cut_shares(distance: float, step: float) -> tuple[float, float, float]:
 def test_far_surfaces_stay_linked_where_a_fixed_length_cuts_them() -> None:
     kept_cut, fixed_cut, step_cut = _cut_shares(3.0, 0.10)
     assert fixed_cut > 0.5  # 8 mm cuts most of a wall's links at 3 m: it falls apart into noise
-    assert kept_cut < 0.05  # a few stray links: the wall stays one connected surface
+    assert kept_cut < 0.1  # a few stray links: the wall stays one connected surface
     assert step_cut > 0.95  # a 10 cm step is still a jump
 
 

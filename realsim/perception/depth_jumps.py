@@ -5,7 +5,9 @@ with the distance (a Kinect pixel spans 1.7 mm at 1 m and 5 mm at 3 m, its depth
 with the square of the distance). A fixed jump length that parts two objects at 1 m therefore
 cuts every link of an object at 3 m into noise. A link crosses a depth jump when it is several
 times longer than the links around it: each pixel's typical link is the median of its own four
-(one of them across an edge leaves the median on the surface), averaged over a small window.
+(one of them across an edge leaves the median on the surface), and the median of those over a
+small window (a corner's or a thin part's pixels, with two links across edges, are a minority
+there: no edge raises the length it is measured against).
 """
 
 from __future__ import annotations
@@ -31,13 +33,13 @@ def link_lengths(points: np.ndarray, grid_shape: tuple[int, int]) -> np.ndarray:
 
 def pixel_jumps(points: np.ndarray, grid_shape: tuple[int, int], least: float, factor: float, window: int) -> np.ndarray:
     """(H*W,) per pixel, the link length beyond which a link from it crosses a depth jump: ``factor``
-    times its typical link (the median of its four, averaged over ``window`` pixels), never under
-    ``least``; ``least`` where no link is measured."""
+    times its typical link (the median of its four, then over ``window`` pixels), never under
+    ``least``; ``least`` where no link is measured (missing pixels count as no length: the window's
+    median falls, never rises, next to them)."""
     lengths = link_lengths(points, grid_shape)
     known = np.isfinite(lengths).any(axis=2)
     with np.errstate(invalid="ignore"):
         typical = np.where(known, np.nanmedian(np.where(known[..., None], lengths, 0.0), axis=2), 0.0)
-    weight = ndimage.uniform_filter(known.astype(np.float64), size=window, mode="constant")
-    mean = ndimage.uniform_filter(typical, size=window, mode="constant") / np.maximum(weight, 1e-12)
-    out: np.ndarray = np.maximum(least, factor * np.where(known, mean, 0.0)).ravel()
+    local = ndimage.median_filter(typical, size=window, mode="constant")
+    out: np.ndarray = np.maximum(least, factor * np.where(known, local, 0.0)).ravel()
     return out
