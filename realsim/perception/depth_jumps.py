@@ -1,21 +1,28 @@
 """How far apart two neighbouring pixels of a camera view may lie and still be on one surface.
 
-Neighbouring pixels on one surface lie one pixel footprint apart plus the depth noise; both grow
-with the distance (a Kinect pixel spans 1.7 mm at 1 m and 5 mm at 3 m, its depth noise grows
-with the square of the distance). A fixed jump length that parts two objects at 1 m therefore
-cuts every link of an object at 3 m into noise. A link crosses a depth jump when it is several
-times longer than the links around it: each pixel's typical link is the median of its own four
-(one of them across an edge leaves the median on the surface), and the median of those over a
-small window (a corner's or a thin part's pixels, with two links across edges, are a minority
-there: no edge raises the length it is measured against).
+Two neighbouring pixels at depth z see points s = z/f apart across their rays (f the focal length
+in pixels). On a surface turned by an angle a from facing the camera the link between them runs
+s/cos(a) along the surface, and the sensor's depth noise (sigma(z); for a Kinect it grows with the
+square of the depth) moves its two ends along their rays independently: the mean square link is
+(s/cos a)^2 + 2 sigma^2 (the cross term averages out). A link longer than that for the steepest
+surface still taken as one (``max_angle``) with the noise at ``sigmas`` standard deviations
+crosses a depth jump. The limit thus follows the sensor at each depth: a fixed length that parts
+two objects at 1 m cuts every link of an object at 3 m into noise. It does not follow the lengths
+of the links around a pixel, which are long exactly at silhouettes and on steep near surfaces.
+
+The noise is the capture's own: the second difference of the depth along image rows and columns
+(noise of standard deviation sigma gives sqrt(6) sigma; a smooth surface adds next to nothing),
+its robust spread taken over pixels of similar depth.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
 
-__all__ = ["link_lengths", "pixel_jumps"]
+__all__ = ["depth_noise", "link_lengths", "pixel_jumps"]
+
+NOISE_BINS = 16  # depth ranges (equal pixel counts) over which the noise is measured
+MIN_BIN_PIXELS = 500  # fewer second differences per range measure no spread
 
 
 def link_lengths(points: np.ndarray, grid_shape: tuple[int, int]) -> np.ndarray:
@@ -31,15 +38,39 @@ def link_lengths(points: np.ndarray, grid_shape: tuple[int, int]) -> np.ndarray:
     return out
 
 
-def pixel_jumps(points: np.ndarray, grid_shape: tuple[int, int], least: float, factor: float, window: int) -> np.ndarray:
-    """(H*W,) per pixel, the link length beyond which a link from it crosses a depth jump: ``factor``
-    times its typical link (the median of its four, then over ``window`` pixels), never under
-    ``least``; ``least`` where no link is measured (missing pixels count as no length: the window's
-    median falls, never rises, next to them)."""
-    lengths = link_lengths(points, grid_shape)
-    known = np.isfinite(lengths).any(axis=2)
-    with np.errstate(invalid="ignore"):
-        typical = np.where(known, np.nanmedian(np.where(known[..., None], lengths, 0.0), axis=2), 0.0)
-    local = ndimage.median_filter(typical, size=window, mode="constant")
-    out: np.ndarray = np.maximum(least, factor * np.where(known, local, 0.0)).ravel()
+def depth_noise(depth: np.ndarray) -> np.ndarray:
+    """(H, W) the standard deviation (m) of the depth noise at each pixel's depth, measured on the
+    depth image (H, W; NaN where none): 1.4826 times the median absolute second difference along
+    rows and columns over sqrt(6), per range of depth (of the three pixels' mean, whose noise is
+    independent of their second difference's; the middle pixel's is not), interpolated between ranges (the nearest
+    range's beyond them); 0 where the image has too few pixels to tell."""
+    d = np.asarray(depth, dtype=np.float64)
+    z_parts, e_parts = [], []
+    for img in (d, d.T):
+        second = img[:, :-2] - 2.0 * img[:, 1:-1] + img[:, 2:]
+        ok = np.isfinite(second)
+        z_parts.append(((img[:, :-2] + img[:, 1:-1] + img[:, 2:]) / 3.0)[ok])  # independent of the second difference
+        e_parts.append(np.abs(second[ok]))
+    z, e = np.concatenate(z_parts), np.concatenate(e_parts)
+    bins = min(NOISE_BINS, len(z) // MIN_BIN_PIXELS)
+    if bins < 1:
+        return np.where(np.isfinite(d), 0.0, np.nan)
+    order = np.argsort(z, kind="stable")
+    parts = np.array_split(order, bins)
+    at = np.array([np.median(z[p]) for p in parts])
+    sigma = np.array([1.4826 * np.median(e[p]) / np.sqrt(6.0) for p in parts])
+    out: np.ndarray = np.interp(d, at, sigma)  # NaN depths stay NaN
+    return out
+
+
+def pixel_jumps(depth: np.ndarray, focal: float, least: float, max_angle: float, sigmas: float) -> np.ndarray:
+    """(H*W,) per pixel of a depth image (H, W; NaN where none), the length beyond which a link from
+    it crosses a depth jump: the root sum square of its footprint ``depth / focal`` on a surface
+    turned ``max_angle`` degrees from the camera and ``sigmas`` standard deviations of the
+    difference of two pixels' measured noise there (:func:`depth_noise`); never under ``least``,
+    ``least`` without depth."""
+    d = np.asarray(depth, dtype=np.float64)
+    footprint = d / focal / np.cos(np.radians(max_angle))
+    limit = np.hypot(footprint, sigmas * np.sqrt(2.0) * depth_noise(d))
+    out: np.ndarray = np.maximum(least, np.nan_to_num(limit, nan=least)).ravel()
     return out
