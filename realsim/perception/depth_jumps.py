@@ -12,7 +12,9 @@ of the links around a pixel, which are long exactly at silhouettes and on steep 
 
 The noise is the capture's own: the second difference of the depth along image rows and columns
 (noise of standard deviation sigma gives sqrt(6) sigma; a smooth surface adds next to nothing),
-its robust spread taken over pixels of similar depth.
+its robust spread taken over pixels of similar depth, and one scale c of sigma = c z^2 (a
+structured-light or stereo sensor's noise) the median over those ranges: a range whose surfaces
+add texture, or whose depth is quantized flat, moves one range's estimate, not the sensor's.
 """
 
 from __future__ import annotations
@@ -59,7 +61,8 @@ def depth_noise(depth: np.ndarray) -> np.ndarray:
     parts = np.array_split(order, bins)
     at = np.array([np.median(z[p]) for p in parts])
     sigma = np.array([1.4826 * np.median(e[p]) / np.sqrt(6.0) for p in parts])
-    out: np.ndarray = np.interp(d, at, sigma)  # NaN depths stay NaN
+    scale = float(np.median(sigma / at**2))  # one sensor: sigma = scale z^2, whatever each range's surfaces add
+    out: np.ndarray = scale * d**2  # NaN depths stay NaN
     return out
 
 
