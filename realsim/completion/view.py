@@ -11,7 +11,7 @@ from functools import cached_property
 
 import numpy as np
 
-from realsim.composition.appearance import capture_intrinsics
+from realsim.perception.capture_camera import capture_intrinsics
 from realsim.perception.intrinsics import Intrinsics
 from realsim.scene import Scene
 

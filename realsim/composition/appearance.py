@@ -23,7 +23,8 @@ from scipy.spatial.transform import Rotation
 from realsim.composition.atlas import face_colour_atlas, png_bytes
 from realsim.composition.surface_follow import follow_seen_depth
 from realsim.geometry import inside_convex_polygon
-from realsim.perception.intrinsics import Intrinsics, fit_intrinsics
+from realsim.perception.capture_camera import capture_intrinsics
+from realsim.perception.intrinsics import Intrinsics
 from realsim.scene import Scene, SceneObject, SupportPlane
 
 
@@ -65,26 +66,6 @@ class CaptureImage:
         """(N, 2) pixel coordinates (u, v) of world points."""
         p = np.asarray(world_points, float) @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
         return self.intrinsics.project(p)
-
-
-def capture_intrinsics(scene: Scene) -> Intrinsics | None:
-    """The intrinsics of a camera-view organized capture: declared in capture.yaml (``camera: {fx, fy,
-    cx, cy}``), else fitted from the grid (once per capture); None if neither."""
-    cap = scene.capture
-    if scene.points is None or scene.grid_shape is None or not cap.camera_view:
-        return None
-    declared = cap.config.camera
-    if declared is not None and declared.fx is not None and declared.fy is not None:
-        h, w = scene.grid_shape
-        return Intrinsics(declared.fx, declared.fy, (w - 1) / 2 if declared.cx is None else declared.cx,
-                          (h - 1) / 2 if declared.cy is None else declared.cy, int(w), int(h))
-    if cap.fitted_intrinsics is None:
-        world_to_input = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
-        idx = np.arange(0, len(scene.points), 7)  # every 7th pixel: plenty for two lines, pixel indices kept
-        optical = np.full_like(scene.points, np.nan)
-        optical[idx] = scene.points[idx] @ world_to_input[:3, :3].T + world_to_input[:3, 3]
-        cap.fitted_intrinsics = fit_intrinsics(optical, scene.grid_shape)
-    return cap.fitted_intrinsics
 
 
 def capture_image(scene: Scene) -> CaptureImage | None:

@@ -18,7 +18,6 @@ from realsim.composition.appearance import (
     AppearanceParams,
     CaptureImage,
     capture_image,
-    capture_intrinsics,
     colour_object_from_points,
     follow_captured_surface,
     projected_texture,
@@ -32,6 +31,7 @@ from realsim.composition.backdrop import Backdrop, BackdropParams, build_backdro
 from realsim.composition.backdrop_ahead import cloud_backdrop, cloud_layers
 from realsim.composition.object_meshes import collision_file, mesh_bytes, object_meshes
 from realsim.forkmap import Ahead
+from realsim.perception.capture_camera import capture_intrinsics
 from realsim.scene import Scene, SceneObject
 from realsim.scene_format import ASSET_DIR, COLLISION_GROUP, VISUAL_GROUP
 

@@ -297,7 +297,7 @@ def _orient(normals: np.ndarray, away: np.ndarray) -> np.ndarray:
 def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[SupportPlane],
                     grid_shape: tuple[int, int] | None, params: SegmentParams = SegmentParams(),
                     seed: int = 0, resolution: float | None = None, context: np.ndarray | None = None,
-                    known_normals: np.ndarray | None = None) -> SegmentResult:
+                    known_normals: np.ndarray | None = None, jump_limits: np.ndarray | None = None) -> SegmentResult:
     """Label each point: 0 support/background, -1 noise, k > 0 object k (ordered by centroid x, then y).
 
     ``points`` (N, 3) are in the world frame (Z up) in input order, NaN rows allowed; ``colors``
@@ -306,7 +306,9 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     ``context`` (M, 3) points that are not segmented but block the view (walls left out before);
     ``known_normals`` (N, 3) outward normals the capture knows (a mesh's faces, not necessarily unit;
     NaN or zero rows where unknown): they decide the outward side of an unorganized cloud's
-    estimated point normals.
+    estimated point normals; ``jump_limits`` (N,) a camera view's per-pixel length beyond which a link
+    from the pixel crosses a depth jump (:func:`realsim.perception.depth_jumps.pixel_jumps`; None:
+    ``params.jump_distance`` everywhere).
     The method is deterministic (``seed`` is accepted for interface uniformity; nothing is random).
     """
     points = np.asarray(points, dtype=np.float64)
@@ -325,12 +327,14 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     working = float("inf")
     if organized:
         assert grid_shape is not None
-        normals = grid_normals(points, fg, grid_shape, params.normal_window, params.jump_distance)
+        normals = grid_normals(points, fg, grid_shape, params.normal_window,
+                               params.jump_distance if jump_limits is None else jump_limits)
         a, b = grid_links(fg, grid_shape)
     else:
         normals = knn_normals(points, fg, params.normal_neighbors)
         a, b = knn_links(points, fg, params.knn_neighbors)
-    keep = np.linalg.norm(points[a] - points[b], axis=1) < params.jump_distance
+    limit = np.minimum(jump_limits[a], jump_limits[b]) if organized and jump_limits is not None else params.jump_distance
+    keep = np.linalg.norm(points[a] - points[b], axis=1) < limit
     axis = view_axis(points, a[~keep], b[~keep], normals, params.jump_distance) if organized else None
     a, b = a[keep], b[keep]
 

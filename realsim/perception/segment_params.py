@@ -25,6 +25,10 @@ class SegmentParams:
     knn_neighbors: int = 8  # neighbours linked per point, unorganized clouds
     # links between neighbouring points (fragments)
     jump_distance: float = 0.008  # neighbours farther apart than this are across a depth jump
+    jump_max_angle: float = 45.0  # camera views: ... and than a link on a surface turned this far (degrees)
+    # from the camera with its ends' measured depth noise at jump_sigmas (pixels lie farther apart, and noisier,
+    # the farther they are: realsim.perception.depth_jumps); normals skip tangents over twice that
+    jump_sigmas: float = 2.5  # (2.5 sigma keeps 99 % of a surface's links)
     # supervoxels (SLIC on position, normal and colour)
     supervoxel_pixels: int = 10  # seed spacing in the image grid (organized clouds)
     supervoxel_size: float = 0.02  # seed spacing and position scale (m)

@@ -9,6 +9,8 @@ from scipy import ndimage
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
+from realsim.perception.capture_camera import capture_intrinsics, optical_depth
+from realsim.perception.depth_jumps import pixel_jumps
 from realsim.perception.footprints import filled_footprint
 from realsim.perception.resolution import working_resolution
 from realsim.perception.segment import SegmentParams, SegmentResult, assign_supports, filter_by_size, segment_objects
@@ -241,6 +243,17 @@ def _footprint_holes(labels: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray,
     return np.concatenate(out_l), np.concatenate(out_c)
 
 
+def _jump_limits(scene: Scene, params: SegmentParams) -> np.ndarray | None:
+    """A camera view's per-pixel depth-jump lengths from its own camera (focal length and measured
+    depth noise, :mod:`realsim.perception.depth_jumps`); None for other organized grids."""
+    intr = capture_intrinsics(scene)
+    if intr is None or scene.grid_shape is None:
+        return None
+    depth = optical_depth(scene).reshape(scene.grid_shape)
+    return pixel_jumps(depth, float(np.sqrt(intr.fx * intr.fy)), params.jump_distance, params.jump_max_angle,
+                       params.jump_sigmas)
+
+
 def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scene:
     """Label every input point (0 support, -1 noise, k object) and create one SceneObject per k.
 
@@ -249,7 +262,8 @@ def segment_scene(scene: Scene, params: SegmentParams = SegmentParams()) -> Scen
     if scene.points is None:
         return scene
     if scene.grid_shape is not None and scene.grid_shape[0] * scene.grid_shape[1] == len(scene.points):
-        result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=scene.seed)
+        result = segment_objects(scene.points, scene.colors, scene.planes, scene.grid_shape, params, seed=scene.seed,
+                                 jump_limits=_jump_limits(scene, params))
         # a wall in view is structure; small or floating clusters stay (a single view hides bases)
         result = filter_by_size(scene.points, result, scene.planes, params, structure_only=True)
         scene.labels = result.labels.astype(np.int32)

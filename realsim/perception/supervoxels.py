@@ -60,13 +60,14 @@ def smallest_eigenvectors(cov: np.ndarray) -> np.ndarray:
 
 
 def grid_normals(points: np.ndarray, valid: np.ndarray, grid_shape: tuple[int, int], window: int,
-                 max_step: float) -> np.ndarray:
+                 max_step: float | np.ndarray) -> np.ndarray:
     """Normals of an organized cloud from image-grid tangents, pointing toward the camera; NaN elsewhere.
 
     The image axes (u right, v down) and the optical axis form a right-handed frame, so the cross
     product of the grid tangents d/du x d/dv points away from the camera on every visible surface,
     whatever the world frame is. Unit cross products are averaged over a ``window`` of pixels;
-    tangents spanning a depth jump (longer than ``2 max_step``) or invalid points are skipped.
+    tangents spanning a depth jump (longer than ``2 max_step``, one length or one per pixel) or invalid
+    points are skipped.
     """
     h, w = grid_shape
     normals = np.full(points.shape, np.nan)
@@ -82,9 +83,10 @@ def grid_normals(points: np.ndarray, valid: np.ndarray, grid_shape: tuple[int, i
     dv = np.full_like(p, np.nan)
     du[:, 1:-1] = p[:, 2:] - p[:, :-2]
     dv[1:-1] = p[2:] - p[:-2]
+    step = np.broadcast_to(np.asarray(max_step, dtype=np.float64), (h * w,)).reshape(h, w)[r0:r1, c0:c1]
     with np.errstate(invalid="ignore"):
-        du[np.linalg.norm(du, axis=2) > 2 * max_step] = np.nan
-        dv[np.linalg.norm(dv, axis=2) > 2 * max_step] = np.nan
+        du[np.linalg.norm(du, axis=2) > 2 * step] = np.nan
+        dv[np.linalg.norm(dv, axis=2) > 2 * step] = np.nan
         c = np.cross(du, dv)
         c /= np.linalg.norm(c, axis=2, keepdims=True)
     c = np.nan_to_num(c)

@@ -4,7 +4,7 @@ An organized cloud is a camera view in the optical frame (+x right, +y down, +z 
 and levelling compose every transform into ``capture.input_to_world``, so the camera sits at its
 translation and looks along the mapped +z. Intrinsics come from ``capture.yaml``
 (``camera: {fx, fy, cx, cy}`` or ``camera: {fovy_deg}``), else are fitted from the organized grid
-(:func:`realsim.composition.appearance.capture_intrinsics`), else come from the grid shape with a default
+(:func:`realsim.perception.capture_camera.capture_intrinsics`), else come from the grid shape with a default
 vertical field of view; ``cx = (W - 1) / 2`` (pixel centres at integers).
 """
 
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from realsim.composition.appearance import capture_intrinsics
+from realsim.perception.capture_camera import capture_intrinsics
 from realsim.perception.intrinsics import Intrinsics
 from realsim.scene import Scene
 
