@@ -31,7 +31,7 @@ class SettleParams:
     """Parameters of settling and of the rest check."""
 
     min_time: float = 0.5  # simulated seconds before testing for rest
-    max_time: float = 4.0
+    max_time: float = 8.0  # simulated seconds: a scene whose pieces fall far (a chair's parts off its seat) needs them to land
     rest_speed: float = 2e-3  # m/s (and rad/s) below which every object is at rest
     rest_window: float = 0.25  # s: an object that stayed within rest_speed * rest_window of its pose this long is at rest too
     check_time: float = 2.0  # simulated seconds of the rest check
