@@ -73,18 +73,21 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
 
 
 def _rising_under_rectangle(points: np.ndarray, upper: SupportPlane, params: SegmentParams) -> np.ndarray:
-    """Mask of ``points`` below ``upper`` and inside its rectangle (its top's seen extent, grown
-    by ``structure_margin``) in a connected group (cells of ``structure_margin``) of them that
-    rises to within ``structure_reach`` under its height: the legs and apron under a part of the
-    top that objects on it hid (its seen polygon has that corner cut off), not things on the floor."""
+    """Mask of ``points`` below ``upper`` in a connected group (cells of ``structure_margin``) of
+    them that rises to within ``structure_reach`` under its height inside its rectangle (its top's
+    seen extent, grown by ``structure_margin``): the legs and apron under a part of the top that
+    objects on it hid (its seen polygon has that corner cut off), whole, not things on the floor."""
     c, s = np.cos(upper.rect_yaw), np.sin(upper.rect_yaw)
-    local = (points[:, :2] - upper.rect_center) @ np.array([[c, -s], [s, c]])
-    inside = np.flatnonzero(np.all(np.abs(local) <= np.asarray(upper.rect_size) / 2 + params.structure_margin, axis=1)
-                            & (points[:, 2] < upper.height))
+    below = np.flatnonzero(points[:, 2] < upper.height)
+    local = (points[below, :2] - upper.rect_center) @ np.array([[c, -s], [s, c]])
+    rising = np.all(np.abs(local) <= np.asarray(upper.rect_size) / 2 + params.structure_margin, axis=1)
+    rising &= points[below, 2] >= upper.height - params.structure_reach
     out = np.zeros(len(points), dtype=bool)
-    for group in connected_groups(points[inside], params.structure_margin):
-        if points[inside[group], 2].max() >= upper.height - params.structure_reach:
-            out[inside[group]] = True
+    if not rising.any():
+        return out
+    for group in connected_groups(points[below], params.structure_margin):
+        if rising[group].any():
+            out[below[group]] = True
     return out
 
 
