@@ -32,3 +32,18 @@ def test_legs_under_a_hidden_corner_are_furniture() -> None:
     legs = slice(0, len(hidden_leg) + len(seen_leg))
     assert (support[legs] == -1).all()  # neither leg stands on the floor as an object
     assert (support[len(hidden_leg) + len(seen_leg):] == 0).all()  # the can stays on the floor
+
+
+def test_furniture_reaching_past_the_rectangle_is_taken_whole() -> None:
+    """The seen top ends 40 cm short of the table's end: its apron and leg there, one connected
+    group reaching into the seen rectangle, are furniture past the rectangle too (not cut at its
+    edge into a floor object)."""
+    rng = np.random.default_rng(1)
+    floor = _plane(1, "floor", 0.0, np.array([[-2.0, -2.0], [2.0, -2.0], [2.0, 2.0], [-2.0, 2.0]]), (4.0, 4.0))
+    seen = np.array([[-0.6, -0.4], [0.2, -0.4], [0.2, 0.4], [-0.6, 0.4]])  # a 0.8 x 0.8 rectangle
+    table = _plane(2, "table", 0.72, seen, (0.8, 0.8))
+    table.rect_center = np.array([-0.2, 0.0])
+    apron = _box(rng, (0.0, 0.38, 0.62), (0.6, 0.40, 0.68), 1500)  # along the long side, past the seen end
+    leg = _box(rng, (0.5, 0.3, 0.01), (0.55, 0.35, 0.68), 400)
+    support, _ = assign_supports(np.vstack([apron, leg]), [floor, table], SegmentParams())
+    assert (support == -1).all()
