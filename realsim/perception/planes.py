@@ -16,6 +16,7 @@ from scipy.spatial import cKDTree
 
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
+from realsim.perception.level_patches import level_heights
 from realsim.perception.plane_patches import surface_of
 from realsim.perception.plane_refit import refine_plane
 from realsim.perception.resolution import working_resolution
@@ -32,6 +33,7 @@ class PlaneParams:
     ransac_iterations: int = 1000
     max_planes: int = 8  # proposals examined
     min_plane_points: int = 100  # (downsampled) points for a proposal to count
+    min_level_points: int = 50  # (downsampled) points facing up at one height that propose a horizontal plane there
     level_max_tilt_deg: float = 60.0  # dominant support searched within this of the coarse up
     resting_max_tilt_deg: float = 20.0  # ... or within this of the plane bodies rest on, when large planes disagree
     min_support_share: float = 0.04  # of a camera view's planar points: a smaller plane facing the picture's up is a thing's face
@@ -256,6 +258,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         inliers = inliers @ rotation.T
         for region in _regions(inliers[:, :2], params.region_cell, params.min_support_area):
             regions.append((float(np.median(inliers[region, 2])), inliers[region]))
+    regions += _unproposed_patches(pts, regions, params)
     supports = []
     for group in _merge_regions(regions, params):
         band = _support_points(pts, group, params)
@@ -309,6 +312,28 @@ def _warn_implausible(scene: Scene, planes: list[SupportPlane], params: PlanePar
         if p.kind != "floor" and p.observed and not lo <= p.height <= hi:
             scene.warn(f"support {p.id} is {p.height:.2f} m above the floor, outside the {lo}-{hi} m of tables and "
                        "counters: check it (a shelf, a step, or wrong --units)")
+
+
+def _unproposed_patches(pts: np.ndarray, regions: list[tuple[float, np.ndarray]], params: PlaneParams) -> list[tuple[float, np.ndarray]]:
+    """Horizontal planes at every height where the levelled ``pts``' level points pile up
+    (:func:`level_heights` on a ``voxel_size`` copy, ``min_level_points`` each), split into
+    connected xy regions of ``min_support_area`` like a RANSAC proposal's inliers, (height,
+    points) each, that no proposed region already holds: most of their points lie no farther than
+    ``region_cell`` from a region's points at their height (``merge_height_tol``)."""
+    down = voxel_downsample(pts, params.voxel_size)
+    found = []
+    for height in level_heights(down, 3.0 * params.voxel_size, params.support_max_tilt_deg, params.distance_threshold,
+                                params.min_level_points):
+        band = down[np.abs(down[:, 2] - height) < params.distance_threshold]
+        for region in _regions(band[:, :2], params.region_cell, params.min_support_area):
+            xy = band[region, :2]
+            held = np.zeros(len(xy), dtype=bool)
+            for h, other in regions:
+                if abs(h - height) <= params.merge_height_tol:
+                    held |= np.isfinite(cKDTree(other[:, :2]).query(xy, distance_upper_bound=params.region_cell)[0])
+            if held.mean() < 0.5:
+                found.append((float(np.median(band[region, 2])), band[region]))
+    return found
 
 
 def _merge_regions(regions: list[tuple[float, np.ndarray]], params: PlaneParams) -> list[np.ndarray]:

@@ -31,6 +31,7 @@ from realsim.perception.in_front import in_front
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
 from realsim.perception.occlusion_bridge import occluded_pairs, view_axis
 from realsim.perception.pixel_area import pixel_areas
+from realsim.perception.plane_patches import connected_groups
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
@@ -63,10 +64,31 @@ def assign_supports(points: np.ndarray, planes: list[SupportPlane], params: Segm
         for upper in planes:  # the space under a higher support is its furniture (legs, sides)
             if upper.observed and upper.height > plane.height + params.min_height:
                 under = inside_convex_polygon(points[candidate, :2], upper.polygon, params.structure_margin)
-                candidate = candidate[~(under & (z[candidate] < upper.height + params.min_height))]
+                below = z[candidate] < upper.height + params.min_height
+                under |= below & _rising_under_rectangle(points[candidate], upper, params)
+                candidate = candidate[~(under & below)]
         support[candidate] = i
         height[candidate] = h[candidate]
     return support, height
+
+
+def _rising_under_rectangle(points: np.ndarray, upper: SupportPlane, params: SegmentParams) -> np.ndarray:
+    """Mask of ``points`` below ``upper`` in a connected group (cells of ``structure_margin``) of
+    them that rises to within ``structure_reach`` under its height inside its rectangle (its top's
+    seen extent, grown by ``structure_margin``): the legs and apron under a part of the top that
+    objects on it hid (its seen polygon has that corner cut off), whole, not things on the floor."""
+    c, s = np.cos(upper.rect_yaw), np.sin(upper.rect_yaw)
+    below = np.flatnonzero(points[:, 2] < upper.height)
+    local = (points[below, :2] - upper.rect_center) @ np.array([[c, -s], [s, c]])
+    rising = np.all(np.abs(local) <= np.asarray(upper.rect_size) / 2 + params.structure_margin, axis=1)
+    rising &= points[below, 2] >= upper.height - params.structure_reach
+    out = np.zeros(len(points), dtype=bool)
+    if not rising.any():
+        return out
+    for group in connected_groups(points[below], params.structure_margin):
+        if rising[group].any():
+            out[below[group]] = True
+    return out
 
 
 # ----------------------------------------------------------------------------------------------

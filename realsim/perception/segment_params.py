@@ -18,6 +18,7 @@ class SegmentParams:
     max_height: float = 1.0  # points higher than this above every support are background
     polygon_margin: float = 0.02  # points beyond a support polygon by more than this are background
     structure_margin: float = 0.03  # points this close under a higher support's polygon are its furniture
+    structure_reach: float = 0.1  # ... and, under its rectangle, in a column rising this close under its height
     use_assumed_planes: bool = False  # also segment above supports that were not observed
     # neighbourhoods and normals
     normal_window: int = 5  # grid window (pixels) averaging tangent normals, organized clouds
