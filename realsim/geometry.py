@@ -63,16 +63,18 @@ def fit_plane(points: np.ndarray) -> tuple[np.ndarray, float]:
 
 
 def ransac_plane(points: np.ndarray, threshold: float, max_iterations: int, rng: np.random.Generator,
-                 confidence: float = 0.999, batch: int = 128, score_points: int = 4000) -> tuple[np.ndarray, float, np.ndarray]:
+                 confidence: float = 0.999, batch: int = 128, score_points: int = 4000,
+                 shuffled: bool = False) -> tuple[np.ndarray, float, np.ndarray]:
     """Seeded RANSAC plane: (unit normal, d, inlier indices into ``points``) with most inliers.
 
     Hypotheses are scored in vectorized batches on a random subset of ``score_points`` points;
     sampling stops once ``confidence`` says a better plane is unlikely (the adaptive RANSAC
     bound), or after ``max_iterations``. The inliers of the winner are taken from all points.
+    ``shuffled`` points are already in a random order: the subset is their head.
     """
     full = points
     if len(points) > score_points:
-        points = points[rng.choice(len(points), score_points, replace=False)]
+        points = points[:score_points] if shuffled else points[rng.choice(len(points), score_points, replace=False)]
     n = len(points)
     best_count, best_normal, best_d = -1, np.array([0.0, 0.0, 1.0]), 0.0
     done, needed = 0, max_iterations

@@ -62,29 +62,49 @@ def _finite(points: np.ndarray) -> np.ndarray:
     return np.asarray(np.isfinite(points).all(axis=1))
 
 
-def voxel_downsample(points: np.ndarray, voxel: float) -> np.ndarray:
-    """Centroid of the points in each occupied voxel, in a deterministic (sorted-key) order."""
-    cells = np.floor(points / voxel).astype(np.int64)
-    cells -= cells.min(axis=0)
+def _voxel_keys(points: np.ndarray, voxel: float) -> np.ndarray:
+    """One int64 key per point: its cell of a ``voxel`` grid anchored at the points' lower corner,
+    so the same surface in other units, moved or reordered, gets the same keys."""
+    cells = np.floor((points - points.min(axis=0)) / voxel).astype(np.int64)
     span = cells.max(axis=0) + 1
-    keys = (cells[:, 0] * span[1] + cells[:, 1]) * span[2] + cells[:, 2]  # one int64 per voxel
-    _, inverse, counts = np.unique(keys, return_inverse=True, return_counts=True)
+    return (cells[:, 0] * span[1] + cells[:, 1]) * span[2] + cells[:, 2]
+
+
+def _mix(keys: np.ndarray) -> np.ndarray:
+    """A fixed pseudo-random permutation of int64 keys (splitmix64's finalizer): a seed-free,
+    unit-free random order of the cells."""
+    z = keys.astype(np.uint64) + np.uint64(0x9E3779B97F4A7C15)
+    with np.errstate(over="ignore"):
+        z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+        z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+    return z ^ (z >> np.uint64(31))
+
+
+def voxel_downsample(points: np.ndarray, voxel: float, keyed: bool = False) -> np.ndarray:
+    """Centroid of the points in each occupied voxel of a grid anchored at the points' lower
+    corner, in sorted-key order, or with ``keyed`` in an order drawn from the cells' keys (a random
+    order that units, a shift or the points' order do not change)."""
+    keys = _voxel_keys(points, voxel)
+    uniq, inverse, counts = np.unique(keys, return_inverse=True, return_counts=True)
     sums = np.zeros((len(counts), 3))
     for axis in range(3):
-        sums[:, axis] = np.bincount(inverse, weights=points[:, axis], minlength=len(counts))
-    return sums / counts[:, None]
+        sums[:, axis] = np.bincount(inverse.ravel(), weights=points[:, axis], minlength=len(counts))
+    centroids = sums / counts[:, None]
+    return centroids[np.argsort(_mix(uniq), kind="stable")] if keyed else centroids
 
 
 def ransac_proposals(points: np.ndarray, params: PlaneParams, seed: int) -> list[tuple[np.ndarray, float, np.ndarray]]:
     """Planes found by repeated seeded RANSAC on a voxel-downsampled copy: (normal, d, inlier
-    points) each, largest first. Deterministic: the same input and seed give the same planes."""
-    remaining = voxel_downsample(points, params.voxel_size)
+    points) each, largest first. Deterministic: the same input and seed give the same planes.
+    The copy is in a key-drawn random order and RANSAC scores on its head, so a few voxels that
+    float rounding (other units, a shift) adds or drops change a few scored points, not all."""
+    remaining = voxel_downsample(points, params.voxel_size, keyed=True)
     rng = np.random.default_rng(seed)
     proposals = []
     for _ in range(params.max_planes):
         if len(remaining) < params.min_plane_points:
             break
-        normal, d, inliers = ransac_plane(remaining, params.distance_threshold, params.ransac_iterations, rng)
+        normal, d, inliers = ransac_plane(remaining, params.distance_threshold, params.ransac_iterations, rng, shuffled=True)
         if len(inliers) < params.min_plane_points:
             break
         proposals.append((normal, d, remaining[inliers]))

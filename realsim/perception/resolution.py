@@ -15,6 +15,9 @@ from realsim.perception.unique_keys import distinct_rows
 
 UNIT_SCALE = {"m": 1.0, "cm": 0.01, "mm": 0.001}
 MIN_RESOLUTION = 0.003  # m: fine enough for 3 cm objects (10 cells across)
+CELL_SPACINGS = 1.15  # a working cell is this many measured spacings: the grid count reads a uniformly
+# sampled surface's 1/sqrt(density) about 15 % short (a cell cut by a tilted or curved surface holds more
+# of it), and detection's lengths were tuned on a measure that read long
 PLAUSIBLE_EXTENT = (0.1, 60.0)  # m: a captured scene is this large
 TYPICAL_EXTENT = 2.0  # m: the scene size preferred when several units are plausible
 SUPPORT_GAP = (0.4, 1.2)  # m: a table or counter top stands this high above the floor
@@ -50,7 +53,9 @@ def point_spacing(points: np.ndarray, seed: int = 0) -> float:
     """Typical distance between neighbouring surface points (same units as ``points``).
 
     Counted on a grid, in O(N): on a surface a cell of side ``v`` holds about ``(v / s)^2``
-    points of spacing ``s``. Measured on a random subset and scaled back to the full count.
+    points of spacing ``s``. Measured on a random subset and scaled back to the full count. The
+    grid is anchored at the points' lower corner, so the measure moves and scales with the points
+    (a floor lying on a grid plane of the input's axes would fill two layers of cells).
     """
     finite = int(np.isfinite(points).all(axis=1).sum())
     pts = _subsample(points, _SAMPLE, seed)
@@ -58,16 +63,16 @@ def point_spacing(points: np.ndarray, seed: int = 0) -> float:
         return float("nan")
     extent = float(np.max(np.percentile(pts, 99, axis=0) - np.percentile(pts, 1, axis=0)))
     cell = max(extent / 100.0, 1e-12)
-    per_cell = len(pts) / distinct_rows(np.floor(pts / cell).astype(np.int64))  # mean points per occupied cell
+    per_cell = len(pts) / distinct_rows(np.floor((pts - pts.min(axis=0)) / cell).astype(np.int64))  # mean points per occupied cell
     spacing = cell / math.sqrt(max(per_cell, 1.0))
     return spacing * math.sqrt(len(pts) / max(finite, 1))
 
 
 def working_resolution(spacing_m: float) -> float:
-    """Resolution (m) detection works at: the capture's own spacing, never finer than 3 mm."""
+    """Resolution (m) detection works at: ``CELL_SPACINGS`` of the capture's own spacing, never finer than 3 mm."""
     if not np.isfinite(spacing_m):
         return MIN_RESOLUTION
-    return max(float(spacing_m), MIN_RESOLUTION)
+    return max(CELL_SPACINGS * float(spacing_m), MIN_RESOLUTION)
 
 
 def _layer_gaps(points: np.ndarray, up: np.ndarray) -> np.ndarray:
