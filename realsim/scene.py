@@ -61,6 +61,11 @@ class SupportPlane:
         """d of the plane equation n.x + d = 0."""
         return float(-self.normal[2] * self.height)
 
+    def rect_local(self, xy: np.ndarray) -> np.ndarray:
+        """World xy (..., 2) -> the oriented rectangle's frame (centre at 0, x along ``rect_size[0]``)."""
+        c, s = np.cos(self.rect_yaw), np.sin(self.rect_yaw)
+        return np.asarray((np.asarray(xy) - self.rect_center) @ np.array([[c, -s], [s, c]]))
+
 
 @dataclass
 class SceneObject:

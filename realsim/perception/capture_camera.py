@@ -15,9 +15,14 @@ from realsim.scene import Scene
 __all__ = ["capture_intrinsics", "optical_depth"]
 
 
+def _world_to_input(scene: Scene) -> np.ndarray:
+    """(4, 4) the world -> camera optical frame transform."""
+    return np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+
+
 def optical_depth(scene: Scene) -> np.ndarray:
     """(N,) each point's depth along the camera's axis (optical z, m), NaN where no depth."""
-    world_to_input = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+    world_to_input = _world_to_input(scene)
     assert scene.points is not None
     out: np.ndarray = scene.points @ world_to_input[2, :3] + world_to_input[2, 3]
     return out
@@ -35,7 +40,7 @@ def capture_intrinsics(scene: Scene) -> Intrinsics | None:
         return Intrinsics(declared.fx, declared.fy, (w - 1) / 2 if declared.cx is None else declared.cx,
                           (h - 1) / 2 if declared.cy is None else declared.cy, int(w), int(h))
     if cap.fitted_intrinsics is None:
-        world_to_input = np.linalg.inv(np.asarray(scene.capture.input_to_world, float))
+        world_to_input = _world_to_input(scene)
         idx = np.arange(0, len(scene.points), 7)  # every 7th pixel: plenty for two lines, pixel indices kept
         optical = np.full_like(scene.points, np.nan)
         optical[idx] = scene.points[idx] @ world_to_input[:3, :3].T + world_to_input[:3, 3]

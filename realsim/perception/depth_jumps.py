@@ -44,8 +44,8 @@ def depth_noise(depth: np.ndarray) -> np.ndarray:
     """(H, W) the standard deviation (m) of the depth noise at each pixel's depth, measured on the
     depth image (H, W; NaN where none): 1.4826 times the median absolute second difference along
     rows and columns over sqrt(6), per range of depth (of the three pixels' mean, whose noise is
-    independent of their second difference's; the middle pixel's is not), interpolated between ranges (the nearest
-    range's beyond them); 0 where the image has too few pixels to tell."""
+    independent of their second difference's; the middle pixel's is not), as one sensor's c z^2 with c
+    the median over the ranges of sigma / z^2; 0 where the image has too few pixels to tell."""
     d = np.asarray(depth, dtype=np.float64)
     z_parts, e_parts = [], []
     for img in (d, d.T):

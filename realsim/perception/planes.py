@@ -341,6 +341,7 @@ def _unproposed_patches(pts: np.ndarray, regions: list[tuple[float, np.ndarray]]
     points) each, that no proposed region already holds: most of their points lie no farther than
     ``region_cell`` from a region's points at their height (``merge_height_tol``)."""
     down = voxel_downsample(pts, params.voxel_size)
+    trees = [(h, cKDTree(other[:, :2])) for h, other in regions]
     found = []
     for height in level_heights(down, 3.0 * params.voxel_size, params.support_max_tilt_deg, params.distance_threshold,
                                 params.min_level_points):
@@ -348,9 +349,9 @@ def _unproposed_patches(pts: np.ndarray, regions: list[tuple[float, np.ndarray]]
         for region in _regions(band[:, :2], params.region_cell, params.min_support_area):
             xy = band[region, :2]
             held = np.zeros(len(xy), dtype=bool)
-            for h, other in regions:
+            for h, tree in trees:
                 if abs(h - height) <= params.merge_height_tol:
-                    held |= np.isfinite(cKDTree(other[:, :2]).query(xy, distance_upper_bound=params.region_cell)[0])
+                    held |= np.isfinite(tree.query(xy, distance_upper_bound=params.region_cell)[0])
             if held.mean() < 0.5:
                 found.append((float(np.median(band[region, 2])), band[region]))
     return found

@@ -77,9 +77,8 @@ def _rising_under_rectangle(points: np.ndarray, upper: SupportPlane, params: Seg
     them that rises to within ``structure_reach`` under its height inside its rectangle (its top's
     seen extent, grown by ``structure_margin``): the legs and apron under a part of the top that
     objects on it hid (its seen polygon has that corner cut off), whole, not things on the floor."""
-    c, s = np.cos(upper.rect_yaw), np.sin(upper.rect_yaw)
     below = np.flatnonzero(points[:, 2] < upper.height)
-    local = (points[below, :2] - upper.rect_center) @ np.array([[c, -s], [s, c]])
+    local = upper.rect_local(points[below, :2])
     rising = np.all(np.abs(local) <= np.asarray(upper.rect_size) / 2 + params.structure_margin, axis=1)
     rising &= points[below, 2] >= upper.height - params.structure_reach
     out = np.zeros(len(points), dtype=bool)

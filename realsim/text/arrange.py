@@ -67,7 +67,7 @@ def world_hulls(item: Item) -> list[np.ndarray]:
 
 def _local(support: SupportPlane, xy: np.ndarray) -> np.ndarray:
     """World xy -> the support rectangle's frame (centre at 0, x along its width)."""
-    return (np.asarray(xy) - support.rect_center) @ _rot(support.rect_yaw)
+    return support.rect_local(xy)
 
 
 def _relation_ok(rel: str, poly: np.ndarray, other: np.ndarray, support: SupportPlane) -> bool:
