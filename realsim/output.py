@@ -33,6 +33,7 @@ def scene_record(scene: Scene) -> dict[str, Any]:
             "point_spacing": cap.point_spacing,  # m, the capture's own resolution
             "up": cap.up,
             "up_detected": cap.up_detected,
+            "faces_turned": cap.faces_turned,  # an environment mesh wound inward was turned
             "input_to_world": cap.input_to_world,
             "point_count": 0 if scene.points is None else len(scene.points),
             "grid_shape": scene.grid_shape,

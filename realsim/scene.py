@@ -37,6 +37,7 @@ class CaptureInfo:
     point_spacing: float | None = None  # m: the capture's own resolution (median neighbour distance)
     camera_view: bool = False  # an organized view from one camera (its grid is a photo)
     splat: Path | None = None  # the Gaussian splat PLY the points came from, kept for the viewer
+    faces_turned: bool = False  # an environment mesh wound inward, turned before sampling
     photo: Path | None = None  # the photo of a photo-only capture
     fitted_intrinsics: Any = None  # realsim.perception.intrinsics.Intrinsics fitted from the grid, once
 

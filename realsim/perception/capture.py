@@ -74,6 +74,7 @@ class RawCloud:
     up_hint: str | None = None
     splat: Path | None = None  # a Gaussian splat PLY read as its centres
     normals: np.ndarray | None = None  # (N, 3) unit face normals of points sampled from a consistently wound mesh
+    faces_turned: bool = False  # the mesh was wound inward and was turned (mesh_sides)
 
 
 def up_rotation(up: str) -> np.ndarray:
@@ -173,15 +174,21 @@ def resample_mesh(cloud: RawCloud, to_world: np.ndarray, params: LoadParams, see
                   origin: np.ndarray | None = None) -> RawCloud:
     """Sample an environment mesh by area at ``mesh_sample_spacing`` (in metres, through
     ``to_world``; shifted by ``-origin`` when given), dropping points on downward-facing faces: the underside of a table top or a
-    floor slab is never a support, and object bottoms are hidden on their support."""
-    area_m2 = float(cloud.mesh.area) * float(abs(np.linalg.det(to_world))) ** (2.0 / 3.0)
+    floor slab is never a support, and object bottoms are hidden on their support. Faces wound inward
+    are turned first (:mod:`realsim.perception.mesh_sides`)."""
+    from realsim.perception.mesh_sides import with_outward_faces
+
+    scale = float(abs(np.linalg.det(to_world))) ** (1.0 / 3.0)  # metres per input unit
+    area_m2 = float(cloud.mesh.area) * scale**2
     count = int(np.clip(area_m2 / params.mesh_sample_spacing**2, params.mesh_pilot_points, params.mesh_max_points))
-    pts, cols, normals = sample_mesh(cloud.mesh, count, seed, path)
     up = to_world[2, :3] / np.linalg.norm(to_world[2, :3])  # world +Z in input coordinates
+    mesh, turned = with_outward_faces(cloud.mesh, up, scale)
+    pts, cols, normals = sample_mesh(mesh, count, seed, path)
     keep = normals @ up > -0.3
     pts = pts if origin is None else pts - origin
-    outward = normals[keep] if cloud.mesh.is_winding_consistent else None  # else the sides of faces cannot be told
-    return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt, normals=outward)
+    outward = normals[keep] if mesh.is_winding_consistent else None  # else the sides of faces cannot be told
+    return RawCloud(pts[keep], None if cols is None else cols[keep], None, False, cloud.fmt, normals=outward,
+                    faces_turned=turned)
 
 
 def normals_to_world(normals: np.ndarray | None, to_world: np.ndarray) -> np.ndarray | None:
@@ -345,7 +352,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     kind = "text" if config.text and env is None and not object_files else "objects"
     units_reason = splat = None
     spacing: float | None = None
-    camera_view = False
+    camera_view = faces_turned = False
     units_detected = up_detected = False
     transform = np.eye(4)
     if env is not None:
@@ -376,6 +383,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         grid_shape = cloud.grid_shape
         annotations = cloud.annotations
         camera_view = cloud.is_camera_view
+        faces_turned = cloud.faces_turned
         forget_mesh_files()
     capture = CaptureInfo(
         source=path,
@@ -391,6 +399,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         point_spacing=spacing,
         camera_view=camera_view,
         splat=splat,
+        faces_turned=faces_turned,
     )
     return Scene(
         capture=capture,
