@@ -18,6 +18,8 @@ and outside its cavity: the lines of sight to it enter the rim's vertical cylind
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from realsim.completion.containers import ContainerParams, cavity_floor, round_rim
@@ -50,24 +52,47 @@ def one_container(a: np.ndarray, b: np.ndarray, base_z: float, max_radius: float
     return True
 
 
-def outer_wall_part(container: np.ndarray, part: np.ndarray, base_z: float, max_radius: float, camera: np.ndarray,
-                    params: ContainerParams = ContainerParams()) -> bool:
-    """True when the points ``part`` are the outside of the near wall under the rim of the open round
-    container whose points are ``container`` (see the module's notes), seen from ``camera``."""
+@dataclass(frozen=True)
+class OpenRim:
+    """The rim of an open round container: its top height, height over its base, centre and radius."""
+
+    top_z: float
+    height: float
+    centre: np.ndarray
+    radius: float
+
+
+def open_rim(container: np.ndarray, base_z: float, max_radius: float, camera: np.ndarray,
+             params: ContainerParams = ContainerParams()) -> OpenRim | None:
+    """The rim of the points ``container`` when they are an open round container with a cavity seen
+    from ``camera`` (None otherwise)."""
     top_z = float(np.percentile(container[:, 2], 98))
     height = top_z - base_z
     rim = round_rim(container, base_z, top_z, max_radius) if height > 0 else None
     if rim is None:
-        return False
+        return None
     centre, radius = rim
-    toward = camera[:2] - centre
-    if np.linalg.norm(toward) < 1e-6 or cavity_floor(container, centre, radius, height, params.min_depth, camera[:2]) is None:
-        return False
-    rel = part[:, :2] - centre
-    under = (np.linalg.norm(rel, axis=1) <= (1 + RIM_BAND) * radius) & (part[:, 2] < top_z - RIM_BAND * height) & (rel @ toward > 0)
+    if np.linalg.norm(camera[:2] - centre) < 1e-6 or cavity_floor(container, centre, radius, height, params.min_depth, camera[:2]) is None:
+        return None
+    return OpenRim(top_z, height, centre, radius)
+
+
+def wall_under_rim(rim: OpenRim, part: np.ndarray, camera: np.ndarray) -> bool:
+    """True when the points ``part`` are the outside of the near wall under ``rim``, seen from ``camera``."""
+    rel = part[:, :2] - rim.centre
+    toward = camera[:2] - rim.centre
+    under = (np.linalg.norm(rel, axis=1) <= (1 + RIM_BAND) * rim.radius) & (part[:, 2] < rim.top_z - RIM_BAND * rim.height) & (rel @ toward > 0)
     if np.mean(under) < 1 - RIM_BAND:
         return False
-    return bool(np.median(_entry_height(camera, part, centre, radius)) < top_z - RIM_BAND * height)
+    return bool(np.median(_entry_height(camera, part, rim.centre, rim.radius)) < rim.top_z - RIM_BAND * rim.height)
+
+
+def outer_wall_part(container: np.ndarray, part: np.ndarray, base_z: float, max_radius: float, camera: np.ndarray,
+                    params: ContainerParams = ContainerParams()) -> bool:
+    """True when the points ``part`` are the outside of the near wall under the rim of the open round
+    container whose points are ``container`` (see the module's notes), seen from ``camera``."""
+    rim = open_rim(container, base_z, max_radius, camera, params)
+    return rim is not None and wall_under_rim(rim, part, camera)
 
 
 def _entry_height(camera: np.ndarray, points: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:
@@ -93,6 +118,31 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
         return []
     labels, points = scene.labels, scene.points
     merged: list[tuple[int, int]] = []
+    rims: dict[tuple[int, float], OpenRim | None] = {}  # (object id, base height): its rim, while its points stay
+    verdicts: dict[tuple[int, int], str | None] = {}  # (object id, object id): why they are one container, or None
+
+    def is_wall(container: SceneObject, part: SceneObject, base_z: float) -> bool:
+        assert camera is not None
+        key = (container.id, base_z)
+        if key not in rims:
+            rims[key] = open_rim(pts[container.id], base_z, max_radius, camera, params)
+        rim = rims[key]
+        return rim is not None and wall_under_rim(rim, pts[part.id], camera)
+
+    def joined(a: SceneObject, b: SceneObject) -> str | None:
+        pa, pb = pts[a.id], pts[b.id]
+        if a.support_id != b.support_id or len(pa) == 0 or len(pb) == 0:
+            return None
+        gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
+        base_z = _base(scene, a, pa)
+        if np.any(gap > 2 * max_radius):  # farther apart than a rim's diameter
+            return None
+        if one_container(pa, pb, base_z, max_radius):
+            return "their top is one ring"
+        if camera is not None and (is_wall(a, b, base_z) or is_wall(b, a, base_z)):
+            return "one is the outside of the other's near wall under its rim"
+        return None
+
     changed = True
     while changed:
         changed = False
@@ -100,20 +150,18 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
         pts = {o.id: points[labels == o.id] for o in objects}
         for i, a in enumerate(objects):
             for b in objects[i + 1:]:
+                if (a.id, b.id) not in verdicts:
+                    verdicts[(a.id, b.id)] = joined(a, b)
+                why = verdicts[(a.id, b.id)]
+                if why is None:
+                    continue
                 pa, pb = pts[a.id], pts[b.id]
-                if a.support_id != b.support_id or len(pa) == 0 or len(pb) == 0:
-                    continue
-                gap = np.maximum(pa[:, :2].min(axis=0) - pb[:, :2].max(axis=0), pb[:, :2].min(axis=0) - pa[:, :2].max(axis=0))
-                base_z = _base(scene, a, pa)
-                if np.any(gap > 2 * max_radius):  # farther apart than a rim's diameter
-                    continue
-                if one_container(pa, pb, base_z, max_radius):
-                    why = "their top is one ring"
-                elif camera is not None and (outer_wall_part(pa, pb, base_z, max_radius, camera, params) or outer_wall_part(pb, pa, base_z, max_radius, camera, params)):
-                    why = "one is the outside of the other's near wall under its rim"
-                else:
-                    continue
                 keep, gone = (a, b) if len(pa) >= len(pb) else (b, a)
+                stale = {keep.id, gone.id}  # the kept object's points grow: what was found of the others stays
+                for key in [k for k in rims if k[0] in stale]:
+                    del rims[key]
+                for pair in [k for k in verdicts if stale & set(k)]:
+                    del verdicts[pair]
                 labels[labels == gone.id] = keep.id
                 keep.point_count += gone.point_count
                 scene.objects = [o for o in scene.objects if o.id != gone.id]
