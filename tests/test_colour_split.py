@@ -1,11 +1,12 @@
-"""Colour split: touching objects of two colours in one sparse cluster become two; shading,
-6-bit colours and one-colour objects cut apart by shape do not make or keep extra objects."""
+"""Colour split: touching objects of two colours (or of one hue, one far brighter where both face
+alike) in one sparse cluster become two; shading, 6-bit colours and one-colour objects cut apart
+by shape do not make or keep extra objects."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from realsim.perception.colour_split import colour_classes, split_by_colour
+from realsim.perception.colour_split import brightness_classes, colour_classes, split_by_colour
 from realsim.perception.supervoxels import knn_links
 
 
@@ -90,3 +91,49 @@ def test_a_piece_smaller_than_min_points_is_not_an_object() -> None:
     a, b = _links(points[one])
     out = split_by_colour(colors[one], np.zeros(len(one), np.int64), a, b, min_points=10)
     assert np.all(out == 0)
+
+
+def _can(centre: tuple[float, float], radius: float, height: float, spacing: float, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Points and outward normals sampled on a standing cylinder's side and top, about ``spacing`` apart."""
+    rng = np.random.default_rng(seed)
+    side, top = int(2 * np.pi * radius * height / spacing**2), int(np.pi * radius**2 / spacing**2)
+    angle = rng.uniform(0, 2 * np.pi, side)
+    ring = np.c_[np.cos(angle), np.sin(angle)]
+    r = radius * np.sqrt(rng.uniform(0, 1, top))
+    disc = rng.uniform(0, 2 * np.pi, top)
+    points = np.vstack([np.c_[centre + radius * ring, rng.uniform(0, height, side)],
+                        np.c_[centre + np.c_[r * np.cos(disc), r * np.sin(disc)], np.full(top, height)]])
+    normals = np.vstack([np.c_[ring, np.zeros(side)], np.tile((0.0, 0.0, 1.0), (top, 1))])
+    return points, normals
+
+
+def test_a_white_can_against_a_black_one_is_two_objects_given_normals() -> None:
+    """One hue, two brightnesses: points facing alike differ threefold, so two materials."""
+    white, wn = _can((0.0, 0.0), 0.04, 0.1, 0.006, 1)
+    black, bn = _can((0.081, 0.0), 0.035, 0.2, 0.006, 2)
+    points, normals = np.vstack([white, black]), np.vstack([wn, bn])
+    colors = np.vstack([_shaded(white, (0.85, 0.85, 0.8), 3), _shaded(black, (0.3, 0.3, 0.33), 4)])
+    truth = np.r_[np.zeros(len(white), np.int64), np.ones(len(black), np.int64)]
+    a, b = _links(points)
+    assert np.all(split_by_colour(colors, np.zeros(len(points), np.int64), a, b, min_points=10) == 0)  # hue alone: one
+    out = split_by_colour(colors, np.zeros(len(points), np.int64), a, b, min_points=10, normals=normals)
+    assert len(np.unique(out)) == 2
+    for k in (0, 1):
+        assert np.bincount(out[truth == k]).max() / (truth == k).sum() > 0.95
+    assert np.bincount(out[truth == 0]).argmax() != np.bincount(out[truth == 1]).argmax()
+
+
+def test_a_lit_top_and_shaded_sides_of_one_box_are_one_object() -> None:
+    """A grey box lit from above: its top three times as bright as its sides, but no two of its
+    points that face the same way differ: one object."""
+    points = _box_surface((0.0, 0.0, 0.0), (0.12, 0.08, 0.1), 0.006, 5)
+    normals = np.zeros_like(points)
+    normals[np.isclose(points[:, 2], 0.1), 2] = 1.0
+    for axis, lo, hi in ((0, 0.0, 0.12), (1, 0.0, 0.08)):
+        normals[np.isclose(points[:, axis], lo), :] = -np.eye(3)[axis]
+        normals[np.isclose(points[:, axis], hi), :] = np.eye(3)[axis]
+    light = np.where(normals[:, 2] > 0.5, 0.95, 0.3)
+    colors = np.clip(np.asarray((0.6, 0.6, 0.6)) * light[:, None] + np.random.default_rng(6).normal(0, 0.01, points.shape), 0, 1)
+    assert brightness_classes(colors, normals) is None
+    a, b = _links(points)
+    assert np.all(split_by_colour(colors, np.zeros(len(points), np.int64), a, b, min_points=10, normals=normals) == 0)

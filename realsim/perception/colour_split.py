@@ -10,21 +10,31 @@ rarely one such connected population in each colour of its own; a colour gradien
 is one population, not two. Pieces cut apart by shape whose colours cannot be told apart and
 which touch are then one object again (only pieces a colour split left, never two clusters
 the shape alone separated).
+
+Two colours of one hue (a white mug against a black bottle) differ only in brightness, and so
+do the lit and the shaded faces of one box. Light depends on which way a surface faces; a
+material's brightness does not: two brightness populations are two objects only where points
+of both that face the same way still differ that much.
 """
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable
 
 import numpy as np
 
 from realsim.perception.supervoxels import link_components
 
-__all__ = ["colour_classes", "split_by_colour"]
+__all__ = ["brightness_classes", "colour_classes", "split_by_colour"]
 
 QUANTUM = 1.0 / 64  # a colour difference of one 6-bit level (a phone's coarse colour) is no edge
 SEPARATION = 6.0  # two populations whose means are this many robust spreads apart are two colours
 COHERENT = 0.6  # the largest connected piece of a colour holds at least this share of it
+BRIGHTNESS_RATIO = 2.0  # two shades of one hue are two materials only when one is this much brighter
+SHARED_FACING = 0.3  # ... among points of both facing the same ways, at least this share of each
+_STEPS = np.array([d for d in itertools.product((-1, 0, 1), repeat=3) if any(d)], dtype=np.float64)
+_FACINGS = _STEPS / np.linalg.norm(_STEPS, axis=1, keepdims=True)  # 26 directions a surface can face
 
 
 def colour_classes(colors: np.ndarray, separation: float = SEPARATION) -> np.ndarray | None:
@@ -32,29 +42,80 @@ def colour_classes(colors: np.ndarray, separation: float = SEPARATION) -> np.nda
     apart along the line joining their means (each spread at least one 6-bit level); else None.
     Two-means from a split of the principal colour axis at its mean (deterministic)."""
     c = _unshaded(np.asarray(colors, dtype=np.float64))
-    if len(c) < 4:
+    cls = _two_means(c)
+    return cls if cls is not None and _apart(c, cls, separation, QUANTUM) else None
+
+
+def brightness_classes(colors: np.ndarray, normals: np.ndarray) -> np.ndarray | None:
+    """Class (0/1) of each colour when their brightness forms two populations that do not overlap
+    (the darker one's 90th percentile below the brighter one's 10th), and points of the two that
+    face the same way differ by ``BRIGHTNESS_RATIO`` (:func:`_brighter_facing_alike`); else None.
+    ``normals``: the points' outward normals."""
+    t = _log_brightness(np.asarray(colors, dtype=np.float64))
+    cls = _two_means(t[:, None])
+    if cls is None:
         return None
-    centred = c - c.mean(axis=0)
+    lo, hi = (0, 1) if np.median(t[cls == 0]) < np.median(t[cls == 1]) else (1, 0)
+    if np.percentile(t[cls == lo], 90) >= np.percentile(t[cls == hi], 10):
+        return None
+    ok = _brighter_facing_alike(t[cls == lo], normals[cls == lo], t[cls == hi], normals[cls == hi])
+    return cls if ok else None
+
+
+def _two_means(values: np.ndarray) -> np.ndarray | None:
+    """Two-means classes (0/1) of ``values`` (N, D), from a split of their principal axis at the
+    mean (deterministic); None for fewer than 4 values or one class."""
+    if len(values) < 4:
+        return None
+    centred = values - values.mean(axis=0)
     axis = np.linalg.eigh(centred.T @ centred)[1][:, -1]
     cls = (centred @ axis > 0).astype(np.int64)
     for _ in range(10):
         if cls.min() == cls.max():
             return None
-        means = np.stack([c[cls == 0].mean(axis=0), c[cls == 1].mean(axis=0)])
-        new = (((c - means[1]) ** 2).sum(axis=1) < ((c - means[0]) ** 2).sum(axis=1)).astype(np.int64)
+        means = np.stack([values[cls == 0].mean(axis=0), values[cls == 1].mean(axis=0)])
+        new = (((values - means[1]) ** 2).sum(axis=1) < ((values - means[0]) ** 2).sum(axis=1)).astype(np.int64)
         if np.array_equal(new, cls):
             break
         cls = new
-    if cls.min() == cls.max():
-        return None
-    means = np.stack([c[cls == 0].mean(axis=0), c[cls == 1].mean(axis=0)])
+    return None if cls.min() == cls.max() else cls
+
+
+def _apart(values: np.ndarray, cls: np.ndarray, separation: float, quantum: float) -> bool:
+    """Whether the two classes' means are ``separation`` robust spreads (each at least ``quantum``)
+    apart along the line joining them."""
+    means = np.stack([values[cls == 0].mean(axis=0), values[cls == 1].mean(axis=0)])
     d = means[1] - means[0]
     gap = float(np.linalg.norm(d))
     if gap == 0.0:
-        return None
-    t = c @ (d / gap)
-    spread = max(QUANTUM, *(1.4826 * float(np.median(np.abs(t[cls == i] - np.median(t[cls == i])))) for i in (0, 1)))
-    return cls if gap >= separation * spread else None
+        return False
+    t = values @ (d / gap)
+    spread = max(quantum, *(1.4826 * float(np.median(np.abs(t[cls == i] - np.median(t[cls == i])))) for i in (0, 1)))
+    return gap >= separation * spread
+
+
+def _log_brightness(colors: np.ndarray) -> np.ndarray:
+    """Log of each colour's brightness (sum of channels, at least three 6-bit levels)."""
+    out: np.ndarray = np.log(np.maximum(colors.sum(axis=1), 3 * QUANTUM))
+    return out
+
+
+def _brighter_facing_alike(dark: np.ndarray, dark_normals: np.ndarray, bright: np.ndarray, bright_normals: np.ndarray) -> bool:
+    """Whether log brightnesses ``bright`` exceed ``dark`` by ``BRIGHTNESS_RATIO`` among points
+    that face the same ways: points of each are binned by the nearest of 26 directions to their
+    normal, and the facings where both sides' points differ that much hold at least
+    ``SHARED_FACING`` of each side (a lit top and a shaded side face different ways)."""
+    if len(dark) == 0 or len(bright) == 0:
+        return False
+    bins_d = np.argmax(dark_normals @ _FACINGS.T, axis=1)
+    bins_b = np.argmax(bright_normals @ _FACINGS.T, axis=1)
+    share_d = np.bincount(bins_d, minlength=len(_FACINGS)) / len(dark)
+    share_b = np.bincount(bins_b, minlength=len(_FACINGS)) / len(bright)
+    held_d = held_b = 0.0
+    for k in np.flatnonzero((share_d > 0) & (share_b > 0)):
+        if np.median(bright[bins_b == k]) - np.median(dark[bins_d == k]) >= np.log(BRIGHTNESS_RATIO):
+            held_d, held_b = held_d + share_d[k], held_b + share_b[k]
+    return min(held_d, held_b) >= SHARED_FACING
 
 
 def _unshaded(colors: np.ndarray) -> np.ndarray:
@@ -84,11 +145,15 @@ def _distinct(c1: np.ndarray, c2: np.ndarray, separation: float = SEPARATION) ->
     return gap >= separation * spread
 
 
-def _split_once(colors: np.ndarray, idx: np.ndarray, a: np.ndarray, b: np.ndarray, min_points: int) -> np.ndarray | None:
+def _split_once(colors: np.ndarray, normals: np.ndarray | None, idx: np.ndarray, a: np.ndarray, b: np.ndarray,
+                min_points: int) -> np.ndarray | None:
     """The points of ``idx`` (a cluster; ``a``, ``b`` its internal links as positions in ``idx``)
-    to give a new label: the largest connected piece of the colour class not holding the
-    cluster's largest piece, when both classes are coherent pieces of at least ``min_points``."""
+    to give a new label: the largest connected piece of the colour (else, given ``normals``, the
+    brightness) class not holding the cluster's largest piece, when both classes are coherent
+    pieces of at least ``min_points``."""
     cls = colour_classes(colors[idx])
+    if cls is None and normals is not None:
+        cls = brightness_classes(colors[idx], normals[idx])
     if cls is None:
         return None
     same = cls[a] == cls[b]
@@ -105,10 +170,13 @@ def _split_once(colors: np.ndarray, idx: np.ndarray, a: np.ndarray, b: np.ndarra
     return np.flatnonzero(piece == minor)
 
 
-def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_points: int) -> np.ndarray:
+def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_points: int,
+                    normals: np.ndarray | None = None) -> np.ndarray:
     """Cluster labels (>= 0; -1 none) with every cluster of two colour objects split (again and
     again: three objects in one cluster), then each piece left by a split joined to the touching
-    cluster (linked by ``a``, ``b``) it cannot be told from by colour, most links first."""
+    cluster (linked by ``a``, ``b``) it cannot be told from by colour, most links first.
+    Given the points' outward ``normals``, two brightnesses of one hue count as two colours
+    where they differ among points facing alike."""
     out = labels.copy()
     queue = sorted(np.unique(out[out >= 0]).tolist())
     touched: set[int] = set()
@@ -121,17 +189,18 @@ def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np
         pos = np.full(len(out), -1, dtype=np.int64)
         pos[idx] = np.arange(len(idx))
         inside = (pos[a] >= 0) & (pos[b] >= 0)
-        new = _split_once(colors, idx, pos[a[inside]], pos[b[inside]], min_points)
+        new = _split_once(colors, normals, idx, pos[a[inside]], pos[b[inside]], min_points)
         if new is None:
             continue
         out[idx[new]] = nxt
         touched.update((k, nxt))
         queue += [k, nxt]
         nxt += 1
-    return _rejoin(colors, out, a, b, touched)
+    return _rejoin(colors, normals, out, a, b, touched)
 
 
-def _rejoin(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np.ndarray, touched: set[int]) -> np.ndarray:
+def _rejoin(colors: np.ndarray, normals: np.ndarray | None, labels: np.ndarray, a: np.ndarray, b: np.ndarray,
+            touched: set[int]) -> np.ndarray:
     """Join each cluster of ``touched`` to linked clusters of one colour with it (most links first)."""
     if not touched:
         return labels
@@ -146,14 +215,22 @@ def _rejoin(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np.ndarray
             x = parent[x]
         return x
 
-    unshaded = _unshaded(colors)
+    unshaded, logb = _unshaded(colors), _log_brightness(colors)
     for i in np.argsort(-counts, kind="stable"):
         p, q = int(pairs[i, 0]), int(pairs[i, 1])
         if p not in touched and q not in touched:
             continue
         rp, rq = find(p), find(q)
-        if rp != rq and not _distinct(unshaded[_members(labels, parent, find, rp)], unshaded[_members(labels, parent, find, rq)]):
-            parent[rq] = rp
+        if rp == rq:
+            continue
+        mp, mq = _members(labels, parent, find, rp), _members(labels, parent, find, rq)
+        if _distinct(unshaded[mp], unshaded[mq]):
+            continue
+        if normals is not None:
+            dark, bright = (mp, mq) if np.median(logb[mp]) < np.median(logb[mq]) else (mq, mp)
+            if _brighter_facing_alike(logb[dark], normals[dark], logb[bright], normals[bright]):
+                continue
+        parent[rq] = rp
     out = labels.copy()
     valid = out >= 0
     out[valid] = [find(int(k)) for k in out[valid]]

@@ -419,7 +419,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
                             stand_height=params.stack_min_height)
             obj_labels[ids] = cut_contacts(points[ids], point_normals, height[ids], obj_labels[ids], la, lb, cut)
         if colors is not None:  # where no fold is seen (or cut), the colours tell touching objects apart
-            obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points)
+            obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points,
+                                              patch_normals if point_normals is None else point_normals)
         obj_labels[ids] = split_resting(points[ids], patch_normals if point_normals is None else point_normals,
                                         obj_labels[ids], la, lb, working, params.min_object_points, params.min_object_size)
         obj_labels[ids] = _join_footprints(points[ids], obj_labels[ids], support[ids], height[ids], params, working)
