@@ -126,24 +126,26 @@ def test_truncated_usd_is_an_input_error(tmp_path: Path, suffix: str) -> None:
         read_usd_mesh(path)
 
 
-def _counter_under_wall(seed: int = 0) -> np.ndarray:
+def _counter_under_wall(seed: int = 0, ledge_width: float = 0.08, noise: float = 0.001) -> np.ndarray:
     """A 1.5 x 0.6 m counter top at 0.9 m, a 3 m wide wall behind it (larger than the counter,
-    from 0.85 to 1.65 m, its 8 cm top a ledge) and a 10 cm box on the counter; no floor."""
+    from 0.85 to 1.65 m, its top a ledge ``ledge_width`` wide) and a 10 cm box on the counter; no floor."""
     rng = np.random.default_rng(seed)
     top = np.c_[rng.uniform([-0.75, -0.3], [0.75, 0.3], (9000, 2)), np.full(9000, 0.9)]
     wall = np.c_[rng.uniform(-1.5, 1.5, 24000), np.full(24000, 0.32), rng.uniform(0.85, 1.65, 24000)]
-    ledge = np.c_[rng.uniform([-1.5, 0.32], [1.5, 0.4], (2400, 2)), np.full(2400, 1.65)]
+    ledge = np.c_[rng.uniform([-1.5, 0.32], [1.5, 0.32 + ledge_width], (2400, 2)), np.full(2400, 1.65)]
     box = rng.uniform([0, -0.1, 0.9], [0.1, 0.0, 1.0], (3000, 3))
-    return np.vstack([top, wall, ledge, box]) + rng.normal(0, 0.001, (38400, 3))
+    return np.vstack([top, wall, ledge, box]) + rng.normal(0, noise, (38400, 3))
 
 
-def test_counter_under_a_wall_without_floor_is_up_and_alone(tmp_path: Path) -> None:
+@pytest.mark.parametrize(("ledge_width", "noise"), [(0.08, 0.001), (0.1, 0.005)])
+def test_counter_under_a_wall_without_floor_is_up_and_alone(tmp_path: Path, ledge_width: float, noise: float) -> None:
     """The wall is the largest plane, yet the box rests on the counter: +z is up; the wall's top is
-    a ledge 8 cm wide, not a support 0.75 m over a 'floor' (the counter taken for the floor)."""
+    a ledge 8-10 cm wide, not a support 0.75 m over a 'floor' (the counter taken for the floor),
+    also where 5 mm noise scatters its edge points a centimetre or two past it."""
     from realsim.perception.planes import detect_planes
 
     (tmp_path / "cap").mkdir()
-    _write_ply_double(tmp_path / "cap" / "scene.ply", _counter_under_wall())
+    _write_ply_double(tmp_path / "cap" / "scene.ply", _counter_under_wall(ledge_width=ledge_width, noise=noise))
     (tmp_path / "cap" / "capture.yaml").write_text("support_height: 0.9\n")
     scene = detect_planes(load_capture(tmp_path / "cap"))
     assert scene.capture.up == "+z"

@@ -294,7 +294,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan; "
                          "check --up and --units")
     supports.sort(key=lambda r: r[0])
-    supports = supports[:1] + [s for s in supports[1:] if np.min(polygon_and_rectangle(s[1][:, :2])[2]) >= params.min_support_width]
+    supports = supports[:1] + [s for s in supports[1:] if _width(s[1][:, :2]) >= params.min_support_width]
     supports = _drop_object_tops(supports, params)
     planes, shift = _place_floor(scene, supports, params)
     _warn_implausible(scene, planes, params)
@@ -302,6 +302,16 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     scene.planes = planes
     _apply_rigid(scene, rotation, np.array([offset[0], offset[1], shift]))
     return scene
+
+
+def _width(xy: np.ndarray) -> float:
+    """Width of a surface's points: across the narrower side of their minimal rectangle, between
+    the 1st and 99th percentiles (the few points noise scatters past its edges do not widen a ledge)."""
+    _, _, size, yaw = polygon_and_rectangle(xy)
+    across = yaw + (0.0 if size[0] <= size[1] else np.pi / 2)
+    t = xy @ np.array([np.cos(across), np.sin(across)])
+    lo, hi = np.percentile(t, [1, 99])
+    return float(hi - lo)
 
 
 def at_resolution(params: PlaneParams, resolution: float) -> PlaneParams:
