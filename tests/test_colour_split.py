@@ -137,3 +137,43 @@ def test_a_lit_top_and_shaded_sides_of_one_box_are_one_object() -> None:
     assert brightness_classes(colors, normals) is None
     a, b = _links(points)
     assert np.all(split_by_colour(colors, np.zeros(len(points), np.int64), a, b, min_points=10, normals=normals) == 0)
+
+
+def _box_normals(points: np.ndarray, lo: tuple[float, float, float], hi: tuple[float, float, float]) -> np.ndarray:
+    """Outward normals of points on a box's faces (its top and four sides)."""
+    normals = np.zeros_like(points)
+    normals[np.isclose(points[:, 2], hi[2]), 2] = 1.0
+    for axis in (0, 1):
+        normals[np.isclose(points[:, axis], lo[axis]), :] = -np.eye(3)[axis]
+        normals[np.isclose(points[:, axis], hi[axis]), :] = np.eye(3)[axis]
+    return normals
+
+
+def test_in_a_view_a_print_on_one_surface_stays_and_a_folded_contact_splits() -> None:
+    """Pixels show a print's edge as sharply as an object's: a box printed half red, half green is
+    one object in a view (its colour border crosses flat faces), while a red box against a lower
+    green one splits (their border is the concave step where they meet)."""
+    lo, hi = (0.0, 0.0, 0.0), (0.2, 0.1, 0.1)
+    box = _box_surface(lo, hi, 0.006, 7)
+    normals = _box_normals(box, lo, hi)
+    printed = np.where((box[:, 0] < 0.1)[:, None], (0.75, 0.18, 0.13), (0.2, 0.65, 0.3))
+    a, b = _links(box)
+    zero = np.zeros(len(box), np.int64)
+    assert len(np.unique(split_by_colour(printed, zero, a, b, 10))) == 2  # colour alone: two
+    assert np.all(split_by_colour(printed, zero, a, b, 10, normals, view_points=box) == 0)
+
+    low_lo, low_hi = (0.1, 0.0, 0.0), (0.2, 0.1, 0.05)
+    tall, low = _box_surface(lo, (0.1, 0.1, 0.1), 0.006, 8), _box_surface(low_lo, low_hi, 0.006, 9)
+    tall, low = tall[tall[:, 0] < 0.1 - 1e-9], low[low[:, 0] > 0.1 + 1e-9]  # their touching faces are hidden
+    points = np.vstack([tall, low])
+    normals = np.vstack([_box_normals(tall, lo, (0.1, 0.1, 0.1)), _box_normals(low, low_lo, low_hi)])
+    step = np.c_[np.full(300, 0.1), np.random.default_rng(10).uniform([0.0, 0.05], [0.1, 0.1], (300, 2))]
+    points = np.vstack([points, step])  # the tall box's side above the low one, facing +x
+    normals = np.vstack([normals, np.tile((1.0, 0.0, 0.0), (300, 1))])
+    colors = np.vstack([np.tile((0.75, 0.18, 0.13), (len(tall), 1)), np.tile((0.2, 0.65, 0.3), (len(low), 1)),
+                        np.tile((0.75, 0.18, 0.13), (300, 1))])
+    truth = np.r_[np.zeros(len(tall), np.int64), np.ones(len(low), np.int64), np.zeros(300, np.int64)]
+    a, b = _links(points)
+    out = split_by_colour(colors, np.zeros(len(points), np.int64), a, b, 10, normals, view_points=points)
+    assert len(np.unique(out)) == 2
+    assert np.bincount(out[truth == 0]).argmax() != np.bincount(out[truth == 1]).argmax()

@@ -15,6 +15,11 @@ Two colours of one hue (a white mug against a black bottle) differ only in brigh
 do the lit and the shaded faces of one box. Light depends on which way a surface faces; a
 material's brightness does not: two brightness populations are two objects only where points
 of both that face the same way still differ that much.
+
+In a camera view the pixels are fine enough to show a print's edge as sharply as an object's,
+but also to show where a surface folds or breaks: there, a split is kept only where its
+border is a fold or a depth break along most of it (two objects meet so; a print lies on one
+smooth surface).
 """
 
 from __future__ import annotations
@@ -24,6 +29,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from realsim.perception.contact_cut import CutParams, concave_link_weights
 from realsim.perception.supervoxels import link_components
 
 __all__ = ["brightness_classes", "colour_classes", "split_by_colour"]
@@ -32,6 +38,7 @@ QUANTUM = 1.0 / 64  # a colour difference of one 6-bit level (a phone's coarse c
 SEPARATION = 6.0  # two populations whose means are this many robust spreads apart are two colours
 COHERENT = 0.6  # the largest connected piece of a colour holds at least this share of it
 BRIGHTNESS_RATIO = 2.0  # two shades of one hue are two materials only when one is this much brighter
+MAX_SMOOTH_BORDER = 0.5  # in a view, a split's border links weigh at most this on average (mostly folded)
 SHARED_FACING = 0.3  # ... among points of both facing the same ways, at least this share of each
 _STEPS = np.array([d for d in itertools.product((-1, 0, 1), repeat=3) if any(d)], dtype=np.float64)
 _FACINGS = _STEPS / np.linalg.norm(_STEPS, axis=1, keepdims=True)  # 26 directions a surface can face
@@ -146,11 +153,11 @@ def _distinct(c1: np.ndarray, c2: np.ndarray, separation: float = SEPARATION) ->
 
 
 def _split_once(colors: np.ndarray, normals: np.ndarray | None, idx: np.ndarray, a: np.ndarray, b: np.ndarray,
-                min_points: int) -> np.ndarray | None:
+                min_points: int, points: np.ndarray | None) -> np.ndarray | None:
     """The points of ``idx`` (a cluster; ``a``, ``b`` its internal links as positions in ``idx``)
     to give a new label: the largest connected piece of the colour (else, given ``normals``, the
     brightness) class not holding the cluster's largest piece, when both classes are coherent
-    pieces of at least ``min_points``."""
+    pieces of at least ``min_points`` (and, given ``points``, the piece's border folds)."""
     cls = colour_classes(colors[idx])
     if cls is None and normals is not None:
         cls = brightness_classes(colors[idx], normals[idx])
@@ -167,16 +174,29 @@ def _split_once(colors: np.ndarray, normals: np.ndarray | None, idx: np.ndarray,
             return None
         best.append((int(counts[top]), top))
     minor = min(best)[1]
+    if points is not None and normals is not None and not _folded_border(points[idx], normals[idx], piece == minor, a, b):
+        return None
     return np.flatnonzero(piece == minor)
 
 
+def _folded_border(points: np.ndarray, normals: np.ndarray, side: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the links (a, b) across the border of ``side`` fold inward (LCCP, see
+    :func:`realsim.perception.contact_cut.concave_link_weights`) along most of it."""
+    across = side[a] != side[b]
+    if not across.any():
+        return False
+    smooth = concave_link_weights(points, normals, a[across], b[across], CutParams().fold_angle)
+    return bool(smooth.mean() <= MAX_SMOOTH_BORDER)
+
+
 def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np.ndarray, min_points: int,
-                    normals: np.ndarray | None = None) -> np.ndarray:
+                    normals: np.ndarray | None = None, view_points: np.ndarray | None = None) -> np.ndarray:
     """Cluster labels (>= 0; -1 none) with every cluster of two colour objects split (again and
     again: three objects in one cluster), then each piece left by a split joined to the touching
     cluster (linked by ``a``, ``b``) it cannot be told from by colour, most links first.
     Given the points' outward ``normals``, two brightnesses of one hue count as two colours
-    where they differ among points facing alike."""
+    where they differ among points facing alike; given a camera view's ``view_points`` (with
+    ``normals``), a split is kept only where its border folds (:func:`_folded_border`)."""
     out = labels.copy()
     queue = sorted(np.unique(out[out >= 0]).tolist())
     touched: set[int] = set()
@@ -189,7 +209,7 @@ def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np
         pos = np.full(len(out), -1, dtype=np.int64)
         pos[idx] = np.arange(len(idx))
         inside = (pos[a] >= 0) & (pos[b] >= 0)
-        new = _split_once(colors, normals, idx, pos[a[inside]], pos[b[inside]], min_points)
+        new = _split_once(colors, normals, idx, pos[a[inside]], pos[b[inside]], min_points, view_points)
         if new is None:
             continue
         out[idx[new]] = nxt

@@ -410,6 +410,9 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
+        if colors is not None:  # touching objects of two colours that meet in a fold
+            obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points, normals[ids],
+                                              view_points=points[ids])
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
         patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
         assert patch_normals is not None  # given normals, _with_known returns normals
