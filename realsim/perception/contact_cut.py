@@ -28,7 +28,7 @@ from scipy.spatial import cKDTree
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle
 from realsim.perception.object_relations import base_height
 
-__all__ = ["CutParams", "concave_link_weights", "cut_contacts", "section_ratio"]
+__all__ = ["CutParams", "concave_link_weights", "cut_contacts", "section_ratio", "supported"]
 
 EIGEN_TOL = 1e-6  # relative accuracy of the Fiedler vector
 LINK_FLOOR = EIGEN_TOL  # a link lighter than this holds nothing the eigen solver can tell from no link
@@ -84,7 +84,7 @@ def _extent(points: np.ndarray) -> float:
     return float(np.max(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
 
 
-def _supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
+def supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
     """Whether the points ``side`` can be an object of their own: they stand on the support, or
     they rest on the rest: the points where they meet it (``contact``) lie in their lowest part
     (a handle meets its body at both ends, a stacked can at its bottom) and that lowest part lies
@@ -231,7 +231,7 @@ def _best_cut(n: int, a: np.ndarray, b: np.ndarray, w: np.ndarray, points: np.nd
             continue  # no clear fold, and one side goes on as narrow as the cut: a body's own neck
         contact = np.zeros(n, dtype=bool)
         contact[a[crossing]] = contact[b[crossing]] = True
-        if _supported(points, height, side, contact, params) and _supported(points, height, ~side, contact, params):
+        if supported(points, height, side, contact, params) and supported(points, height, ~side, contact, params):
             return side
     return None
 

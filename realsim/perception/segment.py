@@ -22,6 +22,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from realsim.geometry import inside_convex_polygon
+from realsim.perception.attached_parts import join_attached_parts
 from realsim.perception.backdrop_patch import continues_backdrop
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
@@ -433,6 +434,11 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
         labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params)
         support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+        joined = join_attached_parts(points, labels, height, a, b, resting_on, params.stack_min_height)
+        if not np.array_equal(joined, labels):  # a handle or a container's inside is its body's
+            labels = _ordered(points, np.where(joined > 0, joined, -1)).astype(np.int32)
+            labels[joined == 0] = 0
+            support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
 
 
