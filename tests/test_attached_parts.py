@@ -1,12 +1,13 @@
 """Attached parts: a handle meeting its body along its height joins the body; a box resting on
-another at its own foot stays an object of its own."""
+another at its own foot, or standing behind a nearer one that hides its foot, stays an object."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from realsim.perception.attached_parts import join_attached_parts
-from realsim.perception.supervoxels import knn_links
+
+ALONG_Y = np.array([0.0, 1.0, 0.0])  # the camera looks along +y
 
 
 def _block(lo: tuple[float, float, float], hi: tuple[float, float, float], spacing: float) -> np.ndarray:
@@ -16,10 +17,10 @@ def _block(lo: tuple[float, float, float], hi: tuple[float, float, float], spaci
 
 
 def _join(parts: list[np.ndarray], resting_on: dict[int, int | None]) -> tuple[np.ndarray, np.ndarray]:
+    """Join the parts (labels 1, 2, ...), their points taken as a one-row image (no pixel under another)."""
     points = np.vstack(parts)
     labels = np.concatenate([np.full(len(p), k + 1, dtype=np.int32) for k, p in enumerate(parts)])
-    a, b = knn_links(points, np.ones(len(points), dtype=bool), 8)
-    return join_attached_parts(points, labels, points[:, 2], a, b, resting_on, stand_height=0.015), labels
+    return join_attached_parts(points, labels, points[:, 2], resting_on, 0.015, 0.016, 0.008, ALONG_Y, (1, len(points))), labels
 
 
 def test_a_handle_joins_its_body() -> None:
@@ -37,4 +38,34 @@ def test_a_box_resting_on_a_box_stays() -> None:
     base = _block((0.0, 0.0, 0.0), (0.2, 0.2, 0.06), 0.01)
     top = _block((0.05, 0.05, 0.07), (0.12, 0.12, 0.14), 0.01)
     out, labels = _join([base, top], {1: None, 2: 1})
+    assert np.array_equal(out, labels)
+
+
+def test_a_floating_handle_joins_the_body_it_touches() -> None:
+    """A handle with nothing under it (its body is beside it, not below) joins the body it touches."""
+    body = _block((0.0, 0.0, 0.0), (0.1, 0.1, 0.12), 0.01)
+    handle = _block((0.11, 0.04, 0.03), (0.13, 0.06, 0.1), 0.01)
+    out, _ = _join([body, handle], {1: None, 2: None})
+    assert np.all(out == 1)
+
+
+def _depth_image(boxes: list[tuple[tuple[float, float], tuple[float, float], float]], cell: float = 0.01
+                 ) -> tuple[np.ndarray, np.ndarray, tuple[int, int]]:
+    """An orthographic view along +y of box faces (x range, z range, depth y), the first box in
+    front: per pixel its point and box label (0 none)."""
+    xs, zs = np.arange(0.0, 0.2 + 1e-9, cell), np.arange(0.0, 0.2 + 1e-9, cell)
+    grid = np.zeros((len(zs), len(xs)), dtype=np.int32)
+    depth = np.zeros_like(grid, dtype=np.float64)
+    for k, ((x0, x1), (z0, z1), y) in reversed(list(enumerate(boxes))):
+        inside = (xs[None, :] >= x0 - 1e-9) & (xs[None, :] <= x1 + 1e-9) & (zs[:, None] >= z0 - 1e-9) & (zs[:, None] <= z1 + 1e-9)
+        grid[inside], depth[inside] = k + 1, y
+    zz, xx = np.meshgrid(zs, xs, indexing="ij")
+    return np.stack([xx, depth, zz], axis=-1).reshape(-1, 3), grid.ravel(), grid.shape
+
+
+def test_an_object_whose_foot_a_nearer_one_hides_stays() -> None:
+    """A box behind a larger one, seen only above it: it floats in the view and its points come
+    within reach of the nearer box, yet that box hides its foot: no part of it."""
+    points, labels, shape = _depth_image([((0.0, 0.2), (0.0, 0.12), 0.0), ((0.05, 0.1), (0.0, 0.16), 0.012)])
+    out = join_attached_parts(points, labels, points[:, 2], {1: None, 2: None}, 0.015, 0.016, 0.008, ALONG_Y, shape)
     assert np.array_equal(out, labels)

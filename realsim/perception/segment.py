@@ -434,7 +434,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
         labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params)
         support_of, resting_on = support_relations(points, labels, support, height, planes, params)
-        joined = join_attached_parts(points, labels, height, a, b, resting_on, params.stack_min_height)
+        joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
+                                     params.jump_distance, axis, grid_shape)
         if not np.array_equal(joined, labels):  # a handle or a container's inside is its body's
             labels = _ordered(points, np.where(joined > 0, joined, -1)).astype(np.int32)
             labels[joined == 0] = 0
