@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from realsim.perception.unique_keys import distinct_rows, unique_inverse
+from realsim.perception.unique_keys import distinct_rows, first_rows, unique_inverse
 
 
 @pytest.mark.parametrize(("n", "low", "high", "dtype"), [
@@ -38,3 +38,12 @@ def test_distinct_rows(spread: int) -> None:
     cells[::3] = cells[1::3][: len(cells[::3])]  # repeated rows
     assert distinct_rows(cells) == len(np.unique(cells, axis=0))
     assert distinct_rows(cells[:0]) == 0
+
+
+@pytest.mark.parametrize("spread", [5, 10**6, 2**40])
+def test_first_rows(spread: int) -> None:
+    rng = np.random.default_rng(spread)
+    cells = rng.integers(-spread, spread, (20_000, 3), dtype=np.int64)
+    cells[::3] = cells[1::3][: len(cells[::3])]  # repeated rows: the first of each is kept
+    np.testing.assert_array_equal(first_rows(cells), np.sort(np.unique(cells, axis=0, return_index=True)[1]))
+    assert len(first_rows(cells[:0])) == 0

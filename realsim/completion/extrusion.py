@@ -13,6 +13,7 @@ from scipy.spatial import QhullError
 
 from realsim.completion.hull import fast_hull, trimesh_hull
 from realsim.completion.neighbours import clip_convex
+from realsim.perception.unique_keys import first_rows
 
 
 def complete_hull(points: np.ndarray, base_z: float, top_z: float, fast: bool = False,
@@ -54,8 +55,7 @@ def complete_slabs(points: np.ndarray, base_z: float, top_z: float, slab: float,
     floor = floors[low] if floors is not None else np.full(len(kept), base_z)
     if len(kept) < 60:
         return None
-    _, first = np.unique(np.floor(kept / 0.003).astype(np.int64), axis=0, return_index=True)
-    one = np.sort(first)  # one point per 3 mm cell: the hulls need no more
+    one = first_rows(np.floor(kept / 0.003).astype(np.int64))  # one point per 3 mm cell: the hulls need no more
     kept, droppable, floor = kept[one], droppable[one], floor[one]
     xy = kept[:, :2] - kept[:, :2].mean(axis=0)
     _, _, vt = np.linalg.svd(xy, full_matrices=False)

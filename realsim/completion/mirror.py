@@ -7,6 +7,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
+from realsim.perception.unique_keys import distinct_rows
 
 
 def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams,
@@ -157,5 +158,5 @@ def _top_face_seen(top: np.ndarray, d: np.ndarray, depth: float, cell: float = 0
         area = float(ConvexHull(top[:, :2]).volume)
     except QhullError:
         return False
-    cells = len(np.unique(np.floor(top[:, :2] / cell).astype(np.int64), axis=0))
+    cells = distinct_rows(np.floor(top[:, :2] / cell).astype(np.int64))
     return cells * cell * cell >= 0.6 * area

@@ -41,18 +41,33 @@ def unique_inverse(keys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return uniq, inverse
 
 
+def _row_keys(cells: np.ndarray) -> np.ndarray | None:
+    """One int64 key per row of the (N, D) integer grid ``cells``, equal exactly for equal rows (the
+    rows' mixed-radix numbers over their ranges); None when the ranges do not fit an int64 together."""
+    lo, hi = cells.min(axis=0).astype(object), cells.max(axis=0).astype(object)
+    spans = [int(h) - int(low) + 1 for low, h in zip(lo, hi)]
+    if cells.dtype.kind not in "iu" or int(np.prod(np.array(spans, dtype=object))) >= 1 << 62:
+        return None
+    flat = np.zeros(len(cells), dtype=np.int64)
+    for d, span in enumerate(spans):
+        flat *= span
+        flat += cells[:, d].astype(np.int64) - int(lo[d])
+    return flat
+
+
 def distinct_rows(cells: np.ndarray) -> int:
     """``len(np.unique(cells, axis=0))`` for (N, D) integer grid cells, by one flat key per row
     when the cells' ranges fit an int64 together (numpy's row unique sorts a structured view)."""
     cells = np.asarray(cells)
     if len(cells) == 0:
         return 0
-    lo, hi = cells.min(axis=0).astype(object), cells.max(axis=0).astype(object)
-    spans = [int(h) - int(low) + 1 for low, h in zip(lo, hi)]
-    if cells.dtype.kind not in "iu" or int(np.prod(np.array(spans, dtype=object))) >= 1 << 62:
-        return len(np.unique(cells, axis=0))
-    flat = np.zeros(len(cells), dtype=np.int64)
-    for d, span in enumerate(spans):
-        flat *= span
-        flat += cells[:, d].astype(np.int64) - int(lo[d])
-    return len(np.unique(flat))
+    keys = _row_keys(cells)
+    return len(np.unique(cells, axis=0)) if keys is None else len(np.unique(keys))
+
+
+def first_rows(cells: np.ndarray) -> np.ndarray:
+    """The index of each distinct row's first occurrence in the (N, D) integer grid ``cells``, ascending:
+    ``np.sort(np.unique(cells, axis=0, return_index=True)[1])``, by one flat key per row when it fits."""
+    cells = np.asarray(cells)
+    keys = _row_keys(cells) if len(cells) else None
+    return np.sort(np.unique(cells if keys is None else keys, axis=0, return_index=True)[1])
