@@ -56,7 +56,8 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
     tree = cKDTree(pts[:, :2])
     for o in range(1, k + 1):
         m = members[o - 1]
-        plane_idx = int(np.bincount(support[obj[m]]).argmax())
+        under = support[obj[m]]
+        plane_idx = int(np.bincount(under[under >= 0]).argmax())  # a container's claimed floor has no support of its own
         support_of[o] = planes[plane_idx].id
         if base[o - 1] < params.stack_min_height:
             continue

@@ -26,6 +26,7 @@ from realsim.perception.attached_parts import join_attached_parts
 from realsim.perception.backdrop_patch import continues_backdrop
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
+from realsim.perception.container_floor import claim_enclosed_floors
 from realsim.perception.container_inside import join_insides
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.in_front import in_front
@@ -440,7 +441,22 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             labels = _ordered(points, np.where(joined > 0, joined, -1)).astype(np.int32)
             labels[joined == 0] = 0
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+        claimed = claim_enclosed_floors(labels, points, _on_supports(points, labels, planes, params), grid_shape)
+        if not np.array_equal(claimed, labels):  # a container's floor, seen through its opening
+            labels = claimed
+            support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _on_supports(points: np.ndarray, labels: np.ndarray, planes: list[SupportPlane], params: SegmentParams) -> np.ndarray:
+    """Mask of the unlabelled points within ``min_height`` of an observed support's top, inside its polygon."""
+    out = np.zeros(len(points), dtype=bool)
+    for plane in planes:
+        if plane.observed:
+            with np.errstate(invalid="ignore"):
+                near = np.flatnonzero((labels == 0) & (np.abs(points[:, 2] - plane.height) <= params.min_height))
+            out[near[inside_convex_polygon(points[near, :2], plane.polygon, params.polygon_margin)]] = True
+    return out
 
 
 def _drop_backdrop_patches(points: np.ndarray, labels: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray,
@@ -453,11 +469,7 @@ def _drop_backdrop_patches(points: np.ndarray, labels: np.ndarray, grid_shape: t
     normals = grid_normals(points, valid, grid_shape, params.normal_window, params.jump_distance)
     a, b = grid_links(valid, grid_shape)
     behind = labels.copy()
-    for plane in planes:
-        if plane.observed:
-            with np.errstate(invalid="ignore"):
-                near = np.flatnonzero((labels == 0) & (np.abs(points[:, 2] - plane.height) <= params.min_height))
-            behind[near[inside_convex_polygon(points[near, :2], plane.polygon, params.polygon_margin)]] = -1
+    behind[_on_supports(points, labels, planes, params)] = -1
     patch = continues_backdrop(behind, a, b, points @ axis, normals, params.jump_distance, params.convex_tolerance,
                                params.backdrop_share)
     if not patch.any():
