@@ -17,6 +17,7 @@ from scipy.spatial import cKDTree
 
 from realsim.perception.contact_cut import CutParams, supported
 from realsim.perception.object_relations import base_height
+from realsim.perception.supervoxels import grid_links
 
 __all__ = ["join_attached_parts"]
 
@@ -43,7 +44,10 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         return o
 
     out = labels.copy()
-    for o in sorted(resting_on):
+    links = grid_links(np.isfinite(points).all(axis=1), grid_shape)
+    with np.errstate(invalid="ignore"):  # lowest first: a base's pieces join before what stands on it is judged
+        level = {o: float(np.nanmedian(height[labels == o])) if (labels == o).any() else np.inf for o in resting_on}
+    for o in sorted(resting_on, key=lambda k: (level[k], k)):
         mine = out == o
         if not mine.any() or base_height(height[mine]) <= stand_height:
             continue
@@ -57,10 +61,7 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
             continue
         group = np.flatnonzero(mine | theirs)
         side = mine[group]
-        contact = np.zeros(len(group), dtype=bool)
-        for near, far in ((side, ~side), (~side, side)):
-            dist, _ = cKDTree(points[group[far]]).query(points[group[near]], distance_upper_bound=reach)
-            contact[np.flatnonzero(near)[np.isfinite(dist)]] = True
+        contact = _contact(points, group, side, links, reach)
         if not contact[side].any() or not contact[~side].any():
             continue
         if floating and _foot_hidden(height, points @ view_axis, out, o, grid_shape, jump):
@@ -69,6 +70,27 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
             out[mine] = body
             root[o] = body
     return out
+
+
+def _contact(points: np.ndarray, group: np.ndarray, side: np.ndarray, links: tuple[np.ndarray, np.ndarray],
+             reach: float) -> np.ndarray:
+    """Mask over ``group`` of the points where its two ``side``s meet: the ends of neighbouring
+    pixel pairs across them no farther apart than ``reach`` (m), or, where the image shows no such
+    pair (a handle's ends hidden behind its body), the points within ``reach`` of the other side."""
+    local = np.full(len(points), -1, dtype=np.int64)
+    local[group] = np.arange(len(group))
+    la, lb = local[links[0]], local[links[1]]
+    both = (la >= 0) & (lb >= 0)
+    la, lb = la[both], lb[both]
+    across = (side[la] != side[lb]) & (np.linalg.norm(points[group[la]] - points[group[lb]], axis=1) <= reach)
+    contact = np.zeros(len(group), dtype=bool)
+    contact[la[across]] = contact[lb[across]] = True
+    if contact.any():
+        return contact
+    for near, far in ((side, ~side), (~side, side)):
+        dist, _ = cKDTree(points[group[far]]).query(points[group[near]], distance_upper_bound=reach)
+        contact[np.flatnonzero(near)[np.isfinite(dist)]] = True
+    return contact
 
 
 def _foot_hidden(height: np.ndarray, depth: np.ndarray, labels: np.ndarray, o: int, shape: tuple[int, int],
