@@ -136,6 +136,15 @@ def test_user_program_runs_in_the_sim(scene: Path, tmp_path: Path) -> None:
     assert rec.output and rec.calls[0]["success"]
 
 
+def test_a_place_that_already_holds_moves_nothing(scene: Path) -> None:
+    sim = Sim.load(scene)
+    rec = run_program(sim, "place_in('obj2_mug', 'obj1_bowl')\nplace_in('obj2_mug', 'obj1_bowl')\n")
+    first, again = rec.calls
+    assert first["success"] and first["sim_time"] > 0.5 and "already" not in first["reason"]
+    assert again["success"] and again["sim_time"] == 0 and "already rests there" in again["reason"]
+    assert rec.success
+
+
 def test_impossible_request_goal_not_met(scene: Path, tmp_path: Path, capsys) -> None:
     log = tmp_path / "fail.json"
     code, out, err = _run(capsys, str(scene), "push the mug 1 m forward", "--planner", "rules", "--log", str(log))

@@ -137,9 +137,11 @@ PRIMITIVES: tuple[Primitive, ...] = (
     Primitive("place", (_OBJ, Param("pos", "point")), "carry `obj` (grasping it first if needed) so its centre is over\n"
               "pos = [x, y, z] (m), lower it until it rests on whatever is below, release it, retreat.\n"
               "z only needs to be roughly right: the object is lowered until contact."),
-    Primitive("place_on", (_OBJ, Param("target", "object")), "put `obj` on top of the object `target` (stacking, a plate, a box)."),
+    Primitive("place_on", (_OBJ, Param("target", "object")), "put `obj` on top of the object `target` (stacking, a plate, a box);\n"
+              "nothing moves when it already rests there."),
     Primitive("place_in", (_OBJ, Param("container", "object")),
-              "put `obj` inside the open container `container` (bowl, basket, bin)."),
+              "put `obj` inside the open container `container` (bowl, basket, bin);\n"
+              "nothing moves when it already rests there."),
     Primitive("place_beside", (_OBJ, Param("ref", "object"), Param("side", "side", '"next"')),
               "put `obj` on the table beside `ref`; `side` is \"next\" (any free\n"
               "side), \"left\", \"right\", \"front\" (toward the robot) or \"behind\" (away from it), as seen from the\n"

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from realsim.planner import primitives
+from realsim.planner import primitives, relations
 from realsim.planner.goals import DIRECTIONS, direction_in_world
 from realsim.robot.ik import mat_to_quat
 from realsim.robot.robot import ActionResult, Robot
@@ -140,6 +140,17 @@ class ProgramAPI:
             return None
         return ActionResult(name, False, f"could not grasp {obj}: {res.reason}", sim_time=res.sim_time, attempts=res.attempts)
 
+    def _already(self, obj: str, target: str, name: str, relation: Callable[..., relations.Relation]) -> ActionResult | None:
+        """A place whose end state already holds (``obj`` rests ``relation`` ``target`` and is not in
+        the hand) does nothing: "put the block on the box" when it lies there moves nothing."""
+        if self.robot.held == obj:
+            return None
+        rel = relation(self.robot.object_points(obj), self.robot.object_points(target), self.robot.geometry.touching(obj), target)
+        if not rel.ok:
+            return None
+        res = self._record(ActionResult(name, True, f"{obj} already rests there: {rel.measured}"), f"{name}({obj!r}, {target!r})")
+        return self._placed(res, obj, target)
+
     def place(self, obj: str, pos: Sequence[float]) -> ActionResult:
         obj = self._obj(obj)
         p = _vec(pos, 3, "pos")
@@ -151,6 +162,8 @@ class ProgramAPI:
 
     def place_on(self, obj: str, target: str) -> ActionResult:
         obj, target = self._obj(obj), self._obj(target)
+        if (done := self._already(obj, target, "place_on", relations.on)) is not None:
+            return done
         fail = self._ensure_held(obj, "place_on")
         if fail is not None:
             return fail
@@ -158,6 +171,8 @@ class ProgramAPI:
 
     def place_in(self, obj: str, container: str) -> ActionResult:
         obj, container = self._obj(obj), self._obj(container)
+        if (done := self._already(obj, container, "place_in", relations.inside)) is not None:
+            return done
         if (full := self.robot.crowded(obj, container)) is not None:
             return self._record(ActionResult("place_in", False, full), f"place_in({obj!r}, {container!r})")  # said before grasping
         fail = self._ensure_held(obj, "place_in")
