@@ -100,3 +100,11 @@ def test_bad_capture_yaml(tmp_path: Path) -> None:
     (folder / "capture.yaml").write_text("units: [unclosed\n")
     with pytest.raises(InputError, match="capture.yaml"):
         load_capture(folder)
+
+
+def test_wrong_units_given_are_named_when_no_support_is_found() -> None:
+    from realsim.perception.planes import detect_planes
+
+    scene = load_capture(MOSD / "test0.pcd", LoadParams(units="mm"))  # a metre scan read as millimetres: 3 mm across
+    with pytest.raises(InputError, match=r"--units: read in mm the capture is 0\.00\d+ m across"):
+        detect_planes(scene)

@@ -19,7 +19,7 @@ from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransa
 from realsim.perception.level_patches import level_heights
 from realsim.perception.plane_patches import surface_of
 from realsim.perception.plane_refit import refine_plane
-from realsim.perception.resolution import working_resolution
+from realsim.perception.resolution import PLAUSIBLE_EXTENT, working_resolution
 from realsim.perception.up_axis import evidence_points, resting_normal
 from realsim.scene import Scene, SupportPlane
 
@@ -197,6 +197,14 @@ def _support_kind(height: float) -> str:
     return "shelf"
 
 
+def _size_hint(points: np.ndarray, units: str) -> str:
+    """The capture's size when it is not that of a real scene (then the units are the likelier fault)."""
+    extent = float(np.max(np.ptp(points, axis=0))) if len(points) else 0.0
+    if PLAUSIBLE_EXTENT[0] <= extent <= PLAUSIBLE_EXTENT[1]:
+        return ""
+    return f" and --units: read in {units} the capture is {extent:.3g} m across, not a plausible scene ({PLAUSIBLE_EXTENT[0]}-{PLAUSIBLE_EXTENT[1]:.0f} m)"
+
+
 def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     """Level the scene on its dominant support, find every horizontal support, floor at z = 0.
 
@@ -261,7 +269,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         facing = " facing the camera" if viewpoint is not None else ""
         raise InputError(
             f"{scene.capture.environment_file}: no support plane found (no large flat surface{facing} within "
-            f"{max_tilt:.0f} deg of the up axis '{scene.capture.up}'); check --up"
+            f"{max_tilt:.0f} deg of the up axis '{scene.capture.up}'); check --up{_size_hint(work, scene.capture.units)}"
         )
     candidates = [surface_of(c, params.region_cell, params.distance_threshold, params.min_plane_points) for c in candidates]
     normal, d, _ = max(candidates, key=weight)
