@@ -295,3 +295,24 @@ def test_what_is_not_to_be_done_keeps_its_object_still(sentence: str, kept: str)
     plan = RulePlanner().plan(sentence, CLUTTER)
     assert [c.text() for c in plan.calls] == ["place_in('obj7_banana', 'obj6_bowl')"]
     assert kept not in plan.program.split("\n", 1)[-1]
+
+
+def test_objects_are_listed_by_the_colour_they_answer_to() -> None:
+    from realsim.planner.reference import Resolver
+
+    white_box = ObjectInfo("obj2_flat_white_box", "flat white box", (), (0.4, 0.1, 0.02), (0.2, 0.2, 0.05), "red")  # measured red, named white
+    box = ObjectInfo("obj4_box", "box", (), (0.4, -0.2, 0.07), (0.13, 0.24, 0.15), "red")
+    listing = Resolver([white_box, box]).listing()
+    assert listing == "objects in the scene: obj2_flat_white_box (flat white box), obj4_box (red box)"
+
+
+def test_a_locator_whose_landmark_is_ambiguous_is_decided_by_the_relation() -> None:
+    from realsim.planner.rules import parse_calls
+
+    objs = [ObjectInfo("obj2_flat_white_box", "flat white box", (), (0.4, 0.1, 0.025), (0.2, 0.2, 0.05), "white"),
+            ObjectInfo("obj3_white_can", "white can", (), (0.4, 0.1, 0.1), (0.08, 0.08, 0.1), "white"),  # stands on the flat box
+            ObjectInfo("obj4_red_box", "red box", (), (0.4, -0.25, 0.075), (0.13, 0.24, 0.15), "red"),
+            ObjectInfo("obj5_red_can", "red can", (), (0.55, 0.35, 0.05), (0.07, 0.07, 0.1), "red")]
+    for text in ("pick up the can that is on the box", "grab the can that's on the box", "lift the can on the box"):
+        calls, _ = parse_calls(text, objs)
+        assert [(c.name, c.args) for c in calls] == [("grasp", ("obj3_white_can",))], text

@@ -62,8 +62,10 @@ class Context:
 
 
 def describe(o: ObjectInfo) -> str:
-    """An object as a candidate is listed to the user: its name, colour and label."""
-    return f"{o.name} ({(o.color + ' ') if o.color else ''}{o.label})"
+    """An object as a candidate is listed to the user: its name and label, with its measured colour
+    unless its name or label already says one (that is the colour it answers to: :func:`colors_of`)."""
+    named = any(w in COLOR_WORDS for w in norm(o.label).split() + norm(o.name).split())
+    return f"{o.name} ({(o.color + ' ') if o.color and not named else ''}{o.label})"
 
 
 class Resolver:
@@ -356,7 +358,7 @@ class Resolver:
         if not scored:
             raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
         best = max(s for _, s in scored)
-        floor = min(best, 1.7) - 1e-9 if (plural or order or ordinal is not None or sizes or colors) else best - 1e-9
+        floor = min(best, 1.7) - 1e-9 if (plural or loose or order or ordinal is not None or sizes or colors) else best - 1e-9
         found = [o for o, s in scored if s >= floor]
         exact = [o for o in found if norm(o.label) == " ".join(words)]
         if len(found) > 1 and not plural and len(exact) == 1 and order is None and not sizes:
