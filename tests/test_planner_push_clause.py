@@ -14,6 +14,9 @@ from realsim.planner import Moved, ObjectInfo, RulePlanner
     ("shove the banana towards the bowl", ("obj7_banana", "back")),  # the bowl is nearer the robot
     ("nudge the banana away from the bowl", ("obj7_banana", "forward")),
     ("push the left can further from the right can", ("obj1_soda_can", "left")),
+    ("push the strawberry next to the bowl", ("obj8_strawberry", "right")),  # a push verb goes there by pushing
+    ("shove the strawberry up against the bowl", ("obj8_strawberry", "right")),
+    ("move the banana 3 cm closer to the bowl", ("obj7_banana", "back")),
 ])
 def test_a_way_toward_or_away_from_another_object(sentence: str, push: tuple[str, str]) -> None:
     (call,) = RulePlanner().plan(sentence, CLUTTER).calls.calls
@@ -33,3 +36,8 @@ def test_toward_an_object_it_already_touches_is_refused() -> None:
                 ObjectInfo("obj2_box", "box", (), (0.5, -0.065, 0.05), (0.06, 0.06, 0.1))]
     with pytest.raises(InputError, match="no room"):
         RulePlanner().plan("push the cube toward the box", touching)
+
+
+def test_a_verb_that_also_carries_puts_it_next_to_the_other_object() -> None:
+    (call,) = RulePlanner().plan("move the strawberry next to the bowl", CLUTTER).calls.calls
+    assert call.name == "place_beside"

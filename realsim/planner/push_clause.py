@@ -16,7 +16,10 @@ from realsim.planner.vocab import DIRECTION_WORDS
 __all__ = ["DEFAULT_PUSH", "TOWARD", "push_clause", "push_relative"]
 
 DEFAULT_PUSH = 0.10  # m, when no distance is given
-TOWARD = re.compile(r"(.+?) (towards?|(?:further|farther)(?: away)? from|away from) (?!(?:me|you|yourself|the robot|us|the camera)\b)(.+)")
+# "toward", "closer to", "up against", "next to" another object (a push verb: along the way to it,
+# stopping short of it), or "away from" it
+TOWARD = re.compile(r"(.+?) (towards?|(?:closer|nearer) to|(?:right |all the way )?up (?:to|against)|against|(?:right )?next to|beside"
+                    r"|(?:further|farther)(?: away)? from|away from) (?!(?:me|you|yourself|the robot|us|the camera)\b)(.+)")
 _PUSH_WAY = {"left": "left", "right": "right", "behind": "forward", "front": "back"}
 _OPPOSITE = {"left": "right", "right": "left", "forward": "back", "back": "forward"}
 
