@@ -316,3 +316,25 @@ def test_a_locator_whose_landmark_is_ambiguous_is_decided_by_the_relation() -> N
     for text in ("pick up the can that is on the box", "grab the can that's on the box", "lift the can on the box"):
         calls, _ = parse_calls(text, objs)
         assert [(c.name, c.args) for c in calls] == [("grasp", ("obj3_white_can",))], text
+
+
+@pytest.mark.parametrize(("text", "call"), [
+    ("tidy up by putting the mug into the bowl", ("place_in", ("obj1_mug", "obj2_bowl"))),  # the purpose is no object ("tidy" is not "tiny")
+    ("could you help by putting the soup can in the bowl", ("place_in", ("obj3_soup_can", "obj2_bowl"))),
+    ("hold the mug above the bowl", ("place_on", ("obj1_mug", "obj2_bowl"))),  # the head noun is the mug, never the bowl
+])
+def test_the_object_a_sentence_acts_on_is_the_one_it_names(text: str, call: tuple) -> None:
+    from realsim.planner.rules import parse_calls
+
+    calls, _ = parse_calls(text, OBJECTS)
+    assert [(c.name, c.args) for c in calls] == [call]
+
+
+def test_a_thing_located_above_or_under_another_is_found_by_that_relation() -> None:
+    from realsim.planner.rules import parse_calls
+
+    objs = [ObjectInfo("obj1_box", "box", (), (0.4, 0.1, 0.025), (0.2, 0.2, 0.05), "white"),
+            ObjectInfo("obj2_can", "can", (), (0.4, 0.1, 0.1), (0.08, 0.08, 0.1), "red"),  # on the box
+            ObjectInfo("obj3_can", "can", (), (0.55, 0.35, 0.05), (0.07, 0.07, 0.1), "blue")]
+    assert [c.args for c in parse_calls("pick up the can above the box", objs)[0]] == [("obj2_can",)]
+    assert [c.args for c in parse_calls("pick up the box under the can", objs)[0]] == [("obj1_box",)]

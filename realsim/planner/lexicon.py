@@ -36,7 +36,7 @@ RELATIONS: tuple[tuple[str, str], ...] = (
     ("behind", "behind"), ("in between", "between"), ("between", "between"),
     ("right next to", "next"), ("next to", "next"), ("beside", "next"), ("besides", "next"), ("alongside", "next"),
     ("close to", "next"), ("nearby", "next"), ("near", "next"), ("by", "next"), ("against", "next"),
-    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"),
+    ("on top of", "on"), ("onto", "on"), ("on to", "on"), ("on", "on"), ("atop", "on"), ("upon", "on"), ("over", "on"), ("above", "on"),
     ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
     ("toward", "next"), ("towards", "next"), ("to", "to"),  # toward a thing is a way, not into it
 )

@@ -35,6 +35,8 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is |that |which |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:on top of|on)", "on"),
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in(?! front of\b))", "in"),
+    (r"(?:that is |thats |which is |that |which |sitting |lying |hanging )?(?:right |just |directly )?(?:above|over)", "above"),  # on or in it
+    (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:right |just |directly )?(?:under|underneath|below|beneath)", "under"),
     (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
     (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
     (r"(?:that is |thats |which is )?behind", "behind"),
@@ -273,8 +275,9 @@ class Resolver:
                     except InputError:
                         continue
                     text = m.group(1)
-                    rels = ("in", "on") if rel == "from" else (rel,)
-                    cands = [o for o in cands if any(o.name != r.name and relation_holds(k, o, r, self.forward, self.left)
+                    rels = ("in", "on") if rel in ("from", "above") else ("on",) if rel == "under" else (rel,)
+                    cands = [o for o in cands if any(o.name != r.name and (relation_holds(k, r, o, self.forward, self.left) if rel == "under"
+                                                                           else relation_holds(k, o, r, self.forward, self.left))
                                                      for r in refs for k in rels)]
                     located = len(cands) == 1  # the relation alone says which
                     break

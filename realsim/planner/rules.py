@@ -24,7 +24,7 @@ from realsim.planner.asides import is_aside
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START
 from realsim.planner.phrasing import QUESTION, avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
@@ -149,6 +149,8 @@ def _clause(clause: str, p: Parser) -> Step:
     if not re.search(r"\b(?:closer|nearer)\b", c):  # "bring the mug closer to me" moves it, not into the hand
         c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
+    if verb is None and (m := _MEANS.fullmatch(c)):  # "tidy up by putting the mug in the bowl": the means is the command
+        return _clause(m.group(1), p)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
         said = rephrase(c)
         if m := SWAP.fullmatch(said):  # "the can and the box should have traded places"
@@ -185,6 +187,9 @@ def _clause(clause: str, p: Parser) -> Step:
             step = None
         return step if step is not None else _take(rest, p)
     raise InputError(f"cannot understand {clause!r}; {HELP}")
+
+
+_MEANS = re.compile(rf".+? by ((?:{VERB_START.pattern}).+)")  # a purpose, then "by" and what to do
 
 
 def _verb(c: str) -> tuple[str | None, str]:

@@ -39,7 +39,8 @@ _KNOWN = frozenset({*COLOR_WORDS, *BIG, *SMALL, *EXTREMES, *ORDINALS, *GENERIC, 
                     *KINDS, *(w for v in KINDS.values() for w in v), *TYPICAL_COLORS, "colored", "coloured", "central", "middle", "center",
                     "centre", "most", "thing", "things", "the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those",
                     *(w for v in ALL_VERBS for w in v.split()), *(w for r, _ in RELATIONS for w in r.split()), *(w for d in DIRECTION_WORDS for w in d.split()),
-                    *UNITS, "like", "just", "please", "and", "then", "it", "them", "with", "from", "away", "other", "else", "same", "only"})
+                    *UNITS, "like", "just", "please", "and", "then", "it", "them", "with", "from", "away", "other", "else", "same", "only",
+                    "tidy", "clean", "help", "sort", "neat", "room", "space", "make", "ready", "done"})  # a purpose ("tidy up by ..."), never a size
 
 
 def distance(a: str, b: str) -> int:
