@@ -415,6 +415,9 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         if colors is not None:  # touching objects of two colours that meet in a fold
             obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points, normals[ids],
                                               view_points=points[ids])
+            # a container's outer wall that a touching object held until the colours parted them
+            obj_labels = join_outsides(obj_labels, grid_shape, points, normals, points @ axis, params.jump_distance,
+                                       params.inside_concavity, params.inside_rim_share)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
         patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
         assert patch_normals is not None  # given normals, _with_known returns normals
