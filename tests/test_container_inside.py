@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from realsim.perception.container_inside import concavity, join_insides
 
@@ -72,3 +73,46 @@ def test_an_inside_touched_over_a_few_pixels_stays_apart() -> None:
     labels, pts, normals, depth = _view(inward=True, rim_cols=3, touching=True)  # a neighbour leaning on a bowl
     out = join_insides(labels, (20, 20), pts, normals, depth, 0.008, 0.05, 0.1)
     assert len(np.unique(out[labels >= 0])) == 2
+
+
+def _bowl_from_above(wall_shift: tuple[float, float] = (0.0, 0.0), wall_back: float = 0.0) -> tuple[np.ndarray, ...]:
+    """A 15 x 20 image of a bowl seen from the front and above (world Z up, camera toward +y, 30 deg
+    down): rows 0-9 its inside (a 5 cm hemisphere seen from inside, its front rim in row 9), rows
+    10-14 its outer wall under the front rim (about 1 cm inside the rim in plan, 2-4 cm lower). The wall
+    is moved by ``wall_shift`` (m) in plan and pushed ``wall_back`` (m) along the view."""
+    w = 20
+    axis = np.array([0.0, np.cos(np.radians(30)), -np.sin(np.radians(30))])  # the viewing direction
+    u, v = np.meshgrid(np.linspace(-0.8, 0.8, w), np.linspace(0.8, -0.95, 10))  # v: +y (back) .. -y (front rim)
+    r = np.minimum(np.hypot(u, v), 0.98)
+    xy = 0.05 * np.stack([u, v], axis=-1) * (r / np.maximum(np.hypot(u, v), 1e-9))[..., None]
+    cap = np.concatenate([xy, 0.05 - np.sqrt(0.05**2 - (xy**2).sum(axis=-1, keepdims=True))], axis=-1)
+    inside_normals = np.array([0.0, 0.0, 0.05]) - cap  # toward the sphere's centre: seen from inside
+    xs, zs = np.meshgrid(np.linspace(-0.025, 0.025, w), np.linspace(0.02, 0.005, 5))
+    wall = np.stack([xs, np.full_like(xs, -0.04), zs], axis=-1) + [*wall_shift, 0.0]
+    wall_normals = np.broadcast_to([0.0, -1.0, -0.3], wall.shape)
+    pts = np.concatenate([cap, wall]).reshape(-1, 3)
+    normals = np.concatenate([inside_normals, wall_normals]).reshape(-1, 3)
+    normals = normals / np.linalg.norm(normals, axis=1, keepdims=True)
+    depth = pts @ axis
+    depth[10 * w:] += wall_back
+    labels = np.repeat([0, 1], [10 * w, 5 * w]).astype(np.int64)
+    return labels, pts, normals, depth
+
+
+def test_a_wall_under_a_bowls_rim_joins_its_inside() -> None:
+    from realsim.perception.container_inside import join_outsides
+
+    labels, pts, normals, depth = _bowl_from_above()
+    assert join_insides(labels, (15, 20), pts, normals, depth, 0.008, 0.05, 0.1).max() == 1  # not an inside's case
+    out = join_outsides(labels, (15, 20), pts, normals, depth, 0.008, 0.05, 0.1)
+    assert (out == 0).all()
+
+
+@pytest.mark.parametrize("shift, back", [((0.12, 0.0), 0.0), ((0.0, 0.0), 0.1)])
+def test_what_a_bowls_rim_hides_beside_or_behind_it_stays_apart(shift: tuple[float, float], back: float) -> None:
+    """Out of the bowl's plan (beside it) or farther than its inside (behind it): another object."""
+    from realsim.perception.container_inside import join_outsides
+
+    labels, pts, normals, depth = _bowl_from_above(shift, back)
+    out = join_outsides(labels, (15, 20), pts, normals, depth, 0.008, 0.05, 0.1)
+    assert len(np.unique(out)) == 2

@@ -27,7 +27,7 @@ from realsim.perception.backdrop_patch import continues_backdrop
 from realsim.perception.colour_split import split_by_colour
 from realsim.perception.contact_cut import CutParams, cut_contacts
 from realsim.perception.container_floor import claim_enclosed_floors
-from realsim.perception.container_inside import join_insides
+from realsim.perception.container_inside import join_insides, join_outsides
 from realsim.perception.footprints import merge_shared_footprints
 from realsim.perception.in_front import in_front
 from realsim.perception.object_relations import base_height, filter_by_size, support_relations
@@ -415,6 +415,9 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         if colors is not None:  # touching objects of two colours that meet in a fold
             obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points, normals[ids],
                                               view_points=points[ids])
+            # a container's outer wall that a touching object held until the colours parted them
+            obj_labels = join_outsides(obj_labels, grid_shape, points, normals, points @ axis, params.jump_distance,
+                                       params.inside_concavity, params.inside_rim_share)
     if not organized:  # a cloud seen from around: contacts cut at their concave fold, whole footprints seen
         patch_normals = _with_known(_orient(normals[ids], -nrm[part]), known_normals, ids)
         assert patch_normals is not None  # given normals, _with_known returns normals
@@ -486,7 +489,8 @@ def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: 
     """A camera view's small segments (``obj`` over ``ids``, linked by ``la``-``lb``) joined to their
     neighbours, except those covering an object's surface area (``min_view_area``, m^2) that lie in
     front of their neighbours (:func:`in_front`, over the image ``pairs``); a container's inside seen
-    through its rim then joins the rim (:func:`join_insides`). The pieces the supervoxels leave are
+    through its rim then joins the rim (:func:`join_insides`), and the outer wall under a rim joins the
+    inside (:func:`join_outsides`). The pieces the supervoxels leave are
     counted in pixels, as the supervoxels are seeded."""
     whole = None
     if axis is not None:
@@ -503,6 +507,8 @@ def _absorb_view(points: np.ndarray, normals: np.ndarray, ids: np.ndarray, obj: 
     full[ids] = obj
     full = join_insides(full, grid_shape, points, normals, points @ axis, params.jump_distance, params.inside_concavity,
                         params.inside_rim_share)
+    full = join_outsides(full, grid_shape, points, normals, points @ axis, params.jump_distance, params.inside_concavity,
+                         params.inside_rim_share)
     out: np.ndarray = full[ids]
     return out
 
