@@ -391,6 +391,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         if working <= params.visibility_cell:  # fine enough to see which side of a patch is open
             grid = OccupancyGrid(points[ids] if context is None else np.vstack([points[ids], context]), cell)
         nrm = _outward_by_free_space(points[ids], cent, nrm, seg_count, params.orientation_radius, params.jump_distance, grid, tree)
+        if known_normals is not None:  # the capture's own outward side (a mesh's faces), summed over each segment
+            known = np.nan_to_num(known_normals[ids])
+            nrm = _with_known(nrm, np.stack([np.bincount(part, known[:, i], minlength=n_seg) for i in range(3)], axis=1),
+                              np.arange(n_seg))
         away_seg = -nrm
     nrm = _orient(nrm, away_seg)
 
