@@ -9,7 +9,8 @@ import trimesh
 from realsim.completion.balance import base_polygon, brace, centre_of_mass
 from realsim.completion.overlaps import part_overlapping
 from realsim.completion.params import CompletionParams
-from realsim.completion.stacking import seat_on, sloping_top
+from realsim.completion.stacking import bottom_up, seat_on, sloping_top
+from realsim.completion.stage import stacking_levels
 from realsim.geometry import inside_convex_polygon
 from realsim.scene import SceneObject
 
@@ -105,3 +106,18 @@ def test_a_base_that_does_not_hold_the_centre_of_mass_is_completed_under_it() ->
     assert polygon is not None and inside_convex_polygon(centre_of_mass(obj.collision)[None, :2], polygon, -0.004)[0]
     assert obj.visual is obj.collision[0]
     assert not brace(obj, 0.005)  # it stands: nothing more to do
+
+
+def test_stacking_levels_never_put_an_object_with_what_it_rests_on() -> None:
+    """Objects are completed a level at a time (in parallel within one): each level holds no object
+    and its supporter, the order is kept, and a stack three high takes three levels."""
+    def obj(oid: int, on: int | None) -> SceneObject:
+        return SceneObject(oid, f"obj{oid}", "object", np.zeros(3), np.array([1.0, 0, 0, 0]), np.full(3, 0.1), resting_on=on)
+
+    objects = [obj(1, None), obj(2, None), obj(3, 1), obj(4, 7), obj(5, 3), obj(6, 2)]  # 7 is no object: 4 is a root
+    order = bottom_up(objects)
+    levels = stacking_levels(order)
+    assert [o.id for level in levels for o in level] == [o.id for o in order]
+    assert [[o.id for o in level] for level in levels] == [[1, 2, 4], [3, 6], [5]]
+    for level in levels:
+        assert not {o.resting_on for o in level} & {o.id for o in level}

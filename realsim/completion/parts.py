@@ -36,17 +36,19 @@ def _base(scene: Scene, obj: SceneObject, pts: np.ndarray) -> float:
 def one_container(a: np.ndarray, b: np.ndarray, base_z: float, max_radius: float) -> bool:
     """True when the points ``a`` and ``b`` of two objects are parts of one open round container:
     together their top band is one circular ring (see :func:`round_rim`), and each has points on it."""
-    union = np.vstack([a, b])
-    top_z = float(np.percentile(union[:, 2], 98))
+    top_z = float(np.percentile(np.concatenate([a[:, 2], b[:, 2]]), 98))
     height = top_z - base_z
     if height <= 0:
         return False
-    rim = round_rim(union, base_z, top_z, max_radius)
+    high = [part[:, 2] >= top_z - RIM_BAND * height for part in (a, b)]
+    if any(np.count_nonzero(h) < MIN_RIM_POINTS for h in high):  # too few in the top band: none can be on the rim
+        return False
+    rim = round_rim(np.vstack([a, b]), base_z, top_z, max_radius)
     if rim is None:
         return False
     centre, radius = rim
-    for part in (a, b):
-        on_rim = (part[:, 2] >= top_z - RIM_BAND * height) & (np.abs(np.linalg.norm(part[:, :2] - centre, axis=1) - radius) <= RIM_BAND * radius)
+    for part, h in zip((a, b), high):
+        on_rim = h & (np.abs(np.linalg.norm(part[:, :2] - centre, axis=1) - radius) <= RIM_BAND * radius)
         if np.count_nonzero(on_rim) < MIN_RIM_POINTS:
             return False
     return True

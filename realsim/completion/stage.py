@@ -19,9 +19,44 @@ from realsim.forkmap import fork_map
 from realsim.scene import Scene, SceneObject
 
 
-def _root_shape(obj: SceneObject, ctx: Context) -> Shape:
-    """The shape of an object that stands on no other one (on its support plane)."""
-    return complete_object(obj, ctx, ctx.floor_under(obj, ctx.observed(obj)))
+def stacking_levels(order: list[SceneObject]) -> list[list[SceneObject]]:
+    """``order`` (each object after the one it rests on, :func:`bottom_up`) cut into its longest runs
+    in which no object rests on another of the same run: each run's shapes can be made together once
+    the earlier runs' are done (an object's completion reads only its supporter's finished shape)."""
+    levels: list[list[SceneObject]] = []
+    ids: set[int] = set()
+    for obj in order:
+        if not levels or obj.resting_on in ids:
+            levels.append([])
+            ids = set()
+        levels[-1].append(obj)
+        ids.add(obj.id)
+    return levels
+
+
+def _place(obj: SceneObject, shape: Shape, slope: np.ndarray | None, floor: float, ctx: Context, done: dict[int, trimesh.Trimesh],
+           pts: np.ndarray, hollow: set[int], pieces: dict[int, list[trimesh.Trimesh]]) -> None:
+    """Give ``obj`` its completed ``shape`` (seated along the ``slope`` of the top it lies on, not below
+    that supporter's bottom ``floor``) and record it in ``done``, ``hollow`` and ``pieces``."""
+    params = ctx.params
+    mesh, parts, visual, base_centre, kind = shape.mesh, shape.parts, shape.visual, shape.base_centre, shape.kind
+    if shape.hollow:
+        hollow.add(obj.id)
+    if slope is not None and obj.resting_on is not None and not shape.hollow:
+        seated = seat_on(slope, floor, shape.base_z, [mesh, *(parts or [])], params.base_clearance)
+        if seated:
+            mesh, parts = seated[0], seated[1:] or None
+            visual = mesh if parts is None else visual
+            base_centre = np.array([base_centre[0], base_centre[1], mesh.bounds[0][2]])
+            kind = f"{kind}, seated along the sloping top it lies on"
+    done[obj.id] = mesh
+    if parts is not None:
+        pieces[obj.id] = parts
+    set_shape(obj, mesh, base_centre, params, parts, visual)
+    obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
+    if ctx.scene.colors is not None:
+        obj.color = np.median(ctx.scene.colors[ctx.labels == obj.id], axis=0)
+    obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
 
 
 def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()) -> Scene:
@@ -50,41 +85,24 @@ def complete_objects(scene: Scene, params: CompletionParams = CompletionParams()
         veil &= ~np.isfinite(edge.depth.ravel())
     order = bottom_up(scene.objects)
     ctx = Context(scene, labels, points, veil, view, tolerance, params)
-    roots = [o for o in order if o.resting_on is None or o.resting_on not in by_id]  # nothing completed under them
-    made = dict(zip([o.id for o in roots], fork_map(lambda k: _root_shape(roots[k], ctx).packed(), len(roots))))  # shared with a forked helper
-    for obj in order:
-        slope, pts = None, ctx.observed(obj)
-        if obj.id in made:
-            shape = Shape.unpacked(made[obj.id])
-        else:
+    for level in stacking_levels(order):
+        bases: list[tuple[float, np.ndarray | None, float]] = []  # per object: base height, sloping top, its supporter's bottom
+        for obj in level:
+            slope, pts, floor = None, ctx.observed(obj), np.nan
             if obj.resting_on is not None and obj.resting_on in done and obj.resting_on not in hollow:
                 base_z = top_under(done[obj.resting_on], pts)
                 slope = sloping_top(done[obj.resting_on], pts)
                 if slope is None:  # a level top is cut flat (a face-face contact); a sloping one is kept
                     done[obj.resting_on] = flatten_top(by_id[obj.resting_on], done[obj.resting_on], base_z, params)
-            else:  # on a hollow body: down to what is under it inside (its cavity floor), not through it
+                floor = float(done[obj.resting_on].bounds[0][2])
+            else:  # on a support, or on a hollow body: down to what is under it inside (its cavity floor), not through it
                 inside = rest_inside(pieces[obj.resting_on], pts, tolerance) if obj.resting_on in hollow else None
                 base_z = ctx.floor_under(obj, pts) if inside is None else inside + params.base_clearance
-            shape = complete_object(obj, ctx, base_z)
-        mesh, parts, visual, base_centre, kind = shape.mesh, shape.parts, shape.visual, shape.base_centre, shape.kind
-        if shape.hollow:
-            hollow.add(obj.id)
-        if slope is not None and obj.resting_on is not None and not shape.hollow:
-            seated = seat_on(slope, float(done[obj.resting_on].bounds[0][2]), shape.base_z, [mesh, *(parts or [])], params.base_clearance)
-            if seated:
-                mesh, parts = seated[0], seated[1:] or None
-                visual = mesh if parts is None else visual
-                base_centre = np.array([base_centre[0], base_centre[1], mesh.bounds[0][2]])
-                kind = f"{kind}, seated along the sloping top it lies on"
-        done[obj.id] = mesh
-        observed[obj.id] = pts
-        if parts is not None:
-            pieces[obj.id] = parts
-        set_shape(obj, mesh, base_centre, params, parts, visual)
-        obj.quat = np.array([1.0, 0.0, 0.0, 0.0])
-        if scene.colors is not None:
-            obj.color = np.median(scene.colors[labels == obj.id], axis=0)
-        obj.notes.append(f"completed from {len(pts)} observed points as a {kind}")
+            bases.append((base_z, slope, floor))
+            observed[obj.id] = pts
+        made = fork_map(lambda k: complete_object(level[k], ctx, bases[k][0]).packed(), len(level))  # shared with a forked helper
+        for obj, (_, slope, floor), packed in zip(level, bases, made):
+            _place(obj, Shape.unpacked(packed), slope, floor, ctx, done, observed[obj.id], hollow, pieces)
     solid = [o for o in order if o.id not in hollow]
     separate_neighbours(solid, done, observed, params, pieces)
     part_overlapping(solid, done, observed, params, pieces)
