@@ -251,13 +251,16 @@ class GraspSkill(Motion):
         opt.n_candidates = len(reachable)
         first = min(gp.candidate, len(reachable) - 1)
         self._gripper(GRIPPER_OPEN_CTRL)
-        for k, (cand, q_pre, _) in enumerate(reachable[first:] + reachable[:first]):
-            try:  # a path that cannot be planned moves nothing: try the next candidate; the transit ends in the clear pre-grasp posture
-                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None, q_goal=q_pre)
+        ranked = reachable[first:] + reachable[:first]
+        # each candidate's transit by its straight lines first; then planned into its pre-grasp posture found clear
+        tries = [(c, None) for c, _, _ in ranked] + [(c, q_pre) for c, q_pre, _ in ranked]
+        for k, (cand, q_goal) in enumerate(tries):
+            try:  # a path that cannot be planned moves nothing: try the next
+                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None, q_goal=q_goal)
                 self._straight(cand.pos, cand.rot, clear_but={obj})  # the open fingers come down clear of the neighbours
                 break
             except PlanFailure:
-                if k == len(reachable) - 1:
+                if k == len(tries) - 1:
                     raise
         self._gripper(self._close_ctrl(obj, cand))
         self.held, self.pinch = obj, (cand.kind, cand.width)  # the lift moves as this pinch allows (:meth:`_carry_time`)
