@@ -3,6 +3,7 @@ approaches, and attempts retried with epsilon-greedy grasp parameters."""
 
 from __future__ import annotations
 
+import functools
 from dataclasses import replace
 from typing import Any
 
@@ -177,10 +178,37 @@ class GraspSkill(Motion):
         path = np.array([self.ik.fk(q)[0] for q in pts])
         return float(np.sqrt(QUINTIC_ACCEL * np.linalg.norm(np.diff(path, axis=0), axis=1).sum() / accel))
 
-    def _reachable(self, cands: list[GraspCandidate], tilt: float, yaw: float) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
+    @functools.cached_property
+    def _tcp_bodies(self) -> set[int]:
+        """The robot bodies rigid with the tcp (the hand, its fingers, the last link)."""
+        return self.hand_bodies | {self.model.body(self.prefix + "link7").id}
+
+    def _clear_posture(self, pos: np.ndarray, rot: np.ndarray, q_init: np.ndarray, ignore: set[str], blockers: set[str]) -> IKResult | None:
+        """A posture putting the tcp at (``pos``, ``rot``) that touches nothing but ``ignore``: the
+        plain IK's, else the collision-aware IK's when only links the arm can move aside are in the
+        way (what the hand itself would touch at that pose, no posture avoids); None when there is
+        none, what was touched added to ``blockers``."""
+        res = self._ik(pos, rot, q_init)
+        if not res.converged:
+            return None
+        hits = self._touches(res.q, ignore)
+        if not hits:
+            return res
+        # only the bodies rigid with the tcp count: every object is one the other links "may touch"
+        hand_hits = self.geometry.robot_hits(self.qadr, res.q, ignore, self.object_names(), self.robot_bodies - self._tcp_bodies)
+        if not hand_hits:
+            alt = self._ik_clear(pos, rot, q_init, ignore)
+            if alt.converged and not self._touches(alt.q, ignore):
+                return alt
+        blockers |= hand_hits or hits
+        return None
+
+    def _reachable(self, obj: str, cands: list[GraspCandidate], tilt: float, yaw: float,
+                   blockers: set[str]) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
         """The candidates the hand reaches, turned by ``tilt`` about their closing axis and ``yaw``
-        about their approach, with a straight final approach (at most ``max_reachable``):
-        (candidate, pre-grasp joints, grasp IK)."""
+        about their approach, with a straight final approach, at pre-grasp and grasp postures that
+        touch no other object (at most ``max_reachable``): (candidate, pre-grasp joints, grasp IK);
+        the objects in the way are added to ``blockers``."""
         pk = self.params.pick
         out: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
         q_home = np.array(HOME_ARM)
@@ -190,11 +218,11 @@ class GraspSkill(Motion):
             for flip in (False, True):  # the hand is symmetric: closing axis +y or -y
                 r = rot @ np.diag([-1, -1, 1]) if flip else rot
                 pre = c.pos - r[:, 2] * self.params.pregrasp
-                res_pre = self._ik(pre, r, q_home)
-                if not res_pre.converged:
+                res_pre = self._clear_posture(pre, r, q_home, set(), blockers)
+                if res_pre is None:
                     continue
-                res = self._ik(c.pos, r, res_pre.q)
-                if not res.converged:
+                res = self._clear_posture(c.pos, r, res_pre.q, {obj}, blockers)
+                if res is None:
                     continue
                 try:  # the final approach must be a straight line without a joint flip
                     self._line(pre, c.pos, r, r, res_pre.q)
@@ -211,23 +239,28 @@ class GraspSkill(Motion):
         pk = self.params.pick
         cands = self._grasp_candidates(obj, gp.height_offset)
         reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
-        for lean in pk.reach_tilts:  # none reachable as planned (the far edge of the reach): the hand leans about the closing axis
-            reachable = self._reachable(cands, gp.tilt + lean, gp.yaw_offset)
+        blockers: set[str] = set()
+        for lean in pk.reach_tilts:  # none reachable clear as planned (the far edge of the reach, a tall neighbour): the hand leans about the closing axis
+            reachable = self._reachable(obj, cands, gp.tilt + lean, gp.yaw_offset, blockers)
             if reachable:
                 break
         if not reachable:
-            raise PlanFailure(f"none of {len(cands)} grasp candidates is reachable, upright or leaning up to {max(map(abs, pk.reach_tilts)):.1f} rad")
+            why = f" without touching {', '.join(sorted(blockers))}" if blockers else ""
+            raise PlanFailure(f"none of {len(cands)} grasp candidates is reachable{why}, upright or leaning up to {max(map(abs, pk.reach_tilts)):.1f} rad")
         reachable.sort(key=lambda x: -x[0].score)
         opt.n_candidates = len(reachable)
         first = min(gp.candidate, len(reachable) - 1)
         self._gripper(GRIPPER_OPEN_CTRL)
-        for k, (cand, _, _) in enumerate(reachable[first:] + reachable[:first]):
-            try:  # a path that cannot be planned moves nothing: try the next candidate
-                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None)
+        ranked = reachable[first:] + reachable[:first]
+        # each candidate's transit by its straight lines first; then planned into its pre-grasp posture found clear
+        tries = [(c, None) for c, _, _ in ranked] + [(c, q_pre) for c, q_pre, _ in ranked]
+        for k, (cand, q_goal) in enumerate(tries):
+            try:  # a path that cannot be planned moves nothing: try the next
+                self._transit(cand.pos - cand.approach * self.params.pregrasp, cand.rot, skip=None, q_goal=q_goal)
                 self._straight(cand.pos, cand.rot, clear_but={obj})  # the open fingers come down clear of the neighbours
                 break
             except PlanFailure:
-                if k == len(reachable) - 1:
+                if k == len(tries) - 1:
                     raise
         self._gripper(self._close_ctrl(obj, cand))
         self.held, self.pinch = obj, (cand.kind, cand.width)  # the lift moves as this pinch allows (:meth:`_carry_time`)
