@@ -46,3 +46,35 @@ def test_searched_pose_equals_the_direct_search_and_is_reused(monkeypatch):
     monkeypatch.setattr("realsim.composition.robot_mount.add_robot", no_search)
     robot_scene(again, RobotStageParams())
     assert again.robot["base_pose_xy_yaw"] == scene.robot["base_pose_xy_yaw"]
+
+
+def _long_table(objects):
+    from test_robot import _rect
+    scene = table_scene(objects)
+    scene.planes[1].rect_size = np.array([1.8, 0.7])
+    scene.planes[1].polygon = _rect((0, 0), (1.8, 0.7))
+    return compose_scene(scene)
+
+
+def _reached(scene, pose) -> int:
+    from realsim.composition.robot_placement import score_pose
+    inputs = search_inputs(scene, scene.spec.compile(), PlacementParams())
+    return score_pose(pose, inputs.rect[3], [np.array(t) for t in inputs.targets])[1]
+
+
+def test_the_pose_reaches_objects_the_hand_cannot_hold_too():
+    # a box to pick at one end, a crate too wide to hold (a place to put things on) toward the other:
+    # a pose beside the middle reaches both, one at the near end only the box
+    scene = _long_table([box_object(1, "obj1_box", (-0.35, 0.0), [0.05, 0.05, 0.08]),
+                         box_object(2, "obj2_crate", (0.5, 0.05), [0.25, 0.25, 0.1])])
+    assert _reached(scene, choose_robot_pose(scene, scene.spec.compile())) == 2
+
+
+def test_no_pose_gives_up_an_object_the_hand_can_hold_for_others():
+    # the box at one end and three crates at the other, too far apart for one pose: the box wins
+    crates = [box_object(i, f"obj{i}_crate", (0.8, y), [0.2, 0.2, 0.1]) for i, y in ((2, -0.22), (3, 0.0), (4, 0.22))]
+    scene = _long_table([box_object(1, "obj1_box", (-0.8, 0.0), [0.05, 0.05, 0.08]), *crates])
+    pose = choose_robot_pose(scene, scene.spec.compile())
+    from realsim.composition.robot_placement import score_pose
+    box_top = np.array([-0.8, 0.0, 0.75 + 0.08 + 0.05])
+    assert score_pose(pose, 0.75, [box_top])[1] == 1

@@ -7,15 +7,18 @@ table top and would reach the far half of the table only with a stretched arm; m
 at table height is what real setups do and gives top-down grasps over ~0.25-0.8 m of reach.
 
 Candidate poses lie along each side of the support rectangle, facing inward; each is scored by
-solving IK for top-down grasps above every graspable object (and for the sideways pull of each
-drawer handle) and summing reachability and manipulability sqrt(det J J^T); the best candidate wins (ties broken by candidate order, so the
-choice is deterministic). Every candidate is scored on its own (no solve carries over), so they are
+solving IK for top-down hovers above every object (and for the sideways pull of each drawer
+handle) and summing reachability and manipulability sqrt(det J J^T). Every object is a target: one
+the hand can hold is picked, any other is placed on, into or beside, or pushed; an object the hand
+can hold counts :data:`HOLDABLE_WEIGHT` times as much, so no pose trades one of those for others.
+The best candidate wins (ties broken by candidate order, so the choice is deterministic). Every candidate is scored on its own (no solve carries over), so they are
 shared with a forked helper (:func:`realsim.forkmap.fork_map`).
 """
 
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import mujoco
@@ -34,6 +37,7 @@ MAX_REACH = 0.86  # m from the shoulder to the tcp when stretched (Panda datashe
 SCORING_IK = IKParams(max_iters=120, dls_iters=80)  # ranking needs a verdict, not a polished solution
 COMFORT_DISTANCE = 0.5  # m, horizontal base-to-target distance the Panda reaches best from above
 COMFORT_BAND = 0.3  # m either side of it
+HOLDABLE_WEIGHT = 10.0  # an object the hand can hold (or a handle, a given target) outweighs all others together
 
 
 @dataclass(frozen=True)
@@ -127,25 +131,29 @@ def _scoring_ik(params: IKParams) -> ArmIK:
 
 
 def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK,
-               oriented: list[tuple[np.ndarray, np.ndarray]] = ()) -> tuple[float, int, float]:
+               oriented: Sequence[tuple[np.ndarray, np.ndarray]] = (), weights: Sequence[float] | None = None) -> tuple[float, int, float]:
     """(score, reachable count, mean manipulability) of a base pose over top-down hover
-    ``targets`` and ``oriented`` (position, quaternion) targets such as drawer handles.
+    ``targets`` and ``oriented`` (position, quaternion) targets such as drawer handles; the score
+    sums the ``weights`` of the reached ``targets`` (1 each when None; an oriented target weighs
+    :data:`HOLDABLE_WEIGHT`) and five times the mean manipulability.
 
     Targets beyond the arm's reach sphere around the shoulder count as unreachable without IK.
     """
     ik = _scoring_ik(ik_params)
     ik.place(np.array([pose[0], pose[1], base_z]), np.array(yaw_quat(pose[2])))
     shoulder = np.array([pose[0], pose[1], base_z + SHOULDER_HEIGHT])
-    reach, manip = 0, []
-    for t, quat in [(t, TOP_DOWN) for t in targets] + list(oriented):
+    tw = [1.0] * len(targets) if weights is None else [float(w) for w in weights]
+    reach, gained, manip = 0, 0.0, []
+    for (t, quat), w in zip([(t, TOP_DOWN) for t in targets] + list(oriented), tw + [HOLDABLE_WEIGHT] * len(oriented)):
         if np.linalg.norm(np.asarray(t) - shoulder) > MAX_REACH:
             continue
         res = ik.solve(t, quat)
         if res.converged:
             reach += 1
+            gained += w
             manip.append(res.manipulability)
     mean_m = float(np.mean(manip)) if manip else 0.0
-    return reach + mean_m * 5.0, reach, mean_m
+    return gained + mean_m * 5.0, reach, mean_m
 
 
 @dataclass(frozen=True)
@@ -156,10 +164,15 @@ class SearchInputs:
     rect: tuple[tuple[float, float], tuple[float, float], float, float]  # centre, size, yaw, height
     targets: tuple[tuple[float, ...], ...]
     oriented: tuple[tuple[tuple[float, ...], tuple[float, ...]], ...]
+    weights: tuple[float, ...] = ()  # one per target (:data:`HOLDABLE_WEIGHT` or 1); empty: all 1
 
     def record(self) -> dict[str, object]:
         """The inputs as plain lists (a cache key's parameters)."""
-        return {"rect": self.rect, "targets": self.targets, "oriented": self.oriented}
+        return {"rect": self.rect, "targets": self.targets, "oriented": self.oriented, "weights": self.weights}
+
+    def target_weights(self) -> list[float]:
+        """The weight of each top-down target."""
+        return list(self.weights) if self.weights else [1.0] * len(self.targets)
 
 
 def search_inputs(scene: Scene, model_without_robot: mujoco.MjModel | None = None, params: PlacementParams = PlacementParams(),
@@ -167,8 +180,9 @@ def search_inputs(scene: Scene, model_without_robot: mujoco.MjModel | None = Non
     """What :func:`choose_robot_pose` searches over. Object poses are read from
     ``model_without_robot`` (its bodies' initial poses) when given, else from the scene."""
     plane = primary_support(scene)
-    targets = []
-    for obj in graspable_objects(scene):
+    targets, weights = [], []
+    holdable = {id(o) for o in graspable_objects(scene)}
+    for obj in scene.objects:
         pos = np.asarray(obj.position, float)
         if model_without_robot is not None:
             try:
@@ -177,13 +191,15 @@ def search_inputs(scene: Scene, model_without_robot: mujoco.MjModel | None = Non
                 pass
         height = float(obj.size[2]) if obj.size is not None else 0.1
         targets.append(np.array([pos[0], pos[1], pos[2] + height + params.hover]))
+        weights.append(HOLDABLE_WEIGHT if id(obj) in holdable else 1.0)
     targets += [np.asarray(t, float) for t in extra_targets or []]
+    weights += [HOLDABLE_WEIGHT] * len(extra_targets or [])
     oriented = handle_targets(model_without_robot) if model_without_robot is not None else []
     if not targets and not oriented:
-        targets = [np.array([*plane.rect_center, plane.height + 0.1])]
+        targets, weights = [np.array([*plane.rect_center, plane.height + 0.1])], [1.0]
     rect = (tuple(float(v) for v in plane.rect_center), tuple(float(v) for v in plane.rect_size), float(plane.rect_yaw), float(plane.height))
     return SearchInputs(rect, tuple(tuple(float(v) for v in t) for t in targets),  # type: ignore[arg-type]
-                        tuple((tuple(float(v) for v in p), tuple(float(v) for v in q)) for p, q in oriented))
+                        tuple((tuple(float(v) for v in p), tuple(float(v) for v in q)) for p, q in oriented), tuple(weights))
 
 
 def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None = None, override: tuple[float, float, float] | None = None,
@@ -201,9 +217,11 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     base_z = inputs.rect[3] - params.pedestal_drop
     targets = [np.array(t) for t in inputs.targets]
     oriented = [(np.array(p), np.array(q)) for p, q in inputs.oriented]
-    poses = _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], params.ik_candidates)
+    weights = inputs.target_weights()
+    poses = _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], weights + [HOLDABLE_WEIGHT] * len(oriented),
+                       params.ik_candidates)
     _scoring_ik(SCORING_IK)  # built once, before the helper forks, for both processes
-    scores = fork_map(lambda i: score_pose(poses[i], base_z, targets, oriented=oriented)[0], len(poses))  # each pose on its own
+    scores = fork_map(lambda i: score_pose(poses[i], base_z, targets, oriented=oriented, weights=weights)[0], len(poses))  # each pose on its own
     best, best_score = None, -np.inf
     for pose, s in zip(poses, scores):
         if s > best_score + 1e-9:
@@ -212,14 +230,16 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     return best
 
 
-def _prefilter(poses: list[tuple[float, float, float]], targets: list[np.ndarray], keep: int) -> list[tuple[float, float, float]]:
-    """The ``keep`` poses whose horizontal distances to the targets sit best in the arm's
-    comfortable band (a cheap stand-in for IK, used to rank before the IK scoring)."""
+def _prefilter(poses: list[tuple[float, float, float]], targets: list[np.ndarray], weights: list[float],
+               keep: int) -> list[tuple[float, float, float]]:
+    """The ``keep`` poses whose horizontal distances to the targets (``weights`` each) sit best in
+    the arm's comfortable band (a cheap stand-in for IK, used to rank before the IK scoring)."""
     pts = np.asarray(targets, float)[:, :2]
+    w = np.asarray(weights, float)
 
     def comfort(pose: tuple[float, float, float]) -> float:
         d = np.linalg.norm(pts - np.asarray(pose[:2]), axis=1)
-        return float(np.sum(np.clip(1.0 - np.abs(d - COMFORT_DISTANCE) / COMFORT_BAND, 0.0, 1.0)))
+        return float(np.sum(w * np.clip(1.0 - np.abs(d - COMFORT_DISTANCE) / COMFORT_BAND, 0.0, 1.0)))
 
     ranked = sorted(range(len(poses)), key=lambda i: (-comfort(poses[i]), i))
     return [poses[i] for i in ranked[:keep]]
