@@ -14,7 +14,7 @@ generator cannot lay out (five objects too large for the table at that seed) is 
 an object the generator's camera could not frame wholly (``out_of_view``) is listed apart, not scored. Run:
 
     .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline] [--keep out/completion]
-        [--overrides '{"complete": {...}}']
+        [--overrides '{"complete": {...}}'] [--where]
 """
 
 from __future__ import annotations
@@ -81,20 +81,81 @@ def _lattice(origin: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
     return np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
 
 
-def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray,
-                      depth: np.ndarray) -> int:
-    """Pixels whose ray meets the solid more than FREE_SPACE_TOLERANCE before the captured depth."""
+def hit_depth(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
+    """(H, W) depth at which the ray through each pixel centre first meets the solid (inf: never)."""
     scene = o3d.t.geometry.RaycastingScene()
     for h in hulls:
         v = h.vertices @ world_to_optical[:3, :3].T + world_to_optical[:3, 3]
         scene.add_triangles(o3d.core.Tensor(v.astype(np.float32)), o3d.core.Tensor(np.asarray(h.faces, np.uint32)))
-    height, width = depth.shape
+    height, width = shape
     v, u = np.mgrid[0:height, 0:width]
     ray = np.stack([(u - intrinsics[0, 2]) / intrinsics[0, 0], (v - intrinsics[1, 2]) / intrinsics[1, 1], np.ones(u.shape)], axis=-1)
     rays = np.concatenate([np.zeros_like(ray), ray], axis=-1).reshape(-1, 6).astype(np.float32)
-    z = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().reshape(height, width)  # t along (x, y, 1) is the depth
+    return np.asarray(scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().reshape(height, width))  # t along (x, y, 1) is the depth
+
+
+def free_space_pixels(hulls: list[trimesh.Trimesh], world_to_optical: np.ndarray, intrinsics: np.ndarray,
+                      depth: np.ndarray) -> int:
+    """Pixels whose ray meets the solid more than FREE_SPACE_TOLERANCE before the captured depth."""
+    z = hit_depth(hulls, world_to_optical, intrinsics, depth.shape)
     with np.errstate(invalid="ignore"):
         return int(np.count_nonzero(np.isfinite(z) & (z < depth - FREE_SPACE_TOLERANCE)))
+
+
+def silhouette_off(hulls: list[trimesh.Trimesh], mine: np.ndarray, others: np.ndarray, depth: np.ndarray,
+                   world_to_optical: np.ndarray, intrinsics: np.ndarray) -> tuple[float, float]:
+    """How far the completed solid's silhouette falls short of the object's seen pixel mask ``mine``
+    (H, W) and how far it overshoots it (onto pixels not hidden by a nearer object of ``others``), in
+    pixels per pixel of the mask's silhouette edge (about the mean shortfall and overshoot per side,
+    in pixels). An edge pixel beside another object's pixel nearer than its own depth by
+    FREE_SPACE_TOLERANCE is that object's occluding contour, not the silhouette."""
+    z = hit_depth(hulls, world_to_optical, intrinsics, mine.shape)
+    hit = np.isfinite(z)
+    far = np.nan_to_num(depth, nan=np.inf)
+    occluded = np.zeros_like(mine)
+    for axis in (0, 1):
+        for shift in (-1, 1):
+            near = np.roll(others, shift, axis) & (np.roll(far, shift, axis) < far - FREE_SPACE_TOLERANCE)
+            occluded |= near
+    inner = mine & np.roll(mine, 1, 0) & np.roll(mine, -1, 0) & np.roll(mine, 1, 1) & np.roll(mine, -1, 1)
+    edge = max(1, int(np.count_nonzero(mine & ~inner & ~occluded)))
+    with np.errstate(invalid="ignore"):
+        hidden = others & (far < z)  # a nearer object's pixel: the solid may lie behind it
+    return np.count_nonzero(mine & ~hit) / edge, np.count_nonzero(hit & ~mine & ~hidden) / edge
+
+
+EDGE_PX = 1.5  # pixels: a cell projecting this near the edge of the object's seen mask is at its silhouette
+WHERE = ("edge", "hidden", "occluded", "free", "beyond")
+
+
+def where_off(parts: list[trimesh.Trimesh], truth: trimesh.Trimesh, mine: np.ndarray, others: np.ndarray, depth: np.ndarray,
+              world_to_optical: np.ndarray, intrinsics: np.ndarray) -> dict[str, tuple[float, float]]:
+    """Where the completed solid (union of convex ``parts``) misses the true one and where it exceeds it:
+    per place, (missing, excess) in shares of the true volume, GRID cells classed by the pixel they
+    project to (nearest pixel centre) in the capture: ``edge`` within EDGE_PX pixels of the edge of the
+    object's seen pixel mask ``mine`` (H, W) and not on another object's pixel (the silhouette), ``hidden``
+    inside the mask behind the seen surface, ``occluded`` behind another object's pixel (``others``),
+    ``free`` nearer than the captured depth by FREE_SPACE_TOLERANCE (seen through; anywhere), ``beyond``
+    elsewhere (background pixels away from the silhouette)."""
+    from scipy.ndimage import distance_transform_edt
+
+    lo = np.minimum(np.min([q.bounds[0] for q in parts], axis=0), truth.bounds[0])
+    hi = np.maximum(np.max([q.bounds[1] for q in parts], axis=0), truth.bounds[1])
+    g = _lattice(lo, lo, hi)
+    a, b = np.any([occupancy(q, g) for q in parts], axis=0), occupancy(truth, g)
+    opt = g @ world_to_optical[:3, :3].T + world_to_optical[:3, 3]
+    height, width = depth.shape
+    u = np.clip(np.rint(opt[:, 0] / opt[:, 2] * intrinsics[0, 0] + intrinsics[0, 2]).astype(np.int64), 0, width - 1)
+    v = np.clip(np.rint(opt[:, 1] / opt[:, 2] * intrinsics[1, 1] + intrinsics[1, 2]).astype(np.int64), 0, height - 1)
+    edge_distance = (distance_transform_edt(mine) + distance_transform_edt(~mine))[v, u]  # from the mask's edge, inside or out
+    with np.errstate(invalid="ignore"):
+        free = opt[:, 2] < np.nan_to_num(depth[v, u], nan=np.inf) - FREE_SPACE_TOLERANCE
+    seen, other = mine[v, u], others[v, u]
+    edge = ~free & ~other & (edge_distance <= EDGE_PX)
+    place = {"free": free, "edge": edge, "hidden": ~free & ~edge & seen, "occluded": ~free & ~edge & other}
+    place["beyond"] = ~np.any(list(place.values()), axis=0)
+    n = max(1, int(np.count_nonzero(b)))
+    return {k: (np.count_nonzero(b & ~a & place[k]) / n, np.count_nonzero(a & ~b & place[k]) / n) for k in WHERE}
 
 
 F_TOLERANCE = 0.005  # m: surface F-score distance (fair to walls thinner than the 2 mm IoU grid and the sensor noise)
@@ -148,7 +209,7 @@ def all_objects(seed: int) -> list[tuple[str, tuple[str, ...]]]:
 
 
 def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layout: str = "table",
-            objects: tuple[str, ...] | None = None, overrides: dict | None = None) -> list[dict]:
+            objects: tuple[str, ...] | None = None, overrides: dict | None = None, where: bool = False) -> list[dict]:
     scene = make_scene(SceneSpec(layout=layout, objects=objects, n_objects=n_objects, stacked=True, touching=True, seed=seed))
     tag = f"{layout}{seed}_{'-'.join(o[:3] for o in objects or ())}"
     capture = root / f"seed{tag}"
@@ -199,7 +260,11 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
                      "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"]),
                      "ball": ball, "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
-                     "graspable": declared_graspable(hulls, float(solid.bounds[0][2]), np.linalg.inv(world_to_optical)[:2, 3])})
+                     "graspable": declared_graspable(hulls, float(solid.bounds[0][2]), np.linalg.inv(world_to_optical)[:2, 3]),
+                     "silhouette": silhouette_off(hulls, (gt_ids == obj.id).reshape(depth.shape), ((gt_ids > 0) & (gt_ids != obj.id)).reshape(depth.shape),
+                                                  depth, world_to_optical, form["intrinsics"]) if where else None,
+                     "where": where_off(hulls, truth, (gt_ids == obj.id).reshape(depth.shape), ((gt_ids > 0) & (gt_ids != obj.id)).reshape(depth.shape),
+                                        depth, world_to_optical, form["intrinsics"]) if where else None})
     return rows
 
 
@@ -220,6 +285,7 @@ def main() -> None:
     parser.add_argument("--baseline", action="store_true", help="without free-space carving, hollow containers and mirroring")
     parser.add_argument("--keep", type=Path, default=None, help="write the captures and outputs here (a new folder)")
     parser.add_argument("--overrides", type=json.loads, default=None, help="stage parameters as JSON, as realsim.convert takes them (an A/B in one tree)")
+    parser.add_argument("--where", action="store_true", help="also where each completed solid misses and exceeds the truth (see where_off)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
@@ -227,7 +293,7 @@ def main() -> None:
         rows, skipped = [], []
         for seed, layout, objects in runs:
             try:
-                rows += measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides)
+                rows += measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides, args.where)
             except InputError as error:  # the generator could not lay the scene out: no capture to measure
                 skipped.append(f"seed {seed} {layout} ({error})")
     unframed = [r for r in rows if r.get("out_of_view")]
@@ -253,9 +319,25 @@ def main() -> None:
         print(f"objects out of view (the generator could not frame them; not scored): {names}")
     if skipped:
         print(f"scenes not measured (the generator could not lay them out): {'; '.join(skipped)}")
+    if args.where:
+        _print_where(rows)
     fits = [r for r in rows if r.get("fits")]
     print(f"objects the hand fits in truth (narrowest width <= {1000 * HAND_FITS:.0f} mm): {len(fits)}, "
           f"declared graspable {sum(bool(r.get('graspable')) for r in fits)}")
+
+
+def _print_where(rows: list[dict]) -> None:
+    """Per object and summed over the solid ones: where the completed solid misses / exceeds the truth."""
+    print(f"\nwhere the completed solid misses / exceeds the truth (% of the true volume, by the pixel a cell projects to): {', '.join(WHERE)}; "
+          "its silhouette against the seen mask (centre rays)")
+    scored = [r for r in rows if r.get("where")]
+    for r in scored:
+        print(f"{r['seed']:4d} {r['name']:28s} " + " ".join(f"{k} {100 * r['where'][k][0]:4.1f}/{100 * r['where'][k][1]:5.1f}" for k in WHERE)
+              + f" | silhouette short/over {r['silhouette'][0]:.2f}/{r['silhouette'][1]:.2f} px per edge px")
+    solid = [r for r in scored if r["name"] not in CONTAINERS]
+    if solid:
+        print(f"     {'solid objects, median':28s} " + " ".join(f"{k} {100 * np.median([r['where'][k][0] for r in solid]):4.1f}/{100 * np.median([r['where'][k][1] for r in solid]):5.1f}" for k in WHERE)
+              + f" | silhouette short/over {np.median([r['silhouette'][0] for r in solid]):.2f}/{np.median([r['silhouette'][1] for r in solid]):.2f} px per edge px")
 
 
 if __name__ == "__main__":
