@@ -39,8 +39,12 @@ def refines(step: Step | None, clause: str) -> bool:
 
 
 def _side(clause: str) -> str:
-    body = re.sub(rf"^(?:and |but )?(?:{_AMOUNT} )?(?:more |further |farther )?", "", clause)
-    return next(side for pattern, side in _SIDES if re.match(pattern, body))
+    body = re.sub(rf"^(?:and |but )?(?:{_AMOUNT} )?", "", clause)
+    for text in (body, re.sub(r"^(?:more|further|farther) ", "", body)):  # "further away"; "further to the left"
+        side = next((side for pattern, side in _SIDES if re.fullmatch(rf"(?:{pattern})(?: {_AMOUNT})?(?: though| instead| please)?", text)), None)
+        if side is not None:
+            return side
+    raise ValueError(f"{clause!r} names no side")
 
 
 def refine(step: Step, clause: str) -> Step:
