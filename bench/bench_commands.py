@@ -262,6 +262,11 @@ SUITE: list[tuple[str, str, str]] = [
     ("pantry", "line the brick up with the cube", "next brick cube"),
     ("pantry", "pick up the object nearest you", "lift marker"),
     ("fruitcans", "pick up the one nearest you", "lift soup_can"),
+    ("kitchen", "could you possibly shift the bowl out of my way", "aside bowl"),
+    ("kitchen", "set the mug aside", "aside mug"),
+    ("textblocks", "put the blue cube next to the plate, on the right", "right cube@blue plate"),
+    ("pantry", "slide the mustard a couple inches to the right", "moved mustard right 0.0508"),
+    ("kitchen", "push the banana a few inches forward", "moved banana forward 0.0762"),
 ]
 
 

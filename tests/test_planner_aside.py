@@ -32,10 +32,10 @@ def _gap(a: ObjectInfo, xy: tuple[float, float], b: ObjectInfo) -> float:
 @pytest.mark.parametrize("seed", range(401, 411))
 def test_an_aside_spot_is_clear_of_the_others_and_frees_the_objects_own_spot(seed: int) -> None:
     objs = _layout(seed)
-    lo = np.min([np.asarray(b.position[:2]) - np.asarray(b.size[:2]) / 2 for b in objs], axis=0) - 0.05
-    hi = np.max([np.asarray(b.position[:2]) + np.asarray(b.size[:2]) / 2 for b in objs], axis=0) + 0.05
+    lo = np.min([np.asarray(b.position[:2]) - np.asarray(b.size[:2]) / 2 for b in objs], axis=0) - 0.10
+    hi = np.max([np.asarray(b.position[:2]) + np.asarray(b.size[:2]) / 2 for b in objs], axis=0) + 0.10
     spots = {o.name: aside_spot(o, objs) for o in objs}
-    assert sum(xy is not None for xy in spots.values()) >= len(objs) // 2
+    assert sum(xy is not None for xy in spots.values()) >= len(objs) - 1  # a crowded layout may leave one big box no room
     for o in objs:
         xy = spots[o.name]
         if xy is None:

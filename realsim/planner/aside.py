@@ -3,7 +3,8 @@
 "Move the banana out of the way" carries it to the nearest free spot on the table: one with a
 comfortable margin from every other object's footprint and from the footprint it stood on (so
 its spot is free afterwards). The spot is chosen within the area the objects already cover
-(their footprints' extent, a little beyond): that is table the robot reaches. "Put the mug where
+(their footprints' extent, a little beyond, a little more when that is full): that is table
+the robot reaches. "Put the mug where
 the banana was" then places the mug at the banana's old spot; while the banana still stands
 there the planner says so instead of placing one object onto another.
 """
@@ -25,7 +26,7 @@ __all__ = ["ASIDE", "WHERE", "aside", "aside_spot", "where_was"]
 
 CLEAR = 0.04  # m: the least gap a spot keeps from other footprints (room for the open fingers)
 ROOMY = 0.08  # m: more margin than this buys nothing; then the shorter carry wins
-REACH_MARGIN = 0.05  # m the moved footprint may reach beyond the objects' footprints
+REACH_MARGINS = (0.05, 0.10)  # m the moved footprint may reach beyond the objects' footprints: the nearer first
 CELL = 0.01  # m: the grid the spot is searched on
 
 ASIDE = re.compile(r"(.+?) aside")
@@ -56,16 +57,18 @@ def aside_spot(obj: ObjectInfo, objects: Sequence[ObjectInfo], taken: Sequence[t
     :data:`ROOMY`), then the shortest carry. None when the objects' area has no such spot."""
     boxes = [_box(o) for o in objects if o.name != obj.name] + [_box(obj), *taken]
     half = np.asarray(obj.size[:2], float) / 2
-    lo = np.min([b[0] for b in boxes], axis=0) - REACH_MARGIN + half  # its footprint within the objects' area
-    hi = np.max([b[1] for b in boxes], axis=0) + REACH_MARGIN - half
-    gx, gy = np.arange(lo[0], hi[0] + CELL / 2, CELL), np.arange(lo[1], hi[1] + CELL / 2, CELL)
-    grid = np.array(np.meshgrid(gx, gy)).reshape(2, -1).T
-    grid = grid[np.all(grid <= hi, axis=1)]
-    gap = _gaps(grid - half, grid + half, boxes)
-    ok = gap >= CLEAR
-    if not ok.any():
+    for margin in REACH_MARGINS:
+        lo = np.min([b[0] for b in boxes], axis=0) - margin + half  # its footprint within the objects' area
+        hi = np.max([b[1] for b in boxes], axis=0) + margin - half
+        gx, gy = np.arange(lo[0], hi[0] + CELL / 2, CELL), np.arange(lo[1], hi[1] + CELL / 2, CELL)
+        grid = np.array(np.meshgrid(gx, gy)).reshape(2, -1).T
+        grid = grid[np.all(grid <= hi, axis=1)]
+        gap = _gaps(grid - half, grid + half, boxes)
+        if (gap >= CLEAR).any():
+            break
+    else:
         return None
-    grid, gap = grid[ok], gap[ok]
+    grid, gap = grid[gap >= CLEAR], gap[gap >= CLEAR]
     carry = np.linalg.norm(grid - np.asarray(obj.position[:2]), axis=1)
     best = np.lexsort((carry, -np.round(np.minimum(gap, ROOMY), 2)))[0]
     return float(grid[best, 0]), float(grid[best, 1])

@@ -2,8 +2,9 @@
 "put the mug by the box, a bit closer to me".
 
 A refinement names a side of the reference as seen from the robot. It turns "next to" (any
-side) into that side; after a side already given it shifts the object that way by the amount
-said (a few cm when none is), by a push once it stands there.
+side) into that side; after another side already given it shifts the object that way by the amount said (a
+few cm when none is), by a push once it stands there; the same side again only stresses it,
+unless it says how far.
 """
 
 from __future__ import annotations
@@ -56,5 +57,7 @@ def refine(step: Step, clause: str) -> Step:
         goals = [SideOf(obj, ref, way) if isinstance(g, NextTo) and g.obj == obj and g.ref == ref else g for g in step.goals]
         return Step([*step.calls[:-1], Call("place_beside", (obj, ref, way))], goals, step.objects, step.moves_robot)
     said = re.search(_AMOUNT, clause)
+    if way == side and not (said and re.search(r"\d|cm|mm|centim|millim|inch", said.group(0))):
+        return step  # "in front of the bowl, a little closer to you": the side said again
     dist = (distance(said.group(0)) if said else None) or SHIFT
     return Step([*step.calls, Call("push", (obj, _PUSH_WAY[way], round(dist, 3)))], step.goals, step.objects, step.moves_robot)

@@ -28,7 +28,7 @@ SIZE_AXIS = {"tall": 2, "taller": 2, "tallest": 2, "high": 2, "short": 2, "short
 
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5}
 NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
-           "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "a couple of": 2, "a pair of": 2}
+           "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "a couple of": 2, "a couple": 2, "a pair of": 2}
 
 SYNONYMS: dict[str, tuple[str, ...]] = {
     "cup": ("mug", "glass"), "mug": ("cup",), "tin": ("can",), "can": ("tin",), "carton": ("box",),
