@@ -266,7 +266,8 @@ SUITE: list[tuple[str, str, str]] = [
     ("kitchen", "set the mug aside", "aside mug"),
     ("textblocks", "put the blue cube next to the plate, on the right", "right cube@blue plate"),
     ("pantry", "slide the mustard a couple inches to the right", "moved mustard right 0.0508"),
-    ("kitchen", "push the banana a few inches forward", "moved banana forward 0.0762"),
+    ("kitchen", "push the soup can a few inches forward", "moved soup_can forward 0.0762"),
+    ("fruitcans", "get the soup can out of the way, then put the cube where the can was, then go home", "aside soup_can; spot rubiks_cube soup_can; home"),
 ]
 
 

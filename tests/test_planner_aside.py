@@ -75,6 +75,8 @@ def test_where_another_was_once_it_moved_away() -> None:
     assert Placed("obj8_strawberry", (0.65, 0.0)) in plan.goals
     plan = RulePlanner().plan("move the blue cube out of the way, then put the red cube where it was", CLUTTER)
     assert plan.calls.calls[-1].args[:2] == ("obj3_cube", [0.55, 0.05, 0.03])
+    plan = RulePlanner().plan("move the left can out of the way, then put the strawberry where the can was", CLUTTER)
+    assert plan.calls.calls[-1].args[:2] == ("obj8_strawberry", [0.4, 0.2, 0.06])  # of the two cans, the one moved
 
 
 def test_where_another_still_is_is_refused_and_where_it_was_is_back() -> None:

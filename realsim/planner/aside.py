@@ -89,6 +89,18 @@ def aside(phrase: str, p: Parser) -> Step:
     return Step(calls, goals, tuple(o.name for o in objs), aside=True)
 
 
+def _moved_one(phrase: str, obj: ObjectInfo, p: Parser) -> ObjectInfo:
+    """The object ``phrase`` names; of several it could name, the one an earlier step moved
+    ("get the soup can out of the way, then put the cube where the can was")."""
+    try:
+        return p.resolver.resolve(phrase, p.ctx, exclude=[obj.name], allow_plural=False)[0]
+    except InputError:
+        cands = [o for o in p.resolver.resolve(phrase, p.ctx, exclude=[obj.name], loose=True) if o.name in p.moved]
+        if len(cands) != 1:
+            raise
+        return cands[0]
+
+
 def where_was(obj_phrase: str, ref_phrase: str, p: Parser) -> Step | None:
     """"Put X where Y was": X placed at Y's starting spot, once an earlier step moved Y away.
     "it" is the object an earlier step moved; None when it is X itself ("put X where it was": back)."""
@@ -105,7 +117,7 @@ def where_was(obj_phrase: str, ref_phrase: str, p: Parser) -> Step | None:
             return None
         ref = last
     else:
-        ref = p.resolver.resolve(ref_phrase, p.ctx, exclude=[obj.name], allow_plural=False)[0]
+        ref = _moved_one(ref_phrase, obj, p)
     if ref.name not in p.moved:
         raise InputError(f"{ref.name} is still where it is: to put {obj.name} in its place, move it first "
                          f"('move the {ref.label} out of the way, then put the {obj.label} where the {ref.label} was'); {p.resolver.listing()}")

@@ -117,7 +117,8 @@ def clean(command: str) -> str:
                   r"|has|in|into|inside|on|onto|next|beside|behind|to)\b)", r"\1", text)
     # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
     text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
-    text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) (?:(?!away|off|out|aside\b)[a-z]+ ?)+?) ?(?:away|off|out|aside)?(?=$|[.,;]| and\b| then\b)",
+    text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
+                  r"(?: (?:away|off|out|aside))?(?=$|[.,;]| and\b| then\b)",
                   r"move \1 aside", text)
     text = re.sub(r"\bline ((?:up )?.+?)(?: up)? (?:with|next to|beside|alongside|by) ", lambda m: f"put {re.sub(r'^up ', '', m.group(1))} next to ", text)
     text = re.sub(r"\bline up (.+?)(?: in a row| side by side)?(?=$|[.,;]| then\b)|\bline (.+?) up(?: in a row| side by side)?(?=$|[.,;]| then\b)",
