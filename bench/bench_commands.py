@@ -268,6 +268,10 @@ SUITE: list[tuple[str, str, str]] = [
     ("pantry", "slide the mustard a couple inches to the right", "moved mustard right 0.0508"),
     ("kitchen", "push the soup can a few inches forward", "moved soup_can forward 0.0762"),
     ("fruitcans", "get the soup can out of the way, then put the cube where the can was, then go home", "aside soup_can; spot rubiks_cube soup_can; home"),
+    ("kitchen", "the banana is in the way, move it", "aside banana"),
+    ("pantry", "could you tuck the marker away", "aside marker"),
+    ("textkitchen", "I need the mug out of the way", "aside mug"),
+    ("kitchen", "please scoot the mug a hair to the right", "moved mug right 0.01"),
 ]
 
 

@@ -53,7 +53,10 @@ def test_no_free_spot_is_refused() -> None:
 
 
 @pytest.mark.parametrize("sentence", ["move the banana out of the way", "get the banana out of the way", "clear the banana away",
-                                      "could you put the banana to one side", "push the banana aside", "clear away the banana"])
+                                      "could you put the banana to one side", "push the banana aside", "clear away the banana",
+                                      "tuck the banana away", "put the banana away", "I need the banana out of the way",
+                                      "the banana is in the way, move it", "get the banana out of the way of the bowl",
+                                      "could you possibly shift the banana out of my way"])
 def test_out_of_the_way_places_the_object_at_a_free_spot(sentence: str) -> None:
     plan = RulePlanner().plan(sentence, CLUTTER)
     (call,) = plan.calls.calls
@@ -131,3 +134,13 @@ def test_the_aside_goal_needs_the_spot_freed_and_a_gap_to_the_others() -> None:
     assert goal.evaluate(world).ok
     world.pos["obj7_banana"] = (0.65, -0.19, 0.02)  # against the green cube
     assert not goal.evaluate(world).ok
+
+
+@pytest.mark.parametrize(("sentence", "dist"), [
+    ("slide the banana a couple inches to the left", 0.0508), ("push the banana a few inches forward", 0.0762),
+    ("scoot the banana a hair to the left", 0.01), ("move the banana a smidge to the left", 0.02),
+    ("nudge the banana a tad to the left", 0.03),
+])
+def test_amounts_people_say(sentence: str, dist: float) -> None:
+    (call,) = RulePlanner().plan(sentence, CLUTTER).calls.calls
+    assert call.name == "push" and call.args[0] == "obj7_banana" and call.args[2] == pytest.approx(dist, abs=1e-3)

@@ -116,7 +116,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\b((?:them|they|the [a-z]+(?: [a-z]+)?)) (?:both|all|each)(?= (?:go|goes|belong|belongs|need|needs|should|must|have"
                   r"|has|in|into|inside|on|onto|next|beside|behind|to)\b)", r"\1", text)
     # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
-    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
+                  r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
+    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
                   r"(?: (?:away|off|out|aside))?(?=$|[.,;]| and\b| then\b)",
                   r"move \1 aside", text)

@@ -167,10 +167,6 @@ def _clause(clause: str, p: Parser) -> Step:
     if not re.search(r"\b(?:closer|nearer)\b", c):  # "bring the mug closer to me" moves it, not into the hand
         c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
-    if verb in (*PUT, *PUSH, *TAKE) and (m := ASIDE.fullmatch(rest)):  # "move the banana out of the way"
-        return aside(m.group(1), p)
-    if verb in (*PUT, *TAKE) and (m := WHERE.fullmatch(rest)) and (step := where_was(m.group(1), m.group(2), p)) is not None:
-        return step  # "put the mug where the banana was"
     if verb is None and (m := _MEANS.fullmatch(c)):  # "tidy up by putting the mug in the bowl": the means is the command
         return _clause(m.group(1), p)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
@@ -180,6 +176,10 @@ def _clause(clause: str, p: Parser) -> Step:
         verb, rest = _verb(said)
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
+    if verb in (*PUT, *PUSH, *TAKE) and (m := ASIDE.fullmatch(rest)):  # "move the banana out of the way"
+        return aside(m.group(1), p)
+    if verb in (*PUT, *TAKE) and (m := WHERE.fullmatch(rest)) and (step := where_was(m.group(1), m.group(2), p)) is not None:
+        return step  # "put the mug where the banana was"
     if re.search(r"\b(?:further|farther|more) (?:to the )?(?:left|right|back|forward|front)\b(?=.*\b(?:on|onto|in|into|inside|next to|beside|behind"
                  r"|in front of|between|on top of)\s+(?:the|a|an|it|them)\b)", rest):
         rest = compared(rest)  # "put the cube further left on the plate": which cube, then where
