@@ -17,7 +17,7 @@ goal does not move that moved more than 2 cm), then the totals.
 
 Goal words: ``lift X``, ``in X Y``, ``on X Y``, ``next X Y``, ``left|right|front|behind X Y``,
 ``between X Y Z``, ``moved X left|right|forward|back D``, ``table X``, ``at X`` (back where it
-started), ``swapped X Y`` (each where the other started), ``home``, ``refuse``; several joined by ``;``. An object key is the end of a body name
+started), ``spot X Y`` (where Y started), ``aside X`` (out of the way: off its spot, clear of the others), ``swapped X Y`` (each where the other started), ``home``, ``refuse``; several joined by ``;``. An object key is the end of a body name
 (``soup_can``) with an optional ``@left``/``@right``/``@front``/``@back`` choosing among several
 by their start positions in the robot's frame.
 """
@@ -242,6 +242,36 @@ SUITE: list[tuple[str, str, str]] = [
     ("scan55", "move the grey object a little to the left", "refuse"),
     ("scan55", "pick up the white box, then go home", "lift white_box"),
     ("scan55", "could you put the red box on the green thing", "on red_box green_object"),
+    # --- out of the way, where another was, a place refined after a comma, away from, line up, nearest you
+    ("kitchen", "move the cracker box out of the way", "aside cracker_box"),
+    ("kitchen", "get the soup can out of the way", "aside soup_can"),
+    ("kitchen", "clear the banana away", "aside banana"),
+    ("pantry", "could you put the marker to one side", "aside marker"),
+    ("textkitchen", "move the cereal box out of the way", "aside cereal_box"),
+    ("kitchen", "move the banana out of the way, then put the mug where the banana was", "aside banana; spot mug banana"),
+    ("fruitcans", "move the banana out of the way and put the strawberry where the banana was", "aside banana; spot strawberry banana"),
+    ("textblocks", "move the blue cube out of the way, then put the red cube where it was", "aside cube@blue; spot cube@red cube@blue"),
+    ("kitchen", "put the mug where the banana is", "refuse"),
+    ("textkitchen", "put the mug where the cereal box is", "refuse"),
+    ("kitchen", "put the soup can next to the bowl, on the left", "left soup_can bowl"),
+    ("kitchen", "put the mug by the cracker box, a bit closer to me", "front mug cracker_box"),
+    ("pantry", "park the brick next to the mustard, on the right", "right brick mustard"),
+    ("fruitcans", "put the soup can in front of the bowl, slightly to the left", "front soup_can bowl"),
+    ("kitchen", "take the mug away from the bowl", "moved mug left 0.1"),
+    ("fruitcans", "take the strawberry away from the banana", "moved strawberry right 0.1"),
+    ("pantry", "line the brick up with the cube", "next brick cube"),
+    ("pantry", "pick up the object nearest you", "lift marker"),
+    ("fruitcans", "pick up the one nearest you", "lift soup_can"),
+    ("kitchen", "could you possibly shift the bowl out of my way", "aside bowl"),
+    ("kitchen", "set the mug aside", "aside mug"),
+    ("textblocks", "put the blue cube next to the plate, on the right", "right cube@blue plate"),
+    ("pantry", "slide the mustard a couple inches to the right", "moved mustard right 0.0508"),
+    ("kitchen", "push the soup can a few inches forward", "moved soup_can forward 0.0762"),
+    ("fruitcans", "get the soup can out of the way, then put the cube where the can was, then go home", "aside soup_can; spot rubiks_cube soup_can; home"),
+    ("kitchen", "the banana is in the way, move it", "aside banana"),
+    ("pantry", "could you tuck the marker away", "aside marker"),
+    ("textkitchen", "I need the mug out of the way", "aside mug"),
+    ("kitchen", "please scoot the mug a hair to the right", "moved mug right 0.01"),
 ]
 
 
@@ -339,6 +369,7 @@ def expected_goals(spec: str, sim):
     """(goals, objects the goal moves) for a goal spec; [] for "refuse"."""
     from realsim.planner.goals import (
         DIRECTIONS,
+        Aside,
         AtHome,
         Between,
         Inside,
@@ -381,6 +412,11 @@ def expected_goals(spec: str, sim):
             movers.add(names[1])
             pa, pb = sim.object_pose(names[0])[0], sim.object_pose(names[1])[0]
             goals += [Placed(names[0], (float(pb[0]), float(pb[1]))), Placed(names[1], (float(pa[0]), float(pa[1])))]
+        elif kind == "aside":  # out of the way: off its spot, clear of every other object
+            goals.append(Aside(names[0], tuple(sorted(n for n in sim.object_names() if n != names[0]))))
+        elif kind == "spot":  # where another object started
+            p = sim.object_pose(names[1])[0]
+            goals.append(Placed(names[0], (float(p[0]), float(p[1]))))
         elif kind == "at":
             p = sim.object_pose(names[0])[0]
             goals.append(Placed(names[0], (float(p[0]), float(p[1]))))
@@ -512,7 +548,7 @@ def _same_goal(a, b, tol: float = 0.005) -> bool:
         if isinstance(x, (int, float)) and isinstance(y, (int, float)):
             if abs(x - y) > (0.02 if f.name == "distance" else tol) + 1e-9:  # a push's distance: the simulation's tolerance
                 return False
-        elif isinstance(x, tuple) and isinstance(y, tuple):
+        elif isinstance(x, tuple) and isinstance(y, tuple) and all(isinstance(u, (int, float)) for u in (*x, *y)):
             if len(x) != len(y) or any(abs(u - v) > tol for u, v in zip(x, y)):
                 return False
         elif x != y:

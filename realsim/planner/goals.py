@@ -241,6 +241,45 @@ class Placed(Goal):
                           + ("" if touching is None else "; touching " + (", ".join(sorted(touching)) or "nothing")))
 
 
+def _box_gap(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray]) -> float:
+    """Horizontal distance (m) between two xy boxes (lo, hi); 0 when they overlap."""
+    d = np.maximum(0.0, np.maximum(b[0] - a[1], a[0] - b[1]))
+    return float(np.hypot(d[0], d[1]))
+
+
+def _xy_box(world: WorldView, name: str) -> tuple[np.ndarray, np.ndarray]:
+    c, s = np.asarray(_pos(world, name)[:2]), np.asarray(_size(world, name)[:2])
+    return c - s / 2, c + s / 2
+
+
+@dataclass
+class Aside(Goal):
+    """``obj`` was moved out of the way: it rests out of the hand, clear of the footprint it
+    started on (that spot is free) and at least ``min_gap`` from each of ``others``."""
+
+    obj: str
+    others: tuple[str, ...]
+    min_gap: float = 0.02
+    start: tuple[np.ndarray, np.ndarray] | None = field(default=None, compare=False)
+
+    def describe(self) -> str:
+        return f"{self.obj} moved out of the way (off its spot, {self.min_gap * 100:.0f} cm clear of the others)"
+
+    def prepare(self, world: WorldView) -> None:
+        self.start = _xy_box(world, self.obj)
+
+    def evaluate(self, world: WorldView) -> GoalResult:
+        _, touching = _shape(world, self.obj)
+        box = _xy_box(world, self.obj)
+        resting = touching is None or (relations.ROBOT not in touching and bool(touching))
+        off = self.start is None or _box_gap(box, self.start) > 0.0
+        gaps = {o: _box_gap(box, _xy_box(world, o)) for o in self.others}
+        near = min(gaps, key=gaps.__getitem__) if gaps else None
+        ok = resting and off and (near is None or gaps[near] >= self.min_gap)
+        return GoalResult(self.describe(), ok, ("resting" if resting else "not resting") + ("; off its spot" if off else "; still on its spot")
+                          + (f"; {gaps[near] * 100:.1f} cm from {near}" if near else ""))
+
+
 @dataclass
 class Moved(Goal):
     """``obj`` moved about ``distance`` m along the xy ``direction`` (a unit vector in the

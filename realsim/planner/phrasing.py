@@ -10,13 +10,14 @@ import re
 
 from realsim.planner import casual, clarify, discourse, places, remarks, speech, technical, topic
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
+from realsim.planner.refine import REFINE
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
     r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
     r"or (?:whatever|something|so)", r"(?:would|will|could|can) (?:ya|you)(?= *$| *[,.;])", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
     r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
@@ -114,7 +115,17 @@ def clean(command: str) -> str:
     # a floating quantifier: "the cans all go in the bowl", "the mug and the can both go ..."
     text = re.sub(r"\b((?:them|they|the [a-z]+(?: [a-z]+)?)) (?:both|all|each)(?= (?:go|goes|belong|belongs|need|needs|should|must|have"
                   r"|has|in|into|inside|on|onto|next|beside|behind|to)\b)", r"\1", text)
-    text = re.sub(r"\bout of (?:the|my|your|our) way\b", " ", text)  # "get the banana out of the way, put it ...": take it
+    # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
+    text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
+                  r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
+    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
+    text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
+                  r"(?: (?:away|off|out|aside))?(?=$|[.,;]| and\b| then\b)",
+                  r"move \1 aside", text)
+    text = re.sub(r"\bline ((?:up )?.+?)(?: up)? (?:with|next to|beside|alongside|by) ", lambda m: f"put {re.sub(r'^up ', '', m.group(1))} next to ", text)
+    text = re.sub(r"\bline up (.+?)(?: in a row| side by side)?(?=$|[.,;]| then\b)|\bline (.+?) up(?: in a row| side by side)?(?=$|[.,;]| then\b)",
+                  lambda m: f"put {m.group(1) or m.group(2)} next to each other", text)
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
     text = re.sub(r"(?<!the )(?<!far )(?<!further )(?<!farther )(?<!more )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
     for filler in FILLERS:
@@ -155,6 +166,8 @@ def split_command(command: str) -> list[str]:
             elif (same := re.fullmatch(r"(?:(?:in|on|into|onto|to|at) )?(?:the )?same (\w+)(?: again| too| as well)?", part)) and rel and (
                     same.group(1) in ("place", "spot", "one", "location", "position") or re.search(rf"\b{same.group(1)}\b", clauses[-1][rel.start():])):
                 continue  # "Red one too, same plate!": the place said again
+            elif REFINE.fullmatch(part) and _SIDE_REL.search(f" {clauses[-1]} "):  # "put the can next to the bowl, on the left": which side
+                clauses.append(part)
             elif _AMOUNT.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
@@ -178,6 +191,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_SIDE_REL = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, k in RELATIONS if k in ('next', 'left', 'right', 'front', 'behind'))})\s")
 _AMOUNT = re.compile(r"(?:by )?(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)")
 _NOT_BEFORE_VERB = {"and", "then", "to", "you", "i", "we", "please", "dont", "not", "can", "could", "will", "would", "should", "must", "also",
                     "just", "me", "or", "so", "first", "firstly", "next", "second", "secondly", "finally", "lastly", "after", "afterwards",

@@ -10,7 +10,8 @@ from realsim.planner.lexicon import SURFACES
 from realsim.planner.vocab import DIRECTION_WORDS, NUMBERS, UNITS, VAGUE_DISTANCES
 
 _DIR_ALT = "|".join(re.escape(w) for w in sorted(DIRECTION_WORDS, key=len, reverse=True))
-_NUM_ALT = "|".join(re.escape(w) for w in sorted(NUMBERS, key=len, reverse=True)) + "|half"
+_NUM_ALT = "|".join(re.escape(w) for w in sorted(NUMBERS, key=len, reverse=True)) + "|half|a few"
+_FEW = 3.0  # "a few inches": about three
 _UNIT_ALT = r"cm|mm|m|in|inch|inches|inche|ft|foot|feet|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?"
 TAIL = re.compile(rf"\b(?:by|about|around|roughly|some|approximately|like|to the|to|toward|towards|over to the|over|{_DIR_ALT}|{_NUM_ALT}|"
                    + "|".join(re.escape(v) for v in VAGUE_DISTANCES) + r")\b|(?<![a-z])\.?\d")
@@ -43,7 +44,7 @@ def distance(text: str) -> float | None:
         return None
     raw, unit = m.group(1), m.group(2)
     raw = "half" if raw.startswith("half") else raw  # "half an inch"
-    value = {"a": 1.0, "half": 0.5}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
+    value = {"a": 1.0, "half": 0.5, "a few": _FEW}.get(raw) or float(NUMBERS.get(raw, 0) or raw) if raw not in NUMBERS else float(NUMBERS[raw])
     if "and a half" in m.group(0):
         value += 0.5
     unit = unit[:-1] if unit.endswith("s") and unit not in ("s",) else unit
@@ -56,7 +57,7 @@ def distance(text: str) -> float | None:
     return dist
 
 
-_MEASURE = re.compile(r"\s+(?:(?:about |around |roughly |some )?(\d+(?:\.\d+)?|a few|a couple of) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+_MEASURE = re.compile(r"\s+(?:(?:about |around |roughly |some )?(\d+(?:\.\d+)?|a few|a couple(?: of)?) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
                       r"|a (?:bit|little|tad)(?: more)?|slightly|directly|just|diagonally|immediately|straight|somewhere"
                       rf"|(?:down )?(?:on|onto) {SURFACES}|down)$")
 

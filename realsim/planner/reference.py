@@ -287,7 +287,7 @@ class Resolver:
             text, order = m.group(1), ("corner", (m.group(2), m.group(3)))
         text, count = middle_of(text)  # "the block in the middle of the three"
         m = None if m else re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |is )?(?:(?:on|to|at|in) the (far )?(left|right|front|back|middle|center|centre)(?: side| end| one)?"
-                         r"|(closest|nearest|closer|nearer) to (?:me|you|the robot)|(farthest|furthest|farther|further)(?: away)? from (?:me|you|the robot))", text)
+                         r"|(closest|nearest|closer|nearer)(?: to)? (?:me|you|the robot)|(farthest|furthest|farther|further)(?: away)? from (?:me|you|the robot))", text)
         if m:
             text = m.group(1)
             word = m.group(3) or ("nearest" if m.group(4) else "farthest")

@@ -20,6 +20,7 @@ from collections.abc import Sequence
 
 from realsim.errors import InputError
 from realsim.planner import typos
+from realsim.planner.aside import ASIDE, WHERE, aside, where_was
 from realsim.planner.asides import is_aside
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
@@ -30,6 +31,7 @@ from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
 from realsim.planner.reference import Context, Resolver
+from realsim.planner.refine import refine, refines
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
@@ -74,11 +76,14 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
             p.ctx.set(named)
         if c.startswith(TOPIC):  # "the thing at the back, push it ...": what "it" means next
             p.ctx.set(p.resolver.resolve(c[len(TOPIC):], Context(p.ctx.last), allow_plural=True))
+        elif c and steps and refines(steps[-1], " ".join(c.split())):  # "put the can next to the bowl, on the left"
+            steps[-1] = refine(steps[-1], " ".join(c.split()))
         elif c:
             try:
                 step = repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else typos.retry(c, p.resolver.scene_words, lambda t: _clause(t, p))
                 if not (steps and [x.name for x in step.calls] == ["grasp"] and step.calls == steps[-1].calls):  # "Mug, up. Lift it.": held already
                     steps.append(step)
+                    p.moved |= set(step.objects)
             except InputError as exc:
                 if not is_aside(c, p):
                     raise
@@ -88,6 +93,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
+    steps = _superseded(steps)
     calls = [c for s in steps for c in s.calls]
     clash = sorted({str(a) for c in calls for a in c.args if isinstance(a, str) and a in kept})
     if clash:
@@ -96,6 +102,18 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     if not steps:
         raise InputError(f"the command only says what not to touch; what should I do? {HELP}")
     return calls, _final_goals(steps)
+
+
+def _superseded(steps: list[Step]) -> list[Step]:
+    """An object moved out of the way that a later step moves anyway is only taken up first
+    ("get the banana out of the way, put it behind the box")."""
+    out = []
+    for i, step in enumerate(steps):
+        later = {o for s in steps[i + 1 :] for o in s.objects}
+        if step.aside and len(step.objects) == 1 and step.objects[0] in later:
+            step = Step([Call("grasp", step.objects)], [Lifted(step.objects[0])], step.objects)
+        out.append(step)
+    return out
 
 
 def _final_goals(steps: list[Step]) -> list[Goal]:
@@ -158,13 +176,19 @@ def _clause(clause: str, p: Parser) -> Step:
         verb, rest = _verb(said)
     if verb is None:
         raise InputError(f"cannot understand {clause!r}; {HELP}")
+    if verb in (*PUT, *PUSH, *TAKE) and (m := ASIDE.fullmatch(rest)):  # "move the banana out of the way"
+        return aside(m.group(1), p)
+    if verb in (*PUT, *TAKE) and (m := WHERE.fullmatch(rest)) and (step := where_was(m.group(1), m.group(2), p)) is not None:
+        return step  # "put the mug where the banana was"
     if re.search(r"\b(?:further|farther|more) (?:to the )?(?:left|right|back|forward|front)\b(?=.*\b(?:on|onto|in|into|inside|next to|beside|behind"
                  r"|in front of|between|on top of)\s+(?:the|a|an|it|them)\b)", rest):
         rest = compared(rest)  # "put the cube further left on the plate": which cube, then where
     # "bring the mug 5 cm closer": any moving verb with a way and a distance (or "closer") is a push
     by = verb in PUT and (distance(rest) is not None or re.search(r"\b(?:closer|nearer|further|farther)\b", rest)
                           or re.search(r"\bto the (?:left|right)(?: side)?(?: a bit| a little| slightly)?$", rest))  # "put the mug to the left"
-    m = TOWARD.fullmatch(rest) if verb in PUSH else None
+    m = TOWARD.fullmatch(rest) if verb in (*PUSH, *PUT, *TAKE) else None
+    if m and verb not in PUSH and "away from" not in m.group(2):  # "take the mug away from the bowl": only away moves it
+        m = None
     if m and (verb not in PUT or "from" in m.group(2) or distance(rest) is not None):
         return push_relative(m, distance(rest), p)  # "push the mug toward the bowl"; "slide X toward Y" puts it next to Y
     if (verb in PUSH or by) and is_push(rest):

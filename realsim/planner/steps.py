@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 from realsim.errors import InputError
 from realsim.planner.goals import Goal, Moved, NextTo, On, Placed
@@ -32,6 +33,7 @@ class Step:
     objects: tuple[str, ...] = ()
     moves_robot: bool = True
     pending: str = ""  # a plural "take" that a later "put them ..." carries out, else this error
+    aside: bool = False  # moves its objects out of the way (a later step that moves them anyway makes it a grasp)
 
 
 @dataclass
@@ -41,6 +43,8 @@ class Parser:
     objects: Sequence[ObjectInfo]
     robot_yaw: float = 0.0
     ctx: Context = field(default_factory=Context)
+    moved: set[str] = field(default_factory=set)  # objects earlier clauses moved
+    taken: list[Any] = field(default_factory=list)  # xy boxes (lo, hi) earlier clauses moved objects to
 
     def __post_init__(self) -> None:
         self.resolver = Resolver(self.objects, self.robot_yaw)

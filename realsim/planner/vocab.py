@@ -28,7 +28,7 @@ SIZE_AXIS = {"tall": 2, "taller": 2, "tallest": 2, "high": 2, "short": 2, "short
 
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5}
 NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
-           "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "a couple of": 2, "a pair of": 2}
+           "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "a couple of": 2, "a couple": 2, "a pair of": 2}
 
 SYNONYMS: dict[str, tuple[str, ...]] = {
     "cup": ("mug", "glass"), "mug": ("cup",), "tin": ("can",), "can": ("tin",), "carton": ("box",),
@@ -87,7 +87,8 @@ UNITS: dict[str, float] = {
 }
 VAGUE_DISTANCES: dict[str, float] = {"a tiny bit": 0.03, "a little bit": 0.04, "a bit": 0.05, "a little": 0.05, "slightly": 0.03,
                                      "a touch": 0.03, "a lot": 0.20, "a few centimeters": 0.05, "a few centimetres": 0.05,
-                                     "a few cm": 0.05, "a couple of centimeters": 0.02, "a couple of cm": 0.02}
+                                     "a few cm": 0.05, "a couple of centimeters": 0.02, "a couple of cm": 0.02,
+                                     "a hair": 0.01, "a smidge": 0.02, "a smidgen": 0.02, "a tad": 0.03}
 
 
 def singular(word: str) -> str:
