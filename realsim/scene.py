@@ -36,6 +36,8 @@ class CaptureInfo:
     units_reason: str | None = None  # why detection chose the units
     point_spacing: float | None = None  # m: the capture's own resolution (median neighbour distance)
     camera_view: bool = False  # an organized view from one camera (its grid is a photo)
+    surface_detail: float | None = None  # m: the finest detail the surface holds where the capture smoothed it
+    # beyond its spacing (a fused sweep: its TSDF truncation band, over which creases are rounded); None: its spacing
     splat: Path | None = None  # the Gaussian splat PLY the points came from, kept for the viewer
     faces_turned: bool = False  # an environment mesh wound inward, turned before sampling
     photo: Path | None = None  # the photo of a photo-only capture

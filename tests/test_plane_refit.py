@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from realsim.geometry import fit_plane, inside_convex_polygon, polygon_and_rectangle
-from realsim.perception.plane_refit import _SHORTLIST_BANDS, _NearPlane, refine_plane
+from realsim.perception.plane_refit import _SHORTLIST_BANDS, _NearPlane, level_unless_resolved, refine_plane
 
 
 def _plain_refine(points: np.ndarray, normal: np.ndarray, d: float, band: float, passes: int = 3,
@@ -67,3 +67,34 @@ def test_convex_polygon_test_keeps_its_formula() -> None:
         got = inside_convex_polygon(xy, polygon, margin)
         assert np.array_equal(got, expected)
         assert 0 < got.sum() < len(xy)
+
+
+def _ring_top(tilt_deg: float, low_side_mm: float, seed: int = 0) -> np.ndarray:
+    """A 0.5 m square top seen only along its border (a far table in a sweep), tilted ``tilt_deg``
+    about y, one side's points ``low_side_mm`` low (a grazing view's layer), 1 mm noise."""
+    rng = np.random.default_rng(seed)
+    t = rng.uniform(-0.25, 0.25, 2000)
+    side = rng.integers(0, 4, 2000)
+    x = np.where(side == 0, -0.25, np.where(side == 1, 0.25, t))
+    y = np.where(side == 2, -0.25, np.where(side == 3, 0.25, t))
+    x, y = x + rng.uniform(0, 0.03, 2000) * np.sign(-x), y + rng.uniform(0, 0.03, 2000) * np.sign(-y)
+    z = 0.8 + np.tan(np.radians(tilt_deg)) * x - 0.001 * low_side_mm * (side == 0) + rng.normal(0, 0.001, 2000)
+    return np.stack([x, y, z], axis=1)
+
+
+def test_a_top_tilted_within_the_resolution_takes_gravity() -> None:
+    """A level top whose seen border lies a few mm low on one side fits tilted (0.3-1 deg); at an
+    8 mm resolution that lean is within what the capture resolves across 0.5 m: it takes up."""
+    up = np.array([0.0, 0.0, 1.0])
+    top = _ring_top(0.0, 4.0)
+    normal = fit_plane(top)[0]
+    assert np.degrees(np.arccos(normal[2])) > 0.3
+    assert level_unless_resolved(top, normal, up, 0.008) is up
+    assert level_unless_resolved(top, normal, up, 0.001) is normal  # a 1 mm capture resolves it: its own fit
+
+
+def test_a_truly_tilted_top_keeps_its_tilt() -> None:
+    """A top tilted 3 deg leans by more than an 8 mm capture can err across it: its fit stays."""
+    top = _ring_top(3.0, 4.0)
+    normal = fit_plane(top)[0]
+    assert level_unless_resolved(top, normal, np.array([0.0, 0.0, 1.0]), 0.008) is normal

@@ -39,7 +39,7 @@ from realsim.perception.formats import (
 )
 from realsim.perception.lone_object import is_lone_object
 from realsim.perception.resolution import UNIT_SCALE, check_scale, detect_up, distant_origin, plausible_units, point_spacing
-from realsim.perception.rgbd import is_rgbd_sequence
+from realsim.perception.rgbd import FusionParams, is_rgbd_sequence
 from realsim.scene import CaptureInfo, Scene
 from realsim.viewer.splat import is_splat_ply, read_splat_ply
 
@@ -353,6 +353,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
     units_reason = splat = None
     spacing: float | None = None
     camera_view = faces_turned = False
+    detail: float | None = None
     units_detected = up_detected = False
     transform = np.eye(4)
     if env is not None:
@@ -377,6 +378,8 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         with np.errstate(invalid="ignore", over="ignore"):  # an infinite coordinate becomes non-finite, as NaN ones stay
             scene_points = cloud.points @ transform[:3, :3].T
         spacing = point_spacing(scene_points, seed)
+        if cloud.fmt == "rgbd":  # the fused crossings lie a voxel apart; the TSDF averaged over trunc_voxels of them
+            detail = FusionParams().trunc_voxels * spacing
         splat = cloud.splat
         scene_colors = cloud.colors
         scene_normals = normals_to_world(cloud.normals, transform)
@@ -398,6 +401,7 @@ def load_capture(path: Path | None, params: LoadParams = LoadParams(), seed: int
         units_reason=units_reason,
         point_spacing=spacing,
         camera_view=camera_view,
+        surface_detail=detail,
         splat=splat,
         faces_turned=faces_turned,
     )

@@ -68,3 +68,22 @@ class _NearPlane:
         out = np.zeros(self.total, dtype=bool)
         out[self.index[mask]] = True
         return out
+
+
+def level_unless_resolved(points: np.ndarray, normal: np.ndarray, up: np.ndarray, resolution: float) -> np.ndarray:
+    """``up`` (the scene's common support normal: gravity) for a plane of ``points`` whose fitted
+    ``normal`` departs from it by no more than the capture resolves, else ``normal``.
+
+    A capture places each surface point to within its ``resolution`` (a fused sweep's voxel, a
+    sparse cloud's cell: a top seen at grazing angles has its crossings on voxel layers, its
+    border rounded down), so across the plane's span L along its tilt the fit may lean by
+    atan(resolution / L) with no tilt there at all. Every support of a room shares gravity; one
+    whose tilt is within that bound takes it."""
+    tilt = normal - (normal @ up) * up
+    size = float(np.linalg.norm(tilt))
+    if size == 0.0:
+        return up
+    along = points @ (tilt / size)
+    span = float(along.max() - along.min()) if len(along) else 0.0
+    lean = float(np.arctan2(size, abs(float(normal @ up))))
+    return up if span > 0.0 and lean <= np.arctan2(resolution, span) else normal

@@ -18,7 +18,7 @@ from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon, polygon_and_rectangle, ransac_plane, rotation_between
 from realsim.perception.level_patches import level_heights
 from realsim.perception.plane_patches import surface_of
-from realsim.perception.plane_refit import refine_plane
+from realsim.perception.plane_refit import level_unless_resolved, refine_plane
 from realsim.perception.resolution import PLAUSIBLE_EXTENT, working_resolution
 from realsim.perception.up_axis import evidence_points, resting_normal
 from realsim.scene import Scene, SupportPlane
@@ -278,6 +278,7 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     pts = work @ rotation.T
 
     cos_support = np.cos(np.radians(params.support_max_tilt_deg))
+    up = np.array([0.0, 0.0, 1.0])
     regions: list[tuple[float, np.ndarray]] = []  # (height, downsampled region points)
     for p_normal, _, inliers in proposals:
         p_normal = rotation @ p_normal
@@ -296,6 +297,10 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         if n[2] < cos_support:  # a sliver (a table edge in a sparse capture) refits to a tilted plane
             continue
         centre = band[mask].mean(axis=0)  # the plane's height where the support is, not at the origin
+        # a cloud's points lie within its resolution (a camera's depth noise grows with distance instead)
+        level = n if viewpoint is not None else level_unless_resolved(band[mask], n, up, resolution)
+        if level is not n:  # gravity (the levelled scene's up), through the points' centroid
+            n, dd = level, -float(centre[2])
         supports.append((float(-(dd + n[0] * centre[0] + n[1] * centre[1]) / n[2]), band[mask], n))
     supports = [sup for sup in supports if _covered_from_above(pts, sup[0], sup[1], params, scene.seed) <= params.max_covered_fraction]
     if not supports:

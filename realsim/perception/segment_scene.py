@@ -119,6 +119,8 @@ def _segment_unorganized(scene: Scene, params: SegmentParams) -> tuple[np.ndarra
     working = at_resolution(params, resolution)
     if resolution < 2 * noise:  # neighbours' offsets are mostly noise: a fold cannot be told at one cell
         working = dataclasses.replace(working, contact_cut_cell=0.0)
+    if (scene.capture.surface_detail or 0.0) > working.contact_cut_cell:  # a surface smoothed wider than the
+        working = dataclasses.replace(working, contact_cut_cell=0.0)  # fold resolution rounds the creases it would cut
     result = segment_objects(centres, colors, scene.planes, None, working, seed=scene.seed,
                              resolution=resolution, context=context, known_normals=normals)
     result = filter_by_size(centres, result, scene.planes, working, max_sheet=max(params.min_object_size / 2, 6 * noise))
