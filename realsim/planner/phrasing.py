@@ -8,19 +8,23 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import casual, clarify, discourse, places, remarks, speech, technical, topic
+from realsim.planner import casual, clarify, discourse, places, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
-    r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
+    r"(?:would|could|will|can|are) you (?:be )?able to", r"(?:have|take) a (?:(?:good|quick|close|closer|proper|better) )?(?:look|squiz|gander|peek|peep|glance|squint|butchers?|dekko|shufti) at (?:it|them)",
     r"thank you (?:ever |very )?(?:so )?much", r"thank you kindly", r"excuse me", r"you see", r"now then",
     r"if it (?:is |s )?(?:no|not any) (?:trouble|bother)(?: at all)?", r"if it (?:isnt|is not) too much (?:trouble|bother)",
+    r"if (?:it|that|this)(?: s| is| would be| would not be| wouldnt be| isnt| is not| wont be| will not be)? (?:not )?(?:too much )?(?:of )?(?:a |any )?(?:trouble|bother|problem|hassle)(?: for you)?(?: at all)?",
+    r"if (?:that|it|this)(?: s| is| would be)? (?:doable|feasible|no problem|not a problem|ok with you|alright with you)", r"if you (?:could|can|would) manage(?: it| that)?",
+    r"if you (?:would|could|will) be so (?:very )?kind", r"(?:would|do) you mind (?:terribly|awfully|very much|at all)", r"yay", r"woo+", r"yippee", r"hooray",
+    r"neatly", r"nicely", r"tidily", r"(?:young|little|good|dear|my|nice) (?:robot|machine|bot|friend|dear)", r"my dear", r"there s a good machine",
     r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
     r"or (?:whatever|something|so)", r"(?:would|will|could|can) (?:ya|you)(?= *$| *[,.;])", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
-    r"(?:would|could|will) you (?:be so kind as|be kind enough) to", r"be so kind as to", r"would you kindly",
+    r"(?:would|could|will) you (?:be so (?:very )?kind as|be kind enough) to", r"be so (?:very )?kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was |am |m )?wonder(?:ing)? if you (?:could|would|might|can|will)", r"(?:might|may|could|can) i (?:trouble|bother|ask|get) you to", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
     r"will you", r"you may", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
@@ -44,7 +48,9 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
             "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right",
-            "b4": "before", "nexto": "next to", "infront": "in front", "ontop": "on top", "inbetween": "in between", "onto the top of": "on top of", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through"}
+            "b4": "before", "nexto": "next to", "infront": "in front", "ontop": "on top", "inbetween": "in between", "onto the top of": "on top of", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through",
+            "teh": "the", "hte": "the", "th": "the", "cn": "can", "swp": "swap", "mov": "move", "mve": "move", "orng": "orange", "prpl": "purple",
+            "blk": "black", "rd": "red", "sm": "small", "lg": "large", "bx": "box", "btl": "bottle", "gimme": "give me", "yr": "your"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -58,7 +64,7 @@ QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why
 
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
-    text = technical.technical(command.lower().replace("’", "'"))
+    text = wishes.as_request(technical.technical(command.lower().replace("’", "'")))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
@@ -73,6 +79,17 @@ def clean(command: str) -> str:
     # holding on is what a lift leaves: "keep holding it until I say otherwise"
     text = re.sub(r"(?:^|(?<=[.,;!?])|\s+and\b)\s*(?:and )?(?:keep|continue|just keep) (?:holding|to hold) (?:it|them|on(?: to (?:it|them))?)(?: up| there| in the air)?(?: until [^.,;!?]*)?(?=$|[.,;!?])", " ", text)
     text = re.sub(r"\s+with (?:it|them)(?=$|[.,;])", "", text)  # "into the bowl with it"
+    text = re.sub(r"(?:,\s*|\s+)and (?:hold|hold on|hold there|hold still|hold steady|stay there)(?=\s*(?:$|[.;!?]))", "", text)  # "..., and hold."
+    # how high a lift goes is the robot's choice: "hold it up high", "lift the can way up high", "up really high"
+    text = re.sub(r"\s+(?:(?:way|really|very|super|real|nice and|good and)\s+)?(?:up\s+)?(?:(?:really|very|super|so)\s+)?high(?:\s+up)?(?:\s+in(?:to)? the air)?"
+                  r"(?=\s*(?:$|[.,;!?]))", " up", text)
+    text = re.sub(r"\b(?:move|bring|get|take|raise|make) (it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?) (?:go )?up (?:in(?:to)? the air|off the (?:table|counter|desk|surface))\b",
+                  r"lift \1", text)  # "make it go up in the air"
+    text = re.sub(r"\b(lift|raise|pick up|hold up) ((?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)) (?:up )?off (?:of )?the (?:table|counter|desk|surface|floor)\b",
+                  r"\1 \2", text)  # "lift that mug up off the table"
+    text = re.sub(r"\b(?:him|her)\b", "it", text)  # an object is "it" ("you put him beside the bottle")
+    text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
+    text = re.sub(r"\b(?:perched|balanced|sitting|standing|resting|lying|sat|stood) (?=(?:on|atop|on top of|in|inside) (?:the|that|this|a|an)\b)", "", text)
     text = _VOCATIVE.sub(" ", text)
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
@@ -82,7 +99,7 @@ def clean(command: str) -> str:
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
-    text = re.sub(r"\bto (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of"
+    text = re.sub(r"\b(?:to|at) (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of", "at beside of"
     text = re.sub(r"\b(behind|beside|inside) of\b", r"\1", text)
     text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
     text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
@@ -135,7 +152,11 @@ def clean(command: str) -> str:
     for g, v in GERUNDS.items():
         text = re.sub(rf"\b{g}\b", v, text)
     text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
-    return " ".join(text.split())
+    text = " ".join(text.split())
+    # the object said first, then the robot told what it does with it: "the cereal box you are pushing 5 cm forward"
+    text = re.sub(rf"(?:^|(?<=[.,;] ))((?:the|that|this) [a-z ]+?) you (?:{_YOU_MODAL} )?({VERB_START.pattern})", r"\2 \1", text)
+    text = re.sub(rf"(?:^|(?<=[.,;] ))you (?:{_YOU_MODAL} )?(?={VERB_START.pattern})", "", text)  # "orange cylinder, you are sliding it left"
+    return re.sub(r"\bto (forwards?|backwards?|ahead)\b", r"\1", text)  # "to forward"
 
 
 def split_command(command: str) -> list[str]:
@@ -151,7 +172,7 @@ def split_command(command: str) -> list[str]:
     parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
-    parts = [re.sub(rf"^you (?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you put in the bowl"
+    parts = [re.sub(rf"^you (?:{_YOU_MODAL} )?(?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you (must) put in the bowl"
     parts = [_prohibition(p, verb_re) for p in parts]
     parts = topic.fronted(topic.joined(topic.choice(topic.partitive(parts)), verb_re), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
@@ -191,6 +212,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_YOU_MODAL = r"(?:are going to|are|re|must to|must|should|have to|need to|will|can|could|shall|gotta|gonna)"  # "you must to put it ..."
 _SIDE_REL = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, k in RELATIONS if k in ('next', 'left', 'right', 'front', 'behind'))})\s")
 _AMOUNT = re.compile(r"(?:by )?(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)")
 _NOT_BEFORE_VERB = {"and", "then", "to", "you", "i", "we", "please", "dont", "not", "can", "could", "will", "would", "should", "must", "also",

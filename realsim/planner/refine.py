@@ -25,9 +25,9 @@ _AMOUNT = (r"(?:(?:about |around |roughly |maybe )?(?:\d+(?:\.\d+)?|a few|a coup
 _SIDES: tuple[tuple[str, str], ...] = (
     (r"(?:on |to |at |towards? )?(?:the |its |their )?left(?: side| hand side| of it)?", "left"),
     (r"(?:on |to |at |towards? )?(?:the |its |their )?right(?: side| hand side| of it)?", "right"),
-    (r"(?:closer|nearer)(?: to (?:me|you|the robot|us))?|(?:towards?|to) (?:me|you|us|the robot)|(?:on|at) (?:the |this |my |your )?(?:near|front) side"
+    (r"(?:closer|nearer)(?: to (?:me|you|the robot|us))?|(?:towards?|to) (?:me|you|us|the robot)|(?:on|at) (?:the |this |my |your )?(?:near|front) side(?: (?:to|from) (?:me|you|the robot|us))?"
      r"|in front(?: of it)?|at the front|on this side", "front"),
-    (r"(?:further|farther)(?: away| back| out)?(?: from (?:me|you|the robot|us))?|(?:on|at) (?:the )?(?:far|back) side|behind(?: it)?|at the back", "behind"),
+    (r"(?:further|farther)(?: away| back| out)?(?: from (?:me|you|the robot|us))?|(?:on|at) (?:the )?(?:far|back) side(?: from (?:me|you|the robot|us))?|behind(?: it)?|at the back", "behind"),
 )
 REFINE = re.compile(rf"(?:and |but )?(?:{_AMOUNT} )?(?:more |further |farther )?(?:{'|'.join(f'(?:{s})' for s, _ in _SIDES)})(?: {_AMOUNT})?(?: though| instead| please)?")
 """A clause that only refines where the previous one put something."""

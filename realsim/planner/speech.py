@@ -23,7 +23,7 @@ _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
                         r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|it)\s+"
                         r"|(?:the robot|it|you|we)\s+(?:will|is going to|s going to|are going to|re going to|gonna|shall|is about to|can|is able to)\s+(?:now\s+)?)")
-_ADDRESS = re.compile(r"^(?:hey |ok |okay |alright )?(?:robot|franka|panda|class|everyone)\s+(?=\w)")
+_ADDRESS = re.compile(r"^(?:hey |ok |okay |alright |yo |hi |hello )?(?:robot|franka|panda|class|everyone)\s+(?=\w)")
 
 
 def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:

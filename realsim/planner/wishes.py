@@ -1,0 +1,36 @@
+"""Requests said as wishes: "it would be nice if the brick were in front of the bottle", "I'd like
+the blue cube stacked on the red one", "I was hoping the can could end up left of the box".
+
+Rule: a wish frame (it would be nice / lovely / great if ..., I'd like / love / want / prefer ...,
+I was hoping ...) whose object is a noun phrase with a determiner and whose end is a place word
+and a target is the request to put that object there. A wish without a place ("I'd like the mug")
+is left alone: it is read as the take it asks for, or refused.
+"""
+
+from __future__ import annotations
+
+import re
+
+from realsim.planner.lexicon import RELATIONS
+
+__all__ = ["as_request"]
+
+_THING = r"((?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|nearest|farthest|furthest|closer|nearer|further|farther)\b)[a-z]+)+?)"
+# a place the object is wished at; "to", "by", "over" and the like also say which one ("the can closest to the bowl")
+_PLACE = "|".join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0]))
+                  if w not in ("to", "by", "over", "above", "near", "nearby", "toward", "towards", "closer to", "nearer to", "close to", "against"))
+_STATE = (r"(?:(?:to be|to go|to end up|to sit|to stand|could be|would be|were to be|could end up|would end up|could go|could sit|might be|can be"
+          r"|were|was|is|are|ended up|end up|be) )?(?:(?:sitting|standing|resting|lying|placed|put|set|moved|stacked|sat|stood|set down|put down) )?"
+          r"(?:(?:neatly|nicely|carefully|properly|tidily|gently|right|just|over) )*")
+_FRAMES = (
+    r"(?:it|that|things)(?: would| ?'d| will| might)? be (?:(?:really|so|very|quite|rather) )?(?:nice|lovely|great|good|grand|wonderful|helpful|ideal"
+    r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
+    r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
+    r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much) )?(?:like|love|want|prefer|wish) (?:to see |to have |it if )?",
+)
+_WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
+
+
+def as_request(text: str) -> str:
+    """``text`` (lower case) with every wish for an object to be at a place turned into "put X ..."."""
+    return _WISH.sub(lambda m: f"put {m.group(1)} ", text)
