@@ -338,3 +338,12 @@ def test_a_thing_located_above_or_under_another_is_found_by_that_relation() -> N
             ObjectInfo("obj3_can", "can", (), (0.55, 0.35, 0.05), (0.07, 0.07, 0.1), "blue")]
     assert [c.args for c in parse_calls("pick up the can above the box", objs)[0]] == [("obj2_can",)]
     assert [c.args for c in parse_calls("pick up the box under the can", objs)[0]] == [("obj1_box",)]
+
+
+def test_a_wanted_container_is_the_one_the_noun_names_best() -> None:
+    """"the white round dish" with a white mug and a white bowl: a dish is a bowl (a synonym) before
+    a mug (a kind of dish); wanting a container lifts both alike, so it does not make them a tie."""
+    objects = [ObjectInfo("obj1_mug", "mug", ("coffee mug", "cup with handle"), (0.45, 0.3, 0.05), (0.1, 0.08, 0.09), "white", ("graspable", "container")),
+               ObjectInfo("obj2_bowl", "bowl", ("soup bowl",), (0.5, -0.05, 0.03), (0.15, 0.15, 0.06), "white", ("graspable", "container")),
+               ObjectInfo("obj3_soda_can", "soda can", ("can",), (0.5, 0.45, 0.06), (0.066, 0.066, 0.12), "red")]
+    assert call_lines("put the can in the white round dish", objects) == call_lines("put the can in the bowl", objects)

@@ -361,7 +361,8 @@ class Resolver:
         if not scored:
             raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
         best = max(s for _, s in scored)
-        floor = min(best, 1.7) - 1e-9 if (plural or loose or order or ordinal is not None or sizes or colors) else best - 1e-9
+        cap = 1.7 + (0.3 if want else 0.0)  # the wanted use's bonus lifts every candidate having it alike
+        floor = min(best, cap) - 1e-9 if (plural or loose or order or ordinal is not None or sizes or colors) else best - 1e-9
         found = [o for o, s in scored if s >= floor]
         exact = [o for o in found if norm(o.label) == " ".join(words)]
         if len(found) > 1 and not plural and len(exact) == 1 and order is None and not sizes:
