@@ -53,3 +53,11 @@ def test_the_hull_test_drops_only_poses_the_full_check_refuses() -> None:
             grasp = pre and robot._clear_posture(c.pos, r, pre.q, {"small"}, set())
             assert grasp is None  # what the hulls drop, the IK and collision check refuse too
     assert dropped
+
+
+def test_a_can_in_a_corner_is_grasped_by_a_hand_leaning_into_it() -> None:
+    robot = _robot(_in_gap((0.0, 90.0)))  # boxes on its far and left sides: only a steep lean from the open corner clears them
+    before = {n: robot.object_pose(n)[0].copy() for n in ("tall0", "tall1")}
+    res = robot.grasp("small")
+    assert res.success, res.reason
+    assert max(float(np.linalg.norm(robot.object_pose(n)[0] - p)) for n, p in before.items()) < 0.005
