@@ -42,7 +42,7 @@ class PickParams:
     budget_factor: float = 2.0  # a grasp gets this many max_sim_time budgets
     support_probe: float = 0.01  # m above the object's bottom where its support is looked for
     max_reachable: int = 6  # reachable candidates collected per attempt
-    reach_tilts: tuple[float, ...] = (0.0, -0.3, 0.3, -0.6, 0.6)  # rad the hand leans about the closing axis when no candidate is reachable upright without touching another object
+    reach_tilts: tuple[float, ...] = (0.0, -0.3, 0.3, -0.6, 0.6, -0.9, 0.9, -1.2, 1.2)  # rad the hand leans about the closing axis when no candidate is reachable upright without touching another object (up to 1.2: into a corner between tall boxes)
     manipulability_weight: float = 0.5  # added to a candidate's score per unit manipulability
     lift_wait: float = 0.2  # s after lifting before judging
     retry_lift: float = 0.12  # m backed up after a failed attempt

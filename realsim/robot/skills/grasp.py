@@ -12,9 +12,10 @@ import numpy as np
 
 from realsim.robot.arm import QUINTIC_ACCEL
 from realsim.robot.grasps import MAX_WIDTH, GraspCandidate, grasp_candidates, narrowest_width, rotate_about, twist_check
+from realsim.robot.hand_hulls import HandHulls
 from realsim.robot.handles import handle_candidates
 from realsim.robot.ik import IKResult
-from realsim.robot.model import GRIPPER_OPEN_CTRL, HOME_ARM
+from realsim.robot.model import FINGER_JOINTS, GRIPPER_OPEN_CTRL, HOME_ARM
 from realsim.robot.motion import Motion
 from realsim.robot.optimizer import EpsilonGreedy, GraspParams
 from realsim.robot.result import ActionResult, PlanFailure
@@ -132,6 +133,7 @@ class GraspSkill(Motion):
             for attempt in range(1, attempts + 1):
                 gp = opt.propose()
                 z0 = float(self.object_points(obj)[:, 2].min())
+                q_cmd = self.data.ctrl[self.act].copy()
                 try:
                     reward, info = self._attempt(obj, gp, opt)
                 except PlanFailure as exc:
@@ -141,8 +143,10 @@ class GraspSkill(Motion):
                 if reward >= SUCCESS:
                     self.held, self.pinch = obj, (str(info.get("kind", "")), float(info.get("width", 0.0)))
                     return ActionResult("grasp", True, "", attempts=attempt, values={"graspable": True, "lifted": info.get("lifted"), "kind": info.get("kind"), "log": log})
-                # reset for the next attempt: open, back up, home
                 self.held, self.pinch = None, ("", 0.0)
+                if np.array_equal(self.data.ctrl[self.act], q_cmd):
+                    continue  # the arm never moved (no plan): nothing to undo
+                # reset for the next attempt: open, back up, home
                 self._gripper(GRIPPER_OPEN_CTRL)
                 pos, _ = self.tcp_pose()
                 try:
@@ -183,6 +187,20 @@ class GraspSkill(Motion):
         """The robot bodies rigid with the tcp (the hand, its fingers, the last link)."""
         return self.hand_bodies | {self.model.body(self.prefix + "link7").id}
 
+    @functools.cached_property
+    def _hand_hulls(self) -> HandHulls:
+        """The hulls rigid with the tcp, fingers open, swept over the pre-grasp approach."""
+        qpos = self.data.qpos.copy()
+        qpos[self.finger_qadr] = self.model.jnt_range[[self.model.joint(self.prefix + j).id for j in FINGER_JOINTS], 1]
+        return HandHulls(self.model, qpos, self.tcp, self._tcp_bodies, self.params.pregrasp)
+
+    def _neighbour_clouds(self, obj: str) -> dict[str, np.ndarray]:
+        """Surface samples of every other object within the hand's reach of ``obj``, by name."""
+        pts = self.object_points(obj)
+        lo, hi = pts.min(axis=0) - self._hand_hulls.reach, pts.max(axis=0) + self._hand_hulls.reach
+        clouds = {n: self.object_points(n) for n in self.object_names() if n != obj}
+        return {n: p[np.all((p > lo) & (p < hi), axis=1)] for n, p in clouds.items()}
+
     def _clear_posture(self, pos: np.ndarray, rot: np.ndarray, q_init: np.ndarray, ignore: set[str], blockers: set[str]) -> IKResult | None:
         """A posture putting the tcp at (``pos``, ``rot``) that touches nothing but ``ignore``: the
         plain IK's, else the collision-aware IK's when only links the arm can move aside are in the
@@ -204,12 +222,14 @@ class GraspSkill(Motion):
         return None
 
     def _reachable(self, obj: str, cands: list[GraspCandidate], tilt: float, yaw: float,
-                   blockers: set[str]) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
+                   blockers: set[str], others: dict[str, np.ndarray] | None = None) -> list[tuple[GraspCandidate, np.ndarray, IKResult]]:
         """The candidates the hand reaches, turned by ``tilt`` about their closing axis and ``yaw``
         about their approach, with a straight final approach, at pre-grasp and grasp postures that
         touch no other object (at most ``max_reachable``): (candidate, pre-grasp joints, grasp IK);
-        the objects in the way are added to ``blockers``."""
+        the objects in the way are added to ``blockers``. A pose whose hand or open fingers reach
+        into ``others`` (:meth:`_neighbour_clouds`) is dropped before any IK."""
         pk = self.params.pick
+        others = self._neighbour_clouds(obj) if others is None else others
         out: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
         q_home = np.array(HOME_ARM)
         for c in cands:
@@ -217,6 +237,10 @@ class GraspSkill(Motion):
             rot = rotate_about(rot[:, 2], yaw) @ rot
             for flip in (False, True):  # the hand is symmetric: closing axis +y or -y
                 r = rot @ np.diag([-1, -1, 1]) if flip else rot
+                in_way = self._hand_hulls.touched(c.pos, r, others)
+                if in_way:
+                    blockers |= in_way
+                    continue
                 pre = c.pos - r[:, 2] * self.params.pregrasp
                 res_pre = self._clear_posture(pre, r, q_home, set(), blockers)
                 if res_pre is None:
@@ -240,8 +264,9 @@ class GraspSkill(Motion):
         cands = self._grasp_candidates(obj, gp.height_offset)
         reachable: list[tuple[GraspCandidate, np.ndarray, IKResult]] = []
         blockers: set[str] = set()
+        others = self._neighbour_clouds(obj)
         for lean in pk.reach_tilts:  # none reachable clear as planned (the far edge of the reach, a tall neighbour): the hand leans about the closing axis
-            reachable = self._reachable(obj, cands, gp.tilt + lean, gp.yaw_offset, blockers)
+            reachable = self._reachable(obj, cands, gp.tilt + lean, gp.yaw_offset, blockers, others)
             if reachable:
                 break
         if not reachable:
