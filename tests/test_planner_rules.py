@@ -347,3 +347,13 @@ def test_a_wanted_container_is_the_one_the_noun_names_best() -> None:
                ObjectInfo("obj2_bowl", "bowl", ("soup bowl",), (0.5, -0.05, 0.03), (0.15, 0.15, 0.06), "white", ("graspable", "container")),
                ObjectInfo("obj3_soda_can", "soda can", ("can",), (0.5, 0.45, 0.06), (0.066, 0.066, 0.12), "red")]
     assert call_lines("put the can in the white round dish", objects) == call_lines("put the can in the bowl", objects)
+
+
+def test_with_a_part_describes_the_object_and_with_an_object_says_what_it_holds() -> None:
+    """"the cup with the handle": a part the cup has (the mug's alias is "cup with handle"), never a
+    second object; "the bowl with the banana": the bowl, never the banana."""
+    objects = [ObjectInfo("obj1_mug", "mug", ("coffee mug", "cup with handle"), (0.45, 0.3, 0.05), (0.1, 0.08, 0.09), "white", ("graspable", "container")),
+               ObjectInfo("obj2_bowl", "bowl", ("soup bowl",), (0.5, -0.05, 0.03), (0.15, 0.15, 0.06), "white", ("graspable", "container")),
+               ObjectInfo("obj3_banana", "banana", (), (0.4, 0.0, 0.02), (0.2, 0.05, 0.04), "yellow")]
+    assert call_lines("put the cup with the handle behind the bowl", objects) == call_lines("put the mug behind the bowl", objects)
+    assert call_lines("pick up the bowl with the banana", objects) == ["grasp('obj2_bowl')"]

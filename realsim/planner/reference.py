@@ -79,6 +79,8 @@ class Resolver:
         self.forward, self.left = np.array([c, s]), np.array([-s, c])
         self._words = {o.name: self._name_sets(o) for o in self.objects}
         self._said = self.scene_words = {w for names in self._words.values() for n in names for w in n}  # the scene's name words
+        # the nouns that name a whole object: a name's last word, or its word before "with" ("cup with handle": a cup)
+        self._heads = {singular((n[: n.index("with")] if "with" in n else n)[-1]) for names in self._words.values() for n in names if n and n[0] != "with"}
 
     # --- vocabulary of one object -----------------------------------------------------------
     def _name_sets(self, o: ObjectInfo) -> list[list[str]]:
@@ -186,7 +188,7 @@ class Resolver:
             others = [o.name for o in self.objects if o.name not in pool]
             return self.resolve(m.group(1), ctx, want=want, exclude=[*exclude, *others], allow_plural=allow_plural, loose=loose)
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
-        if m and not {singular(w) for w in m.group(2).split()} & self._said:
+        if m and not {singular(w) for w in m.group(2).split()} & self._heads:  # "the cup with the handle": a part it has
             text = m.group(1)
         elif m:  # "the bowl with the strawberry (in it)": the one holding it, never the strawberry
             return holding(m.group(1), re.sub(r"\s+(?:in|on) (?:it|them)$", "", m.group(2)), self._all, lambda k, o, r: relation_holds(k, o, r, self.forward, self.left), phrase)
