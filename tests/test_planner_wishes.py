@@ -38,6 +38,14 @@ def test_a_wish_without_a_place_is_left_alone() -> None:
     ("Green cube, you are sliding it to left side 4 centimetre.", "push the green cube left 4 cm"),
     ("the banana you are pushing 30 millimetre to forward", "push the banana forward 3 cm"),
     ("put the strawberry in the bowl, then park the arm", "put the strawberry in the bowl, then go home"),
+    ("Class, watch the arm: it is going to pick up the banana.", "pick up the banana"),
+    ("Now students, the robot will put the strawberry in the bowl.", "put the strawberry in the bowl"),
+    ("Everyone look here: the arm is now going to push the banana 5 cm to the left.", "push the banana left 5 cm"),
+    ("Alright class, the robot will push the bowl 4 cm farther away from itself.", "push the bowl forward 4 cm"),
+    ("When it's finished, the strawberry should be sitting in the bowl.", "put the strawberry in the bowl"),
+    ("The way I'd like it: the strawberry sitting in the bowl.", "put the strawberry in the bowl"),
+    ("What I'm after is the banana lying next to the bowl.", "put the banana next to the bowl"),
+    ("I'd like the red cube resting on the table instead of on top of the blue cube.", "put the red cube on the table"),
 ])
 def test_sentences_as_people_type_them(sentence: str, plain: str) -> None:
     assert call_lines(sentence) == call_lines(plain)

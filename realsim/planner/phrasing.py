@@ -58,7 +58,7 @@ GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "m
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
-QUESTION = re.compile(r"(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! ever\b)(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
+QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|need)\b)(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! ever\b)(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
                       r"| (?:you|you'?re|you are|that'?s|that is|it'?s|it is|all that'?s) (?:done|finished)\b)")
 
 
@@ -88,6 +88,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(lift|raise|pick up|hold up) ((?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)) (?:up )?off (?:of )?the (?:table|counter|desk|surface|floor)\b",
                   r"\1 \2", text)  # "lift that mug up off the table"
     text = re.sub(r"\b(?:him|her)\b", "it", text)  # an object is "it" ("you put him beside the bottle")
+    text = re.sub(r"\bfrom (?:itself|yourself|the robot itself)\b", "from you", text)  # "farther away from itself": the robot
+    text = re.sub(r"^(?:when|once|by the time) (?:it ?'?s|it is|it has|you ?'?re|you are|you have|that ?'?s|that is|everything ?'?s|everything is|all is|we ?'?re|we are)"
+                  r" (?:finished|done|over|through|complete)[,\s]+", "", text)  # "when it's finished, the mug should be ..."
+    text = re.sub(r"\s*,?\s+instead of (?:being )?(?:on|in|inside|next to|beside|behind|in front of|on top of|under|at|by) [^.,;!?]*", "", text)
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
     text = re.sub(r"\b(?:perched|balanced|sitting|standing|resting|lying|sat|stood) (?=(?:on|atop|on top of|in|inside) (?:the|that|this|a|an)\b)", "", text)
     text = _VOCATIVE.sub(" ", text)

@@ -20,9 +20,15 @@ __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repa
 _MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
                      r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
+_AUDIENCE = r"(?:class|students|everyone|everybody|kids|children|guys|folks|team|you all|all of you)"
+# a teacher's opening before the narration: "now students, ", "class, watch the arm: ", "everyone look here: "
+_ATTENTION = re.compile(rf"^(?:(?:now|ok|okay|alright|all right|so|right|and)[\s,]+)*(?:{_AUDIENCE}[\s,:]+)?(?:(?:now|ok|okay|alright)[\s,]+)?"
+                        rf"(?:(?:watch|look|see|observe|pay attention|eyes (?:up|here|on me))(?: (?:closely|carefully|here|this|now|up))*(?:[\s,]+{_AUDIENCE})?"
+                        r"(?: (?:the (?:robot|arm)|it|this))?\s*[:,.!-]+\s*)?")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
-                        r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|it)\s+"
-                        r"|(?:the robot|it|you|we)\s+(?:will|is going to|s going to|are going to|re going to|gonna|shall|is about to|can|is able to)\s+(?:now\s+)?)")
+                        r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|the arm|it)\s+"
+                        r"|(?:the robot|the arm|it|you|we)\s+(?:will|is going to|s going to|are going to|re going to|gonna|shall|is about to|can|is able to"
+                        r"|is now going to|s now going to|will now)\s+(?:now\s+)?)")
 _ADDRESS = re.compile(r"^(?:hey |ok |okay |alright |yo |hi |hello )?(?:robot|franka|panda|class|everyone)\s+(?=\w)")
 
 
@@ -41,7 +47,7 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
         if step == text:
             break
         text = step
-    text = _ADDRESS.sub("", _NARRATION.sub("", text))
+    text = _ADDRESS.sub("", _NARRATION.sub("", _ATTENTION.sub("", text) if _NARRATION.match(_ATTENTION.sub("", text)) else text))
     return _NARRATION.sub("", text)
 
 

@@ -27,6 +27,8 @@ _FRAMES = (
     r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
     r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
     r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much) )?(?:like|love|want|prefer|wish) (?:to see |to have |it if )?",
+    r"(?:the way i(?: would| ?'d)? (?:like|want) (?:it|things|them)(?: is| to be)?|what i(?: ?'m| am) after is|what i(?: ?'d| would)? (?:like|want|need) is"
+    r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end)[:,]? ",
 )
 _WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
