@@ -20,7 +20,7 @@ FILLERS = (
     r"if (?:it|that|this)(?: s| is| would be| would not be| wouldnt be| isnt| is not| wont be| will not be)? (?:not )?(?:too much )?(?:of )?(?:a |any )?(?:trouble|bother|problem|hassle)(?: for you)?(?: at all)?",
     r"if (?:that|it|this)(?: s| is| would be)? (?:doable|feasible|no problem|not a problem|ok with you|alright with you)", r"if you (?:could|can|would) manage(?: it| that)?",
     r"if you (?:would|could|will) be so (?:very )?kind", r"(?:would|do) you mind (?:terribly|awfully|very much|at all)", r"yay", r"woo+", r"yippee", r"hooray",
-    r"neatly", r"nicely", r"tidily", r"(?:young|little|good|dear|my|nice) (?:robot|machine|bot|friend|dear)", r"my dear", r"there s a good machine",
+    r"neatly", r"nicely", r"tidily", r"(?:young|little|good|dear|my|nice) (?:robot|machine|bot|friend|dear)",
     r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
     r"or (?:whatever|something|so)", r"(?:would|will|could|can) (?:ya|you)(?= *$| *[,.;])", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
@@ -33,7 +33,7 @@ FILLERS = (
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"for now", r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
-    r"if that works", r"many thanks", r"thanks a lot", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one|robot|bot)",
+    r"if that works", r"many thanks", r"thanks a lot", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one|robot|bot|machine)",
     r"good (?:lad|boy|girl|robot)", r"be a (?:love|dear|darling|sweetheart|pal|mate|star|doll|champ) and", r"for a (?:sec|second|moment|minute|bit)",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
@@ -83,9 +83,9 @@ def clean(command: str) -> str:
     # how high a lift goes is the robot's choice: "hold it up high", "lift the can way up high", "up really high"
     text = re.sub(r"\s+(?:(?:way|really|very|super|real|nice and|good and)\s+)?(?:up\s+)?(?:(?:really|very|super|so)\s+)?high(?:\s+up)?(?:\s+in(?:to)? the air)?"
                   r"(?=\s*(?:$|[.,;!?]))", " up", text)
-    text = re.sub(r"\b(?:move|bring|get|take|raise|make) (it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?) (?:go )?up (?:in(?:to)? the air|off the (?:table|counter|desk|surface))\b",
+    text = re.sub(rf"\b(?:move|bring|get|take|raise|make) ({_THE_THING}) (?:go )?up (?:in(?:to)? the air|off the (?:table|counter|desk|surface))\b",
                   r"lift \1", text)  # "make it go up in the air"
-    text = re.sub(r"\b(lift|raise|pick up|hold up) ((?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)) (?:up )?off (?:of )?the (?:table|counter|desk|surface|floor)\b",
+    text = re.sub(rf"\b(lift|raise|pick up|hold up) ({_THE_THING}) (?:up )?off (?:of )?the (?:table|counter|desk|surface|floor)\b",
                   r"\1 \2", text)  # "lift that mug up off the table"
     text = re.sub(r"\b(?:him|her)\b", "it", text)  # an object is "it" ("you put him beside the bottle")
     text = re.sub(r"\bfrom (?:itself|yourself|the robot itself)\b", "from you", text)  # "farther away from itself": the robot
@@ -216,6 +216,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_THE_THING = r"(?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)"  # one object named, up to the next clause
 _YOU_MODAL = r"(?:are going to|are|re|must to|must|should|have to|need to|will|can|could|shall|gotta|gonna)"  # "you must to put it ..."
 _SIDE_REL = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, k in RELATIONS if k in ('next', 'left', 'right', 'front', 'behind'))})\s")
 _AMOUNT = re.compile(r"(?:by )?(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)")
