@@ -79,7 +79,7 @@ HELDOUT8: list[tuple[str, str, str]] = [
     # 'the grey object': joined into obj13 (white_bowl since 52346e3) since 2792723 (see bench_commands.py): refuse.
     ("scan55", "push grey object 5cm fwd", "refuse"),
     ("scan55", "Would you please move the orange cylinder a little to the right? Many thanks.", "moved orange_cylinder right 0.05"),
-    ("scan55", "there's a lot of stuff on this table haha, could you grab the green object and set it behind the red box", "behind green_object red_box"),
+    ("scan55", "there's a lot of stuff on this table haha, could you grab the green object and set it behind the red box", "behind green red_box"),
     ("scan55", "yellow thing left of blue box", "refuse"),
     ("scan55", "pick up the small white object, put it on the right of the white box, then go home", "right small_white_object white_box; home"),
     ("scan55", "push the thing farthest away a bit to the left", "moved second_from_left_yellow_object left 0.05"),

@@ -124,7 +124,7 @@ HELDOUT12: list[tuple[str, str, str]] = [
     ("textkitchen", "Put both red cans in the bowl, nudge the cereal box a bit to the right, and then go back home.", "in soda_can@left bowl; in soda_can@right bowl; moved cereal_box right 0.05; home"),
     ("textblocks", "Put the red cube on the plate, then the blue one, then the green one, and then go home.", "on cube@right plate; on obj2_cube plate; on cube@left plate; home"),
     ("scan45", "Take the white can off the white box and put it to the right of the red box, then push the red can forward 5 cm, then go home.", "right right_white_can red_box; moved red_can forward 0.05; home"),
-    ("scan55", "Push the red box at the back toward you 10 cm, put the small white thing on the green thing, then go home.", "moved red_box back 0.1; on small_white_object green_object; home"),
+    ("scan55", "Push the red box at the back toward you 10 cm, put the small white thing on the green thing, then go home.", "moved red_box back 0.1; on small_white_object green; home"),
 ]
 
 # Written on 2026-11-26 (13:20 UTC) by a writer who never read the planner, its tests, these sets or any file of

@@ -64,5 +64,5 @@ HELDOUT15: list[tuple[str, str, str]] = [
     ("textkitchen", "Would it be possible to swap the mug and the cereal box? Only if it's easy, I mean.", "swapped mug cereal_box"),
     ("textblocks", "um could you put the red cube behind the green one? not the blue one, the green", "behind cube@right cube@left"),
     ("scan45", "would it be possible to push the red box a little bit to the right? like just a tiny bit", "moved red_box right 0.05"),
-    ("scan55", "could you maybe put the big white thing on the green thing? no not the small white one, the big one", "on big_white_object green_object"),
+    ("scan55", "could you maybe put the big white thing on the green thing? no not the small white one, the big one", "on big_white_object green"),
 ]

@@ -56,7 +56,7 @@ HELDOUT16: list[tuple[str, str, str]] = [
     ("textkitchen", "Put the cereal box, no, the mug, I mean the mug, put it in the bowl.", "in mug bowl"),
     ("textblocks", "Green cube onto the plate... wait, no, in front of the plate, not on it.", "front cube@left plate"),
     ("scan45", "Push the red box -- sorry, the red can -- push the red can toward you, like 5 cm.", "moved red_can back 0.05"),
-    ("scan55", "Take the tall white can, no, I mean the smallest white thing, and put it on the green... the green flat thing.", "on small_white_object green_object"),
+    ("scan55", "Take the tall white can, no, I mean the smallest white thing, and put it on the green... the green flat thing.", "on small_white_object green"),
     # comparisons and conditions
     ("kitchen", "Take the smaller of the two, the soup can or the cracker box, and put it in the bowl.", "in soup_can bowl"),
     ("pantry", "Of the foam brick and the Rubik's cube, take whichever is smaller and put it behind the mustard.", "behind foam_brick mustard_bottle"),

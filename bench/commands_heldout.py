@@ -100,7 +100,7 @@ HELDOUT: list[tuple[str, str, str]] = [
     ("scan45", "put the red object next to the white box", "refuse"),  # two red objects now: the red can and the red cracker box
     ("scan55", "could you pick up the blue box", "lift blue_box"),
     ("scan55", "move the orange thing a little to the right", "moved orange_cylinder right 0.05"),
-    ("scan55", "put the green object next to the red box", "next green_object red_box"),
+    ("scan55", "put the green object next to the red box", "next green red_box"),
     ("scan55", "grab the box", "refuse"),
     ("scan55", "pick up the purple thing", "refuse"),
     # 'the grey object': joined into obj13 (white_bowl since 52346e3) since 2792723 (see bench_commands.py): refuse.
@@ -349,7 +349,7 @@ HELDOUT7: list[tuple[str, str, str]] = [
     ("textblocks", "Take the blue cube off the table", "lift cube@blue"),
     ("scan45", "lift the red can", "lift red_can"),
     ("scan45", "put the small white thing next to the white box", "next small_white_object white_box"),
-    ("scan55", "pick up the green object", "lift green_object"),
+    ("scan55", "pick up the green object", "lift green"),
     ("scan55", "put the white box to the left of the tall white can", "left white_box tall_white_can"),
 ]
 
@@ -360,10 +360,11 @@ from commands_blind_nov26c import HELDOUT16  # noqa: E402
 from commands_blind_nov27 import HELDOUT17  # noqa: E402
 from commands_blind_nov29 import HELDOUT18  # noqa: E402
 from commands_blind_nov29b import HELDOUT19  # noqa: E402
+from commands_blind_nov29c import HELDOUT20  # noqa: E402
 
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
     "heldout5": HELDOUT5, "heldout6": HELDOUT6, "heldout7": HELDOUT7, "heldout8": HELDOUT8, "heldout9": HELDOUT9, "heldout10": HELDOUT10,
     "heldout11": HELDOUT11, "heldout12": HELDOUT12, "heldout13": HELDOUT13, "heldout14": HELDOUT14,
-    "heldout15": HELDOUT15, "heldout16": HELDOUT16, "heldout17": HELDOUT17, "heldout18": HELDOUT18, "heldout19": HELDOUT19,
+    "heldout15": HELDOUT15, "heldout16": HELDOUT16, "heldout17": HELDOUT17, "heldout18": HELDOUT18, "heldout19": HELDOUT19, "heldout20": HELDOUT20,
 }
