@@ -5,7 +5,12 @@ in the robot's frame, the goal words and a brief of eight voices: a robotics eng
 radio operator, a British speaker's idioms, objects named by comparison or rank only, negation and
 exclusion, a purpose instead of an instruction, a typo-ridden phone message, multi-step tasks mixed
 with requests to decline), added verbatim. Measured with ``--plans`` at d15e3d9 (the session's
-start, nothing in it tuned for these): 26/64.
+start, nothing in it tuned for these): 26/64. Then read, and its failures' classes fixed (radio
+procedure, a thing singled out before it is acted on, a purpose before the request, an engineer's
+names for the primitives and axes, chat shorthand, "the smaller of the two" in a scene of two):
+61/64, no longer blind (the three left: "the thing closest to you" is read along the robot's forward axis, not as a
+distance from it; a lift of a box the hand cannot hold is planned and then declined by the grasp; a
+placing undone by "put it back where it was").
 """
 from __future__ import annotations
 

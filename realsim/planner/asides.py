@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.lexicon import VERB_START
+from realsim.planner.lexicon import STATEMENT_VERB, VERB_START
 from realsim.planner.phrasing import WHICH_ONE
 from realsim.planner.steps import Parser
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
@@ -21,7 +21,7 @@ __all__ = ["is_aside"]
 _OPENER = r"(?:(?:ok|okay|so|ugh|hey|oh|well|um|hmm|haha|lol|alright|right|seriously|honestly|wow|man|like)\s+)*"
 # a question is never a command: "why is the marker over there?", "who leaves cubes all over the place"
 _WH = re.compile(rf"{_OPENER}(?:why|who|how come|how on earth|what s with|whats with|what is with)\b")
-_STATEMENT = re.compile(rf"{_OPENER}(.+?) (?:is|are|s|looks|look|seems|seem|was|were|keeps|sits|has been|got|needs|need)\b")
+_STATEMENT = re.compile(rf"{_OPENER}(.+?) {STATEMENT_VERB}\b")
 
 
 def _scene_words(p: Parser) -> set[str]:

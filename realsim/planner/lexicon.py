@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["AGAIN", "ALL_VERBS", "AVOID", "PARTICLES", "PUSH", "PUT", "RELATIONS", "RELATION_AT", "SURFACES", "TAKE", "VERB_ANYWHERE", "VERB_START",
+__all__ = ["AGAIN", "ALL_VERBS", "AVOID", "PARTICLES", "PUSH", "PUT", "RELATIONS", "RELATION_AT", "STATEMENT_VERB", "SURFACES", "TAKE", "VERB_ANYWHERE", "VERB_START",
            "has_relation", "relation_start"]
 
 TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
@@ -62,3 +62,7 @@ RELATION_AT = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w, _ in sort
 # a thing not to touch: "don't touch the mug", "... without hitting the bowl"
 AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|try not to|avoid|(?:be )?careful not to|without)"
                     r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing)?(?: over| down| into)? (.+)$")
+
+# the verb of a statement about a thing ("the blue box exceeds the gripper aperture", "the mug is dirty")
+STATEMENT_VERB = (r"(?:is|are|s|looks?|seems?|was|were|keeps|sits|has been|has|have|got|needs?|exceeds|fits|weighs|measures|blocks|contains|holds"
+                  r"|belongs|stands|lies|rests|leans|touches|overlaps|won t|wont|can t|cant|cannot|doesn t|doesnt|isn t|isnt|aren t|arent)")

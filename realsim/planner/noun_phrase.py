@@ -25,6 +25,7 @@ def normalize(text: str) -> str:
     text = re.sub(r"\s+(?:again|too|as well|also|please|there|here|for me|over there)$", "", text).strip()
     text = re.sub(r"^(?:whatever|whichever)(?: is| s)?(?= (?:sitting|standing|lying|resting|on|in|behind|next|near|by|beside|at)\b)",
                   "thing", text)  # "whatever's sitting behind the banana"
+    text = re.sub(r"^(?:whatever|whichever)(?: one| thing)?(?: is| s)? (?:the )?(\w+(?:most|est))\b", r"\1 thing", text)  # "whatever's furthest to the right"
     text = re.sub(r"\b(?:(?:that|which) (?:is |s )?)?(?:sitting|standing|lying|resting|placed|over)(?: (?:just|right|directly|immediately))? "
                   r"(?=(?:behind|in front of|next to|beside|by|near|on|in|inside|left of|right of|to the (?:left|right) of)\b)", "", text)
     m = _PARTITIVE.fullmatch(text)

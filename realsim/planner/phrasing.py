@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import casual, clarify, discourse, places, remarks, speech, technical, topic, wishes
+from realsim.planner import casual, clarify, discourse, focus, places, purpose, radio, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
+from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
@@ -29,7 +30,7 @@ FILLERS = (
     r"i (?:was |am |m )?wonder(?:ing)? if you (?:could|would|might|can|will)", r"(?:might|may|could|can) i (?:trouble|bother|ask|get) you to", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
     r"will you", r"you may", r"i(?: would|d) like you to", r"i want you to", r"i need you to", r"i(?: would|d) like to", r"i want to",
     r"you should", r"you can", r"you could", r"go ahead and", r"try to", r"try and", r"be sure to", r"make sure to",
-    r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
+    r"(?:do you |would you )?fancy(?= \w+ing\b)", r"please", r"pls", r"kindly", r"just", r"carefully", r"gently", r"slowly", r"quickly", r"for me", r"thanks",
     r"thank you", r"hey robot", r"hey", r"ok(?:ay)?", r"alright", r"all right", r"real quick", r"if you can", r"if possible",
     r"for now", r"now", r"well", r"um+", r"uh+", r"so", r"quick", r"fast", r"asap", r"right now", r"right away", r"straight away", r"let s", r"lets", r"do me a favou?r(?: and)?", r"if you (?:would|could|dont mind)",
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
@@ -54,7 +55,8 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
-           "getting": "get", "returning": "return", "placing it": "place it"}
+           "getting": "get", "returning": "return", "placing it": "place it", "popping": "pop", "shifting": "shift", "sticking": "stick",
+           "scooting": "scoot", "dragging": "drag", "raising": "raise", "swapping": "swap", "tucking": "tuck", "parking": "park"}
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
@@ -64,7 +66,7 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
-    text = wishes.as_request(technical.technical(command.lower().replace("’", "'")))
+    text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(radio.radio(command.lower().replace("’", "'"))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
@@ -97,6 +99,10 @@ def clean(command: str) -> str:
     text = _VOCATIVE.sub(" ", text)
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
+    # chat shorthand: "on top blue" is on top of it, "blu 1" the blue one, "2 the left" to the left
+    text = re.sub(r"\bon top (?!of\b)(?=(?:the |a |an |that |this )?[a-z])(?!(?:and|then|please|thanks|now|too)\b)", "on top of ", text)
+    text = re.sub(rf"\b({'|'.join(COLOR_WORDS)}|big|small|little|large|tall|short|other|left|right|first|last|same) 1\b(?!\s*(?:cm|mm|in|inch|m)\b)", r"\1 one", text)
+    text = re.sub(r"(?<=[a-z] )2(?= (?:the|left|right|front|back|behind|me|you|home|it|them|my|your)\b)", "to", text)
     text = re.sub(r"(\d),(\d)", r"\1.\2", text)  # decimal commas
     # "to the mug's left": to the left of the mug; "side by side": next to each other
     text = re.sub(r"\b(?:(?:to|toward|towards) )?(?:the |your )?(?:robot|franka|panda)'?s (left|right)\b", r"to the \1", text)  # its own
@@ -122,7 +128,8 @@ def clean(command: str) -> str:
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
     # "the mug's dirty": the mug is (a statement), where "the mug's handle" is the mug's
     text = re.sub(r"\b((?:the|that|this|my) [a-z]+(?: [a-z]+)?)'s (?=(?:dirty|empty|full|broken|wet|sticky|heavy|too|so|really|very|not|just|still|always"
-                  r"|in the way|in my way|blocking|sitting|lying|standing|getting|been|gonna|going|kind of|sort of|fine|ok|okay)\b)", r"\1 is ", text)
+                  r"|in the way|in my way|blocking|sitting|lying|standing|getting|been|gonna|going|kind of|sort of|fine|ok|okay|a bit|a little|a|an|quite|rather|pretty"
+                  r"|awkward|big|huge|bulky|massive|tiny|small|slippery|fragile|wobbly|tippy|light|hard|easy|awfully|dead|far|miles|right)\b)", r"\1 is ", text)
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
     text = casual.described(casual.light_verb(text))
@@ -142,7 +149,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
     text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
-                  r"(?: (?:away|off|out|aside))?(?=$|[.,;]| and\b| then\b)",
+                  r"(?: (?:away|off|out|aside))?(?: for (?:me|us))?(?=\s*(?:$|[.,;])| and\b| then\b)",
                   r"move \1 aside", text)
     text = re.sub(r"\bline ((?:up )?.+?)(?: up)? (?:with|next to|beside|alongside|by) ", lambda m: f"put {re.sub(r'^up ', '', m.group(1))} next to ", text)
     text = re.sub(r"\bline up (.+?)(?: in a row| side by side)?(?=$|[.,;]| then\b)|\bline (.+?) up(?: in a row| side by side)?(?=$|[.,;]| then\b)",
@@ -168,7 +175,7 @@ def split_command(command: str) -> list[str]:
     a verb; parts without a verb are glued back ("the mug, the can and the banana")."""
     text = _in_order(clean(command))
     text = re.sub(r"\s+after(?=$|[.,;])", "", text)  # "go back home after"
-    text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |you re |it s |you )?done"
+    text = re.sub(r"\b(?:and after that|and then|after that|afterwards|afterward|and finally|and after|once (?:that s |that is |that |you re |you are |it s |it is |it |you )?(?:done|finished|over)"
                   r"|when (?:that s |you re |you )?(?:done|finished)|(?:but )?(?:in|at|by) the end)\b", ",", text)
     text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to|leave|keep|stay)\b)", ", ", text)  # "..., but don't put the mug in it"
     text = _run_on(text)
@@ -279,7 +286,12 @@ def avoided(clause: str) -> tuple[str, str]:
     touch the mustard" -> ("", "the mustard"); "pick up the cube without hitting the bowl" ->
     ("pick up the cube", "the bowl")."""
     m = AVOID.search(clause)
-    return (clause[: m.start()].strip(), m.group(1).strip()) if m else (clause, "")
+    if not m:
+        return clause, ""
+    parts = re.split(r",? (?:and|or|nor) ", m.group(1).strip())  # "the red or the blue cube": neither, each a cube
+    head = parts[-1].split()[-1]
+    parts = [f"{p} {head}" if p.split()[-1] in COLOR_WORDS or p.split()[-1] in (*BIG, *SMALL) else p for p in parts[:-1]] + parts[-1:]
+    return clause[: m.start()].strip(), " and ".join(parts)
 
 
 _PAST = {"picked": "pick", "grabbed": "grab", "taken": "take", "took": "take", "lifted": "lift", "moved": "move", "pushed": "push",

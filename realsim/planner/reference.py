@@ -177,6 +177,9 @@ class Resolver:
         if m and not re.search(r"\band\b|,", text):  # "a can", "one of the cans": any one will do, the nearest
             pool = self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True)
             return [min(pool, key=lambda o: (round(self.robot_xy(o)[0], 3), -self.robot_xy(o)[1]))]
+        m = re.fullmatch(r"(?:the )?(\w+er)(?: one)? (?:of|out of|among) (?:the |these |those )?(two|2|three|3|four|4|both)(?: of them| things| objects)?", text)
+        if m and ({"two": 2, "both": 2, "three": 3, "four": 4}.get(m.group(2)) or int(m.group(2))) == len(self.objects):
+            text = f"{m.group(1)[:-2]}est thing"  # "the smaller of the two" where the scene holds two things: of them all
         text = noun_phrase.normalize(text)
         m = re.fullmatch(r"(.+?) among (.+)", text)
         if m:  # "the one closer to you among the banana and the mug": the pick among exactly those (realsim.planner.topic)

@@ -397,7 +397,9 @@ def _target(target_phrase: str, obj_phrase: str, p: Parser, want: str | None) ->
 
 def _head_noun(phrase: str, p: Parser) -> str | None:
     """The noun a phrase ends with ("the green cube": cube; "it": the last object's label)."""
-    words = re.sub(rf"{PARTICLES}$", "", " " + norm(phrase)).split()
+    said = re.sub(r"\s+(?:(?:from|on|at|in|to) (?:the )?(?:very )?(?:left|right|front|back|far end|near end|middle|centre|center)(?: side| end)?"
+                  r"|(?:closest|nearest|farthest|furthest)(?: away)?(?: to| from)? .*)$", "", " " + norm(phrase))  # "the second can from the left": can
+    words = re.sub(rf"{PARTICLES}$", "", said).split()
     if not words:
         return None
     if words[-1] in ("it", "them", "this", "that") and p.ctx.last:

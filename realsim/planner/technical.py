@@ -11,13 +11,17 @@ an object, a relation or the first amount of a move is never dropped.
 from __future__ import annotations
 
 import re
+from typing import Any
 
 __all__ = ["technical"]
 
 _UNIT = r"(?:cm|mm|m|in|inch|inches|centimet(?:er|re)s?|millimet(?:er|re)s?|met(?:er|re)s?)"
 _AMOUNT = rf"(?:about |around |roughly |approximately )?\d+(?:\.\d+)?\s*{_UNIT}"
 _CENTRES = r"(?:cent(?:re|er)s?[\s-]*(?:to|-)[\s-]*cent(?:re|er)s?|apart|between cent(?:re|er)s|gap|clearance|spacing|separation|of (?:gap|clearance|spacing))"
-_REWRITES: tuple[tuple[str, str], ...] = (
+_OFFSET = {"+x": "behind", "-x": "in front of", "+y": "to the left of", "-y": "to the right of"}
+_SMALLER = ("smaller", "smallest", "lower", "lowest", "least", "minimum", "min")
+_EXTREME = {(True, "y"): "on the right", (False, "y"): "on the left", (True, "x"): "nearest you", (False, "x"): "farthest from you"}
+_REWRITES: tuple[tuple[str, Any], ...] = (
     # "2 in toward ...": inches when no object follows the "in" (never "2 in the bowl")
     (r"(?<=\d) ?in\.?(?=\s*(?:$|[,.;(]|(?:to|toward|towards|forward|forwards|back|backward|backwards|left|right|away|closer|nearer|further|farther|along|in the)\b))", " inch"),
     (r"\b(?:displace|reposition|re-position|re position)\b", "move"),
@@ -31,10 +35,32 @@ _REWRITES: tuple[tuple[str, str], ...] = (
     (r",?;?\s*\b(?:in|w\.?r\.?t\.?|relative to|with respect to) (?:the )?(?:robot(?: s| base)?|base|world|table) (?:frame|coordinates?|coordinate frame|axes)\b", " "),
     (r"[,;]?\s*\b(?:no rotation|without (?:any )?rotation|(?:and )?(?:do not|dont|don t|without) (?:rotate|rotating|turn|turning)(?: it| them)?"
      r"|(?:and )?keep (?:its|the|their) (?:orientation|heading|yaw)(?: (?:fixed|the same|unchanged))?|orientation (?:unchanged|fixed|preserved))\b", " "),
+    # the primitives as an engineer names them: "execute a pick on X", "grasp target is X", "place pose inside Y"
+    (r"\b(?:execute|perform|run|carry out|do|trigger|command) an? (?:(?:top[- ]down|overhead|vertical|side) )?(?:pick|grasp)(?: (?:on|of|for|at))?\b", "pick up"),
+    (r"\b(?:execute|perform|run|carry out|do|trigger|command) an? (?:push|slide)(?: (?:on|of|for|at))?\b", "push"),
+    (r"\b(?:the )?(?:grasp|pick|manipulation|grip) (?:target|object)(?: is|:| =)\s*", "pick up "),
+    (r"\bput (?:the )?(?:place|placement|release|drop|goal|target) (?:pose|position|point|location)\b", "put it"),
+    (r"(?:^|(?<=[.,;:] ))(?:the )?(?:place|placement|release|drop|goal) (?:pose|position|point|location)(?: (?:is|should be|=))?:?\s+", "put it "),
+    (r",?\s*(?:clear of|away from|without touching|not touching|off) (?:the|its) (?:rim|edge|edges|lip|wall|walls)\b", " "),
+    (r",?\s*\bso no (?:grasp|grasping|pick|picking|lift|lifting|lift-off)\b|\bno (?:grasp|grasping|pick|lift|lifting)\b\s*(?=[:,;])", ""),  # the push says how
+    (r"\b(pick up|grab|lift|grasp) and (?=(?:place|put|set|drop|move|lay) (it|them)\b)", r"\1 \2 and "),  # "execute a pick and place it ..."
+    (r"\b(?:the )?(table|counter|desk|bench)(?: (?:surface|top|plane))\b", r"the \1"),
+    (r",?\s*(?:wherever|where) there(?: s|'s| is)? (?:enough )?(?:clearance|room|space|free space|a free spot)\b", ""),
+    # an offset along an axis from an object: "at a -x offset from the banana", "8 cm in +x from the cube"
+    (rf"\b(?:at )?(?:an? )?(?:{_AMOUNT}\s+)?(?:(?:in|along|toward|towards|on the)\s+)?([+-])\s?([xy])(?:\s+(?:offset|direction|side|axis))?\s+(?:from|of|relative to|with respect to)\b",
+     lambda m: _OFFSET[m.group(1) + m.group(2)]),
+    # the end of a coordinate: "the one with the smaller y coordinate" is the rightmost
+    (r"\b(?:with|having|at) (?:the )?(smaller|smallest|lower|lowest|least|minimum|min|larger|largest|bigger|biggest|higher|highest|greater|greatest|maximum|max)"
+     r" ([xy])(?: (?:coordinate|value|position|coord))?\b", lambda m: _EXTREME[(m.group(1) in _SMALLER, m.group(2))]),
+    # a placing said again as where it lands: "..., so it lands directly in front of it"
+    (r",?\s*so (?:that )?(?:it|they) (?:lands?|ends? up|sits?|is|are|rests?|goes|go)\b[^.;,]*?\b(?:it|them)(?=$|[.;,])", ""),
+    (r"\b(?:return|go|move|revert|reset)(?: back)? to (?:the )?nominal(?: (?:pose|position|config|configuration|state))?\b", "go home"),
+    (r"\bhome (?:the (?:arm|robot|manipulator|gripper|end effector)|yourself)\b", "go home"),
+    (r"\bstand ?by (?:at|in) (?:the |your )?home(?: (?:position|pose|config|configuration))?\b", "go home"),
     (r"\b(?:the )?robot(?: s|'s)? base\b", "the robot"),
     (r"\b(?:its|the|your) (?:home|rest|ready|start) (?:configuration|config|pose)\b", "home position"),
     # the arm as the object of a move home: "return the arm to its home position" is going home
-    (r"\b(?:return|move|bring|send|take) (?:the (?:arm|robot|gripper|hand|manipulator)|yourself|your arm)(?: back)?(?: to)? (?:the |your |its )?"
+    (r"\b(?:return|move|bring|send|take) (?:the (?:arm|robot|gripper|hand|manipulator|end effector|end-effector|eef|ee|tcp|tool)|yourself|your arm)(?: back)?(?: to)? (?:the |your |its )?"
      r"(?=(?:home|start|starting|rest|resting|ready|initial|original|default|neutral)\b)", "go back to the "),
     (r"\b(?:at|to) (?:the )?(?:midpoint|mid point|mid-point|halfway point|centre point|center point)(?: (?:of|between))?\b", "between"),
     (r"\b(?:midway|halfway|centred|centered) between\b", "between"),

@@ -13,7 +13,7 @@ import re
 
 from realsim.errors import InputError
 from realsim.planner import casual
-from realsim.planner.lexicon import AVOID, RELATION_AT, VERB_START, has_relation, relation_start
+from realsim.planner.lexicon import AVOID, RELATION_AT, STATEMENT_VERB, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
 __all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive"]
@@ -25,7 +25,7 @@ _PRONOUN = re.compile(r"\b(?:it|them|th(?:at|is) one)\b")
 # a locator said as a piece of its own after a topic ("..., closest to you, push it ..."): which one, never where to
 _LOCATOR = re.compile(r"(?:the one )?(?:(?:that is |thats |that s |which is )?(?:closest|nearest|closer|nearer|furthest|farthest|further|farther)\b"
                       r"|(?:on|at|in) the (?:front|back|middle|centre|center|left|right)\b|the \w+most\b)")
-_STATEMENT = re.compile(r"(?<!that )(?<!which )(?<!who )\b(?:is|are|s|looks?|seems?|was|were|keeps|sits|has|have|got|needs?)\b")
+_STATEMENT = re.compile(rf"(?<!that )(?<!which )(?<!who )\b{STATEMENT_VERB}\b")
 _LIST = r"(?:the |that |this )?[a-z ]+?(?:(?:,| or| and)\s+(?:the |that |this )?[a-z ]+?)+"
 
 

@@ -1,0 +1,66 @@
+"""The one thing a speaker singles out before acting on it: "not the white box, the white bowl:
+push that ...", "leave the mug alone, it's the bowl I'm after: push it ...", "only the green one:
+set it ...", "nothing else moves apart from the soup can: put it ...", and a ban on lifting what
+is then pushed ("don't lift the mustard bottle; slide it 3 cm right instead").
+
+Rule: the singled-out noun phrase takes the place of the first "it", "that" or "that one" after
+it, and the words that singled it out go. What was set against it ("not the white box") stays as
+a thing not to touch, as is each of several things to leave be. A ban on lifting is dropped only when the text also pushes or slides, and
+the thing it named is then what "it" means. A text with none of these frames is unchanged.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["singled_out"]
+
+_NP = r"(?:the|that|this|my|your) (?:(?!(?:and|then|but|so|is|it|i)\b)[a-z' ]+?)"
+_START = r"(?:^|(?<=[.;:!?] )|(?<=[.;:!?]))"
+_SEP = r"\s*(?:[.;:!?,]\s*|\s+and\s+|$)(?:and\s+)?"
+_CONTRAST = re.compile(rf"{_START}(?:no,?\s+)?not ({_NP}),\s*(?:but |rather |i mean |it(?:'s| s| is) )?({_NP}|the other(?: one)?)(?=\s*[.;:!?,]|$)[.;:!?,]?\s*")
+_CLEFT = re.compile(rf",?\s*\bit(?:'s| s| is) ({_NP}) (?:(?:that )?i(?:'m| m| am|m) (?:after|talking about|on about|meaning)|(?:that )?(?:i|we) (?:mean|want|need)t?){_SEP}")
+_ONLY = re.compile(rf"{_START}\s*(?:just |but )?only ({_NP}){_SEP}")
+_EXCEPT = re.compile(rf"{_START}\s*(?:nothing(?: else)?|no other (?:thing|object|item)s?|everything(?: else)? (?:stays|remains)(?: put| still| where it is)?)"
+                     rf"(?: (?:moves|should move|gets? moved|is moved|is touched|gets? touched|changes|is to move))?"
+                     rf" (?:apart from|except(?: for)?|but|besides|other than|save(?: for)?) ({_NP}){_SEP}")
+_NO_LIFT = re.compile(rf"(?:(?<=[,;.:]\s)|^|\s)(?:but )?(?:don't|dont|don t|do not|never|no need to) (?:lift|pick up|pick|grasp|grab|raise|carry)(?: up)?"
+                      rf"(?: (it|them|{_NP}))?(?: up)?(?=\s*(?:[,;.:]|$|\s(?:just|only|instead|but)\b))[,;.:]?")
+_PUSHED = re.compile(r"\b(?:push|pushing|slide|sliding|shove|shoving|nudge|nudging|drag|dragging|scoot|scooting|slid)\b")
+_PRONOUN = re.compile(r"\b(?:it|that one|this one|that)\b(?! (?:is|s|was|way|i)\b)(?!')")
+_MODIFIERS = re.compile(r"^(?:(?:left|right|front|back|rear|far|near|first|second|third|last|big|bigger|small|smaller|tall|short|little|large"
+                        r"|red|blue|green|yellow|white|black|orange|purple|pink|grey|gray|brown)\s+)+")
+_LEAVE_MANY = re.compile(rf"\bleave ((?:{_NP})(?:,? (?:and|or) (?:{_NP}))+) (?:be|alone|where they are|in place|untouched)\b")
+_NOTHING_MORE = re.compile(r",?\s*\bnothing (?:more|else)(?=\s*[.!;]|$)")
+
+
+def _resumed(rest: str, phrase: str) -> str:
+    """``rest`` with its first "it" / "that (one)" made ``phrase`` (unchanged when it has none)."""
+    return _PRONOUN.sub(phrase, rest, count=1)
+
+
+def _other(excluded: str, said: str) -> str:
+    """"the other one" said against ``excluded``: the other thing of its kind."""
+    if not said.startswith("the other"):
+        return said
+    head = _MODIFIERS.sub("", re.sub(r"^(?:the|that|this|my|your) ", "", excluded))
+    return f"the other {head}"
+
+
+def singled_out(text: str) -> str:
+    """``text`` (lower case, punctuation kept) with a singled-out thing put where it is acted on."""
+    text = _LEAVE_MANY.sub(lambda m: " and ".join(f"dont touch {t}" for t in re.split(r",? (?:and|or) ", m.group(1))), _NOTHING_MORE.sub("", text))
+    if (m := _CONTRAST.search(text)) is not None:
+        phrase = _other(m.group(1), m.group(2))
+        text = f"{text[: m.start()]}dont touch {m.group(1)}. {_resumed(text[m.end():], phrase)}"
+    for frame in (_CLEFT, _ONLY, _EXCEPT):
+        if (m := frame.search(text)) is not None:
+            before = text[: m.start()].rstrip(" ,")
+            text = f"{before}{'. ' if before and not before.endswith(('.', ';', ':')) else ' ' if before else ''}{_resumed(text[m.end():], m.group(1))}"
+    if _PUSHED.search(text) and (m := _NO_LIFT.search(text)) is not None:
+        named = m.group(1)
+        rest = text[m.end():]
+        if named and named not in ("it", "them"):
+            rest = _resumed(rest, named)
+        text = f"{text[: m.start()].rstrip(' ,')} {rest.lstrip(' ,')}".strip()  # "push it, don't lift it, 5 cm right"
+    return " ".join(text.split())

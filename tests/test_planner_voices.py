@@ -1,0 +1,95 @@
+"""Voices the planner had not heard: radio procedure (realsim.planner.radio), a thing singled out
+before it is acted on (realsim.planner.focus), a purpose before the request
+(realsim.planner.purpose), an engineer's names for the primitives (realsim.planner.technical),
+chat shorthand, and comparisons among all the scene holds."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER, call_lines
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+from realsim.planner.focus import singled_out
+from realsim.planner.purpose import purpose
+from realsim.planner.radio import radio
+from realsim.planner.types import ObjectInfo
+
+
+def test_radio_procedure_and_call_signs_go_only_in_a_radio_call() -> None:
+    assert radio("kitchen to robot, over. put the banana in the bowl. how copy? over.") == "put the banana in the bowl."
+    assert radio("this is the bowl, put the banana in it") == "this is the bowl, put the banana in it"  # no procedure word: not a call
+    assert radio("this is the bowl, over. put the banana in it") == "this is the bowl, put the banana in it"  # names a thing: kept
+
+
+@pytest.mark.parametrize(("said", "meant"), [
+    ("not the banana, the strawberry: put that in the bowl.", "dont touch the banana. put the strawberry in the bowl."),
+    ("leave the bowl alone, it's the banana i'm after: lift it.", "leave the bowl alone. lift the banana."),
+    ("only the strawberry, and push it 3 cm left.", "push the strawberry 3 cm left."),
+    ("everything else stays put except the banana: slide it forward.", "slide the banana forward."),
+    ("don't pick up the bowl; nudge it 2 cm back.", "nudge the bowl 2 cm back."),
+    ("leave the bowl and the banana be, lift the strawberry", "dont touch the bowl and dont touch the banana, lift the strawberry"),
+])
+def test_a_thing_singled_out_is_the_one_acted_on(said: str, meant: str) -> None:
+    assert singled_out(said) == meant
+
+
+def test_a_ban_on_lifting_stays_a_ban_without_a_push() -> None:
+    assert singled_out("don't lift the bowl.") == "don't lift the bowl."
+
+
+@pytest.mark.parametrize(("said", "meant"), [
+    ("i'm baking later, so the banana should go next to the bowl.", "the banana should go next to the bowl."),
+    ("i want to film the bowl, so the banana has to go somewhere else.", "put the banana aside."),
+    ("i'm about to put my cup down where the strawberry is, so move it out of the way", "move the strawberry out of the way"),
+    ("we need the space, so the strawberry can't stay where it is.", "put the strawberry aside."),
+])
+def test_a_purpose_leads_to_its_request(said: str, meant: str) -> None:
+    assert purpose(said) == meant
+
+
+def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
+    assert purpose("put the banana in the bowl so i can see it") == "put the banana in the bowl"
+
+
+@pytest.mark.parametrize(("sentence", "plain"), [
+    ("Station two to robot, come in. Put the banana in the bowl. Over and out.", "put the banana in the bowl"),
+    ("Robot, Kim here, over. Lift the strawberry. Copy?", "lift the strawberry"),
+    ("Execute a grasp on the banana, place pose inside the bowl, then return to nominal.", "pick up the banana, put it in the bowl, then go home"),
+    ("Grasp target is the strawberry. Place pose on the -y side of the bowl.", "pick up the strawberry, put it to the right of the bowl"),
+    ("Pick the strawberry; place pose 6 cm in -x from the bowl.", "pick up the strawberry, put it in front of the bowl"),
+    ("Of the two soda cans, take the one with the larger y coordinate.", "pick up the left soda can"),
+    ("The bowl exceeds the gripper aperture, so no grasp: push it 4 cm along +y.", "push the bowl left 4 cm"),
+    ("Not the banana, the strawberry: put it in the bowl.", "put the strawberry in the bowl"),
+    ("Don't touch the red or the blue cube; only the green one: lift it.", "lift the green cube"),
+    ("I'm making a smoothie later, so I'd like the strawberry next to the banana where I can reach it.", "put the strawberry next to the banana"),
+    ("I want to photograph the bowl, so the banana has to go out of the way.", "put the banana aside"),
+    ("Fancy popping the strawberry into the bowl? Lovely, cheers.", "put the strawberry in the bowl"),
+    ("That banana's a bit of a lump, so just shove it 3 cm to the left.", "push the banana left 3 cm"),
+    ("green cube ontop blu 1 thx", "put the green cube on the blue cube"),
+    ("strawberry 2 teh left 5cm", "push the strawberry left 5 cm"),
+    ("Swap the red cube and the green cube, and once that's done put the strawberry in the bowl.", "swap the red cube and the green cube, then put the strawberry in the bowl"),
+])
+def test_voices_the_planner_had_not_heard(sentence: str, plain: str) -> None:
+    assert call_lines(sentence) == call_lines(plain)
+
+
+def test_the_smaller_of_the_two_when_the_scene_holds_two() -> None:
+    two = [o for o in CLUTTER if o.name in ("obj6_bowl", "obj8_strawberry")]
+    assert call_lines("put the smaller of the two into the bigger one", two) == call_lines("put the strawberry in the bowl", two)
+    with pytest.raises(InputError):  # eight things: which two is for the speaker to say
+        RulePlanner().plan("put the smaller of the two into the bowl", CLUTTER)
+
+
+def test_one_after_a_thing_named_by_its_place_means_any_thing() -> None:
+    """"the second object from the left ... the rightmost one": "one" is any object, not "left"."""
+    assert call_lines("put the second object from the left next to the rightmost one") == call_lines(
+        "put the second object from the left next to the rightmost object")
+
+
+def test_everything_is_still_refused_when_the_singled_out_thing_is_missing() -> None:
+    with pytest.raises(InputError):
+        RulePlanner().plan("not the banana, the apple: put that in the bowl", CLUTTER)
+
+
+assert ObjectInfo  # the scene objects the tests use come from test_planner_rules.CLUTTER
