@@ -92,4 +92,24 @@ def test_everything_is_still_refused_when_the_singled_out_thing_is_missing() -> 
         RulePlanner().plan("not the banana, the apple: put that in the bowl", CLUTTER)
 
 
-assert ObjectInfo  # the scene objects the tests use come from test_planner_rules.CLUTTER
+
+
+def test_nearest_you_is_the_nearest_to_the_robot_base_when_it_is_known() -> None:
+    """A thing just ahead of the base is nearer than one a little less far forward but off to the side."""
+    ahead = ObjectInfo("obj1_cube", "cube", ("block",), (0.40, 0.0, 0.03), (0.05, 0.05, 0.05), "red", ("graspable", "support"))
+    aside = ObjectInfo("obj2_cube", "cube", ("block",), (0.35, 0.40, 0.03), (0.05, 0.05, 0.05), "blue", ("graspable", "support"))
+    plan = RulePlanner().plan("pick up the cube nearest you", [ahead, aside], robot_yaw=0.0, robot_base=(0.0, 0.0))
+    assert plan.calls is not None and plan.calls.acted_on() == ["obj1_cube"]
+    far = RulePlanner().plan("pick up the cube farthest from you", [ahead, aside], robot_yaw=0.0, robot_base=(0.0, 0.0))
+    assert far.calls is not None and far.calls.acted_on() == ["obj2_cube"]
+    # without the base, "nearest" is along the robot's forward axis
+    plain = RulePlanner().plan("pick up the cube nearest you", [ahead, aside], robot_yaw=0.0)
+    assert plain.calls is not None and plain.calls.acted_on() == ["obj2_cube"]
+
+
+def test_things_as_far_from_the_base_are_told_apart_by_their_depth() -> None:
+    """Two cans 71 cm from the base, one 8 cm further ahead: "the one further away" is that one."""
+    near = ObjectInfo("obj1_soda_can", "soda can", ("can",), (0.47, 0.53, 0.06), (0.066, 0.066, 0.12), "red")
+    ahead = ObjectInfo("obj2_soda_can", "soda can", ("can",), (0.55, 0.45, 0.06), (0.066, 0.066, 0.12), "red")
+    plan = RulePlanner().plan("pick up the soda can that is further away", [near, ahead], robot_yaw=0.0, robot_base=(0.0, 0.0))
+    assert plan.calls is not None and plan.calls.acted_on() == ["obj2_soda_can"]

@@ -70,7 +70,8 @@ class ClaudePlanner:
     repair_rounds: int = 1
     name: str = "claude"
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0,
+             robot_base: tuple[float, float] | None = None) -> Plan:
         if not command.strip():
             raise InputError("the command is empty; say what the robot should do")
         version, system = system_prompt()
@@ -96,14 +97,15 @@ class ClaudePlanner:
                     {"role": "user", "content": repair.replace("{errors}", "\n".join(f"- {v}" for v in exc.violations))},
                 ]
                 continue
-            return Plan(program=code, goals=derive_goals(command, scene_objects, notes, robot_yaw), planner=self.name, usage=usage, notes=notes)
+            return Plan(program=code, goals=derive_goals(command, scene_objects, notes, robot_yaw, robot_base), planner=self.name, usage=usage, notes=notes)
         raise AssertionError("unreachable")  # pragma: no cover
 
 
-def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | None = None, robot_yaw: float = 0.0) -> list[Goal]:
+def derive_goals(command: str, objects: list[ObjectInfo], notes: list[str] | None = None, robot_yaw: float = 0.0,
+                 robot_base: tuple[float, float] | None = None) -> list[Goal]:
     """Goals from the rule parser when it reads ``command``; otherwise none ("goal unknown")."""
     try:
-        return rules.parse_calls(command, objects, robot_yaw)[1]
+        return rules.parse_calls(command, objects, robot_yaw, robot_base)[1]
     except InputError as exc:
         if notes is not None:
             notes.append(f"goal unknown (rule parser: {exc})")

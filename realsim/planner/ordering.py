@@ -1,6 +1,9 @@
 """Which of several objects an order picks: an extreme ("the leftmost"), an ordinal ("the second
 from the right"), the middle one, the one nearest or farthest from a reference, or a corner ("at
-the front on the right": first along both directions). Directions are the robot's.
+the front on the right": first along both directions). Directions are the robot's; "nearest" and
+"farthest" rank by distance from the robot's base when it is known (a thing far off to one side is
+not nearer than one just ahead), things as far from it by their depth along its forward axis, and
+along that axis alone when the base is not known, like "front" and "back".
 """
 
 from __future__ import annotations
@@ -24,11 +27,15 @@ EXTREMES: dict[str, tuple[int, float]] = {
     "nearest": (0, -1.0), "closest": (0, -1.0), "near": (0, -1.0), "front": (0, -1.0), "frontmost": (0, -1.0),
 }
 
+RADIAL = ("nearest", "closest", "near", "farthest", "furthest", "far")  # by distance from the base when it is known
+
 
 def ordered(found: list[ObjectInfo], order: tuple[str, object], ordinal: int | None, phrase: str,
-            robot_xy: Callable[[ObjectInfo], tuple[float, float]], distinguish: Callable[[list[ObjectInfo]], list[str]]) -> list[ObjectInfo]:
+            robot_xy: Callable[[ObjectInfo], tuple[float, float]], distinguish: Callable[[list[ObjectInfo]], list[str]],
+            radial: bool = False) -> list[ObjectInfo]:
     """The one of ``found`` that ``order`` (kind, argument) picks; ``robot_xy`` gives an object's
-    (forward, left) in the robot's frame, ``distinguish`` lists candidates for an error."""
+    (forward, left) in the robot's frame, ``distinguish`` lists candidates for an error; with
+    ``radial`` (``robot_xy`` measured from the base) "nearest" / "farthest" rank by distance."""
     kind, arg = order
     if kind in ("near", "far"):  # the gap to the reference, its distance breaking ties
         ref = arg
@@ -44,19 +51,25 @@ def ordered(found: list[ObjectInfo], order: tuple[str, object], ordinal: int | N
         return [ys[len(ys) // 2]]
     if kind == "corner":  # "at the front on the right": first along both ways, else not clear
         assert isinstance(arg, tuple)
-        firsts = [ordered(found, ("extreme", w), None, phrase, robot_xy, distinguish)[0] for w in arg]
+        firsts = [ordered(found, ("extreme", w), None, phrase, robot_xy, distinguish, radial)[0] for w in arg]
         if firsts[0] is not firsts[1]:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(distinguish(firsts))}; say which one")
         return [firsts[0]]
     axis, sign = EXTREMES[str(arg)]
-    ranked = sorted(found, key=lambda o: -sign * robot_xy(o)[axis])
+
+    def along(o: ObjectInfo) -> float:  # a side: along its direction; nearest / farthest: the distance from the base
+        return math.hypot(*robot_xy(o)) if radial and str(arg) in RADIAL else robot_xy(o)[axis]
+
+    ranked = sorted(found, key=lambda o: -sign * along(o))
     k = 1 if ordinal is None else ordinal
     if k == -1:
         return [ranked[-1]]
     if k > len(ranked):
         raise InputError(f"there is no {phrase.strip()!r}: only {len(ranked)} such objects")
     pick = ranked[k - 1]
-    ties = [o for o in ranked if o is not pick and abs(robot_xy(o)[axis] - robot_xy(pick)[axis]) < TIE]
+    ties = [o for o in ranked if o is not pick and abs(along(o) - along(pick)) < TIE]
+    if ties and radial and str(arg) in RADIAL and ordinal is None:  # as far from the base: the one ahead or behind the others
+        return ordered([pick, *ties], order, None, phrase, robot_xy, distinguish, radial=False)
     if ties:  # level with another along that direction: which one is meant is not clear
         raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(distinguish([pick, *ties]))} are level; say which one")
     return [pick]

@@ -73,8 +73,10 @@ def describe(o: ObjectInfo) -> str:
 class Resolver:
     """Resolves noun phrases against ``objects``; ``robot_yaw`` turns left/right into the world."""
 
-    def __init__(self, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0):
+    def __init__(self, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0, robot_base: tuple[float, float] | None = None):
         self.objects = list(objects)
+        self.base = np.zeros(2) if robot_base is None else np.asarray(robot_base, float)
+        self.radial = robot_base is not None  # "nearest you" as a distance from the base (else along its forward axis)
         c, s = math.cos(robot_yaw), math.sin(robot_yaw)
         self.forward, self.left = np.array([c, s]), np.array([-s, c])
         self._words = {o.name: self._name_sets(o) for o in self.objects}
@@ -122,7 +124,7 @@ class Resolver:
         return "objects in the scene: " + ", ".join(describe(o) for o in self.objects)
 
     def robot_xy(self, o: ObjectInfo) -> tuple[float, float]:
-        p = np.asarray(o.position[:2], float)
+        p = np.asarray(o.position[:2], float) - self.base
         return float(p @ self.forward), float(p @ self.left)
 
     # --- noun scoring -----------------------------------------------------------------------
@@ -376,7 +378,7 @@ class Resolver:
         if sizes and len(found) > 1:
             found = size_pick(found, sizes[-1], quantity or 1)
         if order is not None and len(found) > 1:
-            found = ordered(found, order, ordinal, phrase, self.robot_xy, self._distinguish)
+            found = ordered(found, order, ordinal, phrase, self.robot_xy, self._distinguish, radial=self.radial)
         elif ordinal is not None and ordinal not in (1, -1) and len(found) <= 1:
             raise InputError(f"there is no {phrase.strip()!r}: only {len(found)} such object(s)")
         if plural:

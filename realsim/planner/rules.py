@@ -50,21 +50,23 @@ class RulePlanner:
 
     name = "rules"
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan:
-        calls, goals = parse_calls(command, scene_objects, robot_yaw)
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0,
+             robot_base: tuple[float, float] | None = None) -> Plan:
+        calls, goals = parse_calls(command, scene_objects, robot_yaw, robot_base)
         program = Program(tuple(calls), command)
         return Plan(program=program.source(), goals=goals, planner=self.name, calls=program)
 
 
-def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0) -> tuple[list[Call], list[Goal]]:
+def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
+                robot_base: tuple[float, float] | None = None) -> tuple[list[Call], list[Goal]]:
     """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
     if QUESTION.match(command.strip().lower()) and not re.search(r"[?.!]\s+\S", command.strip()):  # a question alone
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
-    command = branch(command, Resolver(objects, robot_yaw)) or command  # "if the mug is in the bowl, ...": the branch that holds
+    command = branch(command, Resolver(objects, robot_yaw, robot_base)) or command  # "if the mug is in the bowl, ...": the branch that holds
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
-    p = Parser(objects, robot_yaw)
+    p = Parser(objects, robot_yaw, robot_base)
     steps: list[Step] = []
     kept: dict[str, str] = {}  # objects the command says not to touch, and how it named them
     asides: list[InputError] = []  # clauses that were talk around the command ("ugh my desk is a mess")

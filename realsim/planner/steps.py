@@ -42,12 +42,13 @@ class Parser:
 
     objects: Sequence[ObjectInfo]
     robot_yaw: float = 0.0
+    robot_base: tuple[float, float] | None = None  # world xy of the robot base, when known
     ctx: Context = field(default_factory=Context)
     moved: set[str] = field(default_factory=set)  # objects earlier clauses moved
     taken: list[Any] = field(default_factory=list)  # xy boxes (lo, hi) earlier clauses moved objects to
 
     def __post_init__(self) -> None:
-        self.resolver = Resolver(self.objects, self.robot_yaw)
+        self.resolver = Resolver(self.objects, self.robot_yaw, self.robot_base)
         self.by_name = {o.name: o for o in self.objects}
 
 

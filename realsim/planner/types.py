@@ -65,8 +65,10 @@ class Plan:
 
 class Planner(Protocol):
     """Turns a sentence into a :class:`Plan` for the given scene objects (``robot_yaw``: the
-    robot base's heading in the world, rad; "left" is the robot's left)."""
+    robot base's heading in the world, rad; "left" is the robot's left; ``robot_base``: its world
+    xy, when known, so "the one nearest you" is the nearest to it)."""
 
     name: str
 
-    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0) -> Plan: ...
+    def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0,
+             robot_base: tuple[float, float] | None = None) -> Plan: ...

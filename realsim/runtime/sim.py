@@ -185,6 +185,11 @@ class Sim:
         """Yaw of the robot's base (rad): direction words are relative to it."""
         return float(((self.meta.get("robot") or {}).get("base_pose_xy_yaw") or [0.0, 0.0, 0.0])[2])
 
+    def robot_base(self) -> tuple[float, float] | None:
+        """World xy of the robot's base, when the scene records it ("nearest you" is nearest to it)."""
+        pose = (self.meta.get("robot") or {}).get("base_pose_xy_yaw")
+        return (float(pose[0]), float(pose[1])) if pose else None
+
     def ee_pos(self) -> Sequence[float]:
         pos, _ = self.robot.tcp_pose()
         return [float(v) for v in pos]
