@@ -1,7 +1,8 @@
 """Voices the planner had not heard: radio procedure (realsim.planner.radio), a thing singled out
 before it is acted on (realsim.planner.focus), a purpose before the request
-(realsim.planner.purpose), an engineer's names for the primitives (realsim.planner.technical),
-chat shorthand, and comparisons among all the scene holds."""
+(realsim.planner.purpose), an office email (realsim.planner.formal), an engineer's names for the
+primitives (realsim.planner.technical), a drill sergeant, an unsure speaker asking, spoken
+fractions and trade units, chat shorthand, and comparisons among all the scene holds."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ from test_planner_rules import CLUTTER, call_lines
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
 from realsim.planner.focus import singled_out
+from realsim.planner.formal import formal
 from realsim.planner.purpose import purpose
 from realsim.planner.radio import radio
 from realsim.planner.types import ObjectInfo
@@ -48,6 +50,21 @@ def test_a_purpose_leads_to_its_request(said: str, meant: str) -> None:
     assert purpose(said) == meant
 
 
+@pytest.mark.parametrize(("said", "meant"), [
+    ("please be advised that the banana needs to be moved into the bowl. kind regards, ann", "put the banana into the bowl."),
+    ("as agreed on monday, kindly ensure the strawberry is placed next to the bowl. thanks in advance.", "put the strawberry next to the bowl."),
+    ("further to our call, we must ask that the green cube be relocated onto the plate.", "put the green cube onto the plate."),
+    ("i would be grateful if the banana could be set behind the bowl, after which the arm should return home.", "put the banana behind the bowl, then return home."),
+])
+def test_an_email_is_its_request(said: str, meant: str) -> None:
+    assert formal(said) == meant
+
+
+@pytest.mark.parametrize("said", ["the banana is in the bowl", "is the banana in the bowl?", "the mug should be in the bowl"])
+def test_a_statement_or_question_is_never_made_a_request_by_the_email_rules(said: str) -> None:
+    assert formal(said) == said
+
+
 def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
     assert purpose("put the banana in the bowl so i can see it") == "put the banana in the bowl"
 
@@ -68,6 +85,16 @@ def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
     ("That banana's a bit of a lump, so just shove it 3 cm to the left.", "push the banana left 3 cm"),
     ("green cube ontop blu 1 thx", "put the green cube on the blue cube"),
     ("strawberry 2 teh left 5cm", "push the strawberry left 5 cm"),
+    ("Kindly be advised that the strawberry needs to be relocated into the bowl. Regards, Facilities", "put the strawberry in the bowl"),
+    ("Per my last message, please arrange for the banana to be placed behind the bowl. Many thanks.", "put the banana behind the bowl"),
+    ("Strawberry! Two and a half centimetres to the left! Hustle! Don't make me repeat myself!", "push the strawberry left 2.5 cm"),
+    ("Banana, over by the bowl, on the double! Then back to home position!", "put the banana next to the bowl, then go home"),
+    ("Is there any way the strawberry could end up in the bowl?", "put the strawberry in the bowl"),
+    ("Could the green cube perhaps go on the blue cube? I think that would look nicer.", "put the green cube on the blue cube"),
+    ("The banana needs to come back ten mil, nearer the robot.", "push the banana back 1 cm"),
+    ("Scoot the strawberry three quarters of an inch to the right.", "push the strawberry right 0.75 inch"),
+    ("Banana, a hand's width forward. Call it ten centimetres.", "push the banana forward 10 cm"),
+    ("Put the strawberry in the bowl, then the banana next to the bowl, and finish by going back home.", "put the strawberry in the bowl, put the banana next to the bowl, then go home"),
     ("Swap the red cube and the green cube, and once that's done put the strawberry in the bowl.", "swap the red cube and the green cube, then put the strawberry in the bowl"),
 ])
 def test_voices_the_planner_had_not_heard(sentence: str, plain: str) -> None:

@@ -42,6 +42,11 @@ TALK: tuple[str, ...] = (
     # exhortations and chat
     r"while (?:you re|youre|you are) at it", r"(?:ok |okay |so |right )?(?:here s|heres|here is) (?:the|my|a) (?:plan|deal|idea|thing|task)", r"(?:the )?plan is", r"(?:i )?(?:love|like) (?:that|it|this)", r"(?:and )?(?:that s|thats|that is) (?:it|all)",
     r"(?:good ?)?bye(?: bye)?", r"see (?:you|ya)(?: later)?", r"later", r"to ?do(?: list)?", r"todo", r"(?:all )?done", r"finished", r"over and out", r"that s everything", r"(?:i )?(?:guess|think|suppose|reckon)(?: so)?",
+    # a drill sergeant's urging: "Hustle!", "On the double!", "I said NOW!", "Don't make me repeat myself!", "Move it!"
+    r"(?:very )?good", r"hustle(?: up)?", r"(?:on the )?double(?: time| quick)?", r"pick up the pace", r"i said(?: so| now| it)?", r"(?:let s|lets) move",
+    r"(?:don t|dont|do not) make me (?:repeat|say) (?:myself|it|that|this)(?: again| twice)?", r"(?:soldier|private|cadet|recruit|troops|people|you there|you)",
+    r"(?:i think )?(?:that|it|this|they) (?:would|will|d|might|should) (?:look|be|seem) (?:so |much |a lot |way )?(?:better|nicer|neater|tidier|good|great|best|right|lovely|perfect)(?: that way)?",
+    r"(?:i m|im|i am) not (?:sure|certain) (?:if|whether) (?:this|that|it) (?:works|will work|is possible|makes sense|can be done)",
     r"come on", r"(?:look|see|watch)(?: (?:at )?(?:this|here|that))?", r"(?:go ?)+", r"go on", r"(?:now|right now|right away|straight away|at once|immediately|asap|quick|quickly|fast|hurry(?: up)?|chop chop|pronto|stat|let s go|lets go|let s do this|lets do this)",
     r"(?:ok|okay|k|alright|all right|so|well|oh|ah|aha|um+|uh+|er+|erm|hmm+|lol|lmao|rofl|haha+|hehe|xd|ez|easy|rq|fr|gg|yes|yeah|yep|yup|sure|cool|nice|wow|ugh|man|bruh|bro|dude|fam|thx|ty|pls|plz|k)",
     r"(?:much|very|so|ever so|really|truly|indeed|also|too|as well)",

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from realsim.planner import casual, clarify, discourse, focus, places, purpose, radio, remarks, speech, technical, topic, wishes
+from realsim.planner import casual, clarify, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
 from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
@@ -45,6 +45,7 @@ _THINGS = r"(?:anything|everything|something|(?:any of )?the other (?:thing|obje
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
                          r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
                          rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
+_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
@@ -60,13 +61,13 @@ GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "m
 
 
 # a question asks about the scene; it is never carried out ("is the mug in the bowl?"), unlike a request ("can you ...")
-QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|need)\b)(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! ever\b)(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
+QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|need)\b)(?!is there (?:any|a|some) (?:way|chance)\b)(?:is|are|was|were|does|did|what|where|which|how|who|why|when)\b(?! ever\b)(?! (?:it|you) (?:be )?(?:possible|ok|okay|able|alright)\b| about\b"
                       r"| (?:you|you'?re|you are|that'?s|that is|it'?s|it is|all that'?s) (?:done|finished)\b)")
 
 
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
-    text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(radio.radio(command.lower().replace("’", "'"))))))
+    text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(command.lower().replace("’", "'")))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"[!?]+", ".", text)
@@ -95,10 +96,21 @@ def clean(command: str) -> str:
                   r" (?:finished|done|over|through|complete)[,\s]+", "", text)  # "when it's finished, the mug should be ..."
     text = re.sub(r"\s*,?\s+instead of (?:being )?(?:on|in|inside|next to|beside|behind|in front of|on top of|under|at|by) [^.,;!?]*", "", text)
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
+    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
+    text = re.sub(r"\bover (?=(?:beside|next to|near|alongside)\b)", "", text)  # "over beside the bowl": beside it
+    text = re.sub(r"(?:\bover by|(?:^|(?<=[,.;!?] ))by)(?= (?:the|that|this|my|your) )", "next to", text)  # "banana, (over) by the bowl"
+    text = re.sub(r"\b((?:\w+ )?\w+) up[.!,]\s*(?:up )?off the (?:deck|table|floor|ground|surface|counter|desk)\b", r"\1 up", text)  # "marker up! off the deck!": lifted
+    text = re.sub(r"\b(?:finish|end|wrap(?: it| things)? up|conclude)(?: off| up)? by (?=\w+ing\b)", "", text)  # "and finish by going back home"
     text = re.sub(r"\b(?:perched|balanced|sitting|standing|resting|lying|sat|stood) (?=(?:on|atop|on top of|in|inside) (?:the|that|this|a|an)\b)", "", text)
     text = _VOCATIVE.sub(" ", text)
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
+    # spoken fractions and trade units: "two and a half centimetres", "three quarters of an inch", "ten mil", "a hand's width"
+    text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten) and a half\b", lambda m: f"{float(_NUMBER_WORDS.get(m.group(1), m.group(1))) + 0.5:g}", text)
+    text = re.sub(r"\b(?:(three)|an?|one) quarters? of an? (?=inch|centimet|cm|millimet|mm)", lambda m: "0.75 " if m.group(1) else "0.25 ", text)
+    text = re.sub(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty) mils?\b", r"\1 mm", text)
+    text = re.sub(r"\ban? (hand|palm|finger|thumb)(?:'?s|s)? (?:width|breadth)\b", lambda m: {"hand": "10 cm", "palm": "8 cm"}.get(m.group(1), "2 cm"), text)
+    text = re.sub(r"(\d\s*(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b[^.;!?]*?)[.;,]\s*(?:call it|say|make (?:it|that)|let'?s say) (?:about |roughly )?[\w.]+ (?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b", r"\1", text)
     # chat shorthand: "on top blue" is on top of it, "blu 1" the blue one, "2 the left" to the left
     text = re.sub(r"\bon top (?!of\b)(?=(?:the |a |an |that |this )?[a-z])(?!(?:and|then|please|thanks|now|too)\b)", "on top of ", text)
     text = re.sub(rf"\b({'|'.join(COLOR_WORDS)}|big|small|little|large|tall|short|other|left|right|first|last|same) 1\b(?!\s*(?:cm|mm|in|inch|m)\b)", r"\1 one", text)
@@ -121,6 +133,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\bchange (?:the )?(?:place|places|position|positions|spot|spots)(?: of)? (.+?) (?:with|and) ", r"swap \1 with ", text)
     text = re.sub(r",? (?:so )?(?:each one|each|both)(?: of them)? (?:go|goes|ends? up|sits?|is) (?:where|in the place)(?: is)? the other(?: one)?(?: (?:is|was|sits|sat))?(?=$|[,.;!?])", "", text)
     text = re.sub(r"\bmake (it|them) (?:go|move|slide|shift)\b", r"move \1", text)  # "make it go left"
+    # "the marker needs to come back ten mil": a thing that has to go some way is moved that way
+    text = re.sub(r"\b((?:the|that|this|my) [a-z ]+?) (?:needs|has|ought|must|should|is going)(?: to)? (?:come|go|move|slide|shift|get|be moved|be pushed|be slid) "
+                  r"(?=(?:back|forwards?|backwards?|left|right|closer|nearer|away|ahead|toward|towards|over|\d|a |an |about|half|one|two|three|four|five|ten|to the left|to the right)\b)",
+                  r"move \1 ", text)
     text = re.sub(r"\bmore (?:near|close)(?: (?:of|to|from))? (you|me)\b", r"closer to \1", text)  # "more near of you"
     text = re.sub(r"\bmore far(?: away)?(?: (?:of|to|from))? (you|me)\b", r"away from \1", text)  # "more far from you"
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
@@ -200,7 +216,7 @@ def split_command(command: str) -> list[str]:
                 continue  # "Red one too, same plate!": the place said again
             elif REFINE.fullmatch(part) and _SIDE_REL.search(f" {clauses[-1]} "):  # "put the can next to the bowl, on the left": which side
                 clauses.append(part)
-            elif _AMOUNT.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far
+            elif _AMOUNT.fullmatch(part) or _MOTION.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far; "red cube. forward ten cm": where
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
                 clauses[-1] = f"{clauses[-1]} {m.group(1)}"  # "pick up the green cube, the one furthest from you": which one
@@ -227,6 +243,12 @@ _THE_THING = r"(?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)"  # on
 _YOU_MODAL = r"(?:are going to|are|re|must to|must|should|have to|need to|will|can|could|shall|gotta|gonna)"  # "you must to put it ..."
 _SIDE_REL = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, k in RELATIONS if k in ('next', 'left', 'right', 'front', 'behind'))})\s")
 _AMOUNT = re.compile(r"(?:by )?(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)")
+# a way and how far alone ("forward ten centimetres", "two and a half centimetres back toward the robot", "half an inch toward me")
+_HOW_FAR = (r"(?:(?:about|around|roughly|another|just) )?(?:\d+(?:\.\d+)?|a|an|one|two|three|four|five|six|seven|eight|nine|ten|fifteen|twenty|half an?|a couple(?: of)?"
+            r"|a few|(?:one|two|three|four|five) and a half|three quarters of an?)(?: ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*|mil|mils|hand s width|finger s width))?")
+_WAY = (r"(?:(?:to the |to your |over to the )?(?:left|right)|forwards?|backwards?|back|ahead|away(?: from (?:me|you|the robot))?|(?:closer|nearer)(?: to)? (?:me|you|the robot)"
+        r"|closer|nearer|toward(?:s)? (?:me|you|the robot))")
+_MOTION = re.compile(rf"(?:{_HOW_FAR} )?{_WAY}(?: {_WAY})*(?: {_HOW_FAR})?|{_HOW_FAR} {_WAY}(?: {_WAY})*")
 _NOT_BEFORE_VERB = {"and", "then", "to", "you", "i", "we", "please", "dont", "not", "can", "could", "will", "would", "should", "must", "also",
                     "just", "me", "or", "so", "first", "firstly", "next", "second", "secondly", "finally", "lastly", "after", "afterwards",
                     "now", "let", "lets", "go", "help", "never", "gonna", "wanna"}

@@ -86,7 +86,7 @@ _POSITION = re.compile(r"\s+(?:the )?(?:far |very )?(?:left|right|front|back|mid
 _HOMOPHONES = ((r"\b(?:too|two)\b(?= (?:the )?(?:left|right|front|back|side|top)\b)", "to"),  # "move it two the left"
                (r"\bfor\b(?= (?:cm|mm|centimet|millimet|inch))", "four"),  # "for centimeters"
                (r"(?<=[a-z] )2(?= (?:the|my|your|it|them|where)\b)", "to"),  # "next 2 the banana": a count never precedes "the"
-               (r"\b(next|nxt|close|closer|near|nearer|left|right|up) 2\b(?! ?(?:cm|mm|inch|centimet|millimet|more|of))", r"\1 to"),  # "nxt 2 bowl"
+               (r"\b(next|nxt|close|closer|near|nearer|left|right|up) 2\b(?![.,]\d)(?! ?(?:cm|mm|inch|centimet|millimet|more|of))", r"\1 to"),  # "nxt 2 bowl"
                # "place the bowl before the cup": in front of it (a time is "before you ...", "before that")
                (r"\b((?:put|place|set|move|drop|stand|leave) (?:(?!before\b|b4\b)[a-z' ])+?) (?:before|b4) (?=(?:the|a|an|my|your) )", r"\1 in front of "))
 

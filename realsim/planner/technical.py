@@ -58,7 +58,7 @@ _REWRITES: tuple[tuple[str, Any], ...] = (
     (r"\bhome (?:the (?:arm|robot|manipulator|gripper|end effector)|yourself)\b", "go home"),
     (r"\bstand ?by (?:at|in) (?:the |your )?home(?: (?:position|pose|config|configuration))?\b", "go home"),
     (r"\b(?:the )?robot(?: s|'s)? base\b", "the robot"),
-    (r"\b(?:its|the|your) (?:home|rest|ready|start) (?:configuration|config|pose)\b", "home position"),
+    (r"\b(?:its|the|your) (?:home|rest|ready|start) (?:configuration|config|pose|position)\b", "home position"),
     # the arm as the object of a move home: "return the arm to its home position" is going home
     (r"\b(?:return|move|bring|send|take) (?:the (?:arm|robot|gripper|hand|manipulator|end effector|end-effector|eef|ee|tcp|tool)|yourself|your arm)(?: back)?(?: to)? (?:the |your |its )?"
      r"(?=(?:home|start|starting|rest|resting|ready|initial|original|default|neutral)\b)", "go back to the "),

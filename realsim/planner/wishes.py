@@ -3,7 +3,8 @@ the blue cube stacked on the red one", "I was hoping the can could end up left o
 
 Rule: a wish frame (it would be nice / lovely / great if ..., I'd like / love / want / prefer ...,
 I was hoping ...) whose object is a noun phrase with a determiner and whose end is a place word
-and a target is the request to put that object there. A wish without a place ("I'd like the mug")
+and a target is the request to put that object there, as is a question whether it could go there ("could the
+can perhaps go in front of the box?", "is there any way the mug could end up ..."). A wish without a place ("I'd like the mug")
 is left alone: it is read as the take it asks for, or refused.
 """
 
@@ -30,9 +31,21 @@ _FRAMES = (
     r"(?:the way i(?: would| ?'d)? (?:like|want) (?:it|things|them)(?: is| to be)?|what i(?: ?'m| am) after is|what i(?: ?'d| would)? (?:like|want|need) is"
     r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end)[:,]? ",
 )
+# asked, not told: "could the can perhaps go in front of the box?", "is there any way the mug could end up left of the bowl?"
+_WHOLE_THING = r"((?:the|that|this|my)(?: (?!(?:could|might|would|may|should|will|perhaps|maybe|possibly)\b)[a-z]+)+)"  # greedy: "the tall white can perhaps go" keeps "can" in the thing
+_SOFT = r"(?:(?:perhaps|maybe|possibly|please|just|somehow) )*"
+_GOES = (r"(?:go|end up|sit|be|stand|move|get|be put|be placed|be moved|be set|rest) (?:(?:neatly|nicely|right|just|over) )*"
+         rf"(?=(?:{_PLACE}|where) )")
+_START = r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:(?:maybe|perhaps|possibly) )?"
+_ASKED = (re.compile(rf"{_START}(?:(?:is there (?:any|a|some) (?:way|chance)|(?:is there )?any chance|is it (?:at all )?possible|would it be possible) (?:that )?"
+                     rf"|(?:could|can|might|would|may) (?:you (?:have|get|let|make) )?){_WHOLE_THING} {_SOFT}(?:(?:could|can|might|would) {_SOFT})?{_GOES}"),
+          re.compile(rf"{_START}{_WHOLE_THING} {_SOFT}(?:could|might|would|can) {_SOFT}{_GOES}"))
 _WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
 
 def as_request(text: str) -> str:
     """``text`` (lower case) with every wish for an object to be at a place turned into "put X ..."."""
-    return _WISH.sub(lambda m: f"put {m.group(1)} ", text)
+    text = _WISH.sub(lambda m: f"put {m.group(1)} ", text)
+    for asked in _ASKED:
+        text = asked.sub(lambda m: f"put {m.group(1)} ", text)
+    return text

@@ -1,0 +1,51 @@
+"""A request written as an office email: "Kindly be advised that the box needs to be relocated to
+the left of the can. Regards, Martin", "Per my earlier request, please ensure the tin is relocated
+to ...", "I must ask that the object be transferred into the bowl", "please arrange for the mug to
+be placed behind the box", "..., after which the arm should return to its home position".
+
+Rule: the letter's frame goes (openings that refer to earlier mail or meetings, sign-offs and the
+sender's name after them, thanks for cooperation); a passive request for a thing to be moved to a
+place ("X needs to be / is to be / should be relocated to ...", "ensure X is placed ...", "arrange
+for X to be placed ...", "that X be transferred into ...") is the request to put it there. Nothing
+that names an object, a place or an amount is dropped.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["formal"]
+
+_OPENING = re.compile(
+    r"(?:^|(?<=[.;!?] ))(?:(?:kindly|please) be (?:advised|informed|aware|notified)(?: that)?|(?:as )?per (?:my|our|your) (?:earlier|previous|last|recent) "
+    r"(?:request|email|e-mail|message|note|conversation)|following up on [^:,.;]+|as (?:discussed|agreed|mentioned|requested|noted)(?: (?:in|at|on|during|earlier|yesterday"
+    r"|previously|before)[^,.;:]*)?|with (?:reference|regard|regards|respect) to [^,.;:]+|further to [^,.;:]+|(?:i|we) am writing (?:to|about) [^,.;:]+"
+    r"|(?:i|we) (?:must|would like to|wish to|need to|have to) (?:ask|request)(?: that)?|this is to (?:ask|request|confirm)(?: that)?|(?:i|we) (?:hereby )?request that"
+    r"|(?:i|we) (?:kindly )?ask that|(?:i|we) (?:would|d|'d|should) be (?:most |very |so |really )?(?:grateful|obliged|delighted|happy|pleased|thankful) if)(?:[,:;]\s*|\s+)")
+_SIGN_OFF = re.compile(
+    r"(?:^|(?<=[.;!?] )|,\s*)(?:(?:kind|best|warm|warmest|many|with) (?:regards|wishes|thanks)|regards|sincerely|yours (?:sincerely|faithfully|truly)"
+    r"|thank you (?:in advance|kindly|for your (?:cooperation|help|assistance|attention|prompt attention|understanding|time))[^.;!?]*"
+    r"|many thanks(?: in advance)?|thanks in advance|cheers)(?:,\s*[a-z][a-z. ]*)?\s*[.!]?\s*$")
+_WHEN = re.compile(r",?\s*\b(?:at your earliest convenience|as soon as (?:possible|practicable|you can)|when(?:ever)? (?:convenient|possible|you get a chance)"
+                   r"|in due course|at the earliest opportunity)\b")
+_MOVED = r"(?:relocated|moved|placed|positioned|put|transferred|set|shifted|repositioned|arranged|situated|located|stored|returned|brought|put back|set down|placed down)"
+_THING = r"((?:the|that|this|my|our|your) (?:(?!(?:is|be|are|gets|get|needs|should|must|has|to)\b)[a-z']+ )*?[a-z']+)"
+_PLACE = r"(?=(?:to the|to|in|into|inside|on|onto|on top of|next to|beside|behind|in front of|between|left of|right of|near|by|under|at|back)\b)"
+# "ensure X is placed ...", "arrange for X to be put ...", "have X moved ...": a thing made to be somewhere
+_ENSURE = re.compile(rf"(?:please |kindly )?(?:ensure|make sure|see to it|arrange for|have)(?: that)? {_THING}"
+                     rf" (?:(?:is|are|gets|get|ends up|end up|to be|be|is being) )?(?:{_MOVED} )?{_PLACE}")
+# "X needs to be relocated to ...", "X is to be placed ...", "(that) X be transferred into ...": moved, said in the passive
+_PASSIVE = re.compile(rf"{_THING} (?:needs to be|need to be|is to be|are to be|should be|must be|has to be|have to be|shall be|will need to be|ought to be"
+                      rf"|could be|would be|can be|be) {_MOVED} {_PLACE}")
+_SAID_AGAIN = re.compile(r",\s*(?:that is|i\.?e\.?|in other words|meaning),\s*[^.;!?]*")
+_THE_ARM = re.compile(r"(?:,\s*)?\bafter which\b\s*(?:the (?:arm|robot|manipulator)|it) (?:should|must|can|will|is to|needs to|ought to|shall) ")
+
+
+def formal(text: str) -> str:
+    """``text`` (lower case, punctuation kept) without its letter frame, its passive requests made plain."""
+    text = _SIGN_OFF.sub("", _WHEN.sub("", text.strip()))
+    for _ in range(3):  # "further to my message, I must ask that ...": one opening after another
+        text = _OPENING.sub("", text)
+    text = _SAID_AGAIN.sub("", _THE_ARM.sub(", then ", text))
+    text = _ENSURE.sub(lambda m: f"put {m.group(1)} ", text)
+    return _PASSIVE.sub(lambda m: f"put {m.group(1)} ", text).strip()
