@@ -140,3 +140,16 @@ def test_things_as_far_from_the_base_are_told_apart_by_their_depth() -> None:
     ahead = ObjectInfo("obj2_soda_can", "soda can", ("can",), (0.55, 0.45, 0.06), (0.066, 0.066, 0.12), "red")
     plan = RulePlanner().plan("pick up the soda can that is further away", [near, ahead], robot_yaw=0.0, robot_base=(0.0, 0.0))
     assert plan.calls is not None and plan.calls.acted_on() == ["obj2_soda_can"]
+
+
+def test_a_thing_named_alone_before_a_command_about_it_is_what_it_means() -> None:
+    assert singled_out("they have three hearts, did you know that. anyway. the banana. can you put it in the bowl") == (
+        "they have three hearts, did you know that. anyway. can you put the banana in the bowl")
+    assert call_lines("so I was watching a documentary, octopuses have three hearts... anyway. The strawberry. Can you put it in the bowl please") == (
+        call_lines("put the strawberry in the bowl"))
+
+
+def test_a_direction_alone_after_a_thing_is_no_push() -> None:
+    """"the cubes, right, ...": "right" is talk; only a way with how far ("forward ten cm") is a push."""
+    with pytest.raises(InputError):
+        RulePlanner().plan("okay so the cubes, right, where was I", CLUTTER)

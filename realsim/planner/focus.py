@@ -4,7 +4,8 @@ set it ...", "nothing else moves apart from the soup can: put it ...", and a ban
 is then pushed ("don't lift the mustard bottle; slide it 3 cm right instead").
 
 Rule: the singled-out noun phrase takes the place of the first "it", "that" or "that one" after
-it, and the words that singled it out go. What was set against it ("not the white box") stays as
+it, and the words that singled it out go; so does a thing named as a sentence of its own before a
+command about "it" ("... anyway. The mug. Can you put it in the bowl"). What was set against it ("not the white box") stays as
 a thing not to touch, as is each of several things to leave be. A ban on lifting is dropped only when the text also pushes or slides, and
 the thing it named is then what "it" means. A text with none of these frames is unchanged.
 """
@@ -31,6 +32,8 @@ _PRONOUN = re.compile(r"\b(?:it|that one|this one|that)\b(?! (?:is|s|was|way|i)\
 _MODIFIERS = re.compile(r"^(?:(?:left|right|front|back|rear|far|near|first|second|third|last|big|bigger|small|smaller|tall|short|little|large"
                         r"|red|blue|green|yellow|white|black|orange|purple|pink|grey|gray|brown)\s+)+")
 _LEAVE_MANY = re.compile(rf"\bleave ((?:{_NP})(?:,? (?:and|or) (?:{_NP}))+) (?:be|alone|where they are|in place|untouched)\b")
+# a thing named as a sentence of its own, then acted on as "it": "... anyway. the mug. can you put it in the bowl"
+_NAMED_ALONE = re.compile(rf"(?:^|(?<=[.;!?] ))({_NP})\s*[.;!?]+\s+(?=[^.;!?]*\b(?:it|them|that one)\b)")
 _NOTHING_MORE = re.compile(r",?\s*\bnothing (?:more|else)(?=\s*[.!;]|$)")
 
 
@@ -50,6 +53,8 @@ def _other(excluded: str, said: str) -> str:
 def singled_out(text: str) -> str:
     """``text`` (lower case, punctuation kept) with a singled-out thing put where it is acted on."""
     text = _LEAVE_MANY.sub(lambda m: " and ".join(f"dont touch {t}" for t in re.split(r",? (?:and|or) ", m.group(1))), _NOTHING_MORE.sub("", text))
+    if (m := _NAMED_ALONE.search(text)) is not None and not re.search(r"\b(?:is|are|was|were|s)\b", m.group(1)):
+        text = f"{text[: m.start()]}{_resumed(text[m.end():], m.group(1))}"
     if (m := _CONTRAST.search(text)) is not None:
         phrase = _other(m.group(1), m.group(2))
         text = f"{text[: m.start()]}dont touch {m.group(1)}. {_resumed(text[m.end():], phrase)}"

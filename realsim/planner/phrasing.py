@@ -248,7 +248,7 @@ _HOW_FAR = (r"(?:(?:about|around|roughly|another|just) )?(?:\d+(?:\.\d+)?|a|an|o
             r"|a few|(?:one|two|three|four|five) and a half|three quarters of an?)(?: ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*|mil|mils|hand s width|finger s width))?")
 _WAY = (r"(?:(?:to the |to your |over to the )?(?:left|right)|forwards?|backwards?|back|ahead|away(?: from (?:me|you|the robot))?|(?:closer|nearer)(?: to)? (?:me|you|the robot)"
         r"|closer|nearer|toward(?:s)? (?:me|you|the robot))")
-_MOTION = re.compile(rf"(?:{_HOW_FAR} )?{_WAY}(?: {_WAY})*(?: {_HOW_FAR})?|{_HOW_FAR} {_WAY}(?: {_WAY})*")
+_MOTION = re.compile(rf"{_WAY}(?: {_WAY})* {_HOW_FAR}|{_HOW_FAR} {_WAY}(?: {_WAY})*")  # how far always: "the blocks, right, ..." is no push
 _NOT_BEFORE_VERB = {"and", "then", "to", "you", "i", "we", "please", "dont", "not", "can", "could", "will", "would", "should", "must", "also",
                     "just", "me", "or", "so", "first", "firstly", "next", "second", "secondly", "finally", "lastly", "after", "afterwards",
                     "now", "let", "lets", "go", "help", "never", "gonna", "wanna"}
