@@ -66,3 +66,26 @@ def test_walls_are_tall_columns_objects_beside_them_are_not() -> None:
     tall = _in_tall_columns(points, np.zeros(len(points), dtype=np.int64), points[:, 2], SegmentParams())
     assert tall[: len(wall)].all()
     assert not tall[len(wall):].any()
+
+
+def test_a_bottle_on_a_lying_box_stays_apart_though_a_few_of_its_points_reach_down() -> None:
+    """A bottle standing on a lying box whose cluster took a strip of the box's side down to the
+    support "stands" by it and lies in the box's footprint, but nearly all of it lies above the
+    box's top: it rests there and is not joined; a bowl's inside (below its rim) still is."""
+    box = _box((0.0, 0.0, 0.0), (0.2, 0.15, 0.06), 3000, 6)
+    bottle = _ring(0.04, 0.2, (0.1, 0.075)) + np.array([0.0, 0.0, 0.062])
+    strip = _box((0.0, 0.07, 0.0), (0.004, 0.08, 0.06), 40, 7)  # the box's side, taken by the bottle's cluster
+    points = np.concatenate([box, bottle, strip])
+    labels = np.concatenate([np.zeros(len(box)), np.ones(len(bottle) + len(strip))]).astype(np.int64)
+    support = np.zeros(len(points), dtype=np.int64)
+    standing = np.array([True, True])
+    joined = merge_shared_footprints(points[:, :2], labels, support, standing, 0.006)
+    assert len(np.unique(joined)) == 1  # by the footprint alone, one object
+    out = merge_shared_footprints(points[:, :2], labels, support, standing, 0.006, height=points[:, 2])
+    assert np.array_equal(out, labels)
+    outer, inner = _ring(0.08, 0.06, (0.0, 0.0)), _ring(0.07, 0.05, (0.0, 0.0)) + np.array([0.0, 0.0, 0.004])
+    bowl = np.concatenate([outer, inner])
+    bowl_labels = np.concatenate([np.zeros(len(outer)), np.ones(len(inner))]).astype(np.int64)
+    out = merge_shared_footprints(bowl[:, :2], bowl_labels, np.zeros(len(bowl), dtype=np.int64), standing, 0.006,
+                                  height=bowl[:, 2])
+    assert len(np.unique(out)) == 1

@@ -551,7 +551,7 @@ def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray
     standing = np.zeros(int(labels.max()) + 1, dtype=bool)
     for k in np.unique(labels[labels >= 0]):
         standing[k] = base_height(height[labels == k], params.base_gap) < params.stack_min_height
-    return merge_shared_footprints(points[:, :2], labels, support, standing, cell)
+    return merge_shared_footprints(points[:, :2], labels, support, standing, cell, height=height)
 
 
 def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:
