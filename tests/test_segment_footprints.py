@@ -89,3 +89,24 @@ def test_a_bottle_on_a_lying_box_stays_apart_though_a_few_of_its_points_reach_do
     out = merge_shared_footprints(bowl[:, :2], bowl_labels, np.zeros(len(bowl), dtype=np.int64), standing, 0.006,
                                   height=bowl[:, 2])
     assert len(np.unique(out)) == 1
+
+
+def _wall(x0: float, y0: float, x1: float, y1: float, z1: float, step: float = 0.004) -> np.ndarray:
+    """Points on a vertical wall from (x0, y0) to (x1, y1), 0 .. z1 high."""
+    t, z = np.meshgrid(np.linspace(0.0, 1.0, int(np.hypot(x1 - x0, y1 - y0) / step) + 1), np.arange(0.0, z1, step))
+    return np.stack([x0 + t.ravel() * (x1 - x0), y0 + t.ravel() * (y1 - y0), z.ravel()], axis=1)
+
+
+def test_two_halves_of_a_box_ring_join_two_touching_cans_stay() -> None:
+    """A lying box seen without its top (four walls) cut at two corners into two L-shaped clusters:
+    together they close around its inside, so they are one body; two cans touching close nothing."""
+    first = np.vstack([_wall(0.0, 0.0, 0.2, 0.0, 0.06), _wall(0.2, 0.0, 0.2, 0.15, 0.06)])
+    second = np.vstack([_wall(0.2, 0.15, 0.0, 0.15, 0.06), _wall(0.0, 0.15, 0.0, 0.0, 0.06)])
+    cans = [_ring(0.033, 0.1, (0.5, 0.0)), _ring(0.033, 0.1, (0.566, 0.0))]
+    clusters = [first, second, *cans]
+    points = np.concatenate(clusters)
+    labels = np.concatenate([np.full(len(c), k) for k, c in enumerate(clusters)])
+    out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), np.ones(4, dtype=bool),
+                                  0.006, height=points[:, 2])
+    assert len(np.unique(out[labels <= 1])) == 1
+    assert np.array_equal(out[labels >= 2], labels[labels >= 2])

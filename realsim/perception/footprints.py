@@ -11,6 +11,9 @@ underside of a lying drill from its body). An object stacked on another does not
 support and is never joined this way, nor is one whose points nearly all lie above the other's
 top: a bottle standing on a lying box whose cluster took a few points of the box's side down to
 the support "stands" by those, but sits on the box, not in it (a bowl's inside lies below its rim).
+Two standing clusters that together close around an opening neither closes alone (a large share of
+their joint footprint) are the walls of one body cut apart at two of its corners: a lying box whose
+top a sweep at table height never saw is four walls around nothing.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from scipy import ndimage
 
 __all__ = ["filled_footprint", "merge_shared_footprints"]
 
+RING_SHARE = 0.3  # two clusters whose joint footprint encloses an opening this share of it are one body's walls
 OVER_SHARE = 0.9  # a cluster with this share of its points above another's top rests on it
 TOP_QUANTILE = 95.0  # a cluster's top: this percentile of its heights (a few stray points rise above a box's top)
 
@@ -69,6 +73,8 @@ def merge_shared_footprints(xy: np.ndarray, labels: np.ndarray, support: np.ndar
                 share = float(_inside(cells[b], filled, origin).mean())
                 if share >= min_share and not (height is not None and _over_top(height[members[b]], height[members[a]])):
                     shares.append((share, a, b))
+                elif a < b and _close_a_ring(cells[a], cells[b]):
+                    shares.append((0.0, a, b))
     if not shares:
         return labels
     parent = {k: k for k in ks}
@@ -86,6 +92,23 @@ def merge_shared_footprints(xy: np.ndarray, labels: np.ndarray, support: np.ndar
     for k in ks:
         out[members[k]] = find(k)
     return out
+
+
+def _close_a_ring(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the occupied cells ``a`` and ``b`` together enclose openings (cells their joint
+    :func:`filled_footprint` fills and neither fills alone) of at least ``RING_SHARE`` of it."""
+    if np.any(a.min(axis=0) > b.max(axis=0) + 2) or np.any(b.min(axis=0) > a.max(axis=0) + 2):
+        return False  # more than a closing apart: they touch nowhere
+    closed, filled, origin = filled_footprint(np.vstack([a, b]))
+    opening = filled & ~closed
+    if opening.sum() < RING_SHARE * filled.sum():
+        return False
+    cells = np.argwhere(opening) + origin
+    alone = np.zeros(len(cells), dtype=bool)
+    for part in (a, b):
+        _, own, own_origin = filled_footprint(part)
+        alone |= _inside(cells, own, own_origin)
+    return bool((~alone).sum() >= RING_SHARE * filled.sum())
 
 
 def _over_top(upper: np.ndarray, lower: np.ndarray) -> bool:
