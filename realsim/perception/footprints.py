@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import ndimage
 
-__all__ = ["filled_footprint", "merge_shared_footprints"]
+__all__ = ["enclosed", "filled_footprint", "merge_shared_footprints"]
 
 RING_SHARE = 0.3  # two clusters whose joint footprint encloses an opening this share of it are one body's walls
 OVER_SHARE = 0.9  # a cluster with this share of its points above another's top rests on it
@@ -37,6 +37,12 @@ def filled_footprint(cells: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     grid[cells[:, 0] - lo[0], cells[:, 1] - lo[1]] = True
     closed = ndimage.binary_closing(grid, structure=np.ones((3, 3), dtype=bool))
     return closed, ndimage.binary_fill_holes(closed), lo
+
+
+def enclosed(cells: np.ndarray, around: np.ndarray) -> np.ndarray:
+    """Mask of the xy ``cells`` (K, 2 ints) inside the filled footprint of the occupied cells ``around``."""
+    _, filled, origin = filled_footprint(around)
+    return _inside(cells, filled, origin)
 
 
 def _inside(cells: np.ndarray, grid: np.ndarray, origin: np.ndarray) -> np.ndarray:
