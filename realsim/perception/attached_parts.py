@@ -47,8 +47,7 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         return o
 
     out = labels.copy()
-    view = view_axis is not None and grid_shape is not None
-    if view:
+    if view_axis is not None and grid_shape is not None:
         links = grid_links(np.isfinite(points).all(axis=1), grid_shape)
     if links is None:
         raise ValueError("join_attached_parts needs a view (view_axis and grid_shape) or the cloud's links")
@@ -71,7 +70,8 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         contact = _contact(points, group, side, links, reach)
         if not contact[side].any() or not contact[~side].any():
             continue
-        if floating and view and _foot_hidden(height, points @ view_axis, out, o, grid_shape, jump):
+        if floating and view_axis is not None and grid_shape is not None and _foot_hidden(height, points @ view_axis, out, o,
+                                                                                          grid_shape, jump):
             continue  # its foot is hidden, not missing
         if not supported(points[group], height[group], side, contact, params):
             out[mine] = body
