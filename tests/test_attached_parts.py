@@ -69,3 +69,30 @@ def test_an_object_whose_foot_a_nearer_one_hides_stays() -> None:
     points, labels, shape = _depth_image([((0.0, 0.2), (0.0, 0.12), 0.0), ((0.05, 0.1), (0.0, 0.16), 0.012)])
     out = join_attached_parts(points, labels, points[:, 2], {1: None, 2: None}, 0.015, 0.016, 0.008, ALONG_Y, shape)
     assert np.array_equal(out, labels)
+
+
+def _cloud_join(parts: list[np.ndarray], resting_on: dict[int, int | None]) -> tuple[np.ndarray, np.ndarray]:
+    """Join the parts of a cloud seen from around (no view): linked to their 8 nearest neighbours, on a 1 cm grid."""
+    from realsim.perception.supervoxels import knn_links
+
+    points = np.vstack(parts)
+    labels = np.concatenate([np.full(len(p), k + 1, dtype=np.int32) for k, p in enumerate(parts)])
+    a, b = knn_links(points, np.ones(len(points), dtype=bool), 8)
+    keep = np.linalg.norm(points[a] - points[b], axis=1) < 0.025
+    return join_attached_parts(points, labels, points[:, 2], resting_on, 0.015, 0.05, 0.025, links=(a[keep], b[keep]),
+                               base_gap=0.01), labels
+
+
+def test_in_a_cloud_a_piece_of_wall_joins_its_body_and_a_resting_box_stays() -> None:
+    """A cloud's cluster resting on its body's side away from its own foot (a handle, a patch of a
+    pitcher's wall) joins it; a box on a box, meeting it at its own foot, stays."""
+    body = _block((0.0, 0.0, 0.0), (0.1, 0.1, 0.12), 0.01)
+    handle = np.vstack([_block((0.11, 0.04, 0.03), (0.14, 0.06, 0.04), 0.01),
+                        _block((0.11, 0.04, 0.09), (0.14, 0.06, 0.1), 0.01),
+                        _block((0.14, 0.04, 0.05), (0.14, 0.06, 0.08), 0.01)])
+    out, _ = _cloud_join([body, handle], {1: None, 2: 1})
+    assert np.all(out == 1)
+    base = _block((0.0, 0.0, 0.0), (0.2, 0.2, 0.06), 0.01)
+    top = _block((0.05, 0.05, 0.07), (0.12, 0.12, 0.14), 0.01)
+    out, labels = _cloud_join([base, top], {1: None, 2: 1})
+    assert np.array_equal(out, labels)

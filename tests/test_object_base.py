@@ -80,3 +80,21 @@ def test_sparse_object_on_a_box_rests_on_it() -> None:
         support = np.zeros(len(points), dtype=np.int64)
         _, resting = support_relations(points, labels, support, points[:, 2] - TABLE_Z, [_table()], params)
         assert resting == {1: None, 2: 1}, seed
+
+
+def test_a_bottle_on_a_box_whose_top_was_not_seen_rests_on_the_box() -> None:
+    """A sweep at table height sees a lying box's four walls, not its top: a bottle standing on it
+    has nothing under its foot, yet its foot lies inside the box's footprint at the height its
+    walls top out: it rests on the box (not floating noise). A bottle beside the box does not."""
+    params = at_resolution(SegmentParams(), CELL)
+    rng = np.random.default_rng(3)
+    lo, hi = np.array([-0.1, -0.08, TABLE_Z]), np.array([0.1, 0.08, TABLE_Z + 0.06])
+    walls = _box_cells(lo, hi, rng)
+    walls = walls[walls[:, 2] < hi[2] - 1e-9]  # no top
+    bottle = _box_cells(np.array([-0.03, -0.03, hi[2] + 0.002]), np.array([0.03, 0.03, hi[2] + 0.2]), rng)
+    beside = _box_cells(np.array([0.3, -0.03, hi[2] + 0.002]), np.array([0.36, 0.03, hi[2] + 0.2]), rng)
+    points = np.concatenate([walls, bottle, beside])
+    labels = np.r_[np.full(len(walls), 1), np.full(len(bottle), 2), np.full(len(beside), 3)].astype(np.int32)
+    support = np.zeros(len(points), dtype=np.int64)
+    _, resting = support_relations(points, labels, support, points[:, 2] - TABLE_Z, [_table()], params)
+    assert resting == {1: None, 2: 1, 3: None}

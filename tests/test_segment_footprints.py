@@ -66,3 +66,47 @@ def test_walls_are_tall_columns_objects_beside_them_are_not() -> None:
     tall = _in_tall_columns(points, np.zeros(len(points), dtype=np.int64), points[:, 2], SegmentParams())
     assert tall[: len(wall)].all()
     assert not tall[len(wall):].any()
+
+
+def test_a_bottle_on_a_lying_box_stays_apart_though_a_few_of_its_points_reach_down() -> None:
+    """A bottle standing on a lying box whose cluster took a strip of the box's side down to the
+    support "stands" by it and lies in the box's footprint, but nearly all of it lies above the
+    box's top: it rests there and is not joined; a bowl's inside (below its rim) still is."""
+    box = _box((0.0, 0.0, 0.0), (0.2, 0.15, 0.06), 3000, 6)
+    bottle = _ring(0.04, 0.2, (0.1, 0.075)) + np.array([0.0, 0.0, 0.062])
+    strip = _box((0.0, 0.07, 0.0), (0.004, 0.08, 0.06), 40, 7)  # the box's side, taken by the bottle's cluster
+    points = np.concatenate([box, bottle, strip])
+    labels = np.concatenate([np.zeros(len(box)), np.ones(len(bottle) + len(strip))]).astype(np.int64)
+    support = np.zeros(len(points), dtype=np.int64)
+    standing = np.array([True, True])
+    joined = merge_shared_footprints(points[:, :2], labels, support, standing, 0.006)
+    assert len(np.unique(joined)) == 1  # by the footprint alone, one object
+    out = merge_shared_footprints(points[:, :2], labels, support, standing, 0.006, height=points[:, 2])
+    assert np.array_equal(out, labels)
+    outer, inner = _ring(0.08, 0.06, (0.0, 0.0)), _ring(0.07, 0.05, (0.0, 0.0)) + np.array([0.0, 0.0, 0.004])
+    bowl = np.concatenate([outer, inner])
+    bowl_labels = np.concatenate([np.zeros(len(outer)), np.ones(len(inner))]).astype(np.int64)
+    out = merge_shared_footprints(bowl[:, :2], bowl_labels, np.zeros(len(bowl), dtype=np.int64), standing, 0.006,
+                                  height=bowl[:, 2])
+    assert len(np.unique(out)) == 1
+
+
+def _wall(x0: float, y0: float, x1: float, y1: float, z1: float, step: float = 0.004) -> np.ndarray:
+    """Points on a vertical wall from (x0, y0) to (x1, y1), 0 .. z1 high."""
+    t, z = np.meshgrid(np.linspace(0.0, 1.0, int(np.hypot(x1 - x0, y1 - y0) / step) + 1), np.arange(0.0, z1, step))
+    return np.stack([x0 + t.ravel() * (x1 - x0), y0 + t.ravel() * (y1 - y0), z.ravel()], axis=1)
+
+
+def test_two_halves_of_a_box_ring_join_two_touching_cans_stay() -> None:
+    """A lying box seen without its top (four walls) cut at two corners into two L-shaped clusters:
+    together they close around its inside, so they are one body; two cans touching close nothing."""
+    first = np.vstack([_wall(0.0, 0.0, 0.2, 0.0, 0.06), _wall(0.2, 0.0, 0.2, 0.15, 0.06)])
+    second = np.vstack([_wall(0.2, 0.15, 0.0, 0.15, 0.06), _wall(0.0, 0.15, 0.0, 0.0, 0.06)])
+    cans = [_ring(0.033, 0.1, (0.5, 0.0)), _ring(0.033, 0.1, (0.566, 0.0))]
+    clusters = [first, second, *cans]
+    points = np.concatenate(clusters)
+    labels = np.concatenate([np.full(len(c), k) for k, c in enumerate(clusters)])
+    out = merge_shared_footprints(points[:, :2], labels, np.zeros(len(points), dtype=np.int64), np.ones(4, dtype=bool),
+                                  0.006, height=points[:, 2])
+    assert len(np.unique(out[labels <= 1])) == 1
+    assert np.array_equal(out[labels >= 2], labels[labels >= 2])

@@ -23,8 +23,9 @@ __all__ = ["join_attached_parts"]
 
 
 def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarray, resting_on: dict[int, int | None],
-                        stand_height: float, reach: float, jump: float, view_axis: np.ndarray,
-                        grid_shape: tuple[int, int]) -> np.ndarray:
+                        stand_height: float, reach: float, jump: float, view_axis: np.ndarray | None = None,
+                        grid_shape: tuple[int, int] | None = None, links: tuple[np.ndarray, np.ndarray] | None = None,
+                        base_gap: float | None = None) -> np.ndarray:
     """Labels (>= 1 objects) with each object that rests on another (or floats next to it) but
     is not held up by it at its own foot (:func:`realsim.perception.contact_cut.supported`)
     merged into that other one; an object standing on its support stays.
@@ -34,7 +35,9 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
     which an object stands on its support, ``reach`` (m) how near two objects' points touch,
     ``view_axis`` the unit direction the camera looks along, ``grid_shape`` the view's image
     (row-major over the points): a floating object whose foot a nearer one hides (more than a
-    depth ``jump``, m, nearer just below it in the image) stays as it is."""
+    depth ``jump``, m, nearer just below it in the image) stays as it is. A cloud seen from around
+    (no view) gives its neighbour ``links`` instead and the ``base_gap`` of its grid
+    (:func:`realsim.perception.object_relations.base_height`); no foot of it is hidden."""
     params = CutParams(stand_height=stand_height)
     root = {o: o for o in resting_on}
 
@@ -44,12 +47,15 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         return o
 
     out = labels.copy()
-    links = grid_links(np.isfinite(points).all(axis=1), grid_shape)
+    if view_axis is not None and grid_shape is not None:
+        links = grid_links(np.isfinite(points).all(axis=1), grid_shape)
+    if links is None:
+        raise ValueError("join_attached_parts needs a view (view_axis and grid_shape) or the cloud's links")
     with np.errstate(invalid="ignore"):  # lowest first: a base's pieces join before what stands on it is judged
         level = {o: float(np.nanmedian(height[labels == o])) if (labels == o).any() else np.inf for o in resting_on}
     for o in sorted(resting_on, key=lambda k: (level[k], k)):
         mine = out == o
-        if not mine.any() or base_height(height[mine]) <= stand_height:
+        if not mine.any() or base_height(height[mine], base_gap) <= stand_height:
             continue
         below = resting_on[o]
         floating = below is None
@@ -64,7 +70,8 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         contact = _contact(points, group, side, links, reach)
         if not contact[side].any() or not contact[~side].any():
             continue
-        if floating and _foot_hidden(height, points @ view_axis, out, o, grid_shape, jump):
+        if floating and view_axis is not None and grid_shape is not None and _foot_hidden(height, points @ view_axis, out, o,
+                                                                                          grid_shape, jump):
             continue  # its foot is hidden, not missing
         if not supported(points[group], height[group], side, contact, params):
             out[mine] = body

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
+from realsim.perception.footprints import enclosed
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.supervoxels import smallest_eigenvectors
 from realsim.scene import SupportPlane
@@ -40,7 +41,9 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
     support rests on the lower-based object owning most points right under its bottom points
     (those within 1 cm and a ``base_gap`` of its base; the points under them within 1.5 cm or a
     link, ``jump_distance``, in xy, from 5 cm below to 1 cm above the base): on a coarse grid a
-    resting object's lowest cells lie a cell apart, so what is under them is as far.
+    resting object's lowest cells lie a cell apart, so what is under them is as far. With nothing
+    there, a cloud's object rests on the one whose walls rise to its base all around its bottom
+    (:func:`_on_unseen_top`): a sweep at table height sees a lying box's walls, not its top.
     """
     k = int(labels.max(initial=0))
     support_of: dict[int, int] = {}
@@ -70,6 +73,8 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
         nn = nn[base[owner[nn] - 1] < base[o - 1] - 0.005]  # only on something based lower: no cycles
         if len(nn):
             resting_on[o] = int(np.bincount(owner[nn]).argmax())
+        elif params.base_gap is not None:
+            resting_on[o] = _on_unseen_top(pts, members, base, o, bottom, base_z, params.base_gap)
     # the plane an object ultimately stands on is that of the bottom of its stack
     for o in range(1, k + 1):
         below = resting_on[o]
@@ -77,6 +82,26 @@ def support_relations(points: np.ndarray, labels: np.ndarray, support: np.ndarra
             support_of[o] = support_of[below]
             below = resting_on[below]
     return support_of, resting_on
+
+
+def _on_unseen_top(pts: np.ndarray, members: list[np.ndarray], base: np.ndarray, o: int, bottom: np.ndarray,
+                   base_z: float, cell: float) -> int | None:
+    """The object (1-based; None for none) based lower than ``o`` whose points top out at ``o``'s
+    base (``base_z``, within 1 cm and a ``cell``) and whose filled footprint on that grid
+    (:func:`realsim.perception.footprints.enclosed`) holds most of ``o``'s ``bottom`` points: the
+    top ``o`` stands on, unseen between the walls seen around it."""
+    best, best_share = None, 0.5
+    bottom_cells = np.floor(pts[bottom, :2] / cell).astype(np.int64)
+    for k, m in enumerate(members, start=1):
+        if k == o or len(m) == 0 or base[k - 1] >= base[o - 1] - 0.005:
+            continue
+        top = float(pts[m, 2].max())
+        if not base_z - 0.01 - cell <= top <= base_z + 0.01:
+            continue
+        share = float(enclosed(bottom_cells, np.floor(pts[m, :2] / cell).astype(np.int64)).mean())
+        if share > best_share:
+            best, best_share = k, share
+    return best
 
 
 def sheet_thickness(points: np.ndarray) -> tuple[float, float]:

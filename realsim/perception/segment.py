@@ -439,20 +439,32 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     labels[fg] = -1
     labels[ids] = _ordered(points, obj_labels)[ids]
     support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+    if not organized:  # a cloud: a handle or a piece of wall resting on its body away from its own foot is the body's
+        joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
+                                     params.jump_distance, links=(a, b), base_gap=params.base_gap)
+        if not np.array_equal(joined, labels):
+            labels = _renumbered(points, joined)
+            support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
         labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params)
         support_of, resting_on = support_relations(points, labels, support, height, planes, params)
         joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
                                      params.jump_distance, axis, grid_shape)
         if not np.array_equal(joined, labels):  # a handle or a container's inside is its body's
-            labels = _ordered(points, np.where(joined > 0, joined, -1)).astype(np.int32)
-            labels[joined == 0] = 0
+            labels = _renumbered(points, joined)
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
         claimed = claim_enclosed_floors(labels, points, _on_supports(points, labels, planes, params), grid_shape)
         if not np.array_equal(claimed, labels):  # a container's floor, seen through its opening
             labels = claimed
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     return SegmentResult(labels, support_of, resting_on)
+
+
+def _renumbered(points: np.ndarray, joined: np.ndarray) -> np.ndarray:
+    """Labels after objects were joined (``joined``: 0 support, -1 noise, k objects, some numbers gone), renumbered 1..K."""
+    labels = _ordered(points, np.where(joined > 0, joined, -1)).astype(np.int32)
+    labels[joined == 0] = 0
+    return labels
 
 
 def _on_supports(points: np.ndarray, labels: np.ndarray, planes: list[SupportPlane], params: SegmentParams) -> np.ndarray:
@@ -551,7 +563,7 @@ def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray
     standing = np.zeros(int(labels.max()) + 1, dtype=bool)
     for k in np.unique(labels[labels >= 0]):
         standing[k] = base_height(height[labels == k], params.base_gap) < params.stack_min_height
-    return merge_shared_footprints(points[:, :2], labels, support, standing, cell)
+    return merge_shared_footprints(points[:, :2], labels, support, standing, cell, height=height)
 
 
 def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:
