@@ -9,6 +9,14 @@ level, bounded by the support. A side seen vertical down to the support (a box l
 its full width there: mirrored about any level at most halfway up, a box is its own image. Where
 the camera did not see the side below that level it may as well go on widening down to the support
 (a banana lying on its flat side): extruded, as before.
+
+A section turned about the body's long axis (an oval bottle resting on its flank) is widest at
+different heights on its two sides. Its section is centrally symmetric (an ellipse, a rectangle, a
+circle), so the widest points of its two sides are images of each other through the centre, halfway
+up: a side seen widest low has the other side widest as high above the middle. The far side, seen
+only above where the line of sight grazes it, is mirrored about that level, not about the near
+side's (which extruded its grazing line nearly down to the support, a wall the section never
+reaches).
 """
 
 from __future__ import annotations
@@ -17,7 +25,7 @@ import numpy as np
 
 
 def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: float, max_height_share: float,
-                     edge: float) -> np.ndarray | None:
+                     edge: float, central: bool = False) -> np.ndarray | None:
     """The height down to which each of ``points`` (world frame) is extruded: its mirror image about
     the widest level of its slice, at least ``base_z``, at most its own height (a point below the
     widest level is not extruded: the mirrored upper side bounds the body there).
@@ -27,8 +35,11 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     silhouette from above: a round side is widest at its middle, a side seen vertical or flaring
     down is widest low), the lower of the two sides, at most halfway between ``base_z`` and the
     slice's top (a body is no narrower at its contact than its mirror image); the support, when no
-    point of the slice was seen below that level (the side was not seen turning in). None when the body is
-    not lying: higher than ``max_height_share`` of its longest horizontal extent, or too few points.
+    point of the slice was seen below that level (the side was not seen turning in). With ``central``
+    only the side widest at that level (the lower one) is mirrored about it; the points of the other
+    half (beyond the middle of the slice's lateral extent) about that level's image through the
+    middle height, unless that side was seen widest lower (see the module notes). None when the body
+    is not lying: higher than ``max_height_share`` of its longest horizontal extent, or too few points.
     """
     kept = points[:, 2] <= top_z
     if np.count_nonzero(kept) < 30:
@@ -42,7 +53,8 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     count = max(1, int(round(length / slab)))
     edges = np.linspace(float(s[kept].min()), float(s[kept].max()), count + 1)
     slot = np.clip(np.searchsorted(edges, s, side="right") - 1, 0, count - 1)
-    widest = np.full(count, np.nan)
+    widest = np.full((count, 2), np.nan)  # per slice: the level of the half toward -t and toward +t
+    split = np.zeros(count)  # per slice: the middle of its lateral extent, between the halves
     for k in range(count):
         inside = kept & (slot == k)
         if np.count_nonzero(inside) < 10:
@@ -50,11 +62,17 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
         zs, ts = points[inside, 2], t[inside]
         top = float(np.percentile(zs, 98))
         sides = [float(np.median(zs[sign * ts >= np.max(sign * ts) - edge])) for sign in (-1.0, 1.0)]
-        middle = min(0.5 * (base_z + top), *sides)
+        half = 0.5 * (base_z + top)
+        middle = min(half, *sides)
         widest[k] = middle if float(np.min(zs)) < middle else base_z  # the side not seen turning in below it: extruded
+        split[k] = 0.5 * (float(ts.min()) + float(ts.max()))
+        if central and widest[k, 0] > base_z:  # the other side widest as high above the middle (its image through the centre)
+            other = int(np.argmax(sides))
+            widest[k, other] = max(middle, min(2.0 * half - middle, sides[other]))
     if np.all(np.isnan(widest)):
         return None
-    known = np.flatnonzero(~np.isnan(widest))
-    widest = np.interp(np.arange(count), known, widest[known])  # a slice too thinly seen: its neighbours' level
-    level = widest[slot]
+    known = np.flatnonzero(~np.isnan(widest[:, 0]))
+    widest = np.column_stack([np.interp(np.arange(count), known, widest[known, j]) for j in (0, 1)])  # a slice too thinly seen: its neighbours'
+    split = np.interp(np.arange(count), known, split[known])
+    level = widest[slot, (t > split[slot]).astype(np.int64)]
     return np.asarray(np.clip(2.0 * level - points[:, 2], base_z, points[:, 2]))
