@@ -55,6 +55,7 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     slot = np.clip(np.searchsorted(edges, s, side="right") - 1, 0, count - 1)
     widest = np.full((count, 2), np.nan)  # per slice: the level of the half toward -t and toward +t
     split = np.zeros(count)  # per slice: the middle of its lateral extent, between the halves
+    imaged = np.full(len(points), -np.inf)  # per point: the floor its half's image through the section's centre gives
     for k in range(count):
         inside = kept & (slot == k)
         if np.count_nonzero(inside) < 10:
@@ -66,13 +67,44 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
         middle = min(half, *sides)
         widest[k] = middle if float(np.min(zs)) < middle else base_z  # the side not seen turning in below it: extruded
         split[k] = 0.5 * (float(ts.min()) + float(ts.max()))
-        if central and widest[k, 0] > base_z:  # the other side widest as high above the middle (its image through the centre)
-            other = int(np.argmax(sides))
+        if central and widest[k, 0] > base_z and _turned(zs, ts, top, middle, half, split[k], edge):
+            other = int(np.argmax(sides))  # the side widest higher: its image through the centre (see the module notes)
             widest[k, other] = max(middle, min(2.0 * half - middle, sides[other]))
+            imaged[np.flatnonzero(inside)] = _imaged_floors(zs, ts, split[k], half, 2 * other - 1, edge)
     if np.all(np.isnan(widest)):
         return None
     known = np.flatnonzero(~np.isnan(widest[:, 0]))
     widest = np.column_stack([np.interp(np.arange(count), known, widest[known, j]) for j in (0, 1)])  # a slice too thinly seen: its neighbours'
     split = np.interp(np.arange(count), known, split[known])
     level = widest[slot, (t > split[slot]).astype(np.int64)]
-    return np.asarray(np.clip(2.0 * level - points[:, 2], base_z, points[:, 2]))
+    floors = np.maximum(2.0 * level - points[:, 2], imaged)
+    return np.asarray(np.clip(floors, base_z, points[:, 2]))
+
+
+def _turned(zs: np.ndarray, ts: np.ndarray, top: float, middle: float, half: float, split: float, edge: float) -> bool:
+    """Whether a slice's section is turned about the long axis: widest below its middle height on one
+    side (by more than ``edge``) and its top (the points within ``edge`` of it) off its lateral middle
+    by more than a sixth of its width (an upright round or box section has its top over its middle)."""
+    width = float(np.ptp(ts))
+    crest = float(np.median(ts[zs >= top - edge]))
+    return middle < half - edge and abs(crest - split) > width / 6
+
+def _imaged_floors(zs: np.ndarray, ts: np.ndarray, split: float, half: float, far: int, edge: float) -> np.ndarray:
+    """Per point of a turned slice: the floor the image of the other half's upper side through the
+    section's centre (``split``, ``half``) gives the points of the ``far`` half (its sign along t): the
+    lower side below a far point is the image of the upper side as far on the near side; -inf for the
+    near half's points and where no near point was seen that far out (nothing to image)."""
+    out = np.full(len(zs), -np.inf)
+    near = far * (ts - split) < 0
+    if np.count_nonzero(near) < 5:
+        return out
+    cells = np.floor((ts[near] - split) / edge).astype(np.int64)
+    order = np.argsort(cells)
+    keys, first = np.unique(cells[order], return_index=True)
+    upper = np.maximum.reduceat(zs[near][order], first)  # the near half's upper side, per lateral cell
+    centres = split + (keys + 0.5) * edge
+    mirror = 2.0 * split - ts  # where a far point's image lies on the near side
+    lo, hi = float(centres.min()), float(centres.max())
+    within = ~near & (mirror >= lo) & (mirror <= hi)
+    out[within] = 2.0 * half - np.interp(mirror[within], centres, upper)
+    return out
