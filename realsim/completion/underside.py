@@ -56,6 +56,7 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     widest = np.full((count, 2), np.nan)  # per slice: the level of the half toward -t and toward +t
     split = np.zeros(count)  # per slice: the middle of its lateral extent, between the halves
     imaged = np.full(len(points), -np.inf)  # per point: the floor its half's image through the section's centre gives
+    sections: list[tuple[int, np.ndarray, list[float], float, float, bool]] = []  # the slices seen turning in
     for k in range(count):
         inside = kept & (slot == k)
         if np.count_nonzero(inside) < 10:
@@ -67,10 +68,16 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
         middle = min(half, *sides)
         widest[k] = middle if float(np.min(zs)) < middle else base_z  # the side not seen turning in below it: extruded
         split[k] = 0.5 * (float(ts.min()) + float(ts.max()))
-        if central and widest[k, 0] > base_z and _turned(zs, ts, top, middle, half, split[k], edge):
+        if central and widest[k, 0] > base_z:
+            sections.append((k, np.flatnonzero(inside), sides, half, middle, _turned(zs, ts, top, middle, half, split[k], edge)))
+    weight = sum(len(idx) for _, idx, *_ in sections)
+    if weight and sum(len(idx) for _, idx, *_, turned in sections if turned) >= 0.5 * weight:  # the body lies turned: every section is
+        for k, idx, sides, half, middle, _ in sections:
+            if middle >= half - edge:
+                continue  # this section is widest at its middle on both sides: mirrored about it
             other = int(np.argmax(sides))  # the side widest higher: its image through the centre (see the module notes)
             widest[k, other] = max(middle, min(2.0 * half - middle, sides[other]))
-            imaged[np.flatnonzero(inside)] = _imaged_floors(zs, ts, split[k], half, 2 * other - 1, edge)
+            imaged[idx] = _imaged_floors(points[idx, 2], t[idx], split[k], half, 2 * other - 1, edge)
     if np.all(np.isnan(widest)):
         return None
     known = np.flatnonzero(~np.isnan(widest[:, 0]))
