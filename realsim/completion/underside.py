@@ -16,7 +16,10 @@ circle), so the widest points of its two sides are images of each other through 
 up: a side seen widest low has the other side widest as high above the middle. The far side, seen
 only above where the line of sight grazes it, is mirrored about that level, not about the near
 side's (which extruded its grazing line nearly down to the support, a wall the section never
-reaches).
+reaches), and its underside is the image of the near upper side through the centre (the middle of
+the seen lateral extent, halfway up). A section counts as turned when it is widest below its middle
+on one side and its top lies off its lateral middle; the body lies turned when most of its seen
+points are in such sections (its hull spans them all: one section walled down is a wall along it).
 """
 
 from __future__ import annotations
@@ -35,11 +38,13 @@ def underside_floors(points: np.ndarray, base_z: float, top_z: float, slab: floa
     silhouette from above: a round side is widest at its middle, a side seen vertical or flaring
     down is widest low), the lower of the two sides, at most halfway between ``base_z`` and the
     slice's top (a body is no narrower at its contact than its mirror image); the support, when no
-    point of the slice was seen below that level (the side was not seen turning in). With ``central``
-    only the side widest at that level (the lower one) is mirrored about it; the points of the other
-    half (beyond the middle of the slice's lateral extent) about that level's image through the
-    middle height, unless that side was seen widest lower (see the module notes). None when the body
-    is not lying: higher than ``max_height_share`` of its longest horizontal extent, or too few points.
+    point of the slice was seen below that level (the side was not seen turning in). With ``central``,
+    in a body lying turned (see the module notes) only the side widest at that level (the lower one)
+    is mirrored about it; the points of the other half (beyond the middle of the slice's lateral
+    extent) about that level's image through the middle height, unless that side was seen widest
+    lower, and no lower than the image of the near upper side through the section's centre. None when
+    the body is not lying: higher than ``max_height_share`` of its longest horizontal extent, or too
+    few points.
     """
     kept = points[:, 2] <= top_z
     if np.count_nonzero(kept) < 30:
