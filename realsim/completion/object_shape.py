@@ -108,7 +108,8 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
                 body = np.vstack([body, hidden])
                 kind = f"{kind}, continued behind the nearer objects hiding it"
         drops = free_drops(body, base_z, ctx.view, ctx.tolerance) if ctx.view is not None else None
-        floors = (underside_floors(body, base_z, top_z, ctx.params.slab, ctx.params.underside_max_height_share, ctx.params.underside_edge)
+        floors = (underside_floors(body, base_z, top_z, ctx.params.slab, ctx.params.underside_max_height_share, ctx.params.underside_edge,
+                                   ctx.params.underside_central)
                   if ctx.params.underside else None)
         kind = f"{kind}, its underside the mirror of its upper side" if floors is not None else kind
         mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops)

@@ -57,6 +57,7 @@ class CompletionParams:
     underside: bool = True  # a lying body's underside is its upper side mirrored below its widest level (not extruded straight down)
     underside_max_height_share: float = 0.5  # lying: lower than this share of its longest horizontal extent
     underside_edge: float = 0.002  # m: points this close to a slice's lateral extreme show the level where it is widest
+    underside_central: bool = True  # a section turned about its long axis: the side seen widest higher is mirrored about the image of the other's level through the middle height (centrally symmetric sections)
     occluded_continuation: bool = True  # a silhouette edge bordering a nearer object is continued behind it (see completion.occlusion)
     occlusion_gap: float = 0.01  # m: a neighbour this much nearer than an edge pixel occludes it
     occlusion_reach: int = 2  # pixels: an edge pixel this near an occluding pixel borders it
