@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import re
 
+from realsim.planner.lexicon import STATEMENT_VERB
+
 __all__ = ["singled_out"]
 
 _NP = r"(?:the|that|this|my|your) (?:(?!(?:and|then|but|so|is|it|i)\b)[a-z' ]+?)"
@@ -33,7 +35,8 @@ _MODIFIERS = re.compile(r"^(?:(?:left|right|front|back|rear|far|near|first|secon
                         r"|red|blue|green|yellow|white|black|orange|purple|pink|grey|gray|brown)\s+)+")
 _LEAVE_MANY = re.compile(rf"\bleave ((?:{_NP})(?:,? (?:and|or) (?:{_NP}))+) (?:be|alone|where they are|in place|untouched)\b")
 # a thing named as a sentence of its own, then acted on as "it": "... anyway. the mug. can you put it in the bowl"
-_NAMED_ALONE = re.compile(rf"(?:^|(?<=[.;!?] ))({_NP})\s*[.;!?]+\s+(?=[^.;!?]*\b(?:it|them|that one)\b)")
+_NAMED_ALONE = re.compile(r"(?:^|(?<=[.;!?] ))((?:the|that|this|my|your) (?:[a-z']+ ){0,3}[a-z']+)\s*[.;!?]+\s+(?=[^.;!?]*\b(?:it|them|that one)\b)")
+_SAYS_SOMETHING = re.compile(rf"\b(?:{STATEMENT_VERB}|been|had|do|does|did|will|would|could|should|may|might|must|(?!thing\b|ring\b)\w{2,}ing)\b")
 _NOTHING_MORE = re.compile(r",?\s*\bnothing (?:more|else)(?=\s*[.!;]|$)")
 
 
@@ -53,7 +56,7 @@ def _other(excluded: str, said: str) -> str:
 def singled_out(text: str) -> str:
     """``text`` (lower case, punctuation kept) with a singled-out thing put where it is acted on."""
     text = _LEAVE_MANY.sub(lambda m: " and ".join(f"dont touch {t}" for t in re.split(r",? (?:and|or) ", m.group(1))), _NOTHING_MORE.sub("", text))
-    if (m := _NAMED_ALONE.search(text)) is not None and not re.search(r"\b(?:is|are|was|were|s)\b", m.group(1)):
+    if (m := _NAMED_ALONE.search(text)) is not None and not _SAYS_SOMETHING.search(m.group(1)):
         text = f"{text[: m.start()]}{_resumed(text[m.end():], m.group(1))}"
     if (m := _CONTRAST.search(text)) is not None:
         phrase = _other(m.group(1), m.group(2))
