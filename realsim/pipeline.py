@@ -23,7 +23,7 @@ from rich.console import Console
 
 from realsim import rerun
 from realsim.alloc import reuse_freed_memory
-from realsim.composition import backdrop_ahead
+from realsim.composition import backdrop_ahead, robot_ahead
 from realsim.destination import check_destination
 from realsim.errors import InputError
 from realsim.perception.capture_config import read_capture_config
@@ -39,6 +39,7 @@ Overrides = dict[str, Any]
 """Stage name -> ``{parameter: value}`` or that stage's parameter dataclass."""
 
 BEGUN_AFTER: dict[str, tuple[str, Callable[[Scene, Any], None]]] = {
+    "load": ("robot", lambda scene, robot: robot_ahead.begin(robot.enabled)),
     "segment": ("compose", lambda scene, compose: backdrop_ahead.begin(scene, compose.appearance, compose.backdrop)),
 }
 """Work for a later stage begun beside the stages in between as soon as a stage has made what it

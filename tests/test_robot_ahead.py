@@ -1,0 +1,53 @@
+"""The Panda's meshes compiled by a thread begun after load: the robot stage's compile then finds
+every one of them in MuJoCo's asset cache (nothing processed again), and its model is unchanged."""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+import pytest
+
+from realsim.composition import robot_ahead
+from realsim.composition.compose import ComposeParams, new_spec
+from realsim.pipeline import BEGUN_AFTER
+from realsim.robot.model import attach_robot
+
+
+def _scene_with_robot() -> mujoco.MjModel:
+    """A table-height box and the Panda attached as the robot stage attaches it: the compiled model."""
+    spec = new_spec(ComposeParams())
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.4, 0.3, 0.02], pos=[0.0, 0.0, 0.7])
+    return attach_robot(spec, (-0.6, 0.0, 0.0), base_z=0.0, pedestal_height=0.7).model
+
+
+def _cached_bytes() -> int:
+    return int(mujoco.mj_getCacheSize(mujoco.mj_getCache()))
+
+
+def test_begun_thread_caches_what_the_robot_stage_compiles(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
+    mujoco.mj_clearCache(mujoco.mj_getCache())
+    robot_ahead.begin()
+    robot_ahead.finish()
+    warmed = _cached_bytes()
+    assert warmed > 0 and not robot_ahead._begun
+    model = _scene_with_robot()
+    assert _cached_bytes() == warmed  # every Panda mesh came from the cache
+    mujoco.mj_clearCache(mujoco.mj_getCache())
+    cold = _scene_with_robot()  # processed here instead: the same model
+    assert _cached_bytes() == warmed
+    assert model.nmesh == cold.nmesh > 0
+    assert np.array_equal(model.mesh_vert, cold.mesh_vert) and np.array_equal(model.mesh_face, cold.mesh_face)
+    assert np.array_equal(model.geom_size, cold.geom_size) and np.array_equal(model.body_inertia, cold.body_inertia)
+
+
+@pytest.mark.parametrize(("workers", "enabled"), [("1", True), ("2", False)])
+def test_no_thread_without_a_second_core_or_a_robot(monkeypatch: pytest.MonkeyPatch, workers: str, enabled: bool) -> None:
+    monkeypatch.setenv("REALSIM_WORKERS", workers)
+    robot_ahead.begin(enabled)
+    assert not robot_ahead._begun
+
+
+def test_begun_after_load_for_the_robot_stage() -> None:
+    later, _ = BEGUN_AFTER["load"]
+    assert later == "robot"
