@@ -7,7 +7,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from realsim.composition import robot_ahead
+from realsim.composition import robot_ahead, robot_placement
 from realsim.composition.compose import ComposeParams, new_spec
 from realsim.pipeline import BEGUN_AFTER
 from realsim.robot.model import attach_robot
@@ -27,10 +27,13 @@ def _cached_bytes() -> int:
 def test_begun_thread_caches_what_the_robot_stage_compiles(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("REALSIM_WORKERS", "2")
     mujoco.mj_clearCache(mujoco.mj_getCache())
+    robot_placement.bare_panda.cache_clear()
+    robot_placement._scoring_ik.cache_clear()
     robot_ahead.begin()
     robot_ahead.finish()
     warmed = _cached_bytes()
     assert warmed > 0 and not robot_ahead._begun
+    assert robot_placement._scoring_ik.cache_info().currsize == 1  # the pose search's IK is built too
     model = _scene_with_robot()
     assert _cached_bytes() == warmed  # every Panda mesh came from the cache
     mujoco.mj_clearCache(mujoco.mj_getCache())

@@ -6,8 +6,10 @@ MuJoCo keeps every mesh it processes in its process-wide asset cache, keyed by t
 scan's conversion). A thread compiling the Panda alone under the scene's mesh folder while the
 capture's own stages run (segmentation leaves the second core idle) fills that cache, and the
 robot stage's compile takes the processed meshes from it: the same model either way (the written
-scene's compile check is served from the same cache already). MuJoCo releases the GIL while it
-compiles. The thread's failures are ignored: the robot stage meets them itself.
+scene's compile check is served from the same cache already). The thread also builds the pose
+search's input-independent IK model (:func:`realsim.composition.robot_placement.bare_panda`, kept
+per process). MuJoCo releases the GIL while it compiles. The thread's failures are ignored: the
+robot stage meets them itself.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from __future__ import annotations
 import threading
 
 from realsim.composition.compose import ComposeParams, new_spec
+from realsim.composition.robot_placement import prepare_search
 from realsim.parallel import worker_count
 from realsim.robot.model import panda_spec
 
@@ -26,6 +29,7 @@ def _compile_panda(modelfiledir: str, meshdir: str) -> None:
         child, _ = panda_spec()
         child.modelfiledir, child.meshdir = modelfiledir, meshdir  # as attach_robot resolves them in the scene
         child.compile()
+        prepare_search()
     except Exception:  # no Menagerie, a damaged mesh: the robot stage reports it
         pass
 
