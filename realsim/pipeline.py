@@ -178,23 +178,26 @@ def run_pipeline(
     spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
     reuse_freed_memory()  # numpy temporaries reuse freed heap instead of fresh page-faulted mmaps
     scene = Scene.unread(source, seed)
-    for i, (name, params) in enumerate(plan):
-        if name == "write" and not write:
-            break
-        stage = STAGES[name]
-        stage.check(scene, spec.name)
-        started = time.perf_counter()
-        if console is not None:
-            console.log(f"[bold]{name}[/bold]")
-        left = scene.compiled
-        scene = stage.run(scene, params)
-        if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
-            scene.compiled = None
-        later, begin = BEGUN_AFTER.get(name, ("", None))
-        ahead = {n: p for n, p in plan[i + 1:] if n != "write" or write}
-        if begin is not None and later in ahead:
-            begin(scene, ahead[later])
-        scene.timings[name] = round(time.perf_counter() - started, 4)
+    try:
+        for i, (name, params) in enumerate(plan):
+            if name == "write" and not write:
+                break
+            stage = STAGES[name]
+            stage.check(scene, spec.name)
+            started = time.perf_counter()
+            if console is not None:
+                console.log(f"[bold]{name}[/bold]")
+            left = scene.compiled
+            scene = stage.run(scene, params)
+            if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
+                scene.compiled = None
+            later, begin = BEGUN_AFTER.get(name, ("", None))
+            ahead = {n: p for n, p in plan[i + 1:] if n != "write" or write}
+            if begin is not None and later in ahead:
+                begin(scene, ahead[later])
+            scene.timings[name] = round(time.perf_counter() - started, 4)
+    finally:  # begun work never outlives the conversion (the Panda's thread may write the disk cache)
+        robot_ahead.finish()
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
     return scene
 

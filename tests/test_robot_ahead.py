@@ -54,3 +54,25 @@ def test_no_thread_without_a_second_core_or_a_robot(monkeypatch: pytest.MonkeyPa
 def test_begun_after_load_for_the_robot_stage() -> None:
     later, _ = BEGUN_AFTER["load"]
     assert later == "robot"
+
+
+def test_a_failed_conversion_leaves_no_thread_running(monkeypatch: pytest.MonkeyPatch) -> None:
+    import threading
+    from dataclasses import replace
+
+    from conftest import DATA
+    from realsim.pipeline import run_pipeline
+    from realsim.stages import STAGES
+
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
+    release = threading.Event()
+    monkeypatch.setattr(robot_ahead, "_compile_panda", lambda *_: release.wait(5.0))  # still compiling when planes fails
+
+    def fail(scene, params):
+        release.set()
+        raise RuntimeError("planes failed")
+
+    monkeypatch.setitem(STAGES, "planes", replace(STAGES["planes"], run=fail))
+    with pytest.raises(RuntimeError, match="planes failed"):
+        run_pipeline(DATA / "pcl_scenes" / "mOSD" / "test0.pcd")
+    assert not robot_ahead._begun  # joined before the error left the conversion
