@@ -28,6 +28,7 @@ def _compile_panda(modelfiledir: str, meshdir: str) -> None:
     try:
         child, _ = panda_spec()
         child.modelfiledir, child.meshdir = modelfiledir, meshdir  # as attach_robot resolves them in the scene
+        child.compiler.usethread = False  # one thread, on the idle core: no compile threads beside the main one
         child.compile()
         prepare_search()
     except Exception:  # no Menagerie, a damaged mesh: the robot stage reports it
