@@ -23,7 +23,7 @@ from rich.console import Console
 
 from realsim import rerun
 from realsim.alloc import reuse_freed_memory
-from realsim.composition import backdrop_ahead
+from realsim.composition import backdrop_ahead, robot_ahead
 from realsim.destination import check_destination
 from realsim.errors import InputError
 from realsim.perception.capture_config import read_capture_config
@@ -39,6 +39,7 @@ Overrides = dict[str, Any]
 """Stage name -> ``{parameter: value}`` or that stage's parameter dataclass."""
 
 BEGUN_AFTER: dict[str, tuple[str, Callable[[Scene, Any], None]]] = {
+    "load": ("robot", lambda scene, robot: robot_ahead.begin(robot.enabled)),
     "segment": ("compose", lambda scene, compose: backdrop_ahead.begin(scene, compose.appearance, compose.backdrop)),
 }
 """Work for a later stage begun beside the stages in between as soon as a stage has made what it
@@ -177,23 +178,26 @@ def run_pipeline(
     spec, plan = plan_pipeline(source, pipeline=pipeline, seed=seed, overrides=overrides)
     reuse_freed_memory()  # numpy temporaries reuse freed heap instead of fresh page-faulted mmaps
     scene = Scene.unread(source, seed)
-    for i, (name, params) in enumerate(plan):
-        if name == "write" and not write:
-            break
-        stage = STAGES[name]
-        stage.check(scene, spec.name)
-        started = time.perf_counter()
-        if console is not None:
-            console.log(f"[bold]{name}[/bold]")
-        left = scene.compiled
-        scene = stage.run(scene, params)
-        if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
-            scene.compiled = None
-        later, begin = BEGUN_AFTER.get(name, ("", None))
-        ahead = {n: p for n, p in plan[i + 1:] if n != "write" or write}
-        if begin is not None and later in ahead:
-            begin(scene, ahead[later])
-        scene.timings[name] = round(time.perf_counter() - started, 4)
+    try:
+        for i, (name, params) in enumerate(plan):
+            if name == "write" and not write:
+                break
+            stage = STAGES[name]
+            stage.check(scene, spec.name)
+            started = time.perf_counter()
+            if console is not None:
+                console.log(f"[bold]{name}[/bold]")
+            left = scene.compiled
+            scene = stage.run(scene, params)
+            if scene.compiled is left:  # a compiled spec is handed to the next stage only: this one may have edited the spec
+                scene.compiled = None
+            later, begin = BEGUN_AFTER.get(name, ("", None))
+            ahead = {n: p for n, p in plan[i + 1:] if n != "write" or write}
+            if begin is not None and later in ahead:
+                begin(scene, ahead[later])
+            scene.timings[name] = round(time.perf_counter() - started, 4)
+    finally:  # begun work never outlives the conversion (the Panda's thread may write the disk cache)
+        robot_ahead.finish()
     scene.timings["total"] = round(sum(scene.timings.values()), 4)
     return scene
 

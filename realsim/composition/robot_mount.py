@@ -13,6 +13,7 @@ import mujoco
 import numpy as np
 
 from realsim.cache import DiskCache, output_key
+from realsim.composition import robot_ahead
 from realsim.composition.robot_placement import MAX_REACH, PlacementParams, SearchInputs, add_robot, pedestal_height, search_inputs
 from realsim.errors import InputError
 from realsim.geometry import inside_convex_polygon
@@ -38,6 +39,7 @@ def robot_scene(scene: Scene, params: RobotStageParams = RobotStageParams(), mod
     if not params.enabled or scene.spec is None or not scene.planes:
         return scene
     pose = tuple(float(v) for v in params.pose) if params.pose is not None else None
+    robot_ahead.finish()  # the Panda's meshes cached by the thread begun after load, if any
     if pose is not None:
         check_robot_pose(scene, pose)
         handles = add_robot(scene, pose=pose, params=params.placement)

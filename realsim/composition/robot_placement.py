@@ -130,6 +130,11 @@ def _scoring_ik(params: IKParams) -> ArmIK:
     return ArmIK(np.zeros(3), np.array([1.0, 0.0, 0.0, 0.0]), params, scene=bare_panda())
 
 
+def prepare_search() -> None:
+    """Build the pose search's IK (:func:`bare_panda` and its solver, kept per process) now."""
+    _scoring_ik(SCORING_IK)
+
+
 def score_pose(pose: tuple[float, float, float], base_z: float, targets: list[np.ndarray], ik_params: IKParams = SCORING_IK,
                oriented: Sequence[tuple[np.ndarray, np.ndarray]] = (), weights: Sequence[float] | None = None) -> tuple[float, int, float]:
     """(score, reachable count, mean manipulability) of a base pose over top-down hover
@@ -220,7 +225,7 @@ def choose_robot_pose(scene: Scene, model_without_robot: mujoco.MjModel | None =
     weights = inputs.target_weights()
     poses = _prefilter(candidate_poses(scene, params), targets + [p for p, _ in oriented], weights + [HOLDABLE_WEIGHT] * len(oriented),
                        params.ik_candidates)
-    _scoring_ik(SCORING_IK)  # built once, before the helper forks, for both processes
+    prepare_search()  # built once, before the helper forks, for both processes
     scores = fork_map(lambda i: score_pose(poses[i], base_z, targets, oriented=oriented, weights=weights)[0], len(poses))  # each pose on its own
     best, best_score = None, -np.inf
     for pose, s in zip(poses, scores):
