@@ -95,6 +95,10 @@ def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
     ("Scoot the strawberry three quarters of an inch to the right.", "push the strawberry right 0.75 inch"),
     ("Banana, a hand's width forward. Call it ten centimetres.", "push the banana forward 10 cm"),
     ("Put the strawberry in the bowl, then the banana next to the bowl, and finish by going back home.", "put the strawberry in the bowl, put the banana next to the bowl, then go home"),
+    ("Step 1: Locate the banana. Step 2: Place it behind the bowl. Step 3: Return the arm to its home position.", "put the banana behind the bowl, then go home"),
+    ("Ensure that the strawberry is placed adjacent to the bowl. Caution: the red cube must remain in its current position.", "put the strawberry next to the bowl"),
+    ("Step 1: Remove the strawberry. Step 2: Set it down on the table surface, wherever there is clearance.", "pick up the strawberry, put it on the table"),
+    ("Put the banana in front of the dish you'd eat your cereal from.", "put the banana in front of the bowl"),
     ("Swap the red cube and the green cube, and once that's done put the strawberry in the bowl.", "swap the red cube and the green cube, then put the strawberry in the bowl"),
 ])
 def test_voices_the_planner_had_not_heard(sentence: str, plain: str) -> None:
@@ -153,3 +157,11 @@ def test_a_direction_alone_after_a_thing_is_no_push() -> None:
     """"the cubes, right, ...": "right" is talk; only a way with how far ("forward ten cm") is a push."""
     with pytest.raises(InputError):
         RulePlanner().plan("okay so the cubes, right, where was I", CLUTTER)
+
+
+def test_talk_glued_to_a_command_is_dropped_but_a_named_thing_never_is() -> None:
+    assert call_lines("chat, watch this. okay robot, lift the banana. LET'S GOOO") == call_lines("lift the banana")
+    assert call_lines("hype moment chat, hype moment. robot: the strawberry goes in the bowl. prove them wrong") == (
+        call_lines("put the strawberry in the bowl"))
+    with pytest.raises(InputError):  # "and the apple": a thing the scene lacks is refused, never dropped as talk
+        RulePlanner().plan("put the strawberry in the bowl and the apple", CLUTTER)

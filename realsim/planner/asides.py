@@ -11,12 +11,12 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.lexicon import STATEMENT_VERB, VERB_START
+from realsim.planner.lexicon import STATEMENT_VERB, VERB_START, has_relation
 from realsim.planner.phrasing import WHICH_ONE
 from realsim.planner.steps import Parser
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, name_words, singular
 
-__all__ = ["is_aside"]
+__all__ = ["is_aside", "talk_only", "without_talk"]
 
 _OPENER = r"(?:(?:ok|okay|so|ugh|hey|oh|well|um|hmm|haha|lol|alright|right|seriously|honestly|wow|man|like)\s+)*"
 # a question is never a command: "why is the marker over there?", "who leaves cubes all over the place"
@@ -73,3 +73,23 @@ def _quiet(p: Parser, phrase: str) -> list:
         return p.resolver.resolve(phrase, p.ctx, allow_plural=False)
     except InputError:
         return []
+
+
+def talk_only(piece: str, p: Parser) -> bool:
+    """Whether ``piece`` names nothing the robot could act on: no scene object's word, no noun
+    phrase at all (a thing the scene lacks is still named: "and the apple"), no place, no amount
+    ("let's go", "prove them wrong", "hype moment")."""
+    return (bool(piece.strip()) and not re.search(r"\d", piece) and not has_relation(piece)
+            and not re.search(r"\b(?:the|a|an|that|these|those|my|your|his|her|their|every|all|both)\s+[a-z]", piece)  # "and the apple": a thing named
+            and not any(singular(w) in _scene_words(p) for w in piece.split()))
+
+
+def without_talk(clause: str, p: Parser) -> list[str]:
+    """The clause with "and ..." pieces at its ends dropped while each names nothing to act on, the
+    fewest dropped first ("hype moment and put the cube on the plate and let's go": "put the cube on
+    the plate"); [] when no end piece is talk."""
+    pieces = clause.split(" and ")
+    lead = next((i for i, piece in enumerate(pieces) if not talk_only(piece, p)), len(pieces))
+    trail = next((i for i, piece in enumerate(reversed(pieces)) if not talk_only(piece, p)), len(pieces))
+    cuts = sorted(((i, j) for i in range(lead + 1) for j in range(trail + 1) if (i or j) and i + j < len(pieces)), key=sum)
+    return [" and ".join(pieces[i: len(pieces) - j]) for i, j in cuts]

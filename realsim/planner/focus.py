@@ -5,7 +5,9 @@ is then pushed ("don't lift the mustard bottle; slide it 3 cm right instead").
 
 Rule: the singled-out noun phrase takes the place of the first "it", "that" or "that one" after
 it, and the words that singled it out go; so does a thing named as a sentence of its own before a
-command about "it" ("... anyway. The mug. Can you put it in the bowl"). What was set against it ("not the white box") stays as
+command about "it" ("... anyway. The mug. Can you put it in the bowl"), or a thing only looked for
+("Step 1: Locate the mug. Step 2: Place it ..."). A thing that must stay where it is is not to be
+touched ("Caution: the blue cube must remain in its current position"). What was set against it ("not the white box") stays as
 a thing not to touch, as is each of several things to leave be. A ban on lifting is dropped only when the text also pushes or slides, and
 the thing it named is then what "it" means. A text with none of these frames is unchanged.
 """
@@ -37,6 +39,10 @@ _LEAVE_MANY = re.compile(rf"\bleave ((?:{_NP})(?:,? (?:and|or) (?:{_NP}))+) (?:b
 # a thing named as a sentence of its own, then acted on as "it": "... anyway. the mug. can you put it in the bowl"
 _NAMED_ALONE = re.compile(r"(?:^|(?<=[.;!?] ))((?:the|that|this|my|your) (?:[a-z']+ ){0,3}[a-z']+)\s*[.;!?]+\s+(?=[^.;!?]*\b(?:it|them|that one)\b)")
 _SAYS_SOMETHING = re.compile(rf"\b(?:{STATEMENT_VERB}|been|had|do|does|did|will|would|could|should|may|might|must|(?!thing\b|ring\b)\w{2,}ing)\b")
+# a thing only looked for before it is acted on: "Step 1: Locate the mug. Step 2: Place it in the bowl."
+_LOOKED_FOR = re.compile(rf"(?:^|(?<=[.;:!?] ))(?:step \w+\s*[:.)-]?\s*)?(?:locate|identify|find|spot|look at|observe|notice|look for) ({_NP})\s*[.;!?]+\s*")
+_LABEL = re.compile(r"(?:^|(?<=[.;!?] ))(?:note|caution|warning|important|nb|n\.b\.|tip|reminder)\s*:\s*")
+_STAYS = re.compile(r"\b((?:the|that|this) [a-z' ]+?) (?:must |should |has to |needs to |is to |will |shall )?(?:remain|stay)s? (?:in (?:its|their) (?:current |present |original )?(?:position|place|spot|location)s?|where (?:it|they) (?:is|are)|put|in place|still|untouched)")
 _NOTHING_MORE = re.compile(r",?\s*\bnothing (?:more|else)(?=\s*[.!;]|$)")
 
 
@@ -56,6 +62,9 @@ def _other(excluded: str, said: str) -> str:
 def singled_out(text: str) -> str:
     """``text`` (lower case, punctuation kept) with a singled-out thing put where it is acted on."""
     text = _LEAVE_MANY.sub(lambda m: " and ".join(f"dont touch {t}" for t in re.split(r",? (?:and|or) ", m.group(1))), _NOTHING_MORE.sub("", text))
+    text = _STAYS.sub(r"dont touch \1", _LABEL.sub("", text))
+    if (m := _LOOKED_FOR.search(text)) is not None:  # the thing is what "it" means next, else said again by name
+        text = f"{text[: m.start()]}{_resumed(text[m.end():], m.group(1))}"
     if (m := _NAMED_ALONE.search(text)) is not None and not _SAYS_SOMETHING.search(m.group(1)):
         text = f"{text[: m.start()]}{_resumed(text[m.end():], m.group(1))}"
     if (m := _CONTRAST.search(text)) is not None:

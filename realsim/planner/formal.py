@@ -30,7 +30,7 @@ _WHEN = re.compile(r",?\s*\b(?:at your earliest convenience|as soon as (?:possib
                    r"|in due course|at the earliest opportunity)\b")
 _MOVED = r"(?:relocated|moved|placed|positioned|put|transferred|set|shifted|repositioned|arranged|situated|located|stored|returned|brought|put back|set down|placed down)"
 _THING = r"((?:the|that|this|my|our|your) (?:(?!(?:is|be|are|gets|get|needs|should|must|has|to)\b)[a-z']+ )*?[a-z']+)"
-_PLACE = r"(?=(?:to the|to|in|into|inside|on|onto|on top of|next to|beside|behind|in front of|between|left of|right of|near|by|under|at|back)\b)"
+_PLACE = r"(?:(?:directly|right|just|immediately|exactly|neatly) )?(?=(?:to the|to|in|into|inside|on|onto|on top of|next to|adjacent to|alongside|beside|behind|in front of|between|left of|right of|near|by|under|at|back)\b)"
 # "ensure X is placed ...", "arrange for X to be put ...", "have X moved ...": a thing made to be somewhere
 _ENSURE = re.compile(rf"(?:please |kindly )?(?:ensure|make sure|see to it|arrange for|have)(?: that)? {_THING}"
                      rf" (?:(?:is|are|gets|get|ends up|end up|to be|be|is being) )?(?:{_MOVED} )?{_PLACE}")

@@ -9,7 +9,7 @@ import re
 __all__ = ["AGAIN", "ALL_VERBS", "AVOID", "PARTICLES", "PUSH", "PUT", "RELATIONS", "RELATION_AT", "STATEMENT_VERB", "SURFACES", "TAKE", "VERB_ANYWHERE", "VERB_START",
            "has_relation", "relation_start"]
 
-TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag",
+TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", "get", "fetch", "hold up", "hold", "snag", "remove",
         "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",

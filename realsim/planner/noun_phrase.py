@@ -26,8 +26,14 @@ def normalize(text: str) -> str:
     text = re.sub(r"^(?:whatever|whichever)(?: is| s)?(?= (?:sitting|standing|lying|resting|on|in|behind|next|near|by|beside|at)\b)",
                   "thing", text)  # "whatever's sitting behind the banana"
     text = re.sub(r"^(?:whatever|whichever)(?: one| thing)?(?: is| s)? (?:the )?(\w+(?:most|est))\b", r"\1 thing", text)  # "whatever's furthest to the right"
+    text = re.sub(r"\b(?:currently|presently|now|still)\s+(?=(?:sitting|standing|lying|resting|placed|on|in|behind|next|beside|at)\b)", "", text)  # "the can currently on top of the box"
     text = re.sub(r"\b(?:(?:that|which) (?:is |s )?)?(?:sitting|standing|lying|resting|placed|over)(?: (?:just|right|directly|immediately))? "
                   r"(?=(?:behind|in front of|next to|beside|by|near|on|in|inside|left of|right of|to the (?:left|right) of)\b)", "", text)
+    # what it is for, said as a clause about people: "the cube you twist until the sides match", "the dish you d eat
+    # cereal from": the thing itself, its own words left to name it (or refused as ambiguous)
+    text = re.sub(r"^(?!(?:do|does|did|can|could|would|will|should|shall|may|might|must|is|are|was|were|have|has|had|if|when|what|how|why)\b)((?:[a-z]+ )*?(?!(?:from|to|near|nearest|closest|by|for|with|of|at|than|toward|towards|behind|beside|past|among|between|and|or)\b)[a-z]+)"
+                  r" (?:that |which )?(?:you|i|we|people|they)(?: d| would| ll| can| could| usually| normally| always| often| use to)?"
+                  r" (?!(?:are|is|were|was|am|have|had|said|mean|meant|see|saw|found|moved|put|placed|left|just|among|and|or)\b)[a-z]+\b.*$", r"\1", text)
     m = _PARTITIVE.fullmatch(text)
     if m and not m.group(2):  # "the taller of the two": which two is for the speaker to say
         raise InputError(f"{text!r}: of which ones? name them ('the taller of the two white cans')")

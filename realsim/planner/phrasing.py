@@ -41,7 +41,7 @@ FILLERS = (
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
 _VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
 # constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
-_THINGS = r"(?:anything|everything|something|(?:any of )?the other (?:thing|object|item)s?|other (?:thing|object|item)s?)"
+_THINGS = r"(?:anything|everything|something|(?:any of )?the (?:other|remaining|rest of the) (?:thing|object|item)s?|(?:other|remaining) (?:thing|object|item)s?|the rest)"
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
                          r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
                          rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
@@ -121,6 +121,7 @@ def clean(command: str) -> str:
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(?:adjacent|adjoining|contiguous) to\b", "next to", text)
     text = re.sub(r"\b(?:to|at) (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of", "at beside of"
     text = re.sub(r"\b(behind|beside|inside) of\b", r"\1", text)
     text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
@@ -204,7 +205,7 @@ def split_command(command: str) -> list[str]:
     parts = topic.fronted(topic.joined(topic.choice(topic.partitive(parts)), verb_re), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
-        if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part):
+        if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part) and not _OTHER_VERB.match(part):
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
@@ -239,6 +240,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_OTHER_VERB = re.compile(r"(?!(?:and|then|but|so|or|too|also|if|when|unless|once|because|since|while|until|whether|as|than|like|with|without|for|to|of|in|on|at|by|from)\b)[a-z]+ (?:them|it|me|you|us|him|her)\b")  # "prove them wrong": a verb the planner does not know, never an object
 _THE_THING = r"(?:it|them|(?:the|that|this)(?: (?!and\b|then\b)[a-z]+)+?)"  # one object named, up to the next clause
 _YOU_MODAL = r"(?:are going to|are|re|must to|must|should|have to|need to|will|can|could|shall|gotta|gonna)"  # "you must to put it ..."
 _SIDE_REL = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, k in RELATIONS if k in ('next', 'left', 'right', 'front', 'behind'))})\s")

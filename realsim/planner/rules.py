@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from realsim.errors import InputError
 from realsim.planner import typos
 from realsim.planner.aside import ASIDE, WHERE, aside, where_was
-from realsim.planner.asides import is_aside
+from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
@@ -87,6 +87,11 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
                     steps.append(step)
                     p.moved |= set(step.objects)
             except InputError as exc:
+                step = _salvaged(c, p)  # "pick up the banana and let's go": the command without its talk
+                if step is not None:
+                    steps.append(step)
+                    p.moved |= set(step.objects)
+                    continue
                 if not is_aside(c, p):
                     raise
                 asides.append(exc)
@@ -104,6 +109,18 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     if not steps:
         raise InputError(f"the command only says what not to touch; what should I do? {HELP}")
     return calls, _final_goals(steps)
+
+
+def _salvaged(clause: str, p: Parser) -> Step | None:
+    """The step of ``clause`` without talk glued to its ends, or None when no such cut reads."""
+    for head in without_talk(" ".join(clause.split()), p):
+        if not VERB_START.match(head) and not re.search(r"\b(?:goes|go|belongs?|should (?:be|go|sit))\b", head):
+            continue  # what is left must still ask for something: "the cubes" alone is not a command
+        try:
+            return _clause(head, p)
+        except InputError:
+            continue
+    return None
 
 
 def _superseded(steps: list[Step]) -> list[Step]:
