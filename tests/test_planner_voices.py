@@ -161,6 +161,8 @@ def test_a_direction_alone_after_a_thing_is_no_push() -> None:
 
 def test_talk_glued_to_a_command_is_dropped_but_a_named_thing_never_is() -> None:
     assert call_lines("chat, watch this. okay robot, lift the banana. LET'S GOOO") == call_lines("lift the banana")
+    assert call_lines("chat, watch this: put the strawberry in the bowl. let's gooo") == call_lines("put the strawberry in the bowl")
+    assert call_lines("lift the banana, then let go") == call_lines("lift the banana, then open the gripper")  # "let go" is still a command
     assert call_lines("hype moment chat, hype moment. robot: the strawberry goes in the bowl. prove them wrong") == (
         call_lines("put the strawberry in the bowl"))
     with pytest.raises(InputError):  # "and the apple": a thing the scene lacks is refused, never dropped as talk

@@ -24,7 +24,7 @@ FILLERS = (
     r"neatly", r"nicely", r"tidily", r"(?:young|little|good|dear|my|nice) (?:robot|machine|bot|friend|dear)",
     r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
     r"or (?:whatever|something|so)", r"(?:would|will|could|can) (?:ya|you)(?= *$| *[,.;])", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
-    r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}",
+    r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}", r"let go{2,}",
     r"(?:would|could|will) you (?:be so (?:very )?kind as|be kind enough) to", r"be so (?:very )?kind as to", r"would you kindly",
     r"(?:is|would) it be possible to", r"is it possible to", r"is it ok(?:ay)? (?:if you|to)", r"do you think you could",
     r"i (?:was |am |m )?wonder(?:ing)? if you (?:could|would|might|can|will)", r"(?:might|may|could|can) i (?:trouble|bother|ask|get) you to", r"would you mind", r"do you mind", r"could you please", r"can you please", r"could you", r"can you", r"would you",
