@@ -11,7 +11,7 @@ import re
 from realsim.planner import casual, clarify, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
-from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
+from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
@@ -45,7 +45,6 @@ _THINGS = r"(?:anything|everything|something|(?:any of )?the (?:other|remaining|
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
                          r" (?:touch|knock|hit|bump|disturb|move|topple|tip|upset)(?:ing|ed)?"
                          rf" {_THINGS}(?: else)?(?: over| down| around)?\b")
-_NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10}
 _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": "thanks", "ty": "thanks", "n": "and", "&": "and",
             "mv": "move", "fwd": "forward", "fw": "forward", "bwd": "backward", "bk": "back", "nxt": "next", "obj": "object",
             "lft": "left", "rt": "right", "grn": "green", "blu": "blue", "ylw": "yellow", "wht": "white", "abt": "about",
@@ -106,7 +105,7 @@ def clean(command: str) -> str:
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
     # spoken fractions and trade units: "two and a half centimetres", "three quarters of an inch", "ten mil", "a hand's width"
-    text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten) and a half\b", lambda m: f"{float(_NUMBER_WORDS.get(m.group(1), m.group(1))) + 0.5:g}", text)
+    text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten) and a half\b", lambda m: f"{float(NUMBERS.get(m.group(1), m.group(1))) + 0.5:g}", text)
     text = re.sub(r"\b(?:(three)|an?|one) quarters? of an? (?=inch|centimet|cm|millimet|mm)", lambda m: "0.75 " if m.group(1) else "0.25 ", text)
     text = re.sub(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty) mils?\b", r"\1 mm", text)
     text = re.sub(r"\ban? (hand|palm|finger|thumb)(?:'?s|s)? (?:width|breadth)\b", lambda m: {"hand": "10 cm", "palm": "8 cm"}.get(m.group(1), "2 cm"), text)
