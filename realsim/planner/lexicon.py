@@ -66,3 +66,11 @@ AVOID = re.compile(r"(?:^|\s+(?:but |and |while )?)(?:dont|don t|do not|never|tr
 # the verb of a statement about a thing ("the blue box exceeds the gripper aperture", "the mug is dirty")
 STATEMENT_VERB = (r"(?:is|are|s|looks?|seems?|was|were|keeps|sits|has been|has|have|got|needs?|exceeds|fits|weighs|measures|blocks|contains|holds"
                   r"|belongs|stands|lies|rests|leans|touches|overlaps|won t|wont|can t|cant|cannot|doesn t|doesnt|isn t|isnt|aren t|arent)")
+
+# what people ask of things that no primitive does ("pour the soup into the bowl"): refused, never
+# read as the nearest verb the planner knows
+BEYOND_VERBS = ("pour", "fill", "cut", "slice", "chop", "wash", "rinse", "wipe", "eat", "drink", "cook", "heat", "microwave", "boil", "fry", "bake",
+                "peel", "squeeze", "crush", "smash", "tear", "rip", "fold", "unfold", "tie", "untie", "screw", "unscrew", "plug", "unplug", "spray",
+                "paint", "solve", "juggle", "stir", "blend", "unwrap", "unpack", "uncap", "sharpen", "melt", "freeze")
+BEYOND = re.compile(rf"(?:{'|'.join(BEYOND_VERBS)})\b")
+

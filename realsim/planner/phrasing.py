@@ -7,8 +7,9 @@ verbs and their particles, relation words, clauses, and the non-imperative forms
 from __future__ import annotations
 
 import re
+import unicodedata
 
-from realsim.planner import casual, clarify, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
+from realsim.planner import casual, clarify, clock, code_calls, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
 from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL
@@ -36,8 +37,18 @@ FILLERS = (
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
     r"if that works", r"many thanks", r"thanks a lot", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one|robot|bot|machine)",
     r"good (?:lad|boy|girl|robot)", r"be a (?:love|dear|darling|sweetheart|pal|mate|star|doll|champ) and", r"for a (?:sec|second|moment|minute|bit)",
+    # please, thanks and fillers in the languages people mix in: "por favor", "bitte", "s'il te plait", "jaldi se"
+    r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
+    r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
+    r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
+# when the speaker wants it done is not part of the command: "when I come back I'd like ...", "by the end of this, ..."
+_VAGUE = r"(?:a (?:little|tiny|wee) bit|a (?:little|bit|touch|tad|smidge|smidgen|hair|fraction|skosh|titch)|slightly|a little)(?: more)?"
+_PRECISE = (r"(?:a couple of|a few|an?|one|two|three|four|five|six|seven|eight|nine|ten|\d+(?:\.\d+)?)\s*"
+            r"(?:cm|mm|inch(?:es)?|centimet\w*|millimet\w*)")
+_TIME_FRAME = re.compile(r"^\s*(?:(?:when|once|by the time|before) (?:i|you|we) (?:[a-z']+ ){0,3}?(?:back|home|here|in|out|return|returns|done|finished)"
+                         r"|(?:by|at|towards?) the end of (?:this|it|all this|the day|today))\b,?\s*|\s*,?\s*\bby now\b")
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
 _VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
 # constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
@@ -66,12 +77,17 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
-    text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(command.lower().replace("’", "'")))))))
+    text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
+    text = clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text)))
+    text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
+    text = re.sub(r"\s*\(([^()]*)\)", r", \1,", text)  # a remark in brackets is a clause of its own
     text = re.sub(r"[!?]+", ".", text)
     text = re.sub(r"\s+[-–—]+\s+|\s*[–—]\s*|\s*:\s+", ", ", text)  # a dash or colon between phrases: a pause, as a comma
     text = re.sub(r"\bas well\b", "too", text)  # before "well" goes as a filler
+    text = re.sub(r"([a-z][a-z ]*?)\s*(?:<-+>|<=+>|↔|⇔)\s*([a-z][a-z ]*[a-z])", r"swap \1 and \2", text)  # "cereal box <-> mug"
+    text = re.sub(rf"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?={VERB_START.pattern})", ", ", text)  # "tall white can -> place it left of the red can"
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?=(?:next to|in|into|on|onto|behind|left of|right of|in front of|between|beside)\b)", " ", text)
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*", " to ", text)  # "mug -> bowl": where it goes
     text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+(?: (?!(?:and|then|in|into|on|onto|to|next|behind|from|for|please)\b)\w+)?)",
@@ -94,6 +110,7 @@ def clean(command: str) -> str:
     text = re.sub(r"^(?:when|once|by the time) (?:it ?'?s|it is|it has|you ?'?re|you are|you have|that ?'?s|that is|everything ?'?s|everything is|all is|we ?'?re|we are)"
                   r" (?:finished|done|over|through|complete)[,\s]+", "", text)  # "when it's finished, the mug should be ..."
     text = re.sub(r"\s*,?\s+instead of (?:being )?(?:on|in|inside|next to|beside|behind|in front of|on top of|under|at|by) [^.,;!?]*", "", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:the |your )?arm (?:back )?(?:to )?home\b", "go home", text)  # "2) arm home"
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\bover (?=(?:beside|next to|near|alongside)\b)", "", text)  # "over beside the bowl": beside it
@@ -102,6 +119,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:finish|end|wrap(?: it| things)? up|conclude)(?: off| up)? by (?=\w+ing\b)", "", text)  # "and finish by going back home"
     text = re.sub(r"\b(?:perched|balanced|sitting|standing|resting|lying|sat|stood) (?=(?:on|atop|on top of|in|inside) (?:the|that|this|a|an)\b)", "", text)
     text = _VOCATIVE.sub(" ", text)
+    text = re.sub(r"(?<![\w'])'?em\b", "them", text)  # "swap 'em"
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
     # spoken fractions and trade units: "two and a half centimetres", "three quarters of an inch", "ten mil", "a hand's width"
@@ -110,6 +128,10 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty) mils?\b", r"\1 mm", text)
     text = re.sub(r"\ban? (hand|palm|finger|thumb)(?:'?s|s)? (?:width|breadth)\b", lambda m: {"hand": "10 cm", "palm": "8 cm"}.get(m.group(1), "2 cm"), text)
     text = re.sub(r"(\d\s*(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b[^.;!?]*?)[.;,]\s*(?:call it|say|make (?:it|that)|let'?s say) (?:about |roughly )?[\w.]+ (?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b", r"\1", text)
+    text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twenty)[- ]?ish\b", r"\1", text)  # "three-ish inches"
+    # a vague amount made precise later: "a little more to the right, say a couple of inches", "a touch further away, an inch, give or take"
+    text = re.sub(rf"\b(?:just )?{_VAGUE}((?: [^.;!?]*?)?)[.;,]\s*(?:(?:say|call it|maybe|about|roughly|around|like|so|just|only|at most|tops)\s+)*({_PRECISE})"
+                  r"(?:\s*(?:or so|give or take|at most|tops|max|or thereabouts|ish|should do(?: it)?|will do|is (?:fine|enough|plenty)))?(?=\s*(?:$|[.;,!?]))", r"\2\1", text)
     # chat shorthand: "on top blue" is on top of it, "blu 1" the blue one, "2 the left" to the left
     text = re.sub(r"\bon top (?!of\b)(?=(?:the |a |an |that |this )?[a-z])(?!(?:and|then|please|thanks|now|too)\b)", "on top of ", text)
     text = re.sub(rf"\b({'|'.join(COLOR_WORDS)}|big|small|little|large|tall|short|other|left|right|first|last|same) 1\b(?!\s*(?:cm|mm|in|inch|m)\b)", r"\1 one", text)
@@ -126,7 +148,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
     text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
                   r"\1 the robot", text)  # the robot's base
-    text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(left|right)(?: hand)? side of\b", r"to the \1 of", text)  # "in right side of X": a side
+    text = re.sub(r"\b(?:(?:in|into|inside|at|to|on) (?:the )?|(?<!the )(?<!\w))(left|right)(?: hand)? side of\b", r"to the \1 of", text)  # "in right side of X": a side
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
     text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
@@ -134,7 +156,8 @@ def clean(command: str) -> str:
     text = re.sub(r",? (?:so )?(?:each one|each|both)(?: of them)? (?:go|goes|ends? up|sits?|is) (?:where|in the place)(?: is)? the other(?: one)?(?: (?:is|was|sits|sat))?(?=$|[,.;!?])", "", text)
     text = re.sub(r"\bmake (it|them) (?:go|move|slide|shift)\b", r"move \1", text)  # "make it go left"
     # "the marker needs to come back ten mil": a thing that has to go some way is moved that way
-    text = re.sub(r"\b((?:the|that|this|my) [a-z ]+?) (?:needs|has|ought|must|should|is going)(?: to)? (?:come|go|move|slide|shift|get|be moved|be pushed|be slid) "
+    text = re.sub(r"\b(?:could|can|would|will|might) (it|they|that) (?=(?:come|go|move|slide|shift|get) )", r"\1 needs to ", text)  # "could it come toward me"
+    text = re.sub(r"\b((?:the|that|this|my) [a-z ]+?|it|they) (?:needs|has|ought|must|should|is going|wants|would like)(?: to)? (?:come|go|move|slide|shift|get|be moved|be pushed|be slid) "
                   r"(?=(?:back|forwards?|backwards?|left|right|closer|nearer|away|ahead|toward|towards|over|\d|a |an |about|half|one|two|three|four|five|ten|to the left|to the right)\b)",
                   r"move \1 ", text)
     text = re.sub(r"\bmore (?:near|close)(?: (?:of|to|from))? (you|me)\b", r"closer to \1", text)  # "more near of you"
@@ -162,8 +185,10 @@ def clean(command: str) -> str:
     # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
     text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
                   r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
+    text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)  # "move it somewhere else"
     text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
     text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
+    text = re.sub(r"\bclear (away|off|out) (?!(?:the|that|this|those|these|my|your|a|an|it|them)\b)", r"clear \1 the ", text)  # "clear away cereal box"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
                   r"(?: (?:away|off|out|aside))?(?: for (?:me|us))?(?=\s*(?:$|[.,;])| and\b| then\b)",
                   r"move \1 aside", text)
@@ -351,8 +376,8 @@ _MODAL_WORDS = r"(?:should|needs to|need to|has to|have to|must|will|would|is to
 WHICH_ONE = re.compile(r"(?:which|what) (one|\w+) (?:is|s) (.+)")
 _WILL_BE = re.compile(rf"^.+? {_MODAL_WORDS} (?:have |be |go |end up |stay )")
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
-_GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"
-                   r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(.+)$")
+_GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:[a-z]+ly\s+)?(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"
+                   r"|goes|belongs|belong|sits|stays|lives|is going|are going|ends up|lands)\s+(?:(?:down|over|right) )?(.+)$")
 
 
 # Statements and passives that say what should happen, with the imperative each means ({0}, {1}: its groups).
@@ -363,9 +388,11 @@ _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
     (re.compile(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:moved|pushed|shifted|slid|put|placed|set|dropped|stacked|transferred)\b\s*(.+)$"),
      "move {0} {1}"),
     # "the box needs to be moved 5 cm forward"
-    (re.compile(rf"^(.+?) (?:{_MODAL} be|is to be|are to be|wants to be|want to be) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"), "move {0} {1}"),
+    (re.compile(rf"^(.+?) (?:{_MODAL} (?:have been|be)|is to be|are to be|wants to be|want to be|has been|have been|is|are|was|were) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"),
+     "move {0} {1}"),
     # "the red can and the white can should have traded places"
-    (re.compile(rf"^(.+?) (?:{_MODAL} )?(?:have )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange) (?:places|positions|spots)$"), "swap {0}"),
+    (re.compile(rf"^(?:(?:it |that )?(?:would |d |will )?be \w+ if )?(.+?) (?:{_MODAL} )?(?:have |had )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)"
+                r" (?:places|positions|spots)$"), "swap {0}"),
     # "it'd be great if the banana was in the bowl": the state wished for, made
     (re.compile(r"^(?:it |that |this )?(?:would |d |will |s |is )?be (?:great|nice|good|lovely|helpful|awesome|perfect|ideal|brilliant|wonderful|cool|best|better)"
                 r" if (.+?) (?:was|were|is|are|sat|stood|ended up|could be|would be) (.+)$"), "put {0} {1}"),

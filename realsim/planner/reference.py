@@ -22,6 +22,7 @@ import numpy as np
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, typos, vocab
 from realsim.planner.attributes import between_of, colors_of, holding, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
+from realsim.planner.clock import AT_CLOCK, bearing_gap
 from realsim.planner.ordering import EXTREMES, middle_of, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -123,6 +124,14 @@ class Resolver:
             return "the scene has no objects"
         return "objects in the scene: " + ", ".join(describe(o) for o in self.objects)
 
+    def _at_clock(self, pool: list[ObjectInfo], hour: int, phrase: str) -> ObjectInfo:
+        """The one of ``pool`` nearest ``hour`` o'clock from the robot's base; two whose gaps differ by less
+        than a quarter hour are not told apart."""
+        ranked = sorted(pool, key=lambda o: bearing_gap(*self.robot_xy(o), hour))
+        if len(ranked) > 1 and bearing_gap(*self.robot_xy(ranked[1]), hour) - bearing_gap(*self.robot_xy(ranked[0]), hour) < math.radians(7.5):
+            raise InputError(f"{phrase.strip()!r} is ambiguous: {describe(ranked[0])} and {describe(ranked[1])} lie near {hour} o'clock; say which one")
+        return ranked[0]
+
     def robot_xy(self, o: ObjectInfo) -> tuple[float, float]:
         p = np.asarray(o.position[:2], float) - self.base
         return float(p @ self.forward), float(p @ self.left)
@@ -175,6 +184,8 @@ class Resolver:
         """The objects ``phrase`` names (one, unless the phrase is plural or a quantity); with
         ``loose`` an ambiguous phrase gives all its candidates instead of an error."""
         text = norm(phrase)
+        if m := AT_CLOCK.fullmatch(text):  # "the soup can at your ten o'clock": the one whose bearing is nearest
+            return [self._at_clock(self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True), int(m.group(2)), phrase)]
         m = re.fullmatch(r"(?:an?|any|either|(?:any )?one of(?: the| those| these)?|any of(?: the| those| these)?) (.+)", text)
         if m and not re.search(r"\band\b|,", text):  # "a can", "one of the cans": any one will do, the nearest
             pool = self.resolve(m.group(1), ctx, want=want, exclude=exclude, loose=True)

@@ -25,13 +25,15 @@ from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.lexicon import AGAIN, ALL_VERBS, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START
-from realsim.planner.phrasing import QUESTION, avoided, rephrase, split_command
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START
+from realsim.planner.mentions import mentioned, named_alone
+from realsim.planner.phrasing import avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
-from realsim.planner.reference import Context, Resolver
+from realsim.planner.reference import Context
 from realsim.planner.refine import refine, refines
+from realsim.planner.sentences import is_question, is_request, split_sentences
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
@@ -60,13 +62,23 @@ class RulePlanner:
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> tuple[list[Call], list[Goal]]:
     """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
-    if QUESTION.match(command.strip().lower()) and not re.search(r"[?.!]\s+\S", command.strip()):  # a question alone
+    if is_question(command):
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
-    command = branch(command, Resolver(objects, robot_yaw, robot_base)) or command  # "if the mug is in the bowl, ...": the branch that holds
+    try:
+        return _finish(*_read(command, Parser(objects, robot_yaw, robot_base)))
+    except InputError:
+        read = _read_by_sentence(command, Parser(objects, robot_yaw, robot_base))
+        if read is None:
+            raise
+    return _finish(*read)
+
+
+def _read(command: str, p: Parser) -> tuple[list[Step], dict[str, str]]:
+    """The steps of ``command`` and the objects it says not to touch (name -> how it was named)."""
+    command = branch(command, p.resolver) or command  # "if the mug is in the bowl, ...": the branch that holds
     clauses = split_command(command)
     if not clauses:
         raise InputError(f"the command is empty; {HELP}")
-    p = Parser(objects, robot_yaw, robot_base)
     steps: list[Step] = []
     kept: dict[str, str] = {}  # objects the command says not to touch, and how it named them
     asides: list[InputError] = []  # clauses that were talk around the command ("ugh my desk is a mess")
@@ -83,7 +95,7 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
         elif c:
             try:
                 step = repeat(steps) if AGAIN.fullmatch(" ".join(c.split())) else typos.retry(c, p.resolver.scene_words, lambda t: _clause(t, p))
-                if not (steps and [x.name for x in step.calls] == ["grasp"] and step.calls == steps[-1].calls):  # "Mug, up. Lift it.": held already
+                if not (steps and _same(step, steps[-1])):  # "Mug, up. Lift it.": held already; "On the plate. ON it.": said again
                     steps.append(step)
                     p.moved |= set(step.objects)
             except InputError as exc:
@@ -92,11 +104,41 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
                     steps.append(step)
                     p.moved |= set(step.objects)
                     continue
-                if not is_aside(c, p):
+                if not named_alone(c, p) and not is_aside(c, p):  # "mm, the foam brick, the red one, ...": what "it" means next
                     raise
                 asides.append(exc)
     if asides and not steps and not kept:
         raise asides[0]
+    return steps, kept
+
+
+def _read_by_sentence(command: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
+    """The steps of a message read one sentence at a time, when it does not read as a whole:
+    a sentence that is talk ("we're back!", "for the LAST time:", "Which one is the mug? Right.")
+    is skipped, or names what "it" means next; a request that cannot be done is never skipped
+    (None: the whole message is refused)."""
+    sentences = split_sentences(command)
+    if len(sentences) < 2:
+        return None
+    steps: list[Step] = []
+    kept: dict[str, str] = {}
+    for sentence in sentences:
+        before, moved, taken = list(p.ctx.last), set(p.moved), list(p.taken)
+        try:
+            more, also_kept = _read(sentence, p)
+        except InputError:
+            if is_request(sentence, p.resolver.scene_words):
+                return None
+            p.moved, p.taken = moved, taken  # what a skipped sentence began is undone
+            p.ctx.set(mentioned(sentence, p) or before)
+            continue
+        steps += more
+        kept |= also_kept
+    return (steps, kept) if steps else None
+
+
+def _finish(steps: list[Step], kept: dict[str, str]) -> tuple[list[Call], list[Goal]]:
+    """The calls and the goals still to hold once every step is done."""
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
@@ -109,6 +151,12 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     if not steps:
         raise InputError(f"the command only says what not to touch; what should I do? {HELP}")
     return calls, _final_goals(steps)
+
+
+def _same(step: Step, before: Step) -> bool:
+    """Whether ``step`` only says ``before`` again: the same calls to the same ends ("swap the can and
+    the mug (swap 'em)" is one swap)."""
+    return [c.name for c in step.calls] == [c.name for c in before.calls] and sorted(map(repr, step.goals)) == sorted(map(repr, before.goals))
 
 
 def _salvaged(clause: str, p: Parser) -> Step | None:
@@ -186,6 +234,8 @@ def _clause(clause: str, p: Parser) -> Step:
     if not re.search(r"\b(?:closer|nearer)\b", c):  # "bring the mug closer to me" moves it, not into the hand
         c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
+    if verb is None and (m := BEYOND.match(c)):  # "pour the soup into the bowl": no primitive does it
+        raise InputError(f"the robot cannot {m.group(0)}: it picks up, puts, pushes, swaps and opens drawers; {HELP}")
     if verb is None and (m := _MEANS.fullmatch(c)):  # "tidy up by putting the mug in the bowl": the means is the command
         return _clause(m.group(1), p)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
@@ -439,6 +489,8 @@ def _articulate(verb: str, phrase: str, p: Parser) -> Step:
         if len(objs) != 1:
             raise
     o = objs[0]
+    if not {"drawer", "door"} & set(o.affordances):
+        raise InputError(f"{o.name} does not {verb.split()[0]}: the robot opens and closes only drawers and doors; {p.resolver.listing()}")
     p.ctx.set([o])
     if verb in ("open", "pull open", "pull out"):
         return Step([Call("open_drawer", (o.name,))], [DrawerOpen(o.name, 0.3 if want == "door" else 0.05)], (o.name,))

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import TypeVar
 
-from realsim.planner.lexicon import ALL_VERBS, RELATIONS
+from realsim.planner.lexicon import ALL_VERBS, BEYOND_VERBS, RELATIONS
 from realsim.planner.ordering import EXTREMES
 from realsim.planner.vocab import (
     BIG,
@@ -79,7 +79,8 @@ def correct(word: str, vocabulary: Iterable[str], known: Iterable[str] = ()) -> 
 # words near a command word that are words of their own ("plate": place; "bowl": roll)
 _OTHER = frozenset({"plate", "please", "plates", "bowl", "ball", "bottle", "table", "cable", "label", "handle", "sides", "side", "top", "bottom",
                     "there", "here", "where", "them", "then", "than", "these", "those", "their", "they", "other", "another", "bit", "little",
-                    "want", "wants", "need", "needs", "make", "made", "have", "has", "give", "gave", "hand", "take", "took", "like", "look"})
+                    "want", "wants", "need", "needs", "make", "made", "have", "has", "give", "gave", "hand", "take", "took", "like", "look",
+                    *BEYOND_VERBS})
 
 
 def spelled(word: str, scene_words: set[str]) -> str:

@@ -27,9 +27,10 @@ _FRAMES = (
     r"(?:it|that|things)(?: would| ?'d| will| might)? be (?:(?:really|so|very|quite|rather) )?(?:nice|lovely|great|good|grand|wonderful|helpful|ideal"
     r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
     r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
-    r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much) )?(?:like|love|want|prefer|wish) (?:to see |to have |it if )?",
+    r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much) )?(?:like|love|want|prefer|wish) (?:to (?:see|have|find|come back to) |it if )?",
+    r"(?:what|the picture) i(?: ?'m| am| have) (?:picturing|imagining|envisioning|seeing|got in mind|in mind) is ",
     r"(?:the way i(?: would| ?'d)? (?:like|want) (?:it|things|them)(?: is| to be)?|what i(?: ?'m| am) after is|what i(?: ?'d| would)? (?:like|want|need) is"
-    r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end)[:,]? ",
+    r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end|in my (?:head|mind|mind ?'?s eye))[:,]? ",
 )
 # asked, not told: "could the can perhaps go in front of the box?", "is there any way the mug could end up left of the bowl?"
 _WHOLE_THING = r"((?:the|that|this|my)(?: (?!(?:could|might|would|may|should|will|perhaps|maybe|possibly)\b)[a-z]+)+)"  # greedy: "the tall white can perhaps go" keeps "can" in the thing

@@ -1,0 +1,71 @@
+"""The one thing a stretch of talk names: "mm, the foam brick, the red one, ...", "There's a
+strawberry way at the back. Got it?", "Por favor, la banana, ...". Such talk says what a later
+"it" means; it asks for nothing itself.
+"""
+
+from __future__ import annotations
+
+import re
+
+from realsim.errors import InputError
+from realsim.planner.lexicon import VERB_START
+from realsim.planner.phrasing import clean
+from realsim.planner.reference import DETERMINERS
+from realsim.planner.steps import Parser
+from realsim.planner.types import ObjectInfo
+from realsim.planner.vocab import COLOR_WORDS, GENERIC, singular
+
+__all__ = ["mentioned", "named_alone"]
+
+_LONGEST = 6  # words in a noun phrase with its colour, size and locator words
+_JOINS = {"and", "or", "with", "then"}
+_PRONOUN_WORDS = {"one", "ones", "it", "same", "other"}  # "the same one" is what was named before, not a new mention
+
+
+def _nouns(p: Parser) -> set[str]:
+    return ({w for w in p.resolver.scene_words if w not in COLOR_WORDS} | set(GENERIC)) - _PRONOUN_WORDS
+
+
+def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
+    """The first thing ``text`` names and those joined to it by "and", each by a noun phrase that
+    names exactly one object (the longest from its start: "the left soda can", not "soda can")."""
+    try:
+        words = re.sub(r"[.,;]", " ", clean(text)).split()
+    except InputError:
+        return []
+    nouns = _nouns(p)
+    found: list[ObjectInfo] = []
+    i = 0
+    while i < len(words):
+        end, matched = i + 1, False
+        if words[i] in DETERMINERS or words[i] in COLOR_WORDS or singular(words[i]) in nouns:
+            for j in range(min(len(words), i + _LONGEST), i, -1):
+                if singular(words[j - 1]) not in nouns or _JOINS & set(words[i:j]):
+                    continue  # a phrase ends at its noun and names one thing
+                phrase = re.sub(r"^(?:a|an|any|some) ", "the ", " ".join(words[i:j]))  # "there's a soda can": only if there is one
+                try:
+                    named = p.resolver.resolve(phrase, p.ctx, allow_plural=False)
+                except InputError:
+                    continue
+                if len(named) == 1:
+                    found += [o for o in named if o not in found]
+                    end, matched = j, True
+                    break
+        if matched and (end >= len(words) or words[end] != "and"):
+            break  # the first thing named, with those joined to it ("the mug and the bowl"), not later places
+        i = end
+    return found
+
+
+def named_alone(text: str, p: Parser) -> bool:
+    """Whether ``text`` is talk that names things and asks nothing of them; those things are then
+    what "it" or "them" means. A request ("put the teapot away") is never talk."""
+    try:
+        if VERB_START.match(clean(text)):
+            return False
+    except InputError:
+        return False
+    found = mentioned(text, p)
+    if found:
+        p.ctx.set(found)
+    return bool(found)

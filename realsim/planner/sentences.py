@@ -1,0 +1,60 @@
+"""A message as sentences: where one ends, and whether it asks the robot to do something.
+
+A message that does not read as a whole is read one sentence at a time (see
+:func:`realsim.planner.rules.parse_calls`): talk around the command is skipped, but a request the
+planner cannot carry out is never skipped, so "Pour the soup. Thanks!" is still refused.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection
+
+from realsim.errors import InputError
+from realsim.planner.code_calls import as_words
+from realsim.planner.lexicon import VERB_START
+from realsim.planner.phrasing import QUESTION, clean
+from realsim.planner.vocab import singular
+
+__all__ = ["is_question", "is_request", "split_sentences"]
+
+_END = re.compile(r"(?<=[.!?;:…])\s+|(?<=\.\.\.)(?=\S)")
+# first words that never begin a request: articles, pronouns, prepositions, question words, replies
+_NOT_A_VERB = frozenset(
+    "the a an this that these those it its i we you they he she my our your their his her there here which what where who whom whose why how "
+    "when whenever for in on at to of by with from into onto about and but or so if no not yes yeah yep yup ok okay good great right "
+    "correct exactly well now then oh ah ugh hmm seriously damn wow nice cool sure fine perfect excellent".split())
+_UNKNOWN_VERB = re.compile(r"([a-z]+) (?:the|it|that|this|those|these|my|your|all|both|every|each)\b")
+
+
+def split_sentences(command: str) -> list[str]:
+    """The sentences of ``command`` in lower case (at full stops, question and exclamation marks,
+    semicolons, colons, ellipses and code comments; a decimal point is no end)."""
+    return [s.strip() for s in _END.split(as_words(command.strip().lower())) if s.strip(" .!?;:…")]
+
+
+def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
+    """Whether ``sentence`` asks the robot to act: it, or a clause of it, begins with a verb once polite words are gone,
+    one the planner knows ("put ...") or another one acting on a thing of the scene ("pour the soup
+    ...", where "smash that like button" is talk)."""
+    try:
+        text = clean(sentence)
+    except InputError:  # a correction of nothing ("not two, not twenty"): no request of its own
+        return False
+    if any(VERB_START.match(piece.strip()) for piece in re.split(r"[,;]", text)):  # "if not, put it next to the bowl"
+        return True
+    if re.search(r"\d", text):  # an amount ("make it 5 cm") is never talk
+        return True
+    m = _UNKNOWN_VERB.match(text)
+    return bool(m) and m.group(1) not in _NOT_A_VERB and any(singular(w) in scene_words for w in text[m.end():].split())
+
+
+def is_question(command: str) -> bool:
+    """Whether the whole message is one question ("where is the mug?"); "when I come back I'd like
+    the can behind the box" is a time clause, not a question."""
+    text = command.strip().lower()
+    if re.search(r"[?.!]\s+\S", command.strip()):
+        return False
+    if re.match(r"when (?:i|you|we|they|he|she)\b", text) and "?" not in text:
+        return False
+    return bool(QUESTION.match(text))

@@ -1,0 +1,109 @@
+"""A message read one sentence at a time (realsim.planner.sentences, realsim.planner.mentions):
+talk around the command is skipped or says what "it" means; a request that cannot be done is
+never skipped. Also end states said as wishes, time frames and adverbs before the verb."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER, call_lines
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+from realsim.planner.mentions import mentioned
+from realsim.planner.sentences import is_question, is_request, split_sentences
+from realsim.planner.steps import Parser
+
+
+def test_sentences_end_at_stops_marks_colons_and_ellipses_but_not_decimals() -> None:
+    assert split_sentences("Ugh. Move it 2.5 cm left! Why? Fine: go... now") == ["ugh.", "move it 2.5 cm left!", "why?", "fine:", "go...", "now"]
+
+
+@pytest.mark.parametrize(("sentence", "asks"), [
+    ("Pour the soup into the bowl.", True),  # a verb the planner lacks is still a request on a thing of the scene
+    ("Smash that like button.", False),
+    ("Put the banana away, thanks.", True),
+    ("We're back, chat!", False),
+    ("For the last time:", False),
+    ("Someone said it can't be done.", False),
+    ("Prove them wrong.", False),  # a verb on people, not on a thing
+])
+def test_a_request_begins_with_a_verb(sentence: str, asks: bool) -> None:
+    assert is_request(sentence, {"soup", "bowl", "banana"}) is asks
+
+
+def test_the_first_thing_named_and_those_joined_to_it_are_mentioned() -> None:
+    p = Parser(CLUTTER)
+    assert [o.name for o in mentioned("mm, the banana, the yellow one, i keep forgetting it", p)] == ["obj7_banana"]
+    assert [o.name for o in mentioned("someone bet the strawberry and the banana can't trade", p)] == ["obj8_strawberry", "obj7_banana"]
+    assert [o.name for o in mentioned("look at the strawberry, over there by the bowl", p)] == ["obj8_strawberry"]
+    assert mentioned("the cube, you know", p) == []  # three cubes: no one thing named
+
+
+@pytest.mark.parametrize(("message", "plain"), [
+    ("Hi chat, we're live! Put the strawberry in the bowl. Smash that like button.", "put the strawberry in the bowl"),
+    ("Okay. The banana. Yeah, the yellow one. Push it 3 cm to the left.", "push the banana left 3 cm"),
+    ("Somebody said the strawberry and the banana can't trade spots. Swap 'em.", "swap the strawberry and the banana"),
+    ("Third time now. The blue cube goes on the plate... I mean on the green cube. Thanks.", "put the blue cube on the green cube"),
+    ("There's a strawberry near you. See it? Lift it.", "lift the strawberry"),
+])
+def test_talk_between_sentences_is_skipped(message: str, plain: str) -> None:
+    assert call_lines(message) == call_lines(plain)
+
+
+@pytest.mark.parametrize("message", [
+    "We're live, chat! Pour the strawberry into the bowl.",  # a request it cannot do
+    "Hello there. Lift the teapot. Thanks!",  # a thing the scene lacks
+    "We're back. Nice weather today.",  # nothing asked at all
+])
+def test_a_request_it_cannot_do_is_never_skipped(message: str) -> None:
+    with pytest.raises(InputError):
+        RulePlanner().plan(message, CLUTTER)
+
+
+def test_a_sentence_skipped_leaves_nothing_behind() -> None:
+    """A sentence that fails half-way does not leave its half-read objects as "it"."""
+    assert call_lines("Look at the banana, over by the cans. Lift it.") == call_lines("lift the banana")
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("The strawberry really belongs next to the bowl.", "put the strawberry next to the bowl"),
+    ("When I get back I'd like to find the banana sitting behind the bowl.", "put the banana behind the bowl"),
+    ("By the end of this, the strawberry should be standing in front of the bowl.", "put the strawberry in front of the bowl"),
+    ("Ideally the banana would have been pushed about five centimetres to the left.", "push the banana left 5 cm"),
+    ("It'd be great if the strawberry and the banana had traded places by now.", "swap the strawberry and the banana"),
+    ("The strawberry shouldn't be sitting there; it belongs down on the table.", "put the strawberry on the table"),
+])
+def test_an_end_state_said_as_a_wish_is_its_request(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
+
+
+def test_a_time_clause_is_not_a_question() -> None:
+    assert not is_question("When you're done I'd like the mug in the bowl")
+    assert is_question("when is the mug going in the bowl?")
+    assert is_question("where is the mug")
+
+
+@pytest.mark.parametrize(("command", "why"), [
+    ("pour the strawberry into the bowl", "cannot pour"),  # never read as the nearest known verb
+    ("please peel the banana", "cannot peel"),
+    ("open the bowl", "does not open"),  # only drawers and doors open
+])
+def test_what_no_primitive_does_is_refused_by_name(command: str, why: str) -> None:
+    with pytest.raises(InputError, match=why):
+        RulePlanner().plan(command, CLUTTER)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("Slide the banana left a bit, three-ish centimetres should do it.", "push the banana left 3 cm"),
+    ("The banana wants to go a little more to the right, say a couple of centimetres.", "push the banana right 2 cm"),
+    ("The strawberry, could it come toward me by roughly two centimetres?", "push the strawberry back 2 cm"),
+    ("Por favor, la banana... put it next to the bowl, gracias!", "put the banana next to the bowl"),
+    ("S'il vous plaît, lift the strawberry. Merci beaucoup!", "lift the strawberry"),
+    ("strawberry <-> banana", "swap the strawberry and the banana"),
+    ("1) strawberry in bowl 2) arm home", "put the strawberry in the bowl, then go home"),
+    ("The banana is in the way, move it somewhere else.", "move the banana out of the way"),
+    ("clear away banana", "move the banana out of the way"),
+    ("strawberry left side of bowl", "put the strawberry to the left of the bowl"),
+])
+def test_amounts_asides_and_other_tongues(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
