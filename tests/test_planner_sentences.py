@@ -107,3 +107,20 @@ def test_what_no_primitive_does_is_refused_by_name(command: str, why: str) -> No
 ])
 def test_amounts_asides_and_other_tongues(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("message", "plain"), [
+    ("Ugh. Strawberry. In the bowl. IN it. Come on.", "put the strawberry in the bowl"),
+    ("Tell me which cube is green. Right! Park that one to the right of the bowl.", "put the green cube to the right of the bowl"),
+    ("Banana's in the way. It's in the way, move it somewhere else.", "move the banana out of the way"),
+    ("I'd like the banana an inch further away from me.", "push the banana forward 1 inch"),
+    ("A couple of centimetres closer to me with the strawberry, please.", "push the strawberry back 2 cm"),
+])
+def test_a_place_alone_a_quiz_and_an_amount_said_around_the_thing(message: str, plain: str) -> None:
+    assert call_lines(message) == call_lines(plain)
+
+
+def test_a_thing_named_by_its_nearness_before_a_command_is_a_topic_not_a_push() -> None:
+    two = [o for o in CLUTTER if o.name in ("obj6_bowl", "obj7_banana")]
+    assert call_lines("the thing closer to you, put it in front of the other one", two) == call_lines(
+        "put the bowl in front of the banana", two)

@@ -25,10 +25,12 @@ def light_verb(text: str) -> str:
 
 
 _WAY = r"(?:left|right|forwards?|backwards?|back|ahead|away|closer|nearer)"
-_HOW_FAR = r"(?:(?:by )?(?:about |around |roughly )?(?:\d+(?:\.\d+)?|a|one|two|three|four|five|six|seven|eight|nine|ten|twenty) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)|a bit|a little(?: bit)?|slightly)"
+# with an amount, a way may name the speaker ("an inch further away from me"); alone, "the thing closer to you" says which thing
+_WAY_FROM = r"(?:left|right|forwards?|backwards?|back|ahead|(?:further |farther )?away(?: from (?:me|you|the robot))?|(?:closer|nearer)(?: to (?:me|you|the robot))?)"
+_HOW_FAR = r"(?:(?:by )?(?:about |around |roughly )?(?:\d+(?:\.\d+)?|a couple of|a few|an?|one|two|three|four|five|six|seven|eight|nine|ten|twenty) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)|a bit|a little(?: bit)?|slightly)"
 # a bare object, a way and how far: "cereal box forward 10cm", "the mug 5 cm left"; never "the can on the left"
 _TERSE_PUSH = re.compile(rf"((?:the |a |that |this )?[a-z]+(?: [a-z]+){{0,3}}?(?<!\bthe)(?<!\bto)(?<!\bon)(?<!\bat)(?<!\bof)(?<!\bfar))"
-                         rf" ({_WAY}(?: {_HOW_FAR})?|{_HOW_FAR} (?:to the )?{_WAY})")
+                         rf" ({_WAY}(?: {_HOW_FAR})?|{_WAY_FROM} {_HOW_FAR}|{_HOW_FAR} (?:to the )?{_WAY_FROM})")
 
 
 def terse(clause: str, has_place: bool) -> str | None:
@@ -38,6 +40,9 @@ def terse(clause: str, has_place: bool) -> str | None:
     m = _TERSE_PUSH.fullmatch(clause)
     if m:
         return f"move {m.group(1)} {m.group(2)}"
+    m = re.fullmatch(rf"((?:{_HOW_FAR} )?(?:(?:a )?(?:little |bit |tad |touch |hair |smidge )?(?:more |further |farther )?)?{_WAY_FROM}) with ((?:the|that|this) .+)", clause)
+    if m:  # "a couple of centimetres closer to me with the soup can": the thing said last
+        return f"move {m.group(2)} {m.group(1)}"
     m = re.fullmatch(r"((?:the |that |this )?[a-z]+(?: [a-z]+){0,3}?) up(?: high| in the air)?", clause)
     if m and not has_place:  # "mug up", "marker, up!": lift it
         return f"lift {m.group(1)}"

@@ -29,6 +29,8 @@ def _nouns(p: Parser) -> set[str]:
 def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
     """The first thing ``text`` names and those joined to it by "and", each by a noun phrase that
     names exactly one object (the longest from its start: "the left soda can", not "soda can")."""
+    if asked := _asked_which(text, p):
+        return asked
     try:
         words = re.sub(r"[.,;]", " ", clean(text)).split()
     except InputError:
@@ -55,6 +57,23 @@ def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
             break  # the first thing named, with those joined to it ("the mug and the bowl"), not later places
         i = end
     return found
+
+
+def _asked_which(text: str, p: Parser) -> list[ObjectInfo]:
+    """The thing a quiz names: "tell me which cube is blue" -> the blue cube, "which one is nearest
+    you?" -> the nearest thing; [] when it names none or several."""
+    m = re.search(r"\b(?:which|what) (one|thing|object|[a-z]+) (?:is|s) (?:the )?([a-z ]+?)\s*[?.!]?$", text.lower())
+    if not m:
+        return []
+    noun, said = m.groups()
+    for phrase in (f"the {said} {noun}", f"the {noun} {said}", f"the {said}"):
+        try:
+            found = p.resolver.resolve(phrase, p.ctx, allow_plural=False)
+        except InputError:
+            continue
+        if len(found) == 1:
+            return found
+    return []
 
 
 def named_alone(text: str, p: Parser) -> bool:

@@ -129,8 +129,9 @@ def clean(command: str) -> str:
     text = re.sub(r"\ban? (hand|palm|finger|thumb)(?:'?s|s)? (?:width|breadth)\b", lambda m: {"hand": "10 cm", "palm": "8 cm"}.get(m.group(1), "2 cm"), text)
     text = re.sub(r"(\d\s*(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b[^.;!?]*?)[.;,]\s*(?:call it|say|make (?:it|that)|let'?s say) (?:about |roughly )?[\w.]+ (?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b", r"\1", text)
     text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twenty)[- ]?ish\b", r"\1", text)  # "three-ish inches"
+    text = re.sub(r"(?<!\bhalf )(?<!\bquarter of )\ban? (?=(?:inch|centimet\w*|cm|millimet\w*|mm)\b)", "1 ", text)  # "an inch", not "half an inch"
     # a vague amount made precise later: "a little more to the right, say a couple of inches", "a touch further away, an inch, give or take"
-    text = re.sub(rf"\b(?:just )?{_VAGUE}((?: [^.;!?]*?)?)[.;,]\s*(?:(?:say|call it|maybe|about|roughly|around|like|so|just|only|at most|tops)\s+)*({_PRECISE})"
+    text = re.sub(rf"\b(?:just )?{_VAGUE}(?! of\b)((?: [^.;,!?]*?)?)[.;,]\s*(?:(?:say|call it|maybe|about|roughly|around|like|so|just|only|at most|tops)\s+)*({_PRECISE})"
                   r"(?:\s*(?:or so|give or take|at most|tops|max|or thereabouts|ish|should do(?: it)?|will do|is (?:fine|enough|plenty)))?(?=\s*(?:$|[.;,!?]))", r"\2\1", text)
     # chat shorthand: "on top blue" is on top of it, "blu 1" the blue one, "2 the left" to the left
     text = re.sub(r"\bon top (?!of\b)(?=(?:the |a |an |that |this )?[a-z])(?!(?:and|then|please|thanks|now|too)\b)", "on top of ", text)
@@ -169,6 +170,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b((?:the|that|this|my) [a-z]+(?: [a-z]+)?)'s (?=(?:dirty|empty|full|broken|wet|sticky|heavy|too|so|really|very|not|just|still|always"
                   r"|in the way|in my way|blocking|sitting|lying|standing|getting|been|gonna|going|kind of|sort of|fine|ok|okay|a bit|a little|a|an|quite|rather|pretty"
                   r"|awkward|big|huge|bulky|massive|tiny|small|slippery|fragile|wobbly|tippy|light|hard|easy|awfully|dead|far|miles|right)\b)", r"\1 is ", text)
+    text = re.sub(r"\b(it|that|this)'s (?=(?:in|on|at|too|so|very|really|just|blocking|sitting|standing|lying|right|not|still|a|an|the)\b)", r"\1 is ", text)  # "it's in the way"
     text = re.sub(r"(?<=\w)'(?:s|re|ll|d|ve)\b", "", text).replace("'", "")
     text = _CONSTRAINT.sub(" ", text)
     text = casual.described(casual.light_verb(text))
@@ -424,6 +426,8 @@ def rephrase(clause: str) -> str:
         if p and re.search(r"\b(?:picked up|lifted)$", rest):  # "i'd like the cylinder picked up"
             return f"pick up {p.group(1)}"
         # "i want the mug by the bowl": put it there; "i want the banana": give it to me
+        if said := casual.terse(rest, has_relation(rest)):  # "i'd like the cube an inch further away"
+            return said
         placed = _PLACE_WORD.search(f" {rest} ")
         return f"put {rest}" if placed else f"hand me {rest}"
     for pattern, imperative in _STATEMENTS:

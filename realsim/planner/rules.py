@@ -25,9 +25,9 @@ from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
-from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START, relation_start
 from realsim.planner.mentions import mentioned, named_alone
-from realsim.planner.phrasing import avoided, rephrase, split_command
+from realsim.planner.phrasing import avoided, clean, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
@@ -127,14 +127,33 @@ def _read_by_sentence(command: str, p: Parser) -> tuple[list[Step], dict[str, st
         try:
             more, also_kept = _read(sentence, p)
         except InputError:
-            if is_request(sentence, p.resolver.scene_words):
+            p.moved, p.taken = moved, taken  # what a failed sentence began is undone
+            p.ctx.set(before)
+            placed = _placed_there(sentence, p)  # "Green cube. On the plate.": the thing named goes there
+            if placed is not None:
+                more, also_kept = placed
+            elif is_request(sentence, p.resolver.scene_words):
                 return None
-            p.moved, p.taken = moved, taken  # what a skipped sentence began is undone
-            p.ctx.set(mentioned(sentence, p) or before)
-            continue
-        steps += more
+            else:
+                p.ctx.set(mentioned(sentence, p) or before)
+                continue
+        steps += [s for s in more if not (steps and _same(s, steps[-1]))]  # "On the plate. ON it.": said again
         kept |= also_kept
     return (steps, kept) if steps else None
+
+
+def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
+    """A sentence that is only a place ("On the plate.") after a thing was named: that thing put there."""
+    try:
+        place = clean(sentence).strip(" .")
+    except InputError:
+        return None
+    if not p.ctx.last or not relation_start(place):
+        return None
+    try:
+        return _read(f"put it {place}", p)
+    except InputError:
+        return None
 
 
 def _finish(steps: list[Step], kept: dict[str, str]) -> tuple[list[Call], list[Goal]]:
