@@ -184,15 +184,15 @@ def test_every_cluster_s_first_split_is_shared_with_a_helper_and_the_labels_are_
     import realsim.perception.colour_split as colour_split
 
     points, colors, _ = _scene()
-    shifted = [points + [0.6 * k, 0.0, 0.0] for k in range(3)]  # three clusters of two touching colours each
-    pts, cols = np.vstack(shifted), np.vstack([colors] * 3)
-    labels = np.repeat(np.arange(3), len(points))
+    shifted = [points + [0.6 * k, 0.0, 0.0] for k in range(4)]  # four clusters of two touching colours each
+    pts, cols = np.vstack(shifted), np.vstack([colors] * 4)
+    labels = np.repeat(np.arange(4), len(points))
     a, b = _links(pts)
     alone = split_by_colour(cols, labels, a, b, min_points=10)
     monkeypatch.setenv("REALSIM_WORKERS", "2")
     shared: list[int] = []
     fork_map = colour_split.fork_map
-    monkeypatch.setattr(colour_split, "fork_map", lambda fn, n: shared.append(n) or fork_map(fn, n))
+    monkeypatch.setattr(colour_split, "fork_map", lambda fn, n, least: shared.append(n) or fork_map(fn, n, least=least))
     out = split_by_colour(cols, labels, a, b, min_points=10)
-    assert shared == [3] and np.array_equal(out, alone)
-    assert len(np.unique(out)) == 6
+    assert shared == [4] and 4 >= colour_split.SHARED_CLUSTERS and np.array_equal(out, alone)
+    assert len(np.unique(out)) == 8

@@ -112,7 +112,8 @@ def test_every_first_verdict_is_shared_with_a_helper_and_the_merges_are_the_same
     alone = merged("1")
     shared: list[int] = []
     fork_map = parts.fork_map
-    monkeypatch.setattr(parts, "fork_map", lambda fn, n: shared.append(n) or fork_map(fn, n))
+    monkeypatch.setattr(parts, "fork_map", lambda fn, n, least: shared.append(n) or fork_map(fn, n, least=least))
+    monkeypatch.setattr(parts, "SHARED_PAIRS", 2)  # shared however few the pairs (a real scene shares from 16)
     together = merged("2")
     assert shared[0] == 6  # the four objects' six pairs at once
     assert alone[0] == together[0] and sorted(alone[0][0]) == [1, 2]  # the bowl's halves joined

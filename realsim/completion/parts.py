@@ -26,6 +26,7 @@ from realsim.completion.containers import ContainerParams, cavity_floor, round_r
 from realsim.forkmap import fork_map
 from realsim.scene import Scene, SceneObject
 
+SHARED_PAIRS = 16  # fewer pairs: their verdicts are made here (most are rejected by their gap at once; a fork costs several)
 RIM_BAND = 0.15  # the rim: the top this share of the height, within this share of the radius of the circle
 MIN_RIM_POINTS = 15  # each part holds at least this many points on the rim circle
 
@@ -154,7 +155,7 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
         if first:  # a pair's verdict reads only its two objects' points, unchanged until one is merged (then it is
             first = False  # dropped): every first verdict made at once, shared with a forked helper
             pairs = [(a, b) for i, a in enumerate(objects) for b in objects[i + 1:]]
-            verdicts.update(zip([(a.id, b.id) for a, b in pairs], fork_map(lambda k: joined(*pairs[k]), len(pairs))))
+            verdicts.update(zip([(a.id, b.id) for a, b in pairs], fork_map(lambda k: joined(*pairs[k]), len(pairs), least=SHARED_PAIRS)))
         for i, a in enumerate(objects):
             for b in objects[i + 1:]:
                 if (a.id, b.id) not in verdicts:

@@ -38,6 +38,7 @@ __all__ = ["brightness_classes", "colour_classes", "split_by_colour"]
 QUANTUM = 1.0 / 64  # a colour difference of one 6-bit level (a phone's coarse colour) is no edge
 SEPARATION = 6.0  # two populations whose means are this many robust spreads apart are two colours
 COHERENT = 0.6  # the largest connected piece of a colour holds at least this share of it
+SHARED_CLUSTERS = 4  # fewer clusters to try: their first splits are made here (a fork costs about one cluster's try)
 BRIGHTNESS_RATIO = 2.0  # two shades of one hue are two materials only when one is this much brighter
 MAX_SMOOTH_BORDER = 0.5  # in a view, a split's border links weigh at most this on average (mostly folded)
 SHARED_FACING = 0.3  # ... among points of both facing the same ways, at least this share of each
@@ -218,7 +219,7 @@ def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np
     # up front, shared with a forked helper; only the pieces a split left are tried again in turn
     initial = list(queue)
     first = dict(zip(initial, fork_map(lambda i: _split_cluster(colors, normals, labels, initial[i], a, b, min_points, view_points),
-                                       len(initial))))
+                                       len(initial), least=SHARED_CLUSTERS)))
     touched: set[int] = set()
     nxt = int(out.max(initial=-1)) + 1
     while queue:
