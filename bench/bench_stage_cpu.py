@@ -13,6 +13,7 @@ trees interleaved, e.g.::
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import shutil
 import sys
@@ -33,7 +34,8 @@ def main() -> None:
     parser.add_argument("source", help="a capture to convert")
     parser.add_argument("--repeat", type=int, default=2, help="cold conversions, one line each")
     args = parser.parse_args()
-    import mujoco, numpy, open3d, scipy, trimesh  # noqa: F401, E401  (imports are not the conversion)
+    for library in ("mujoco", "numpy", "open3d", "scipy", "trimesh"):  # imports are not the conversion
+        importlib.import_module(library)
 
     base = tempfile.mkdtemp()
     os.environ["REALSIM_CACHE"], os.environ["REALSIM_REUSE"] = base + "/seed", "0"

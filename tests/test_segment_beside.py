@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_segment import BOXES, _render_boxes, _table
 
 import realsim.perception.segment as segment
 from realsim.beside import Beside
 from realsim.perception.segment import SegmentParams, segment_objects
-from test_segment import BOXES, _render_boxes, _table
 
 
 def test_the_view_s_normals_are_made_beside_and_the_labels_are_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
