@@ -71,9 +71,10 @@ def _receive(recv: Connection, timeout: float) -> dict[int, Any]:
     return {}
 
 
-def fork_map(fn: Callable[[int], R], n: int, timeout: float = TIMEOUT) -> list[R]:
-    """``[fn(i) for i in range(n)]``, the items shared with a forked helper (see the module docstring)."""
-    return Ahead(fn, n, timeout, least=2).results()
+def fork_map(fn: Callable[[int], R], n: int, timeout: float = TIMEOUT, least: int = 2) -> list[R]:
+    """``[fn(i) for i in range(n)]``, the items shared with a forked helper (see the module docstring);
+    fewer than ``least`` items (too little work to pay for a fork): the plain loop."""
+    return Ahead(fn, n, timeout, least=max(least, 2)).results()
 
 
 class Ahead(Generic[R]):

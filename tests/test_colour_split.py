@@ -5,6 +5,7 @@ by shape do not make or keep extra objects."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from realsim.perception.colour_split import brightness_classes, colour_classes, split_by_colour
 from realsim.perception.supervoxels import knn_links
@@ -177,3 +178,21 @@ def test_in_a_view_a_print_on_one_surface_stays_and_a_folded_contact_splits() ->
     out = split_by_colour(colors, np.zeros(len(points), np.int64), a, b, 10, normals, view_points=points)
     assert len(np.unique(out)) == 2
     assert np.bincount(out[truth == 0]).argmax() != np.bincount(out[truth == 1]).argmax()
+
+
+def test_every_cluster_s_first_split_is_shared_with_a_helper_and_the_labels_are_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
+    import realsim.perception.colour_split as colour_split
+
+    points, colors, _ = _scene()
+    shifted = [points + [0.6 * k, 0.0, 0.0] for k in range(4)]  # four clusters of two touching colours each
+    pts, cols = np.vstack(shifted), np.vstack([colors] * 4)
+    labels = np.repeat(np.arange(4), len(points))
+    a, b = _links(pts)
+    alone = split_by_colour(cols, labels, a, b, min_points=10)
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
+    shared: list[int] = []
+    fork_map = colour_split.fork_map
+    monkeypatch.setattr(colour_split, "fork_map", lambda fn, n, least: shared.append(n) or fork_map(fn, n, least=least))
+    out = split_by_colour(cols, labels, a, b, min_points=10)
+    assert shared == [4] and 4 >= colour_split.SHARED_CLUSTERS and np.array_equal(out, alone)
+    assert len(np.unique(out)) == 8

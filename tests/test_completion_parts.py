@@ -4,9 +4,12 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from realsim.completion.containers import round_rim
 from realsim.completion.parts import one_container, outer_wall_part
+from realsim.composition.layout import declared_support
+from realsim.scene import Scene, SceneObject
 
 
 def _bowl(centre: tuple[float, float], radius: float = 0.07, height: float = 0.055, seed: int = 0) -> np.ndarray:
@@ -83,3 +86,35 @@ def test_two_arcs_of_a_bowl_with_the_middle_hidden_are_one_container() -> None:
     assert np.any(gap > 0.02)  # their footprints' bounds lie apart
     assert one_container(a, b, 0.0, 0.2)
     assert not one_container(bowl[(angle > -160) & (angle < -60)], bowl[(angle > 50) & (angle < 100)], 0.0, 0.2)  # less than half a turn
+
+
+def test_every_first_verdict_is_shared_with_a_helper_and_the_merges_are_the_same(monkeypatch: pytest.MonkeyPatch) -> None:
+    import realsim.completion.parts as parts
+
+    bowl, cup = _bowl((0.3, 0.1), seed=8), _bowl((-0.2, 0.0), radius=0.04, height=0.08, seed=9)
+    ball = np.random.default_rng(10).normal(size=(800, 3))
+    ball = 0.03 * ball / np.linalg.norm(ball, axis=1, keepdims=True) + [0.0, 0.3, 0.03]
+    points = np.vstack([bowl, cup, ball])
+    points[:, 2] += declared_support(None).height  # standing on the table
+    halves = np.where(bowl[:, 0] < 0.3, 1, 2)  # the bowl in two, the cup and the ball whole
+    labels = np.r_[halves, np.full(len(cup), 3), np.full(len(ball), 4)].astype(np.int32)
+
+    def merged(workers: str) -> tuple[list[tuple[int, int]], np.ndarray, list[int]]:
+        monkeypatch.setenv("REALSIM_WORKERS", workers)
+        plane = declared_support(None)
+        scene = Scene.unread(None)
+        scene.points, scene.labels, scene.planes = points, labels.copy(), [plane]
+        scene.objects = [SceneObject(id=k, name=f"obj{k}", label="object", position=np.zeros(3), quat=np.array([1.0, 0, 0, 0]),
+                                     size=np.full(3, 0.1), support_id=plane.id, point_count=int((labels == k).sum())) for k in (1, 2, 3, 4)]
+        pairs = parts.merge_container_parts(scene, 0.2, camera=np.array([-0.6, 0.0, 1.25]))
+        return pairs, scene.labels, [o.id for o in scene.objects]
+
+    alone = merged("1")
+    shared: list[int] = []
+    fork_map = parts.fork_map
+    monkeypatch.setattr(parts, "fork_map", lambda fn, n, least: shared.append(n) or fork_map(fn, n, least=least))
+    monkeypatch.setattr(parts, "SHARED_PAIRS", 2)  # shared however few the pairs (a real scene shares from 16)
+    together = merged("2")
+    assert shared[0] == 6  # the four objects' six pairs at once
+    assert alone[0] == together[0] and sorted(alone[0][0]) == [1, 2]  # the bowl's halves joined
+    assert np.array_equal(alone[1], together[1]) and alone[2] == together[2]

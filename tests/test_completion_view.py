@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from realsim.completion.view import DepthView
 from realsim.perception.intrinsics import Intrinsics
@@ -77,3 +78,23 @@ def test_the_support_seen_in_a_gap_frees_the_space_just_above_it() -> None:
     assert view.over_support(points, 0.01).tolist() == [False] * 4  # a support at another height is not the one seen
     depth[v - 10:v + 10, u:u + 30] = 0.997  # what the pixel shows is 3 mm off the plane: not that support
     assert not view.over_support(points[:1], 0.0).any()
+
+
+def test_a_camera_sized_view_is_fitted_on_two_threads_bit_for_bit(monkeypatch: pytest.MonkeyPatch) -> None:
+    import realsim.completion.view as view_module
+
+    monkeypatch.setenv("REALSIM_WORKERS", "2")
+    calls: list[int] = []
+    split = view_module.split_rows
+    monkeypatch.setattr(view_module, "split_rows", lambda fn, n: calls.append(n) or split(fn, n))
+    rng = np.random.default_rng(6)
+    intr = Intrinsics(525.0, 525.0, 319.5, 239.5, 640, 480)
+    labels = rng.integers(0, 4, (480, 640)).astype(np.int32)
+    labels[100:400, 150:500] = 2
+    depth = 0.9 + rng.normal(0.0, 0.01, labels.shape)
+    depth[rng.random(labels.shape) < 0.05] = np.nan
+    out = DepthView(intr, np.eye(4), 1.0, depth, labels).denoised(5).depth
+    from realsim.rowsplit import LEAST_ROWS
+
+    assert calls == [int((labels > 0).sum())] and calls[0] >= LEAST_ROWS  # halved between two threads
+    assert out.tobytes() == _denoised_reference(depth, labels).tobytes()

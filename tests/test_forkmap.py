@@ -35,6 +35,12 @@ def test_results_in_order_and_both_processes_work() -> None:
     assert parent in pids and len(pids) == 2
 
 
+def test_fewer_items_than_least_are_the_plain_loop() -> None:
+    parent = os.getpid()
+    assert fork_map(lambda i: os.getpid(), 3, least=4) == [parent] * 3
+    assert len(set(fork_map(lambda i: time.sleep(0.02) or os.getpid(), 8, least=4))) == 2
+
+
 def test_numpy_results_are_bit_identical() -> None:
     rng = np.random.default_rng(3)
     data = [rng.normal(size=(500, 3)) for _ in range(12)]

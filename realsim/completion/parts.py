@@ -23,8 +23,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from realsim.completion.containers import ContainerParams, cavity_floor, round_rim
+from realsim.forkmap import fork_map
 from realsim.scene import Scene, SceneObject
 
+SHARED_PAIRS = 16  # fewer pairs: their verdicts are made here (most are rejected by their gap at once; a fork costs several)
 RIM_BAND = 0.15  # the rim: the top this share of the height, within this share of the radius of the circle
 MIN_RIM_POINTS = 15  # each part holds at least this many points on the rim circle
 
@@ -145,11 +147,15 @@ def merge_container_parts(scene: Scene, max_radius: float, params: ContainerPara
             return "one is the outside of the other's near wall under its rim"
         return None
 
-    changed = True
+    changed, first = True, True
     while changed:
         changed = False
         objects = [o for o in scene.objects if o.resting_on is None]
         pts = {o.id: points[labels == o.id] for o in objects}
+        if first:  # a pair's verdict reads only its two objects' points, unchanged until one is merged (then it is
+            first = False  # dropped): every first verdict made at once, shared with a forked helper
+            pairs = [(a, b) for i, a in enumerate(objects) for b in objects[i + 1:]]
+            verdicts.update(zip([(a.id, b.id) for a, b in pairs], fork_map(lambda k: joined(*pairs[k]), len(pairs), least=SHARED_PAIRS)))
         for i, a in enumerate(objects):
             for b in objects[i + 1:]:
                 if (a.id, b.id) not in verdicts:

@@ -13,6 +13,7 @@ import numpy as np
 
 from realsim.perception.capture_camera import capture_intrinsics
 from realsim.perception.intrinsics import Intrinsics
+from realsim.rowsplit import split_rows
 from realsim.scene import Scene
 
 OTHER_SURFACE_TOLERANCE = 0.001  # m: in front of another surface by more than this is free space
@@ -82,20 +83,10 @@ class DepthView:
         depth, labels = np.pad(self.depth, r, constant_values=np.nan).ravel(), np.pad(self.labels, r).ravel()
         wide = self.depth.shape[1] + 2 * r
         at = (v + r) * wide + (u + r)  # each pixel in the padded images, flat
-        offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
-        d = np.stack([depth[at + (di * wide + dj)] for di, dj in offsets])  # (window^2, n)
-        centre = labels[at]
-        ok = np.stack([labels[at + (di * wide + dj)] == centre for di, dj in offsets]) & np.isfinite(d)
-        basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
-        wgt = ok.astype(float)
-        normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))  # small integers: exact in any order
-        seen = wgt * np.nan_to_num(d)
-        rhs = seen[0] * basis[0][:, None]  # (3, n)
-        for k in range(1, len(offsets)):  # summed over the window in order
-            rhs += seen[k] * basis[k][:, None]
-        fit = (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
+        fitted = split_rows(lambda rows: _window_planes(depth, labels, at[rows], wide, window), len(at))  # each pixel alone
+        fit = fitted[:, 0] > 0
         out = self.depth.copy()
-        out[v[fit], u[fit]] = np.linalg.solve(normal[fit], rhs[:, fit].T[..., None])[:, 0, 0]
+        out[v[fit], u[fit]] = fitted[fit, 1]
         return DepthView(self.intrinsics, self.world_to_optical, self.scale, out, self.labels)
 
     def unveiled(self, veil: np.ndarray, tolerance: float, window: int = 5) -> "DepthView":
@@ -197,3 +188,26 @@ class DepthView:
         with np.errstate(invalid="ignore"):
             out[inside] = (self.labels[v, u] == 0) & (np.abs(world[:, 2] - height) < margin) & (opt[inside, 2] / self.scale < z)
         return out
+
+
+def _window_planes(depth: np.ndarray, labels: np.ndarray, at: np.ndarray, wide: int, window: int) -> np.ndarray:
+    """Per pixel ``at`` (flat, in the padded ``depth`` and ``labels`` images ``wide`` pixels wide; rows of
+    (fitted, depth)) whether a plane was fitted by least squares to the finite depths of its ``window`` x
+    ``window`` pixels of its own label (at least 6, not degenerate) and its depth at the pixel's centre
+    (NaN when not fitted; see :meth:`DepthView.denoised`)."""
+    r = window // 2
+    offsets = [(i - r, j - r) for i in range(window) for j in range(window)]
+    d = np.stack([depth[at + (di * wide + dj)] for di, dj in offsets])  # (window^2, n)
+    centre = labels[at]
+    ok = np.stack([labels[at + (di * wide + dj)] == centre for di, dj in offsets]) & np.isfinite(d)
+    basis = np.array([[1.0, dj, di] for di, dj in offsets])  # depth = a + b du + c dv: a at the centre
+    wgt = ok.astype(float)
+    normal = np.tensordot(wgt, basis[:, :, None] * basis[:, None, :], axes=(0, 0))  # small integers: exact in any order
+    seen = wgt * np.nan_to_num(d)
+    rhs = seen[0] * basis[0][:, None]  # (3, n)
+    for k in range(1, len(offsets)):  # summed over the window in order
+        rhs += seen[k] * basis[k][:, None]
+    fit = (wgt.sum(axis=0) >= 6) & (np.abs(np.linalg.det(normal)) > 1e-6)
+    out = np.column_stack([fit, np.full(len(at), np.nan)])
+    out[fit, 1] = np.linalg.solve(normal[fit], rhs[:, fit].T[..., None])[:, 0, 0]
+    return out

@@ -29,6 +29,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from realsim.forkmap import fork_map
 from realsim.perception.contact_cut import CutParams, concave_link_weights
 from realsim.perception.supervoxels import link_components
 
@@ -37,6 +38,7 @@ __all__ = ["brightness_classes", "colour_classes", "split_by_colour"]
 QUANTUM = 1.0 / 64  # a colour difference of one 6-bit level (a phone's coarse colour) is no edge
 SEPARATION = 6.0  # two populations whose means are this many robust spreads apart are two colours
 COHERENT = 0.6  # the largest connected piece of a colour holds at least this share of it
+SHARED_CLUSTERS = 4  # fewer clusters to try: their first splits are made here (a fork costs about one cluster's try)
 BRIGHTNESS_RATIO = 2.0  # two shades of one hue are two materials only when one is this much brighter
 MAX_SMOOTH_BORDER = 0.5  # in a view, a split's border links weigh at most this on average (mostly folded)
 SHARED_FACING = 0.3  # ... among points of both facing the same ways, at least this share of each
@@ -179,6 +181,20 @@ def _split_once(colors: np.ndarray, normals: np.ndarray | None, idx: np.ndarray,
     return np.flatnonzero(piece == minor)
 
 
+def _split_cluster(colors: np.ndarray, normals: np.ndarray | None, labels: np.ndarray, k: int, a: np.ndarray, b: np.ndarray,
+                   min_points: int, points: np.ndarray | None) -> np.ndarray | None:
+    """The points (indices into ``labels``) of cluster ``k`` to give a new label (:func:`_split_once`
+    over its internal links among ``a``, ``b``), or None (no split, or too small to hold two objects)."""
+    idx = np.flatnonzero(labels == k)
+    if len(idx) < 2 * min_points:
+        return None
+    pos = np.full(len(labels), -1, dtype=np.int64)
+    pos[idx] = np.arange(len(idx))
+    inside = (pos[a] >= 0) & (pos[b] >= 0)
+    new = _split_once(colors, normals, idx, pos[a[inside]], pos[b[inside]], min_points, points)
+    return None if new is None else idx[new]
+
+
 def _folded_border(points: np.ndarray, normals: np.ndarray, side: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
     """Whether the links (a, b) across the border of ``side`` fold inward (LCCP, see
     :func:`realsim.perception.contact_cut.concave_link_weights`) along most of it."""
@@ -199,20 +215,19 @@ def split_by_colour(colors: np.ndarray, labels: np.ndarray, a: np.ndarray, b: np
     ``normals``), a split is kept only where its border folds (:func:`_folded_border`)."""
     out = labels.copy()
     queue = sorted(np.unique(out[out >= 0]).tolist())
+    # a cluster's points are its own until it is taken from the queue: every first split is made
+    # up front, shared with a forked helper; only the pieces a split left are tried again in turn
+    initial = list(queue)
+    first = dict(zip(initial, fork_map(lambda i: _split_cluster(colors, normals, labels, initial[i], a, b, min_points, view_points),
+                                       len(initial), least=SHARED_CLUSTERS)))
     touched: set[int] = set()
     nxt = int(out.max(initial=-1)) + 1
     while queue:
         k = queue.pop()
-        idx = np.flatnonzero(out == k)
-        if len(idx) < 2 * min_points:
-            continue
-        pos = np.full(len(out), -1, dtype=np.int64)
-        pos[idx] = np.arange(len(idx))
-        inside = (pos[a] >= 0) & (pos[b] >= 0)
-        new = _split_once(colors, normals, idx, pos[a[inside]], pos[b[inside]], min_points, view_points)
+        new = first.pop(k) if k in first else _split_cluster(colors, normals, out, k, a, b, min_points, view_points)
         if new is None:
             continue
-        out[idx[new]] = nxt
+        out[new] = nxt
         touched.update((k, nxt))
         queue += [k, nxt]
         nxt += 1

@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import cKDTree
 
+from realsim.beside import Beside
 from realsim.geometry import inside_convex_polygon
 from realsim.perception.attached_parts import join_attached_parts
 from realsim.perception.backdrop_patch import continues_backdrop
@@ -346,6 +347,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     if fg.sum() < params.min_object_points:
         return SegmentResult(labels)
     organized = grid_shape is not None and grid_shape[0] * grid_shape[1] == n
+    measured = Beside(lambda: _measured_normals(points, grid_shape, params)) if organized else None  # read at the end, made beside
     grid: OccupancyGrid | None = None  # unorganized clouds fine enough: their occupancy, for visibility
     working = float("inf")
     if organized:
@@ -446,7 +448,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             labels = _renumbered(points, joined)
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
-        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params)
+        assert measured is not None
+        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params, measured.result())
         support_of, resting_on = support_relations(points, labels, support, height, planes, params)
         joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
                                      params.jump_distance, axis, grid_shape)
@@ -478,14 +481,18 @@ def _on_supports(points: np.ndarray, labels: np.ndarray, planes: list[SupportPla
     return out
 
 
+def _measured_normals(points: np.ndarray, grid_shape: tuple[int, int], params: SegmentParams) -> np.ndarray:
+    """Normals of every measured pixel of a camera view (:func:`grid_normals` over the finite points)."""
+    return grid_normals(points, np.isfinite(points).all(axis=1), grid_shape, params.normal_window, params.jump_distance)
+
+
 def _drop_backdrop_patches(points: np.ndarray, labels: np.ndarray, grid_shape: tuple[int, int], axis: np.ndarray,
-                           planes: list[SupportPlane], params: SegmentParams) -> np.ndarray:
+                           planes: list[SupportPlane], params: SegmentParams, normals: np.ndarray) -> np.ndarray:
     """A camera view's ``labels`` with the clusters that mostly continue into unlabelled pixels
-    (:func:`continues_backdrop`, over normals of every measured pixel) made 0 and the rest renumbered.
-    Pixels on a support's top (within ``min_height`` of it, inside its polygon) are no backdrop: an
-    object's own foot lies there."""
+    (:func:`continues_backdrop`, over the ``normals`` of every measured pixel, :func:`_measured_normals`)
+    made 0 and the rest renumbered. Pixels on a support's top (within ``min_height`` of it, inside its
+    polygon) are no backdrop: an object's own foot lies there."""
     valid = np.isfinite(points).all(axis=1)
-    normals = grid_normals(points, valid, grid_shape, params.normal_window, params.jump_distance)
     a, b = grid_links(valid, grid_shape)
     behind = labels.copy()
     behind[_on_supports(points, labels, planes, params)] = -1

@@ -13,6 +13,7 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from realsim.perception.segment_params import SegmentParams
+from realsim.rowsplit import split_rows
 
 __all__ = ["cloud_supervoxels", "grid_links", "grid_normals", "grid_supervoxels", "knn_links", "link_components", "knn_normals", "smallest_eigenvectors"]
 
@@ -125,18 +126,23 @@ def _slic(features: np.ndarray, candidates: np.ndarray, labels: np.ndarray, iter
     features = features.astype(np.float32)
     n_seeds = int(candidates.max()) + 1
     cand = np.where(candidates >= 0, candidates, 0)
-    rows = np.arange(len(cand))
     for _ in range(iterations):
         count = np.bincount(labels, minlength=n_seeds).astype(np.float32)
         centres = np.stack([np.bincount(labels, features[:, f], minlength=n_seeds) for f in range(features.shape[1])], axis=1)
         centres = (centres / np.maximum(count, 1.0)[:, None]).astype(np.float32)
-        dist = np.empty(cand.shape, dtype=np.float32)
-        for c in range(cand.shape[1]):
-            diff = features - centres[cand[:, c]]
-            dist[:, c] = np.einsum("ij,ij->i", diff, diff)
-        dist[(candidates < 0) | (count[cand] == 0)] = np.inf
-        labels = cand[rows, dist.argmin(axis=1)]
+        labels = split_rows(lambda rows: _nearest_seeds(features[rows], candidates[rows], cand[rows], centres, count), len(cand))
     return labels
+
+
+def _nearest_seeds(features: np.ndarray, candidates: np.ndarray, cand: np.ndarray, centres: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """Per point (row) the nearest of its candidate seeds that hold points (one SLIC assignment);
+    ``cand`` is ``candidates`` with -1 read as seed 0 (masked out)."""
+    dist = np.empty(cand.shape, dtype=np.float32)
+    for c in range(cand.shape[1]):
+        diff = features - centres[cand[:, c]]
+        dist[:, c] = np.einsum("ij,ij->i", diff, diff)
+    dist[(candidates < 0) | (count[cand] == 0)] = np.inf
+    return np.asarray(cand[np.arange(len(cand)), dist.argmin(axis=1)])
 
 
 def _slic_features(points: np.ndarray, colors: np.ndarray | None, normals: np.ndarray, params: SegmentParams) -> np.ndarray:
