@@ -9,7 +9,7 @@ from test_planner_rules import call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
-from realsim.planner.clock import bearing_gap, clock
+from realsim.planner.clock import bearing_gap, clock, nautical
 from realsim.planner.types import ObjectInfo
 
 
@@ -48,3 +48,17 @@ def test_two_things_near_the_same_hour_are_not_told_apart() -> None:
              ObjectInfo("obj2_cube", "cube", (), (0.5, -0.08, 0.03), (0.05, 0.05, 0.05), "green")]  # 11 and 9 deg either side
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("pick up the cube at twelve o'clock", twins)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("shove the banana two centimetres to port", "push the banana 2 cm to the left"),
+    ("haul the strawberry round to starboard o' the bowl", "put the strawberry to the right of the bowl"),
+    ("drag the banana fore 3 cm", "push the banana forward 3 cm"),
+    ("nudge the strawberry 2 cm aft", "push the strawberry back 2 cm"),
+])
+def test_a_ships_sides_and_ways_are_the_robots(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
+
+
+def test_a_word_holding_port_is_no_side() -> None:
+    assert nautical("the airport is far") == "the airport is far"

@@ -124,3 +124,10 @@ def test_a_thing_named_by_its_nearness_before_a_command_is_a_topic_not_a_push() 
     two = [o for o in CLUTTER if o.name in ("obj6_bowl", "obj7_banana")]
     assert call_lines("the thing closer to you, put it in front of the other one", two) == call_lines(
         "put the bowl in front of the banana", two)
+
+
+def test_talk_between_commas_is_skipped_when_the_sentence_does_not_read() -> None:
+    assert call_lines("Gosh, this is probably silly to ask, but could you nudge the banana 2 cm to the left? Totally fine if not.") == call_lines(
+        "push the banana 2 cm to the left")
+    with pytest.raises(InputError):  # a phrase asking for what cannot be done is still never skipped
+        RulePlanner().plan("Gosh, sorry to ask, but could you pour the strawberry into the bowl?", CLUTTER)

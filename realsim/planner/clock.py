@@ -1,5 +1,6 @@
 """Clock-face directions, as pilots and sailors give them: 12 o'clock is straight ahead of the
-robot, 3 o'clock its right, 6 o'clock toward it, 9 o'clock its left.
+robot, 3 o'clock its right, 6 o'clock toward it, 9 o'clock its left; and a ship's port,
+starboard, fore and aft (:func:`nautical`).
 
 "the soup can at your ten o'clock" names the thing whose bearing from the robot's base is nearest
 ten o'clock; "slide it two inches toward your nine" is a push to the left; "the bowl's six o'clock
@@ -12,7 +13,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["AT_CLOCK", "bearing_gap", "clock"]
+__all__ = ["AT_CLOCK", "bearing_gap", "clock", "nautical"]
 
 _HOURS = {w: i + 1 for i, w in enumerate("one two three four five six seven eight nine ten eleven twelve".split())}
 _HOUR = r"(one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|1[0-2]|[1-9])"
@@ -53,6 +54,18 @@ def clock(text: str) -> str:
     text = re.sub(rf"(?:^|\s+)(?:(?:that is|which is|sitting|over|out|off|past|around|round|about|roughly|at|on|near)\s+)*(?:your |my )?{_HOUR}{_OCLOCK}{_ISH}",
                   lambda m: f" at clock {_hour(m.group(1))}", text)
     return re.sub(rf"\s+(?:(?:over|out|off|around|round|about|roughly|at|on)\s+)+your {_HOUR}\b", lambda m: f" at clock {_hour(m.group(1))}", text)
+
+
+_SHIP = {"port": "left", "larboard": "left", "starboard": "right"}
+
+
+def nautical(text: str) -> str:
+    """A sailor's sides and ways in the robot's frame: port is its left, starboard its right, fore
+    ahead (away from it), aft and astern back toward it ("to port o' the bowl", "drag it fore")."""
+    text = re.sub(r"\b(?:to |toward |towards |over to )?(?:the )?(port|larboard|starboard)(?: side)?(?: (?:o'?|of) (?=the |th' |yon |that ))?",
+                  lambda m: f"to the {_SHIP[m.group(1)]}" + (" of " if re.search(r"(?:o'?|of) $", m.group(0)) else ""), text)
+    text = re.sub(r"\b(?:to )?(?:the )?(?:fore|forrard)\b", "forward", text)
+    return re.sub(r"\b(?:to )?(?:the )?(?:aft|astern)\b", "back", text)
 
 
 def bearing_gap(forward: float, left: float, hour: int) -> float:

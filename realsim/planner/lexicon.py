@@ -13,11 +13,11 @@ TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", 
         "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck")
+       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck", "haul", "lug")
 PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
-PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|carefully|gently|again|too))*"
+PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|round|around|carefully|gently|again|too))*"
 
 # "do that again", "repeat it", "once more": the last step again (a clause of its own)
 AGAIN = re.compile(r"(?:do (?:that|it|this|so|the same)(?: thing)? (?:again|once more|one more time)|repeat(?: that| it| this)?(?: again)?"

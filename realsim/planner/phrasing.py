@@ -37,6 +37,8 @@ FILLERS = (
     r"when you (?:get|have) a (?:chance|moment|sec|second|minute)", r"(?:are|would|will) you (?:be )?able to",
     r"if that works", r"many thanks", r"thanks a lot", r"there(?: s)? a good (?:lad|boy|girl|chap|fellow|one|robot|bot|machine)",
     r"good (?:lad|boy|girl|robot)", r"be a (?:love|dear|darling|sweetheart|pal|mate|star|doll|champ) and", r"for a (?:sec|second|moment|minute|bit)",
+    r"(?:(?:that s|thats|that is|it s|its|it is) )?(?:(?:totally|completely|perfectly|absolutely) )?(?:fine|ok|okay|no worries|no problem|all good|no bother) if (?:not|you can ?t|you cannot)",
+    r"only if it (?:s|is) no (?:trouble|bother)(?: at all)?",
     # please, thanks and fillers in the languages people mix in: "por favor", "bitte", "s'il te plait", "jaldi se"
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
@@ -78,7 +80,7 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
-    text = clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text)))
+    text = clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text))))
     text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)

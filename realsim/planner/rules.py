@@ -33,11 +33,11 @@ from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
 from realsim.planner.reference import Context
 from realsim.planner.refine import refine, refines
-from realsim.planner.sentences import is_question, is_request, split_sentences
+from realsim.planner.sentences import is_question, is_request, split_pieces, split_sentences
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
-from realsim.planner.vocab import GENERIC, VAGUE_DISTANCES, name_words, norm, singular
+from realsim.planner.vocab import COLOR_WORDS, GENERIC, VAGUE_DISTANCES, name_words, norm, singular
 
 HELP = (
     "the offline planner understands: pick up X; put X in/on/next to/left of/behind/between Y; put X on the table; "
@@ -67,10 +67,11 @@ def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 
     try:
         return _finish(*_read(command, Parser(objects, robot_yaw, robot_base)))
     except InputError:
-        read = _read_by_sentence(command, Parser(objects, robot_yaw, robot_base))
-        if read is None:
-            raise
-    return _finish(*read)
+        for units, pieces in ((split_sentences(command), False), (split_pieces(command), True)):  # sentences, then phrases between commas
+            read = _read_by_unit(units, Parser(objects, robot_yaw, robot_base), pieces) if len(units) > 1 else None
+            if read is not None:
+                return _finish(*read)
+        raise
 
 
 def _read(command: str, p: Parser) -> tuple[list[Step], dict[str, str]]:
@@ -112,14 +113,12 @@ def _read(command: str, p: Parser) -> tuple[list[Step], dict[str, str]]:
     return steps, kept
 
 
-def _read_by_sentence(command: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
-    """The steps of a message read one sentence at a time, when it does not read as a whole:
-    a sentence that is talk ("we're back!", "for the LAST time:", "Which one is the mug? Right.")
-    is skipped, or names what "it" means next; a request that cannot be done is never skipped
-    (None: the whole message is refused)."""
-    sentences = split_sentences(command)
-    if len(sentences) < 2:
-        return None
+def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tuple[list[Step], dict[str, str]] | None:
+    """The steps of a message read one sentence (or phrase) at a time, when it does not read as a
+    whole: a sentence that is talk ("we're back!", "for the LAST time:", "Which one is the mug?
+    Right.") is skipped, or names what "it" means next; a request that cannot be done is never
+    skipped (None: the whole message is refused). A phrase (``pieces``) is skipped only when it
+    names no thing of the scene and sets no condition ("gosh", "totally fine if not" is one)."""
     steps: list[Step] = []
     kept: dict[str, str] = {}
     for sentence in sentences:
@@ -129,10 +128,12 @@ def _read_by_sentence(command: str, p: Parser) -> tuple[list[Step], dict[str, st
         except InputError:
             p.moved, p.taken = moved, taken  # what a failed sentence began is undone
             p.ctx.set(before)
+            if not _said(sentence):  # "Totally fine if not.": polite words only
+                continue
             placed = _placed_there(sentence, p)  # "Green cube. On the plate.": the thing named goes there
             if placed is not None:
                 more, also_kept = placed
-            elif is_request(sentence, p.resolver.scene_words):
+            elif is_request(sentence, p.resolver.scene_words) or (pieces and not _idle(sentence, p)):
                 return None
             else:
                 p.ctx.set(mentioned(sentence, p) or before)
@@ -140,6 +141,24 @@ def _read_by_sentence(command: str, p: Parser) -> tuple[list[Step], dict[str, st
         steps += [s for s in more if not (steps and _same(s, steps[-1]))]  # "On the plate. ON it.": said again
         kept |= also_kept
     return (steps, kept) if steps else None
+
+
+def _said(sentence: str) -> str:
+    """What is left of ``sentence`` once polite and filler words are gone ("" for "thanks so much!")."""
+    try:
+        return clean(sentence).strip(" .,;")
+    except InputError:
+        return sentence
+
+
+def _idle(piece: str, p: Parser) -> bool:
+    """Whether a phrase is idle talk: no condition, choice or negation, and no thing of the scene
+    named except as the one thing it is about ("la banana")."""
+    if re.search(r"\b(?:if|unless|when|whenever|otherwise|instead|not|no|dont|don't|never|out of|among|of all|except|but)\b", piece.lower()):
+        return False
+    words = re.sub(r"[^a-z0-9 ]", " ", piece.lower()).split()
+    said = ({w for w in p.resolver.scene_words if w not in GENERIC} | set(COLOR_WORDS)) - {"thing", "object"}
+    return named_alone(piece, p) or not any(w.isdigit() or singular(w) in said for w in words)
 
 
 def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:

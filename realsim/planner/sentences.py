@@ -16,7 +16,7 @@ from realsim.planner.lexicon import VERB_START
 from realsim.planner.phrasing import QUESTION, clean
 from realsim.planner.vocab import singular
 
-__all__ = ["is_question", "is_request", "split_sentences"]
+__all__ = ["is_question", "is_request", "split_pieces", "split_sentences"]
 
 _END = re.compile(r"(?<=[.!?;:…])\s+|(?<=\.\.\.)(?=\S)")
 # first words that never begin a request: articles, pronouns, prepositions, question words, replies
@@ -31,6 +31,12 @@ def split_sentences(command: str) -> list[str]:
     """The sentences of ``command`` in lower case (at full stops, question and exclamation marks,
     semicolons, colons, ellipses and code comments; a decimal point is no end)."""
     return [s.strip() for s in _END.split(as_words(command.strip().lower())) if s.strip(" .!?;:…")]
+
+
+def split_pieces(command: str) -> list[str]:
+    """The phrases of ``command``: its sentences cut again at commas, dashes and a clause-opening
+    "but" ("Gosh, this is a silly thing to ask, but could you nudge the brick left?")."""
+    return [p.strip() for s in split_sentences(command) for p in re.split(r"\s*(?:,|\s[-–—]+\s|\bbut\b)\s*", s) if p.strip(" .!?;:,")]
 
 
 def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
