@@ -1,5 +1,6 @@
-"""Support heights are read where each support was seen: a floor whose fit leans a little, seen
-metres from the capture's origin, still gives every table its height above the floor there."""
+"""Supports as a room capture shows them: a floor whose fit leans a little, seen metres from the
+capture's origin, still gives every table its height above the floor there; a table top's
+underside, sampled by a capture from around, joins no lower table beside it."""
 
 from __future__ import annotations
 
@@ -44,3 +45,26 @@ def test_a_floor_leaning_far_from_the_origin_gives_the_table_its_height_above_it
     tables = [p for p in scene.planes if p.kind != "floor"]
     assert floor_plane.observed and len(tables) == 1
     assert abs(tables[0].height - floor_plane.height - 0.75) < 0.002  # under the origin: 9 mm off
+
+
+def _write(tmp_path: Path, points: np.ndarray) -> Path:
+    path = tmp_path / "room.ply"
+    o3d.io.write_point_cloud(str(path), o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points)))
+    return path
+
+
+def test_a_table_underside_level_with_a_lower_table_beside_it_is_no_support(tmp_path: Path) -> None:
+    """A 4 cm thick table top at 0.75 m, its underside at 0.71 m; a small table beside it with its
+    top at 0.71 m, 40 cm away. The underside joined to the small table spread it under the big
+    one, whose top was then taken for an object standing on it (rooms:414's 200k cloud)."""
+    rng = np.random.default_rng(1)
+    top = _top(rng, (-0.6, 0.6), (-0.4, 0.4), 0.006) + [0.0, 0.0, 0.75]
+    under = _top(rng, (-0.6, 0.6), (-0.4, 0.4), 0.015) + [0.0, 0.0, 0.71]
+    side = _top(rng, (1.0, 1.5), (-0.25, 0.25), 0.006) + [0.0, 0.0, 0.71]
+    floor = _top(rng, (-1.5, 2.0), (-1.5, 1.5), 0.03)
+    points = np.vstack([top, under, side, floor])
+    points = points + rng.normal(0.0, 0.0005, points.shape)
+    scene = detect_planes(load_capture(_write(tmp_path, points), LoadParams(units="m", up="+z")))
+    tables = sorted((p for p in scene.planes if p.kind != "floor"), key=lambda p: p.height)
+    assert [round(p.height, 2) for p in tables] == [0.71, 0.75]
+    assert max(tables[0].rect_size) < 0.6  # the small table alone, not spread under the big one

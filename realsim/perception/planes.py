@@ -288,6 +288,8 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         for region in _regions(inliers[:, :2], params.region_cell, params.min_support_area):
             regions.append((float(np.median(inliers[region, 2])), inliers[region]))
     regions += _unproposed_patches(pts, regions, params)
+    # an underside (a table top's, seen by a capture from around) is no support: dropped before it joins a top near it
+    regions = [r for r in regions if _covered_from_above(pts, r[0], r[1], params, scene.seed) <= params.max_covered_fraction]
     supports = []
     for group in _merge_regions(regions, params):
         band = _support_points(pts, group, params)
