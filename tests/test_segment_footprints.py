@@ -110,3 +110,26 @@ def test_two_halves_of_a_box_ring_join_two_touching_cans_stay() -> None:
                                   0.006, height=points[:, 2])
     assert len(np.unique(out[labels <= 1])) == 1
     assert np.array_equal(out[labels >= 2], labels[labels >= 2])
+
+
+def test_two_pieces_resting_on_one_box_in_one_place_join_a_can_beside_them_stays() -> None:
+    """A pitcher on a lying box, cut at its handle's crease into its body and a strip of wall with
+    the handle, both resting on the box (they cannot stand in the same place on it either); a can
+    resting on the box beside them and the box itself keep their own labels."""
+    from realsim.perception.segment import _join_footprints_on_objects
+
+    box = _box((-0.1, -0.08, 0.0), (0.2, 0.08, 0.06), 2000, 4)
+    body = _ring(0.05, 0.15, (0.0, 0.0)) + [0.0, 0.0, 0.06]
+    strip = body[body[:, 0] > 0.045]  # the wall's handle side, one piece of the same footprint
+    body = body[body[:, 0] <= 0.045]
+    can = _ring(0.03, 0.1, (0.14, 0.0)) + [0.0, 0.0, 0.06]
+    clusters = [box, body, strip, can]
+    points = np.concatenate(clusters)
+    labels = np.concatenate([np.full(len(c), k + 1) for k, c in enumerate(clusters)])
+    height = points[:, 2]
+    out = _join_footprints_on_objects(points, labels, {1: None, 2: 1, 3: 1, 4: 1}, height, 0.006)
+    assert np.all(out[labels == 3] == out[labels == 2][0])  # the handle strip is the pitcher's
+    for k in (1, 2, 4):
+        assert np.all(out[labels == k] == k)
+    # resting on different objects (or on the support), nothing joins
+    assert np.array_equal(_join_footprints_on_objects(points, labels, {1: None, 2: 1, 3: None, 4: 1}, height, 0.006), labels)

@@ -288,6 +288,8 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         for region in _regions(inliers[:, :2], params.region_cell, params.min_support_area):
             regions.append((float(np.median(inliers[region, 2])), inliers[region]))
     regions += _unproposed_patches(pts, regions, params)
+    # an underside (a table top's, seen by a capture from around) is no support: dropped before it joins a top near it
+    regions = [r for r in regions if _covered_from_above(pts, r[0], r[1], params, scene.seed) <= params.max_covered_fraction]
     supports = []
     for group in _merge_regions(regions, params):
         band = _support_points(pts, group, params)
@@ -296,12 +298,11 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
         n, dd, mask = refine_plane(band, np.array([0.0, 0.0, 1.0]), -float(np.median(band[:, 2])), params.refine_threshold)
         if n[2] < cos_support:  # a sliver (a table edge in a sparse capture) refits to a tilted plane
             continue
-        centre = band[mask].mean(axis=0)  # the plane's height where the support is, not at the origin
         # a cloud's points lie within its resolution (a camera's depth noise grows with distance instead)
         level = n if viewpoint is not None else level_unless_resolved(band[mask], n, up, resolution)
         if level is not n:  # gravity (the levelled scene's up), through the points' centroid
-            n, dd = level, -float(centre[2])
-        supports.append((float(-(dd + n[0] * centre[0] + n[1] * centre[1]) / n[2]), band[mask], n))
+            n, dd = level, -float(band[mask].mean(axis=0)[2])
+        supports.append((height_where_seen(band[mask], n, dd), band[mask], n))
     supports = [sup for sup in supports if _covered_from_above(pts, sup[0], sup[1], params, scene.seed) <= params.max_covered_fraction]
     if not supports:
         raise InputError(f"{scene.capture.environment_file}: no horizontal support surface found in the scan; "
@@ -315,6 +316,16 @@ def detect_planes(scene: Scene, params: PlaneParams = PlaneParams()) -> Scene:
     scene.planes = planes
     _apply_rigid(scene, rotation, np.array([offset[0], offset[1], shift]))
     return scene
+
+
+def height_where_seen(points: np.ndarray, normal: np.ndarray, d: float) -> float:
+    """The height of the plane ``normal . x + d = 0`` at the centroid of the ``points`` fitted to it.
+
+    A support is stored level, so one height stands for it; a fit's residual tilt (a far floor
+    seen through a camera's growing noise leans 0.1 deg) read 2-3 m away, under the camera at the
+    origin, is off by millimetres, while at its own points it is where the surface was seen."""
+    centre = points.mean(axis=0)
+    return float(-(d + normal[0] * centre[0] + normal[1] * centre[1]) / normal[2])
 
 
 def _width(xy: np.ndarray) -> float:
@@ -469,8 +480,8 @@ def _place_floor(scene: Scene, supports: list[Support], params: PlaneParams) -> 
         # The floor is one surface however the furniture splits it up in the view.
         floor_parts = [s for s in supports if s[0] - lowest < params.merge_height_tol]
         floor_pts = np.vstack([s[1] for s in floor_parts])
-        n, dd, _ = refine_plane(floor_pts, np.array([0.0, 0.0, 1.0]), -float(np.median(floor_pts[:, 2])), params.refine_threshold)
-        supports = [(float(-dd / n[2]), floor_pts, n)] + supports[len(floor_parts):]
+        n, dd, mask = refine_plane(floor_pts, np.array([0.0, 0.0, 1.0]), -float(np.median(floor_pts[:, 2])), params.refine_threshold)
+        supports = [(height_where_seen(floor_pts[mask], n, dd), floor_pts, n)] + supports[len(floor_parts):]
         lowest = supports[0][0]
         shift = -lowest
     else:

@@ -447,6 +447,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
         if not np.array_equal(joined, labels):
             labels = _renumbered(points, joined)
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+        joined = _join_footprints_on_objects(points, labels, resting_on, height, working)
+        if not np.array_equal(joined, labels):  # two clusters resting on one object in one place: one object
+            labels = _renumbered(points, joined)
+            support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
         assert measured is not None
         labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params, measured.result())
@@ -571,6 +575,25 @@ def _join_footprints(points: np.ndarray, labels: np.ndarray, support: np.ndarray
     for k in np.unique(labels[labels >= 0]):
         standing[k] = base_height(height[labels == k], params.base_gap) < params.stack_min_height
     return merge_shared_footprints(points[:, :2], labels, support, standing, cell, height=height)
+
+
+def _join_footprints_on_objects(points: np.ndarray, labels: np.ndarray, resting_on: dict[int, int | None],
+                                height: np.ndarray, cell: float) -> np.ndarray:
+    """:func:`merge_shared_footprints` (on a grid of ``cell``, m) of the objects (labels >= 1) resting
+    on one object, that object their home: two things on a box cannot stand in the same place
+    either (a pitcher's handle, cut from it at a crease, stands on the box the pitcher stands on)."""
+    home = np.full(len(labels), -1, dtype=np.int64)
+    for o, under in resting_on.items():
+        if under is not None:
+            home[labels == o] = under
+    homes = list(resting_on.values())
+    if not any(u is not None and homes.count(u) > 1 for u in homes):
+        return labels
+    standing = np.zeros(int(labels.max()) + 1, dtype=bool)
+    standing[[o for o, under in resting_on.items() if under is not None]] = True
+    on = home >= 0
+    merged = merge_shared_footprints(points[:, :2], np.where(on, labels, -1), home, standing, cell, height=height)
+    return np.where(on, merged, labels)
 
 
 def _ordered(points: np.ndarray, raw: np.ndarray) -> np.ndarray:
