@@ -353,7 +353,12 @@ def _covered_from_above(pts: np.ndarray, height: float, support_pts: np.ndarray,
         return 0.0
     rng = np.random.default_rng(seed)
     sample = support_pts[rng.choice(len(support_pts), min(len(support_pts), 3000), replace=False)]
-    dist, _ = cKDTree(above[:, :2]).query(sample[:, :2], distance_upper_bound=max(0.01, params.voxel_size))
+    reach = max(0.01, params.voxel_size)
+    lo_xy, hi_xy = sample[:, :2].min(axis=0) - reach, sample[:, :2].max(axis=0) + reach
+    above = above[np.all((above[:, :2] >= lo_xy) & (above[:, :2] <= hi_xy), axis=1)]  # only what can lie within reach
+    if len(above) == 0:
+        return 0.0
+    dist, _ = cKDTree(above[:, :2]).query(sample[:, :2], distance_upper_bound=reach)
     return float(np.isfinite(dist).mean())
 
 
