@@ -131,3 +131,13 @@ def test_talk_between_commas_is_skipped_when_the_sentence_does_not_read() -> Non
         "push the banana 2 cm to the left")
     with pytest.raises(InputError):  # a phrase asking for what cannot be done is still never skipped
         RulePlanner().plan("Gosh, sorry to ask, but could you pour the strawberry into the bowl?", CLUTTER)
+
+
+@pytest.mark.parametrize(("message", "plain"), [
+    ("Gosh, this is a silly thing to ask, but would it be at all possible to nudge the banana 2 cm to the left? Totally fine if not.",
+     "push the banana 2 cm to the left"),
+    ("Sorry, sorry, last thing: would it be terribly inconvenient to lift the strawberry?", "lift the strawberry"),
+    ("I hate to be a pain, honestly I do, but I was hoping you might put the strawberry in the bowl.", "put the strawberry in the bowl"),
+])
+def test_the_request_a_hedge_leads_up_to(message: str, plain: str) -> None:
+    assert call_lines(message) == call_lines(plain)

@@ -130,7 +130,7 @@ def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tupl
             p.ctx.set(before)
             if not _said(sentence):  # "Totally fine if not.": polite words only
                 continue
-            placed = _placed_there(sentence, p)  # "Green cube. On the plate.": the thing named goes there
+            placed = _placed_there(sentence, p) or _asked_within(sentence, p)  # "Green cube. On the plate."; "I hate to ask, but could you ..."
             if placed is not None:
                 more, also_kept = placed
             elif is_request(sentence, p.resolver.scene_words) or (pieces and not _idle(sentence, p)):
@@ -159,6 +159,20 @@ def _idle(piece: str, p: Parser) -> bool:
     words = re.sub(r"[^a-z0-9 ]", " ", piece.lower()).split()
     said = ({w for w in p.resolver.scene_words if w not in GENERIC} | set(COLOR_WORDS)) - {"thing", "object"}
     return named_alone(piece, p) or not any(w.isdigit() or singular(w) in said for w in words)
+
+
+def _asked_within(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
+    """The request a hedge leads up to: what follows "to", "you", "could", "please" ... when it
+    begins with a verb the planner knows ("I was wondering, if it's no bother, whether you might
+    nudge the brick 2 cm left")."""
+    said = _said(sentence)
+    m = re.search(rf"\b(?:to|you|could|would|might|can|will|please|kindly|just)\s+(?={VERB_START.pattern})", said)
+    if m is None:
+        return None
+    try:
+        return _read(said[m.end():], p)
+    except InputError:
+        return None
 
 
 def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
