@@ -141,3 +141,13 @@ def test_talk_between_commas_is_skipped_when_the_sentence_does_not_read() -> Non
 ])
 def test_the_request_a_hedge_leads_up_to(message: str, plain: str) -> None:
     assert call_lines(message) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("The strawberry and the banana have quarrelled. Let them trade places.", "swap the strawberry and the banana"),
+    ("have the strawberry go in the bowl", "put the strawberry in the bowl"),
+    ("get the banana to sit behind the bowl", "put the banana behind the bowl"),
+    ("lift the strawberry, then let the arm return to its resting place", "lift the strawberry, then go home"),
+])
+def test_what_people_have_a_thing_do_is_the_request(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

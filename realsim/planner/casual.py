@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["described", "light_verb", "terse"]
+__all__ = ["causative", "described", "light_verb", "terse"]
 
 _NP = r"(?:the|that|this|these|those|a|an|my|your|it|them|both|all)\b(?:(?!\b(?:and|then|up|down|in|into|on|onto)\b)[^,.;])*?"
 _AS_PUSH = {"tap": "nudge", "poke": "nudge"}
@@ -65,3 +65,20 @@ def described(text: str) -> str:
     for use, kind in _USES:
         text = re.sub(rf"\b{_THING}(?: with (?:a|the) handle)? (?:that |which )?(?:you|we|i|people|one) (?:can |could |would )?(?:{use})\b", kind, text)
     return text
+
+
+_WHO = r"((?:the|that|this|those|these|both|all)(?: (?!(?:across|to|of|in|on|at|from|with|over|into|by|for|through|past)\b)[a-z-]+){1,5}?|them|it|'?em)"
+_CAUSE = r"\b(?:let|make|have|get|bid|tell|help)"
+
+
+def causative(text: str) -> str:
+    """What people have something do, as the request ("let them trade places" -> "swap them", "have
+    the cube go on the plate" -> "put the cube on the plate", "let the arm return to its resting
+    place" -> "go home")."""
+    text = re.sub(rf"{_CAUSE} (?:the arm|the robot|yourself|it) (?:to )?(?:return|go|head|come)(?: back)? (?:home|to (?:its|your|the) "
+                  r"(?:resting|rest|home|starting|start) (?:place|position|pose|spot))\b", "go home", text)
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions)\b",
+                  lambda m: f"swap {m.group(1).lstrip(chr(39))}", text)
+    return re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:go|move|sit|stand|end up|rest|slide|hide|stay) (?=(?:in|into|on|onto|next to|beside|behind|in front of|"
+                  r"to the left of|to the right of|left of|right of|between|on top of|down on)\b)", lambda m: f"put {m.group(1).lstrip(chr(39))} ", text)
+

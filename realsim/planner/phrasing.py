@@ -81,7 +81,7 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
-    text = clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text))))
+    text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text)))))
     text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
