@@ -53,7 +53,7 @@ def _split_args(args: str) -> list[str]:
     """Arguments at top-level commas (a list's commas stay inside it)."""
     out, depth, start = [], 0, 0
     for i, ch in enumerate(args):
-        depth += ch in "[" or -(ch in "]")
+        depth += (ch == "[") - (ch == "]")
         if ch == "," and depth == 0:
             out.append(args[start:i])
             start = i + 1

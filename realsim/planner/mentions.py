@@ -9,8 +9,8 @@ import re
 
 from realsim.errors import InputError
 from realsim.planner.lexicon import VERB_START
-from realsim.planner.phrasing import clean
 from realsim.planner.reference import DETERMINERS
+from realsim.planner.sentences import cleaned
 from realsim.planner.steps import Parser
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import COLOR_WORDS, GENERIC, singular
@@ -31,10 +31,7 @@ def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
     names exactly one object (the longest from its start: "the left soda can", not "soda can")."""
     if asked := _asked_which(text, p):
         return asked
-    try:
-        words = re.sub(r"[.,;]", " ", clean(text)).split()
-    except InputError:
-        return []
+    words = re.sub(r"[.,;]", " ", cleaned(text)).split()
     nouns = _nouns(p)
     found: list[ObjectInfo] = []
     i = 0
@@ -79,10 +76,7 @@ def _asked_which(text: str, p: Parser) -> list[ObjectInfo]:
 def named_alone(text: str, p: Parser) -> bool:
     """Whether ``text`` is talk that names things and asks nothing of them; those things are then
     what "it" or "them" means. A request ("put the teapot away") is never talk."""
-    try:
-        if VERB_START.match(clean(text)):
-            return False
-    except InputError:
+    if VERB_START.match(cleaned(text)):
         return False
     found = mentioned(text, p)
     if found:

@@ -12,7 +12,7 @@ import unicodedata
 from realsim.planner import casual, clarify, clock, code_calls, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
-from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL
+from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL, VAGUE_DISTANCES
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
@@ -47,7 +47,8 @@ FILLERS = (
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # when the speaker wants it done is not part of the command: "when I come back I'd like ...", "by the end of this, ..."
-_VAGUE = r"(?:a (?:little|tiny|wee) bit|a (?:little|bit|touch|tad|smidge|smidgen|hair|fraction|skosh|titch)|slightly|a little)(?: more)?"
+_VAGUE_WORDS = sorted((w for w in VAGUE_DISTANCES if not re.search(r"cm|centim", w)), key=len, reverse=True)  # "a touch", "a smidge"
+_VAGUE = rf"(?:{'|'.join(map(re.escape, _VAGUE_WORDS))})(?: more)?"
 _PRECISE = (r"(?:a couple of|a few|an?|one|two|three|four|five|six|seven|eight|nine|ten|\d+(?:\.\d+)?)\s*"
             r"(?:cm|mm|inch(?:es)?|centimet\w*|millimet\w*)")
 _TIME_FRAME = re.compile(r"^\s*(?:(?:when|once|by the time|before) (?:i|you|we) (?:[a-z']+ ){0,3}?(?:back|home|here|in|out|return|returns|done|finished)"

@@ -27,13 +27,13 @@ from realsim.planner.fit import check_fits, held_in
 from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START, relation_start
 from realsim.planner.mentions import mentioned, named_alone
-from realsim.planner.phrasing import avoided, clean, rephrase, split_command
+from realsim.planner.phrasing import avoided, rephrase, split_command
 from realsim.planner.program import Call, Program
 from realsim.planner.push_clause import TOWARD, push_clause, push_relative
 from realsim.planner.pushes import beside_measure, distance, is_push
 from realsim.planner.reference import Context
 from realsim.planner.refine import refine, refines
-from realsim.planner.sentences import is_question, is_request, split_pieces, split_sentences
+from realsim.planner.sentences import cleaned, is_question, is_request, split_pieces, split_sentences
 from realsim.planner.steps import EACH_OTHER, SWAP, Parser, Step, each_other, objects_named, other_side, repeat, swap
 from realsim.planner.topic import TOPIC, compared
 from realsim.planner.types import ObjectInfo, Plan
@@ -128,7 +128,7 @@ def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tupl
         except InputError:
             p.moved, p.taken = moved, taken  # what a failed sentence began is undone
             p.ctx.set(before)
-            if not _said(sentence):  # "Totally fine if not.": polite words only
+            if not cleaned(sentence):  # "Totally fine if not.": polite words only
                 continue
             placed = _placed_there(sentence, p) or _asked_within(sentence, p)  # "Green cube. On the plate."; "I hate to ask, but could you ..."
             if placed is not None:
@@ -143,21 +143,13 @@ def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tupl
     return (steps, kept) if steps else None
 
 
-def _said(sentence: str) -> str:
-    """What is left of ``sentence`` once polite and filler words are gone ("" for "thanks so much!")."""
-    try:
-        return clean(sentence).strip(" .,;")
-    except InputError:
-        return sentence
-
-
 def _idle(piece: str, p: Parser) -> bool:
     """Whether a phrase is idle talk: no condition, choice or negation, and no thing of the scene
     named except as the one thing it is about ("la banana")."""
     if re.search(r"\b(?:if|unless|when|whenever|otherwise|instead|not|no|dont|don't|never|out of|among|of all|except|but)\b", piece.lower()):
         return False
     words = re.sub(r"[^a-z0-9 ]", " ", piece.lower()).split()
-    said = ({w for w in p.resolver.scene_words if w not in GENERIC} | set(COLOR_WORDS)) - {"thing", "object"}
+    said = {w for w in p.resolver.scene_words if w not in GENERIC} | set(COLOR_WORDS)
     return named_alone(piece, p) or not any(w.isdigit() or singular(w) in said for w in words)
 
 
@@ -165,7 +157,7 @@ def _asked_within(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]]
     """The request a hedge leads up to: what follows "to", "you", "could", "please" ... when it
     begins with a verb the planner knows ("I was wondering, if it's no bother, whether you might
     nudge the brick 2 cm left")."""
-    said = _said(sentence)
+    said = cleaned(sentence)
     m = re.search(rf"\b(?:to|you|could|would|might|can|will|please|kindly|just)\s+(?={VERB_START.pattern})", said)
     if m is None:
         return None
@@ -177,10 +169,7 @@ def _asked_within(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]]
 
 def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
     """A sentence that is only a place ("On the plate.") after a thing was named: that thing put there."""
-    try:
-        place = clean(sentence).strip(" .")
-    except InputError:
-        return None
+    place = cleaned(sentence)
     if not p.ctx.last or not relation_start(place):
         return None
     try:

@@ -16,7 +16,7 @@ from realsim.planner.lexicon import VERB_START
 from realsim.planner.phrasing import QUESTION, clean
 from realsim.planner.vocab import singular
 
-__all__ = ["is_question", "is_request", "split_pieces", "split_sentences"]
+__all__ = ["cleaned", "is_question", "is_request", "split_pieces", "split_sentences"]
 
 _END = re.compile(r"(?<=[.!?;:…])\s+|(?<=\.\.\.)(?=\S)")
 # first words that never begin a request: articles, pronouns, prepositions, question words, replies
@@ -39,14 +39,20 @@ def split_pieces(command: str) -> list[str]:
     return [p.strip() for s in split_sentences(command) for p in re.split(r"\s*(?:,|\s[-–—]+\s|\bbut\b)\s*", s) if p.strip(" .!?;:,")]
 
 
+def cleaned(text: str) -> str:
+    """``text`` without polite and filler words (:func:`clean`), "" when it is only a correction of
+    nothing ("not two, not twenty") that cannot be read at all."""
+    try:
+        return clean(text).strip(" .,;")
+    except InputError:
+        return ""
+
+
 def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
     """Whether ``sentence`` asks the robot to act: it, or a clause of it, begins with a verb once polite words are gone,
     one the planner knows ("put ...") or another one acting on a thing of the scene ("pour the soup
     ...", where "smash that like button" is talk)."""
-    try:
-        text = clean(sentence)
-    except InputError:  # a correction of nothing ("not two, not twenty"): no request of its own
-        return False
+    text = cleaned(sentence)
     if any(VERB_START.match(piece.strip()) for piece in re.split(r"[,;]", text)):  # "if not, put it next to the bowl"
         return True
     if re.search(r"\d", text):  # an amount ("make it 5 cm") is never talk

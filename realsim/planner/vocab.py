@@ -88,7 +88,8 @@ UNITS: dict[str, float] = {
 VAGUE_DISTANCES: dict[str, float] = {"a tiny bit": 0.03, "a little bit": 0.04, "a bit": 0.05, "a little": 0.05, "slightly": 0.03,
                                      "a touch": 0.03, "a lot": 0.20, "a few centimeters": 0.05, "a few centimetres": 0.05,
                                      "a few cm": 0.05, "a couple of centimeters": 0.02, "a couple of cm": 0.02,
-                                     "a hair": 0.01, "a smidge": 0.02, "a smidgen": 0.02, "a tad": 0.03}
+                                     "a hair": 0.01, "a smidge": 0.02, "a smidgen": 0.02, "a tad": 0.03,
+                                     "a wee bit": 0.03, "a fraction": 0.01, "a skosh": 0.02, "a titch": 0.02}
 
 
 def singular(word: str) -> str:
