@@ -151,3 +151,20 @@ def test_the_request_a_hedge_leads_up_to(message: str, plain: str) -> None:
 ])
 def test_what_people_have_a_thing_do_is_the_request(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("I'm so sorry to bother you, I really am, but I don't suppose the strawberry could end up somewhere to the left of the bowl? "
+     "Only if it's no trouble at all.", "put the strawberry to the left of the bowl"),
+    ("Totally your call, of course, and I don't want to be difficult, but I'd sort of love it if the banana were sitting behind the bowl?",
+     "put the banana behind the bowl"),
+    ("If it's not too much of an imposition, and do feel free to say no, might the banana perhaps be moved so it sits right beside the bowl?",
+     "put the banana next to the bowl"),
+    ("You probably have more important things to do, but I'd be ever so grateful if the bowl found its way in front of the banana.",
+     "put the bowl in front of the banana"),
+    ("It bugs me that the banana is stuck out at the back and the strawberry is off on the left; they'd look better the other way round. Swap them.",
+     "swap the banana and the strawberry"),
+    ("The two soda cans are crammed together. Swap them.", "swap the two soda cans"),
+])
+def test_politeness_and_complaints_around_a_request(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

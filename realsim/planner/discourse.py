@@ -36,7 +36,13 @@ TALK: tuple[str, ...] = (
     r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|splendid|marvellous|marvelous|excellent|nice|cool|sweet|good job|well done|nice one|good stuff|bless you)",
     # politeness and hedges said as a piece of their own
     r"if you please", r"if you (?:would|could|will|can|dont mind|do not mind|wouldnt mind|would not mind)", r"if (?:it|that) s? ?(?:ok|okay|alright|all right|fine|possible|easy|no trouble|not too much trouble)",
-    r"(?:if|when) you (?:get|have) (?:a )?(?:chance|moment|sec|second|minute)", r"(?:sorry|apologies) (?:to bother you|for the trouble|for bothering you)",
+    r"(?:if|when) you (?:get|have) (?:a )?(?:chance|moment|sec|second|minute)", r"(?:(?:i m|im|i am) (?:so |very |really |terribly |awfully |truly )?|(?:so |very |really |terribly |awfully |truly ))(?:sorry|apologies)"
+    r"(?: (?:to bother you|for the trouble|for bothering you|to ask|to be a pain|to be difficult))?",  # not "sorry" alone: a correction
+    r"(?:sorry|apologies) (?:to bother you|for the trouble|for bothering you|to ask|to be a pain|to be difficult)",
+    r"(?:but )?(?:only )?if (?:it s|its|it is|that s|thats|that is) (?:no|not any|not too much|not too much of an?|not an?) (?:trouble|bother|imposition|hassle|problem|pain)(?: at all| for you)?",
+    r"(?:do |please )?(?:feel free to|you can|you may) (?:say no|decline|refuse|ignore (?:me|this|it))", r"(?:please )?(?:just )?ignore me if (?:so|not|you re busy|you cant|you can t)",
+    r"(?:i|we) (?:really|truly|honestly|genuinely) (?:am|are|do)", r"of course", r"naturally", r"obviously", r"(?:totally|entirely|completely) (?:your|up to you)(?: call| choice| decision)?(?: of course)?",
+    r"(?:i|we) (?:don t|dont|do not) want to (?:be (?:difficult|a pain|a bother|rude|pushy)|bother you|impose)",
     r"(?:i )?hope (?:i m|im|i am) not (?:bothering|disturbing|troubling) you", r"no (?:rush|hurry|pressure|stress)", r"(?:take|taking) your time",
     r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
     # exhortations and chat
@@ -53,7 +59,7 @@ TALK: tuple[str, ...] = (
 )
 # a conditional or alternative: talk only in a sentence of talk alone ("If not, no worries.")
 _HEDGE: tuple[str, ...] = (
-    r"(?:but )?only if (?:it s|its|it is|that s|thats|that is|you can|you re able|possible|easy)(?: easy| possible| not too hard| no trouble)?",
+    r"(?:but )?only if (?:it s|its|it is|that s|thats|that is|you can|you re able|possible|easy)(?: easy| possible| not too hard| no (?:trouble|bother)(?: at all)?)?",
     r"if (?:not|you can t|you cant|you cannot|it doesn t work|it doesnt work|that doesn t work|it s not possible|its not possible|not possible|you re not able|you are not able)",
     r"(?:but )?(?:only )?if (?:it s|its|it is|that s|thats|that is|you can t|you cant|you cannot|not|it isn t|it isnt|it s not|its not)\b[a-z ]*",
     r"otherwise", r"no worries", r"no (?:problem|probs|bother|big deal|matter)", r"(?:it s|its|that s|thats) (?:fine|ok|okay|alright|no problem)(?: too| as well)?",
@@ -68,7 +74,7 @@ def _words(piece: str) -> str:
 
 
 def _is_talk(piece: str, in_talk_sentence: bool) -> bool:
-    words = _words(piece)
+    words = re.sub(r"^(?:and|but|so|or|yet) ", "", _words(piece))  # ", and I don't want to be difficult,"
     return bool(words) and bool((_ANY_RE if in_talk_sentence else _TALK_RE).fullmatch(words + " "))
 
 

@@ -8,17 +8,19 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.lexicon import VERB_START
+from realsim.planner.lexicon import STATEMENT_VERB, VERB_START
 from realsim.planner.reference import DETERMINERS
 from realsim.planner.sentences import cleaned
 from realsim.planner.steps import Parser
 from realsim.planner.types import ObjectInfo
-from realsim.planner.vocab import COLOR_WORDS, GENERIC, singular
+from realsim.planner.vocab import COLOR_WORDS, GENERIC, NUMBERS, is_plural, singular
 
 __all__ = ["mentioned", "named_alone"]
 
 _LONGEST = 6  # words in a noun phrase with its colour, size and locator words
 _JOINS = {"and", "or", "with", "then"}
+_LOCATING = {"other", "between"}  # "(between) the other two blocks": a locator's reference, not a mention
+_COUNTS = {w for w in NUMBERS if " " not in w} | {"both", "all"}
 _PRONOUN_WORDS = {"one", "ones", "it", "same", "other"}  # "the same one" is what was named before, not a new mention
 
 
@@ -37,23 +39,39 @@ def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
     i = 0
     while i < len(words):
         end, matched = i + 1, False
-        if words[i] in DETERMINERS or words[i] in COLOR_WORDS or singular(words[i]) in nouns:
+        if words[i] in DETERMINERS or words[i] in COLOR_WORDS or words[i] in _COUNTS or singular(words[i]) in nouns:
             for j in range(min(len(words), i + _LONGEST), i, -1):
                 if singular(words[j - 1]) not in nouns or _JOINS & set(words[i:j]):
                     continue  # a phrase ends at its noun and names one thing
                 phrase = re.sub(r"^(?:a|an|any|some) ", "the ", " ".join(words[i:j]))  # "there's a soda can": only if there is one
+                plural = (is_plural(words[j - 1]) and words[j - 1] not in nouns  # "the two soda cans": all of them
+                          and not _LOCATING & set(words[max(0, i - 2):j]))  # not "(between) the other two blocks" a locator names
                 try:
-                    named = p.resolver.resolve(phrase, p.ctx, allow_plural=False)
+                    named = p.resolver.resolve(phrase, p.ctx, allow_plural=plural)
                 except InputError:
                     continue
-                if len(named) == 1:
+                if len(named) == 1 or plural:
                     found += [o for o in named if o not in found]
                     end, matched = j, True
                     break
         if matched and (end >= len(words) or words[end] != "and"):
+            found += [o for o in _also_said_of(" ".join(words[end:]), p) if o not in found]
             break  # the first thing named, with those joined to it ("the mug and the bowl"), not later places
         i = end
     return found
+
+
+def _also_said_of(rest: str, p: Parser) -> list[ObjectInfo]:
+    """Things a statement goes on to say something of: "the mug is on the right *and the soup can
+    is* on the left" (each the subject of its own "and ... is")."""
+    out: list[ObjectInfo] = []
+    for m in re.finditer(rf"\band ((?:the|that|this) [a-z ]+?) {STATEMENT_VERB}\b", rest):
+        try:
+            named = p.resolver.resolve(m.group(1), p.ctx, allow_plural=False)
+        except InputError:
+            continue
+        out += named if len(named) == 1 else []
+    return out
 
 
 def _asked_which(text: str, p: Parser) -> list[ObjectInfo]:

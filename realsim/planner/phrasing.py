@@ -9,7 +9,24 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from realsim.planner import casual, clarify, clock, code_calls, discourse, focus, formal, places, purpose, radio, remarks, speech, technical, topic, wishes
+from realsim.planner import (
+    casual,
+    clarify,
+    clock,
+    code_calls,
+    discourse,
+    focus,
+    formal,
+    places,
+    purpose,
+    radio,
+    remarks,
+    speech,
+    technical,
+    topic,
+    voices,
+    wishes,
+)
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
 from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL, VAGUE_DISTANCES
@@ -66,7 +83,9 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
             "w": "with", "ill": "i will", "lil": "little", "btwn": "between", "bw": "between", "frnt": "front", "tbl": "table", "pic": "pick", "tho": "though", "rite": "right",
             "b4": "before", "nexto": "next to", "infront": "in front", "ontop": "on top", "inbetween": "in between", "onto the top of": "on top of", "bc": "because", "cuz": "because", "nr": "near", "bhnd": "behind", "bowl2": "bowl", "thru": "through",
             "teh": "the", "hte": "the", "th": "the", "cn": "can", "swp": "swap", "mov": "move", "mve": "move", "orng": "orange", "prpl": "purple",
-            "blk": "black", "rd": "red", "sm": "small", "lg": "large", "bx": "box", "btl": "bottle", "gimme": "give me", "yr": "your"}
+            "blk": "black", "rd": "red", "sm": "small", "lg": "large", "bx": "box", "btl": "bottle", "gimme": "give me", "yr": "your",
+            "pls": "please", "outta": "out of", "outa": "out of", "lemme": "let me", "kinda": "kind of", "sorta": "sort of",
+            "tryna": "trying to", "bout": "about", "cos": "because", "coz": "because", "rly": "really", "k": "okay", "kk": "okay"}
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -82,7 +101,13 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
-    text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(text)))))
+    text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(voices.plain(text))))))
+    text = re.sub(r"\s*,?\s*(?:and )?(?:be (?:quick|fast|snappy|swift|careful|gentle|nice|quiet)(?: about it)?|make it (?:snappy|quick)|look lively"
+                  r"|step (?:to it|lively)|(?:and )?(?:on|at) the double|chop[- ]chop)(?=\s*(?:$|[.,;!?]))", "", text)  # "... and be quick about it!"
+    text = re.sub(r"(\b(?:swap|switch|exchange|trade)\b[^.;!?]*?),?\s*(?:the |to the )?(?:left|right) (?:for|with|and) (?:the |to the )?(?:left|right)\b", r"\1", text)
+    _keep_company = r"\b((?:bring|move|put|take|carry|get|set|place|haul|scoot|slide|shift)\b[^.;!?]*?)(?: over| across| round| around)? to (?:sit|stand|rest|be|stay|live|hang out|go|hide|wait|lie|nap|sleep|play)"
+    text = re.sub(_keep_company + r" with (?=(?:the|that|this|its|his|her|their|my|your)\b)", r"\1 next to ", text)  # "bring it over to sit with the banana"
+    text = re.sub(_keep_company + r"(?= (?:next to|beside|by|near|in|inside|on|behind|in front of|left of|right of|to the|between|under|on top of)\b)", r"\1", text)
     text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
@@ -157,6 +182,8 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
     text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
+    text = re.sub(r"\bbetween (?:(?:you|yourself|me|myself|the robot|us) and ((?:the|that|this) [a-z]+(?: [a-z]+)?)|((?:the|that|this) [a-z]+(?: [a-z]+)?) and (?:you|yourself|me|myself|the robot|us))\b",
+                  lambda m: f"in front of {m.group(1) or m.group(2)}", text)  # "between the box and yourself": nearer the robot than the box
     text = re.sub(r"\bchange (?:the )?(?:place|places|position|positions|spot|spots)(?: of)? (.+?) (?:with|and) ", r"swap \1 with ", text)
     text = re.sub(r",? (?:so )?(?:each one|each|both)(?: of them)? (?:go|goes|ends? up|sits?|is) (?:where|in the place)(?: is)? the other(?: one)?(?: (?:is|was|sits|sat))?(?=$|[,.;!?])", "", text)
     text = re.sub(r"\bmake (it|them) (?:go|move|slide|shift)\b", r"move \1", text)  # "make it go left"
@@ -192,7 +219,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
                   r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
     text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)  # "move it somewhere else"
-    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) way(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) (?:way|path)(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:from|off) (?:my|your|our|the) path|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
     text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (away|off|out) (?!(?:the|that|this|those|these|my|your|a|an|it|them)\b)", r"clear \1 the ", text)  # "clear away cereal box"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
@@ -249,6 +276,10 @@ def split_command(command: str) -> list[str]:
                 clauses.append(part)
             elif _AMOUNT.fullmatch(part) or _MOTION.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far; "red cube. forward ten cm": where
                 clauses[-1] = f"{clauses[-1]} {part}"
+            elif _OTHER_SIDE.fullmatch(part) and (flipped := _flip_side(clauses[-1])):  # "now the soup can, but the other side"
+                clauses[-1] = flipped
+            elif put is not None and rel and (m := re.fullmatch(rf"(.+?),? {_OTHER_SIDE.pattern}", part)) and (flipped := _flip_side(clauses[-1])):
+                clauses.append(f"{put} {m.group(1)} {flipped[rel.start():].strip()}".strip())  # "the mug behind the bowl and the banana on the other side"
             elif m := re.fullmatch(r"the one ((?:on|at|in|to|closest|nearest|closer|nearer|furthest|farthest|further|farther|that|which)\b.*)", part):
                 clauses[-1] = f"{clauses[-1]} {m.group(1)}"  # "pick up the green cube, the one furthest from you": which one
             elif WHICH_ONE.match(part):  # "..., which one is farthest from you? pick that one up": a question of its own
@@ -268,6 +299,16 @@ def split_command(command: str) -> list[str]:
         else:
             clauses.append(part)
     return clauses
+
+
+_OTHER_SIDE = re.compile(r"(?:but |and |only )*(?:on |to |at |onto )?(?:the )?(?:other|opposite) (?:side|way|one)(?: (?:this time|instead|of it|round|around))?")
+_SIDES = {"left": "right", "right": "left", "in front of": "behind", "behind": "in front of"}
+
+
+def _flip_side(clause: str) -> str | None:
+    """``clause`` with its side of the reference turned to the opposite one ("left of" -> "right of"); None without a side."""
+    m = re.search(r"\b(left|right|in front of|behind)\b(?=(?: of)? (?:the|that|this|it|them)\b)", clause)
+    return None if m is None else f"{clause[: m.start()]}{_SIDES[m.group(1)]}{clause[m.end():]}"
 
 
 _OTHER_VERB = re.compile(r"(?!(?:and|then|but|so|or|too|also|if|when|unless|once|because|since|while|until|whether|as|than|like|with|without|for|to|of|in|on|at|by|from)\b)[a-z]+ (?:them|it|me|you|us|him|her)\b")  # "prove them wrong": a verb the planner does not know, never an object

@@ -23,6 +23,7 @@ from realsim.errors import InputError
 from realsim.planner import noun_phrase, typos, vocab
 from realsim.planner.attributes import between_of, colors_of, holding, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
 from realsim.planner.clock import AT_CLOCK, bearing_gap
+from realsim.planner.core_noun import core_words
 from realsim.planner.ordering import EXTREMES, middle_of, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
@@ -46,6 +47,10 @@ LOCATOR_RELATIONS = (
 )
 
 
+_TWO_TONE = re.compile(rf"\b({'|'.join(COLOR_WORDS)})(?:-| and |-and-)({'|'.join(COLOR_WORDS)}) (\w+)")
+# the one of a kind not named yet: "the last one", "the remaining cube", "the one left over", "the last can left"
+_REMAINING = re.compile(r"(?:the )?(?:last|remaining|leftover|left over|only other)(?: one)?|(?:the )?(?:remaining|leftover) (\w+(?: \w+)?)"
+                        r"|(?:the )?(?:only |last )?(?:one|(\w+)) (?:that is |that s |thats |which is )?(?:left over|left$|still left|remaining)")
 # words in a scene's own names that describe rather than name ("obj3_left_tall_white_can"):
 # the resolver reads them as colour, size and position, never as the noun
 _DESCRIPTIVE = frozenset(COLOR_WORDS) | frozenset(BIG) | frozenset(SMALL) | frozenset(EXTREMES) | frozenset(ORDINALS) | {
@@ -58,10 +63,12 @@ class Context:
 
     last: list[ObjectInfo] = field(default_factory=list)
     place: ObjectInfo | None = None  # the last target ("put the can in there too")
+    seen: list[ObjectInfo] = field(default_factory=list)  # every object referred to so far ("the last one": of a kind, the one not yet named)
 
     def set(self, objs: list[ObjectInfo]) -> None:
         if objs:
             self.last = list(objs)
+            self.seen += [o for o in objs if o not in self.seen]
 
 
 def describe(o: ObjectInfo) -> str:
@@ -225,6 +232,12 @@ class Resolver:
         m = re.fullmatch(r"(?:that |this )?same (.+)", text)  # "that same cube": the cube just named
         if m and ctx.last and m.group(1) not in ("one", "ones", "thing", "object"):
             return self.resolve(m.group(1), Context(), want=want, exclude=[o.name for o in self.objects if o not in ctx.last])
+        m = _REMAINING.fullmatch(text)
+        if m and ctx.seen:  # "red cube on the plate, the green one on it, and the last one next to the plate": the cube not yet named
+            rest = self.resolve(m.group(1) or m.group(2) or ctx.seen[-1].label, Context(), want=want, loose=True,
+                                exclude=[*exclude, *(o.name for o in ctx.seen)])
+            if len(rest) == 1:
+                return rest
         m = re.fullmatch(r"(?:the )?other(?: one)?|(?:the )?other (.+)", text)
         if m:
             noun = m.group(1) or (ctx.last[0].label if ctx.last else "")
@@ -235,6 +248,7 @@ class Resolver:
             if not m.group(1) and len(rest) == 1 and len(ctx.last) == 1:  # "put it inside the other one": of two, the one not taken
                 return rest
             return self.resolve(noun, Context(), want=want, exclude=[*exclude, *taken], allow_plural=False, loose=loose)
+        text = _TWO_TONE.sub(lambda m: m.group(0) if is_plural(m.group(3)) else f"{m.group(1)} {m.group(2)} {m.group(3)}", text)  # "the red and white can": one can
         text = re.sub(r"^both (?:of )?(?=.+\s+and\s+)", "", text)  # "both the banana and the strawberry": a list
         parts = [p for p in re.split(r"\s*,\s*|\s+and\s+|\s+as well as\s+|\s+plus\s+", text) if p]
         if len(parts) > 1 and allow_plural and not re.search(r"\bbetween\b", parts[0]):  # "the cube between X and Y" is one
@@ -275,6 +289,11 @@ class Resolver:
         # locators that name another object: "the can next to the bowl", "the cup closest to the plate"
         order: tuple[str, object] | None = None
         located = False
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |sitting |standing |lying |resting )?(?:on|at|atop) (?:the |your )?"
+                         r"(?:table|counter|desk|worktop|tabletop|surface|floor|ground)(?: top| surface)?", text)
+        if m:  # "the red can on the table": one standing on no other object
+            text = m.group(1)
+            cands = [o for o in cands if not any(r.name != o.name and relation_holds("on", o, r, self.forward, self.left) for r in self.objects)] or cands
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |sitting |standing )?(?:in )?between (.+)", text)
         if m:  # "the cube between the red and the green one", "the cube in between the other two"
             text, cands, located = m.group(1), between_of(m.group(1), m.group(2), cands, self._all), True
@@ -362,6 +381,9 @@ class Resolver:
         if want:
             scored = [(o, s + (0.3 if s > 0 and want in o.affordances else 0.0)) for o, s in scored]
         scored = [(o, s) for o, s in scored if s > 0]
+        core = core_words(nouns_raw, self._said) if not scored else None
+        if core is not None:  # "omg that cereal box is": the cereal box
+            scored = [(o, s) for o in cands if (s := self.noun_score([singular(w) for w in core], o)) > 0]
         if colors and scored:  # a colour decides before the noun's score does ("the blue one" is not the plate)
             named = max((s for _, s in scored), default=0.0) >= 1.5  # the noun names some object outright
             matching = [(o, s) for o, s in scored if set(colors) <= colors_of(o) and (s >= 1.5 or not named)]
@@ -399,6 +421,8 @@ class Resolver:
             return found
         if len(found) > 1 and not colors:  # "the cracker box" between a white and a red box: a cracker box is red
             found = usual_colour_pick(nouns, found)
+        if len(found) > 1 and not loose and core is not None:  # talk around a name that names no one thing: no name at all
+            raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
         if len(found) > 1 and not loose:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
                              "say which one (colour, size, left/right, or the body name)")

@@ -315,6 +315,8 @@ def _clause(clause: str, p: Parser) -> Step:
         raise InputError(f"where to? {clause!r} names no place I can read (in, on, next to, left of, behind, between, "
                          f"on the table, back, down); {HELP}")
     if verb in TAKE:  # "take the can to the bowl" moves it; "take the can on the left" only names it
+        if verb in _LIFTS and _find_relation(rest) and (named := _named_by_place(rest, p)):
+            return named  # "pick up the can next to the bowl" where one can is next to it: that can, lifted
         try:
             step = _put(verb, rest, p, clause) if _find_relation(rest) else None
         except InputError:
@@ -331,6 +333,23 @@ def _verb(c: str) -> tuple[str | None, str]:
         if c == v or c.startswith(v + " "):
             return v, c[len(v):].strip()
     return None, c
+
+
+_LIFTS = ("pick up", "pick", "grab", "grasp", "lift up", "lift", "raise", "hold up", "hold", "snag")  # what only lifts: never carries somewhere
+
+
+def _named_by_place(rest: str, p: Parser) -> Step | None:
+    """The lift of the one object ``rest`` names with its place ("the red thing behind the cube"), if the place holds now."""
+    before = list(p.ctx.last)
+    try:
+        found = p.resolver.resolve(rest, Context(p.ctx.last), allow_plural=False)
+        head = p.resolver.resolve(rest[: _find_relation(rest)[0][0]].strip(), Context(p.ctx.last), allow_plural=True, loose=True)
+        if len(found) == 1 and found[0] in head:  # the place picks one of what the words before it name
+            return _take(rest, p)
+    except InputError:
+        pass
+    p.ctx.set(before)
+    return None
 
 
 def _take(rest: str, p: Parser) -> Step:

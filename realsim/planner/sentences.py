@@ -12,7 +12,7 @@ from collections.abc import Collection
 
 from realsim.errors import InputError
 from realsim.planner.code_calls import as_words
-from realsim.planner.lexicon import VERB_START
+from realsim.planner.lexicon import STATEMENT_VERB, VERB_START, relation_start
 from realsim.planner.phrasing import QUESTION, clean
 from realsim.planner.vocab import singular
 
@@ -43,9 +43,16 @@ def cleaned(text: str) -> str:
     """``text`` without polite and filler words (:func:`clean`), "" when it is only a correction of
     nothing ("not two, not twenty") that cannot be read at all."""
     try:
-        return clean(text).strip(" .,;")
+        said = _CONNECTIVE.sub("", clean(text).strip(" .,;"))
+        return "" if said in _REMNANTS else said
     except InputError:
         return ""
+
+
+_REMNANTS = {"only", "but", "if", "just", "so", "and", "then", "too", "also", "or", "of course"}  # what is left of a hedge once its words are gone
+_STAND_INS = {"one", "ones", "it", "them"}  # words standing for a thing named before ("the last one", "it")
+# words that join a step to the one before ("then put ..."), not part of the step itself
+_CONNECTIVE = re.compile(r"^(?:(?:and|then|next|after that|afterwards|finally|lastly|also|now|so|plus|and then|once done|after)\s+)+(?=[a-z])")
 
 
 def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
@@ -56,6 +63,10 @@ def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
     if any(VERB_START.match(piece.strip()) for piece in re.split(r"[,;]", text)):  # "if not, put it next to the bowl"
         return True
     if re.search(r"\d", text):  # an amount ("make it 5 cm") is never talk
+        return True
+    words = text.split()
+    if any(relation_start(" ".join(words[i:])) and any(singular(w) in scene_words or w in _STAND_INS for w in words[:i]) for i in range(1, len(words))) and not re.search(
+            rf"\b{STATEMENT_VERB}\b", text):  # "the last one next to the plate": a placing without its verb
         return True
     m = _UNKNOWN_VERB.match(text)
     return bool(m) and m.group(1) not in _NOT_A_VERB and any(singular(w) in scene_words for w in text[m.end():].split())

@@ -66,6 +66,8 @@ TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),
     "apple": ("red", "green"), "lime": ("green",), "pear": ("green", "yellow"), "orange": ("orange",), "plum": ("purple",),
     "mustard": ("yellow",), "ketchup": ("red",), "carrot": ("orange",), "cracker": ("red",), "spam": ("blue",),
+    # the packaging a product kind usually comes in (a capture whose texture is missing says nothing)
+    "meat": ("blue",), "soup": ("red", "white"), "brick": ("red",), "marker": ("black",), "bleach": ("white",), "cleanser": ("white",),
 }
 _TO_ME = r"(?: (?:to|from) (?:me|you|the robot|yourself))?"
 # a comparative said of one object with nothing to compare it to but the speaker: its extreme

@@ -21,13 +21,15 @@ _THING = r"((?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|
 _PLACE = "|".join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0]))
                   if w not in ("to", "by", "over", "above", "near", "nearby", "toward", "towards", "closer to", "nearer to", "close to", "against"))
 _STATE = (r"(?:(?:to be|to go|to end up|to sit|to stand|could be|would be|were to be|could end up|would end up|could go|could sit|might be|can be"
-          r"|were|was|is|are|ended up|end up|be) )?(?:(?:sitting|standing|resting|lying|placed|put|set|moved|stacked|sat|stood|set down|put down) )?"
+          r"|were|was|is|are|ended up|end up|be|found its way|could find its way|made its way|somehow found its way|got) )?(?:(?:sitting|standing|resting|lying|placed|put|set|moved|stacked|sat|stood|set down|put down) )?"
           r"(?:(?:neatly|nicely|carefully|properly|tidily|gently|right|just|over) )*")
 _FRAMES = (
     r"(?:it|that|things)(?: would| ?'d| will| might)? be (?:(?:really|so|very|quite|rather) )?(?:nice|lovely|great|good|grand|wonderful|helpful|ideal"
     r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
     r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
-    r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much) )?(?:like|love|want|prefer|wish) (?:to (?:see|have|find|come back to) |it if )?",
+    r"(?:i|we)(?: would| ?'d| will| ?'ll)? be (?:(?:ever so|so|very|really|most|eternally|truly|forever|super|awfully) )*"
+    r"(?:grateful|thankful|happy|glad|delighted|pleased|obliged|chuffed|thrilled|relieved) if ",
+    r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much|sort of|kind of|kinda|honestly|actually|also|just) )*(?:like|love|want|prefer|wish) (?:to (?:see|have|find|come back to) |it if )?",
     r"(?:what|the picture) i(?: ?'m| am| have) (?:picturing|imagining|envisioning|seeing|got in mind|in mind) is ",
     r"(?:the way i(?: would| ?'d)? (?:like|want) (?:it|things|them)(?: is| to be)?|what i(?: ?'m| am) after is|what i(?: ?'d| would)? (?:like|want|need) is"
     r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end|in my (?:head|mind|mind ?'?s eye))[:,]? ",
@@ -35,13 +37,14 @@ _FRAMES = (
 # asked, not told: "could the can perhaps go in front of the box?", "is there any way the mug could end up left of the bowl?"
 _WHOLE_THING = r"((?:the|that|this|my)(?: (?!(?:could|might|would|may|should|will|perhaps|maybe|possibly)\b)[a-z]+)+)"  # greedy: "the tall white can perhaps go" keeps "can" in the thing
 _SOFT = r"(?:(?:perhaps|maybe|possibly|please|just|somehow) )*"
-_GOES = (r"(?:go|end up|sit|be|stand|move|get|be put|be placed|be moved|be set|rest) (?:(?:neatly|nicely|right|just|over) )*"
+_GOES = (r"(?:go|end up|sit|be|stand|move|get|be put|be placed|be moved|be set|rest) (?:(?:neatly|nicely|right|just|over|somewhere|someplace|anywhere) )*"
          rf"(?=(?:{_PLACE}|where) )")
 _START = r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:(?:maybe|perhaps|possibly) )?"
-_ASKED = (re.compile(rf"{_START}(?:(?:is there (?:any|a|some) (?:way|chance)|(?:is there )?any chance|is it (?:at all )?possible|would it be possible) (?:that )?"
+_ASKED = (re.compile(rf"{_START}(?:(?:but|and|so) )?(?:(?:is there (?:any|a|some) (?:way|chance)|(?:is there )?any chance|is it (?:at all )?possible|would it be possible"
+                     r"|(?:i )?(?:don ?'?t|do not) suppose|(?:i )?(?:wonder|was wondering|am wondering|m wondering) (?:if|whether)) (?:that )?"
                      rf"|(?:could|can|might|would|may) (?:you (?:have|get|let|make) )?){_WHOLE_THING} {_SOFT}(?:(?:could|can|might|would) {_SOFT})?{_GOES}"),
           re.compile(rf"{_START}{_WHOLE_THING} {_SOFT}(?:could|might|would|can) {_SOFT}{_GOES}"))
-_WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
+_WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so|though|although|yet) )?(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
 
 def as_request(text: str) -> str:

@@ -1,0 +1,59 @@
+"""Playful voices said plainly: mock-archaic English and pirate talk.
+
+"Prithee, good arm, set thou yon mug upon the plate" is "please, set the mug on the plate";
+"Arr matey, haul the can o' soup to port o' the bowl an' be quick" is "haul the can of soup to
+port of the bowl". Only word forms are changed (pronouns, old verb endings, clipped words,
+interjections and forms of address); what is asked is read by the rest of the planner.
+"""
+
+from __future__ import annotations
+
+import re
+
+# whole words and fixed phrases, longest first when applied
+_WORDS: dict[str, str] = {
+    # old pronouns and forms
+    "thou": "you", "thee": "you", "thy": "your", "thine": "your", "thyself": "yourself", "ye": "you", "yer": "your",
+    "yourselves": "yourself", "yon": "that", "yonder": "that", "unto": "to", "upon": "on", "betwixt": "between", "twixt": "between",
+    "'twixt": "between", "o'er": "over", "ere": "before", "hither": "here", "thither": "there", "whence": "from where",
+    "doth": "does", "dost": "do", "hath": "has", "hast": "have", "art": "are", "shalt": "will", "wilt": "will", "canst": "can",
+    "couldst": "could", "wouldst": "would", "shouldst": "should", "mayest": "may", "mine": "my", "forth": "forward",
+    # phrases, read after the words above are plain
+    "my own": "my", "your own self": "yourself", "your self": "yourself", "back and forward": "back and forth",
+    "an it please you": "please", "if it please you": "please", "prithee": "please", "pray you": "please", "i pray you": "please",
+    "i beseech you": "please", "beseech you": "please", "i bid you": "please", "i command you to": "", "i charge you to": "",
+    # pirate talk
+    "o'": "of", "an'": "and", "me hearty": "", "me hearties": "", "matey": "", "mateys": "", "swab": "", "ye scallywag": "",
+    "scallywag": "", "landlubber": "", "me bucko": "", "bucko": "",
+}
+# interjections that open or close a sentence and say nothing
+_INTERJECTIONS = (r"arr+|yarr+|ahoy|avast|yo ho(?: ho)?|shiver me timbers|blimey|aye(?: aye)?|har+|verily|forsooth|lo|hark|hearken|alas"
+                  r"|by my troth|good morrow|well met|huzzah|gadzooks|zounds|egad|sirrah|good (?:sir|arm|robot|machine)|noble (?:arm|robot|machine|sir)")
+_OPENER = re.compile(rf"(?:^|(?<=[.;:!?]))\s*(?:(?:{_INTERJECTIONS})\b[,!.;:]?\s*)+")
+_CLOSER = re.compile(rf",?\s*(?:{_INTERJECTIONS})\s*(?=[.!?]*\s*$|[.!?])")
+# old verb endings: "the can standeth", "it moveth" (a verb ending in -eth of more than five letters)
+_ETH = re.compile(r"\b([a-z]{3,})eth\b")
+_NOT_ETH = {"beneath", "seventh", "eleventh", "twentieth", "thirtieth", "fortieth", "fiftieth", "hundredth", "something", "teeth"}
+
+
+def _eth(m: re.Match[str]) -> str:
+    word, stem = m.group(0), m.group(1)
+    if word in _NOT_ETH:
+        return word
+    return stem + ("es" if stem[-1] in "svxzhcgu" else "s")
+
+
+def plain(text: str) -> str:
+    """``text`` (lower case) with archaic and pirate word forms said plainly."""
+    if not re.search(r"\b(?:thou|thee|thy|thine|ye|yer|yon|yonder|unto|upon|betwixt|o'er|doth|hath|shalt|wilt|prithee|beseech|o'|an'"
+                     rf"|matey|swab|hearty|\w+eth|{_INTERJECTIONS})(?!\w)", text):
+        return text
+    text = _OPENER.sub(" ", text)
+    text = _CLOSER.sub("", text)
+    for old, new in sorted(_WORDS.items(), key=lambda kv: (" " in kv[0], -len(kv[0]))):  # words, then phrases
+        text = re.sub(rf"(?<![\w']){re.escape(old)}(?![\w'])", new, text)
+    text = _ETH.sub(_eth, text)
+    text = re.sub(r"\b(on|at|to) (?:the|your|my) (left|right) hand\b(?! side)", r"\1 the \2", text)  # "upon the right hand"
+    text = re.sub(r"\b(set|place|put|lift|raise|move|push|slide|carry|take|bring|remove|grab|haul|fetch) you\b(?! (?:the )?(?:left|right))", r"\1", text)  # "set thou the mug"
+    text = re.sub(r"\byou (?:will|must|shall) (?=(?:set|place|put|lift|raise|move|push|slide|carry|take|bring|remove|grab|swap|haul)\b)", "", text)
+    return re.sub(r"\s{2,}", " ", text).strip()

@@ -1,0 +1,53 @@
+"""Steps that lean on the one before: "the other side", "the last one", "then ...", "on the table"."""
+
+from __future__ import annotations
+
+import pytest
+from test_planner_rules import CLUTTER, call_lines
+
+from realsim.errors import InputError
+from realsim.planner import RulePlanner
+from realsim.planner.reference import Context, Resolver
+from realsim.planner.sentences import is_request
+from realsim.planner.types import ObjectInfo
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("Put the banana to the left of the bowl. Now the strawberry, but the other side.",
+     "put the banana to the left of the bowl, then put the strawberry to the right of the bowl"),
+    ("put the banana behind the bowl and the strawberry on the other side",
+     "put the banana behind the bowl, then put the strawberry in front of the bowl"),
+])
+def test_the_other_side_is_the_opposite_side_of_the_same_thing(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
+
+
+def test_the_last_one_is_the_one_of_its_kind_not_named_yet() -> None:
+    assert call_lines("Red cube in the bowl. Then the green one next to the bowl. And the last one behind the bowl.") == call_lines(
+        "put the red cube in the bowl, put the green cube next to the bowl, put the blue cube behind the bowl")
+    assert call_lines("lift the red cube and the blue cube, then put the remaining cube in the bowl") == call_lines(
+        "lift the red cube and the blue cube, then put the green cube in the bowl")
+
+
+def test_a_step_after_then_is_never_skipped_as_talk() -> None:
+    assert is_request("then put the last one next to the plate")
+    assert is_request("and the last one next to the plate.", {"plate"})
+    assert not is_request("the cube is next to the plate", {"cube", "plate"})
+    with pytest.raises(InputError):  # the second step cannot be done: the whole message is refused, not its first step done alone
+        RulePlanner().plan("put the red cube in the bowl, then put the teapot next to the bowl", CLUTTER)
+
+
+def test_on_the_table_says_it_stands_on_no_other_thing() -> None:
+    cans = [ObjectInfo("obj1_can", "can", (), (0.5, 0.1, 0.05), (0.066, 0.066, 0.1), "red"),
+            ObjectInfo("obj2_box", "box", (), (0.5, -0.1, 0.03), (0.12, 0.12, 0.06), "white", ("graspable", "support")),
+            ObjectInfo("obj3_can", "can", (), (0.5, -0.1, 0.11), (0.066, 0.066, 0.1), "red")]
+    resolver = Resolver(cans)
+    assert [o.name for o in resolver.resolve("the red can on the table", Context())] == ["obj1_can"]
+    assert [o.name for o in resolver.resolve("the can sitting on the box", Context())] == ["obj3_can"]
+    with pytest.raises(InputError, match="ambiguous"):
+        resolver.resolve("the red can", Context())
+
+
+def test_to_sit_with_a_thing_is_to_be_next_to_it() -> None:
+    assert call_lines("bring the strawberry over to sit with the banana") == call_lines("put the strawberry next to the banana")
+    assert call_lines("can you bring the strawberry over to sit next to the banana?") == call_lines("put the strawberry next to the banana")
