@@ -52,3 +52,12 @@ def test_a_clause_after_the_name_is_never_dropped_as_talk() -> None:
     assert core_words(["banana", "40", "cm"], SCENE_WORDS) is None
     assert core_words(["banana", "two", "inches"], SCENE_WORDS) is None
     assert core_words(["balance", "banana", "upside"], SCENE_WORDS) is None  # an unknown verb before the name
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("put the fake plastic strawberry in the empty bowl", "put the strawberry in the bowl"),  # what the scene cannot check
+    ("put le cube rouge in the bowl s'il te plait", "put the red cube in the bowl"),  # mixed-in articles and colours
+    ("put the cube verde in the bowl", "put the green cube in the bowl"),
+])
+def test_words_the_scene_cannot_check_and_mixed_in_languages(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

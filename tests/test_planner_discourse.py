@@ -6,7 +6,7 @@ this test on the generated clutter scene, not taken from a bench set."""
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
@@ -240,3 +240,15 @@ def test_a_contracted_is_makes_a_statement() -> None:
     """"the banana's in the way, move it ...": a statement naming what "it" means, not a thing called "banana in the way"."""
     assert calls("the banana's in the way, move it next to the strawberry") == ["place_beside('obj7_banana', 'obj8_strawberry', 'next')"]
     assert calls("the bowl's dirty. push it 5 cm left") == ["push('obj6_bowl', 'left', 0.05)"]
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("Three things: red cube in the bowl, blue cube next to the bowl, then go home.",
+     "put the red cube in the bowl, put the blue cube next to the bowl, go home"),
+    ("Stack the red cube on the blue one, edges lined up, no overhang.", "put the red cube on the blue cube"),
+    ("Set the strawberry next to the bowl, nice and square.", "put the strawberry next to the bowl"),
+    ("Kick the banana over 2 cm to the left.", "push the banana 2 cm to the left"),
+    ("Sink the strawberry in the bowl.", "put the strawberry in the bowl"),
+])
+def test_how_neatly_and_a_count_of_steps_are_talk(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

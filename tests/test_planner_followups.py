@@ -51,3 +51,14 @@ def test_on_the_table_says_it_stands_on_no_other_thing() -> None:
 def test_to_sit_with_a_thing_is_to_be_next_to_it() -> None:
     assert call_lines("bring the strawberry over to sit with the banana") == call_lines("put the strawberry next to the banana")
     assert call_lines("can you bring the strawberry over to sit next to the banana?") == call_lines("put the strawberry next to the banana")
+
+
+def test_the_right_one_of_those_just_named() -> None:
+    assert call_lines("The two soda cans are crammed together. Slide the right-hand one 5 cm further to the right.") == call_lines(
+        "push the right soda can 5 cm to the right")
+    assert call_lines("slide the right one 5 cm to the right") == call_lines("push the rightmost thing 5 cm to the right")
+
+
+def test_on_the_table_beside_a_thing_is_both() -> None:
+    plan = RulePlanner().plan("put the red cube on the table next to the bowl", CLUTTER)
+    assert [g.describe() for g in plan.goals] == ["obj3_cube next to obj6_bowl", "obj3_cube on the table"]

@@ -59,3 +59,12 @@ def test_sentences_as_people_type_them(sentence: str, plain: str) -> None:
 def test_a_wish_or_chat_spelling_never_guesses_an_object(sentence: str) -> None:
     with pytest.raises(InputError):
         RulePlanner().plan(sentence, CLUTTER)
+
+
+@pytest.mark.parametrize(("sentence", "plain"), [
+    ("I'd rather the banana were behind the bowl.", "put the banana behind the bowl"),
+    ("The banana is about to fall. I'd feel better with it over to the left of the bowl.", "put the banana to the left of the bowl"),
+    ("I'd be ever so grateful if the strawberry found its way into the bowl.", "put the strawberry in the bowl"),
+])
+def test_wishes_said_as_feelings(sentence: str, plain: str) -> None:
+    assert call_lines(sentence) == call_lines(plain)

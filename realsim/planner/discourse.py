@@ -41,7 +41,10 @@ TALK: tuple[str, ...] = (
     r"(?:sorry|apologies) (?:to bother you|for the trouble|for bothering you|to ask|to be a pain|to be difficult)",
     r"(?:but )?(?:only )?if (?:it s|its|it is|that s|thats|that is) (?:no|not any|not too much|not too much of an?|not an?) (?:trouble|bother|imposition|hassle|problem|pain)(?: at all| for you)?",
     r"(?:do |please )?(?:feel free to|you can|you may) (?:say no|decline|refuse|ignore (?:me|this|it))", r"(?:please )?(?:just )?ignore me if (?:so|not|you re busy|you cant|you can t)",
-    r"(?:i|we) (?:really|truly|honestly|genuinely) (?:am|are|do)", r"of course", r"naturally", r"obviously", r"(?:totally|entirely|completely) (?:your|up to you)(?: call| choice| decision)?(?: of course)?",
+    r"(?:i|we) (?:really|truly|honestly|genuinely) (?:am|are|do)",
+    # how neatly: the placing primitives already centre and square what they put down
+    r"(?:nice|good|neat) and (?:square|straight|neat|tidy|snug|tight|level|even|flush|centred|centered|close)", r"(?:all )?(?:edges|sides|corners) (?:lined up|aligned|flush|square|matching)",
+    r"(?:with )?no overhang(?:ing)?", r"(?:centred|centered|squared|lined|straightened)(?: up)?", r"(?:tight|flush|snug) (?:to|against) (?:it|them)", r"(?:nice and )?(?:neatly|tidily)", r"of course", r"naturally", r"obviously", r"(?:totally|entirely|completely) (?:your|up to you)(?: call| choice| decision)?(?: of course)?",
     r"(?:i|we) (?:don t|dont|do not) want to (?:be (?:difficult|a pain|a bother|rude|pushy)|bother you|impose)",
     r"(?:i )?hope (?:i m|im|i am) not (?:bothering|disturbing|troubling) you", r"no (?:rush|hurry|pressure|stress)", r"(?:take|taking) your time",
     r"(?:i )?(?:mean|guess|think|suppose|reckon)", r"you know", r"(?:please|pls|plz|plse|kindly)",
@@ -107,6 +110,7 @@ def steps_as_clauses(text: str) -> str:
     10. then ...") is never taken for a step."""
     text = re.sub(r"(?:^|(?<=[\s.,;:!?]))(?:(?:the|two|three|four|five|\d|a few|some|these|my|here are the|here are my)\s+)?steps?(?: are| is)?\s*:\s*", " ", text)
     # an enumerator said as a word before a pause: "first, lift X; second, put it ..."
+    text = re.sub(r"(?:^|(?<=[.,;:!?]))\s*(?:(?:two|three|four|five|a few|a couple of|some|several) )?(?:things|tasks|jobs|steps)(?: for you| to do)?\s*:\s*", " ", text)  # "Three things: ..."
     text = re.sub(r"(?:^|(?<=[.,;:!?]))\s*(?:first|firstly|second|secondly|third|thirdly|fourth|fifth|next|then|finally|lastly|last of all)"
                   r"(?: (?:thing|step|up|off|of all))?\s*[,:;]\s*", ", then ", text)
     text = re.sub(rf"(?:^|(?<=[\s.,;:!?]))step\s+(?:\d+|{'|'.join(_WORD_NUMBERS)})\s*[.,:;)-]*\s+", ", then ", text)

@@ -86,6 +86,8 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
             "blk": "black", "rd": "red", "sm": "small", "lg": "large", "bx": "box", "btl": "bottle", "gimme": "give me", "yr": "your",
             "pls": "please", "outta": "out of", "outa": "out of", "lemme": "let me", "kinda": "kind of", "sorta": "sort of",
             "tryna": "trying to", "bout": "about", "cos": "because", "coz": "because", "rly": "really", "k": "okay", "kk": "okay"}
+# "bring it over to sit with the banana": a thing brought somewhere to be there
+_KEEP_COMPANY = r"\b((?:bring|move|put|take|carry|get|set|place|haul|scoot|slide|shift)\b[^.;!?]*?)(?: over| across| round| around)? to (?:sit|stand|rest|be|stay|live|hang out|go|hide|wait|lie|nap|sleep|play)"
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -105,9 +107,8 @@ def clean(command: str) -> str:
     text = re.sub(r"\s*,?\s*(?:and )?(?:be (?:quick|fast|snappy|swift|careful|gentle|nice|quiet)(?: about it)?|make it (?:snappy|quick)|look lively"
                   r"|step (?:to it|lively)|(?:and )?(?:on|at) the double|chop[- ]chop)(?=\s*(?:$|[.,;!?]))", "", text)  # "... and be quick about it!"
     text = re.sub(r"(\b(?:swap|switch|exchange|trade)\b[^.;!?]*?),?\s*(?:the |to the )?(?:left|right) (?:for|with|and) (?:the |to the )?(?:left|right)\b", r"\1", text)
-    _keep_company = r"\b((?:bring|move|put|take|carry|get|set|place|haul|scoot|slide|shift)\b[^.;!?]*?)(?: over| across| round| around)? to (?:sit|stand|rest|be|stay|live|hang out|go|hide|wait|lie|nap|sleep|play)"
-    text = re.sub(_keep_company + r" with (?=(?:the|that|this|its|his|her|their|my|your)\b)", r"\1 next to ", text)  # "bring it over to sit with the banana"
-    text = re.sub(_keep_company + r"(?= (?:next to|beside|by|near|in|inside|on|behind|in front of|left of|right of|to the|between|under|on top of)\b)", r"\1", text)
+    text = re.sub(_KEEP_COMPANY + r" with (?=(?:the|that|this|its|his|her|their|my|your)\b)", r"\1 next to ", text)  # "bring it over to sit with the banana"
+    text = re.sub(_KEEP_COMPANY + r"(?= (?:next to|beside|by|near|in|inside|on|behind|in front of|left of|right of|to the|between|under|on top of)\b)", r"\1", text)
     text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
@@ -172,6 +173,8 @@ def clean(command: str) -> str:
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(left|right)[- ]hand (?!side\b)(?=[a-z])", r"\1 ", text)  # "the right-hand one": the right one
+    text = re.sub(r"\bthe (\w+) one of the (?:two |three |four |\d )?((?:[a-z]+ )?[a-z]+?)s\b", r"the \1 \2", text)  # "the right-hand one of the two soda cans"
     text = re.sub(r"\b(?:adjacent|adjoining|contiguous) to\b", "next to", text)
     text = re.sub(r"\b(?:to|at) (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of", "at beside of"
     text = re.sub(r"\b(behind|beside|inside) of\b", r"\1", text)
@@ -197,6 +200,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(to|on) (left|right)( hand)?( side)?\b", r"\1 the \2\4", text)  # "move it to right side"
     text = places.positions(text)
     text = re.sub(r"(?<!\ba )\b(little|tiny) bit\b", r"a \1 bit", text)
+    text = re.sub(r"\b((?:the|that|this|my|it) ?[a-z]*(?: [a-z]+)?)'s been\b", r"\1 has been", text)  # "the green cube's been moved": has been
     # "the mug's dirty": the mug is (a statement), where "the mug's handle" is the mug's
     text = re.sub(r"\b((?:the|that|this|my) [a-z]+(?: [a-z]+)?)'s (?=(?:dirty|empty|full|broken|wet|sticky|heavy|too|so|really|very|not|just|still|always"
                   r"|in the way|in my way|blocking|sitting|lying|standing|getting|been|gonna|going|kind of|sort of|fine|ok|okay|a bit|a little|a|an|quite|rather|pretty"

@@ -28,7 +28,8 @@ from realsim.planner.ordering import EXTREMES, middle_of, ordered
 from realsim.planner.types import ObjectInfo
 from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
 
-DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those"}
+DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those",
+               "le", "la", "les", "el", "los", "las", "der", "die", "das", "den", "dem", "il", "lo", "un", "une", "una", "ein", "eine"}  # mixed in
 SINGULAR_PRONOUNS = {"it", "this", "that", "this one", "that one", "the same one", "same one", "the same", "same", "itself",
                      "the one", "same thing", "the same thing", "that thing", "this thing", "it again", "the object", "one"}
 PLURAL_PRONOUNS = {"them", "they", "those", "these", "both", "both of them", "all of them", "them all", "all of those",
@@ -48,6 +49,13 @@ LOCATOR_RELATIONS = (
 
 
 _TWO_TONE = re.compile(rf"\b({'|'.join(COLOR_WORDS)})(?:-| and |-and-)({'|'.join(COLOR_WORDS)}) (\w+)")
+# what a thing is made of or its state: words the scene records nothing of, never a noun
+UNCHECKED = frozenset({"plastic", "metal", "metallic", "aluminium", "aluminum", "steel", "wooden", "wood", "cardboard", "paper", "ceramic",
+                       "porcelain", "rubber", "fake", "real", "empty", "full", "clean", "dirty", "new", "old", "shiny", "matte", "chunky",
+                       "skinny", "thin", "thick", "fat", "deep", "shallow", "pointy", "plain", "squeezy", "squeeze"})
+# "the right one", "the bigger one", "the one on the left": said of several just named, one of them
+_AMONG_NAMED = re.compile(r"(?:the )?(?:(?:left|right|front|back|near|far|middle|first|second|third|last|\w+er|\w+est|\w+most)(?: hand)? one"
+                          r"|one (?:on|at|in) the (?:left|right|front|back|middle)(?: side)?)")
 # the one of a kind not named yet: "the last one", "the remaining cube", "the one left over", "the last can left"
 _REMAINING = re.compile(r"(?:the )?(?:last|remaining|leftover|left over|only other)(?: one)?|(?:the )?(?:remaining|leftover) (\w+(?: \w+)?)"
                         r"|(?:the )?(?:only |last )?(?:one|(\w+)) (?:that is |that s |thats |which is )?(?:left over|left$|still left|remaining)")
@@ -277,6 +285,8 @@ class Resolver:
         verbatim = [o for o in cands if said in (_generic_as_object(norm(o.label)), _generic_as_object(" ".join(name_words(o.name))))]
         if len(verbatim) == 1:  # the scene's own name said word for word ("the second from left yellow object"; "thing" for "object")
             return verbatim
+        if len(ctx.last) >= 2 and _AMONG_NAMED.fullmatch(text):  # "the two cans are crammed. slide the right one ...": of those two
+            cands = [o for o in cands if o in ctx.last] or cands
         text = re.sub(r"^(?:whichever|whatever)(?: one| thing)? (?:is|s) (?:the )?(\w+est|\w+most)$", r"\1 thing", text)  # "whatever is tallest"
         m = re.fullmatch(r"(.+?) (?:that is|that s|thats|which is|that are|which are|is|are) ((?:\w+ )?\w+)", text)
         if m and all(w in COLOR_WORDS or w in BIG or w in SMALL for w in m.group(2).split()):
@@ -370,6 +380,7 @@ class Resolver:
         if any(w in ("middle", "center", "centre", "central") for w in words):
             order = ("middle", None)
         skip = set(COLOR_WORDS) | set(BIG) | set(SMALL) | set(EXTREMES) | {"middle", "center", "centre", "central", "one", "ones", "most", "colored", "coloured"}
+        skip |= UNCHECKED - self._said  # "the round empty one", "the plastic bowl": what the scene cannot tell, unless its names say it
         nouns_raw = [w for w in words if w not in skip]
         if any(is_plural(w) for w in nouns_raw[-1:]):
             plural = True

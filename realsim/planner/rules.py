@@ -402,6 +402,12 @@ def _put(verb: str, rest: str, p: Parser, clause: str) -> Step | None:
         p.ctx.set(objs)
         return Step([Call("place", (o.name, [round(v, 3) for v in o.position])) for o in objs],
                      [Placed(o.name, (round(o.position[0], 3), round(o.position[1], 3))) for o in objs], tuple(o.name for o in objs))
+    on_table = re.search(rf"\s+(?:on|onto|down on) {SURFACES}(?=\s+(?:to the |in front|behind|next|beside|left|right|between|near|by)\b)", rest)
+    if on_table:  # "stand it on the table to the left of the cylinder": both hold
+        step = _put(verb, rest[: on_table.start()] + rest[on_table.end():], p, clause)
+        if step is not None:
+            step.goals.extend(OnTable(o) for o in step.objects if not any(isinstance(g, OnTable) and g.obj == o for g in step.goals))
+        return step
     last_error: InputError | None = None
     for start, end, kind in _find_relation(rest):
         obj_phrase, target_phrase = rest[:start].strip(), rest[end:].strip()

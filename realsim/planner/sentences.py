@@ -78,6 +78,6 @@ def is_question(command: str) -> bool:
     text = command.strip().lower()
     if re.search(r"[?.!]\s+\S", command.strip()):
         return False
-    if re.match(r"when (?:i|you|we|they|he|she)\b", text) and "?" not in text:
-        return False
+    if re.match(r"(?:when|what) (?:i|you|we|they|he|she)\b", text) and "?" not in text:
+        return False  # "what I'm picturing is ...": a wish
     return bool(QUESTION.match(text))

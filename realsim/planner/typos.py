@@ -16,6 +16,7 @@ from realsim.planner.vocab import (
     BIG,
     COLOR_WORDS,
     DIRECTION_WORDS,
+    FOREIGN_COLOR_WORDS,
     GENERIC,
     KINDS,
     NUMBERS,
@@ -85,7 +86,7 @@ _OTHER = frozenset({"plate", "please", "plates", "bowl", "ball", "bottle", "tabl
 
 def spelled(word: str, scene_words: set[str]) -> str:
     """``word`` of a noun phrase, or the one scene name, colour or size word it misspells."""
-    vocabulary = scene_words | set(COLOR_WORDS) | set(BIG) | set(SMALL)
+    vocabulary = scene_words | (set(COLOR_WORDS) - set(FOREIGN_COLOR_WORDS)) | set(BIG) | set(SMALL)
     if said := correct(word, vocabulary, _KNOWN):
         return said
     said = correct(singular(word), scene_words, _KNOWN) if is_plural(word) else None  # "strawberies": the plural kept

@@ -20,6 +20,14 @@ COLOR_WORDS: dict[str, str] = {**{c: c for c in COLORS}, "grey": "gray", "silver
                                "reddish": "red", "greenish": "green", "bluish": "blue", "blueish": "blue", "yellowish": "yellow",
                                "orangish": "orange", "orangey": "orange", "purplish": "purple", "pinkish": "pink", "blackish": "black",
                                "whitish": "white", "greyish": "gray", "grayish": "gray", "brownish": "brown"}
+# the colours in the languages people mix in (accents are folded before reading); never a misspelling's target
+FOREIGN_COLOR_WORDS: dict[str, str] = {"rouge": "red", "rojo": "red", "roja": "red", "rosso": "red", "rossa": "red", "vermelho": "red",
+                               "bleu": "blue", "bleue": "blue", "azul": "blue", "blau": "blue", "vert": "green", "verte": "green", "verde": "green",
+                               "grun": "green", "gruen": "green", "jaune": "yellow", "amarillo": "yellow", "amarilla": "yellow", "gelb": "yellow",
+                               "giallo": "yellow", "gialla": "yellow", "blanc": "white", "blanche": "white", "blanco": "white", "blanca": "white",
+                               "weiss": "white", "bianco": "white", "bianca": "white", "noir": "black", "noire": "black", "negro": "black",
+                               "negra": "black", "schwarz": "black", "nero": "black", "nera": "black", "naranja": "orange", "rosa": "pink"}
+COLOR_WORDS.update(FOREIGN_COLOR_WORDS)
 
 BIG = ("big", "large", "bigger", "larger", "biggest", "largest", "huge", "giant", "tall", "taller", "tallest", "high", "long", "longer", "longest")
 SMALL = ("small", "smaller", "smallest", "little", "tiny", "mini", "short", "shorter", "shortest", "low")

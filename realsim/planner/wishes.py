@@ -16,7 +16,7 @@ from realsim.planner.lexicon import RELATIONS
 
 __all__ = ["as_request"]
 
-_THING = r"((?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|nearest|farthest|furthest|closer|nearer|further|farther)\b)[a-z]+)+?)"
+_THING = r"(it|them|(?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|nearest|farthest|furthest|closer|nearer|further|farther)\b)[a-z]+)+?)"
 # a place the object is wished at; "to", "by", "over" and the like also say which one ("the can closest to the bowl")
 _PLACE = "|".join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0]))
                   if w not in ("to", "by", "over", "above", "near", "nearby", "toward", "towards", "closer to", "nearer to", "close to", "against"))
@@ -27,6 +27,8 @@ _FRAMES = (
     r"(?:it|that|things)(?: would| ?'d| will| might)? be (?:(?:really|so|very|quite|rather) )?(?:nice|lovely|great|good|grand|wonderful|helpful|ideal"
     r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
     r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
+    r"i(?: would| ?'d)? (?:much |far )?rather (?:have )?",
+    r"(?:i|we)(?: would| ?'d| will| ?'ll)? (?:feel|be) (?:(?:a lot|much|so|far) )?(?:better|happier|calmer|more comfortable|safer) (?:with |if )",
     r"(?:i|we)(?: would| ?'d| will| ?'ll)? be (?:(?:ever so|so|very|really|most|eternally|truly|forever|super|awfully) )*"
     r"(?:grateful|thankful|happy|glad|delighted|pleased|obliged|chuffed|thrilled|relieved) if ",
     r"i(?: should| would| ?'d| will| do)? (?:(?:very much|really|so|quite|rather|much|sort of|kind of|kinda|honestly|actually|also|just) )*(?:like|love|want|prefer|wish) (?:to (?:see|have|find|come back to) |it if )?",
