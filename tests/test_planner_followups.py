@@ -62,3 +62,14 @@ def test_the_right_one_of_those_just_named() -> None:
 def test_on_the_table_beside_a_thing_is_both() -> None:
     plan = RulePlanner().plan("put the red cube on the table next to the bowl", CLUTTER)
     assert [g.describe() for g in plan.goals] == ["obj3_cube next to obj6_bowl", "obj3_cube on the table"]
+
+
+def test_a_placing_without_its_verb_is_never_dropped_as_talk() -> None:
+    with pytest.raises(InputError, match="bowl"):  # CLUTTER has no plate: the second placing cannot be done, so nothing is
+        RulePlanner().plan("the red cube in the bowl and the blue one on the plate", CLUTTER)
+    assert call_lines("It bothers me that the banana is lined up behind the bowl, it looks cluttered. Push it 5 cm to the left.") == call_lines(
+        "push the banana 5 cm to the left")
+    assert call_lines("Set the strawberry dead centre between the banana and that red cube.") == call_lines(
+        "put the strawberry between the banana and the red cube")
+    assert call_lines("Butt the strawberry up tight against the right-hand side of the bowl.") == call_lines("put the strawberry to the right of the bowl")
+    assert call_lines("Line the strawberry up behind the bowl.") == call_lines("put the strawberry behind the bowl")

@@ -38,6 +38,9 @@ def is_aside(clause: str, p: Parser) -> bool:
     if VERB_START.match(clause) and (re.search(r"\b(?:the|a|an|in|into|on|onto|to|of|next to|behind|beside)$", clause)
                                      or re.search(r"\b(?:in|into|on|onto|inside|next to|behind|beside|in front of|left of|right of) the\b", clause)):
         return False  # "drop it in the white bowl": a place the planner could not find is no aside either
+    if (has_relation(clause) and re.match(r"(?:the|a|an|that|this|my|your)\s+[a-z]", clause)
+            and not re.search(rf"\b{STATEMENT_VERB}\b", clause)):
+        return False  # "and the blue one in the bowl": a placing without its verb, never talk
     if re.match(rf"{_OPENER}(?:there|here|we have|i have|we got|i got|you see|you can see|look|(?:see|watch|notice|look at) (?:how|what|if|whether)"
                 rf"|let s see|lets see|has|have|had|does|did)\b", clause):
         return True  # "so there's a bowl and a mug here": what the speaker sees

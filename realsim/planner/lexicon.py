@@ -13,7 +13,7 @@ TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", 
         "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck", "haul", "lug", "sink", "butt")
+       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck", "haul", "lug", "sink", "butt", "line up", "line")
 PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate", "kick", "tap")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))

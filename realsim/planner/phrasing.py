@@ -27,7 +27,7 @@ from realsim.planner import (
     voices,
     wishes,
 )
-from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
+from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, STATEMENT_VERB, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
 from realsim.planner.refine import REFINE
 from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL, VAGUE_DISTANCES
 
@@ -181,7 +181,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b((?:left|right)(?: hand)? side|front|back) from\b", r"\1 of", text)  # "on left side from X"
     text = re.sub(r"\b((?:closest|nearest|closer|nearer|furthest|farthest|further|farther)(?: away)? (?:to|from)) (?:the |your )?(?:robot'?s? )?base\b",
                   r"\1 the robot", text)  # the robot's base
-    text = re.sub(r"\b(?:(?:in|into|inside|at|to|on) (?:the )?|(?<!the )(?<!\w))(left|right)(?: hand)? side of\b", r"to the \1 of", text)  # "in right side of X": a side
+    text = re.sub(r"\b(?:(?:in|into|inside|at|to|on|against|along|by) (?:the )?|(?<!the )(?<!\w))(left|right)(?:[- ]hand)? side of\b", r"to the \1 of", text)  # "in right side of X": a side
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
     text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
@@ -270,7 +270,7 @@ def split_command(command: str) -> list[str]:
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
-            put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 else None
+            put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 and not _STATES.search(f"{clauses[-1]} {part}") else None
             if AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
                 clauses.append(part)
             elif (same := re.fullmatch(r"(?:(?:in|on|into|onto|to|at) )?(?:the )?same (\w+)(?: again| too| as well)?", part)) and rel and (
@@ -288,7 +288,7 @@ def split_command(command: str) -> list[str]:
                 clauses[-1] = f"{clauses[-1]} {m.group(1)}"  # "pick up the green cube, the one furthest from you": which one
             elif WHICH_ONE.match(part):  # "..., which one is farthest from you? pick that one up": a question of its own
                 clauses.append(part)
-            elif re.match(r"(?:which|that|who) ", part):  # "... on the red cube, which is on the plate": says which
+            elif re.match(r"(?:which|who) |that (?:is|are|was|were|s|sits|stands|lies|rests|has|have|had|looks|seems|i|you|we|they|it)\b", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
@@ -305,6 +305,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_STATES = re.compile(rf"\b{STATEMENT_VERB}\b")  # "the can is lined up behind the box, it looks cluttered": said of things, nothing placed
 _OTHER_SIDE = re.compile(r"(?:but |and |only )*(?:on |to |at |onto )?(?:the )?(?:other|opposite) (?:side|way|one)(?: (?:this time|instead|of it|round|around))?")
 _SIDES = {"left": "right", "right": "left", "in front of": "behind", "behind": "in front of"}
 
