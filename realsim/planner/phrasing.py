@@ -27,7 +27,21 @@ from realsim.planner import (
     voices,
     wishes,
 )
-from realsim.planner.lexicon import AGAIN, ALL_VERBS, AVOID, PUSH, PUT, RELATION_AT, RELATIONS, STATEMENT_VERB, TAKE, VERB_ANYWHERE, VERB_START, has_relation, relation_start
+from realsim.planner.lexicon import (
+    AGAIN,
+    ALL_VERBS,
+    AVOID,
+    PUSH,
+    PUT,
+    RELATION_AT,
+    RELATIONS,
+    STATEMENT_VERB,
+    TAKE,
+    VERB_ANYWHERE,
+    VERB_START,
+    has_relation,
+    relation_start,
+)
 from realsim.planner.refine import REFINE
 from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL, VAGUE_DISTANCES
 
