@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import ObjectInfo, RulePlanner, check
@@ -287,3 +287,16 @@ def test_other_voices(sentence: str, lines: list[str]) -> None:
 def test_an_object_not_to_touch_is_never_acted_on(sentence: str) -> None:
     with pytest.raises(InputError, match="not to touch|ambiguous|what should I do"):
         RulePlanner().plan(sentence, CLUTTER)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("I want the banana to end up closer to me than the bowl is.", "put the banana in front of the bowl"),
+    ("Make it so the strawberry is farther from me than the bowl.", "put the strawberry behind the bowl"),
+    ("By the end, the banana should be further left than the bowl.", "put the banana to the left of the bowl"),
+    ("I'd like the banana about 5 cm further from me than it is now.", "push the banana 5 cm forward"),
+    ("Get the green cube to within a couple of centimetres of the blue one.", "put the green cube next to the blue cube"),
+    ("Banana, you do it more at left, 10 centimetre.", "push the banana 10 cm to the left"),
+    ("Put the can of soda of the right side inside of bowl, please.", "put the right soda can in the bowl"),
+])
+def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

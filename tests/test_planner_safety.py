@@ -61,3 +61,13 @@ def test_near_equal_sizes_refused_clear_ones_chosen() -> None:
     boxes.append(ObjectInfo("obj4_box", "box", (), (0.4, 0.4, 0.04), (0.08, 0.08, 0.08)))
     assert calls("pick up the biggest box", boxes) == ["grasp('obj4_box')"]
     assert calls("pick up the tall box on the left", boxes)  # a kind, not a comparison: no margin
+
+
+@pytest.mark.parametrize("sentence", [
+    "how about you pour the soup into the bowl, genius?",  # a verb no primitive does, inside a clause
+    "I need you to peel the banana and put it in the bowl",  # never skipped as what "it" means
+    "could you peel the banana, then put it in the bowl",
+])
+def test_what_no_primitive_does_is_refused_wherever_it_is_asked(sentence: str) -> None:
+    with pytest.raises(InputError, match="cannot (?:pour|peel)"):
+        RulePlanner().plan(sentence, CLUTTER)

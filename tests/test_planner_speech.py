@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from test_planner_rules import CLUTTER
+from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
@@ -39,3 +39,14 @@ def test_an_undo_keeps_what_it_undoes() -> None:
     calls = [c.text() for c in RulePlanner().plan(
         "pick up the banana. put it in the bowl. actually no, take it out again and put it back exactly where it was", CLUTTER).calls]
     assert calls[0] == "grasp('obj7_banana')" and calls[-1] == "place('obj7_banana', [0.65, 0.0, 0.02])"
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("Put the banana behind the bowl, hmm, no, make that in front of it.", "put the banana in front of the bowl"),
+    ("Okay, bowl to the left of the banana. Er, I said that backwards, I meant the banana to the left of the bowl.",
+     "put the banana to the left of the bowl"),
+    ("Could you put the strawberry in the bowl? Oh sorry, not the bowl, onto the blue cube.", "put the strawberry on the blue cube"),
+    ("Take the strawberry and put it, uh, by the bowl. No, between the bowl and the banana.", "take the strawberry and put it between the bowl and the banana"),
+])
+def test_a_place_taken_back_and_said_again(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

@@ -195,3 +195,20 @@ def test_old_and_pirate_word_forms_become_plain(said: str, expected: str) -> Non
 ])
 def test_a_playful_voice_asks_what_the_plain_words_ask(said: str, plain_said: str) -> None:
     assert call_lines(said) == call_lines(plain_said)
+
+
+@pytest.mark.parametrize(("said", "plain_said"), [
+    ("Och, gie yon wee green cube a shove tae the left, aboot five centimetres like.", "push the green cube 5 cm to the left"),
+    ("Cannae see a thing past that banana, shift it oot the road, would ye?", "move the banana out of the way"),
+    ("Well I'll be, that banana's plumb in the way. Carry it on over behind the bowl, would ya?", "put the banana behind the bowl"),
+    ("yo toss the strawberry in the bowl no cap", "put the strawberry in the bowl"),
+    ("lowkey the strawberry needs to be chillin next to the banana fr fr", "put the strawberry next to the banana"),
+    ("Translate the banana 5 cm along the base frame's negative x axis, i.e. toward the robot.", "push the banana back 5 cm"),
+    ("Displace the strawberry laterally by 0.04 m in the robot's negative y direction.", "push the strawberry 4 cm to the right"),
+    ("Apply a planar displacement of +4 cm along the y axis to the banana.", "push the banana 4 cm to the left"),
+    ("Relocate the strawberry to a position posterior to the bowl.", "put the strawberry behind the bowl"),
+    ("Elevate the blue cube off the tabletop surface and maintain the grasp.", "lift the blue cube"),
+    ("Transpose the positions of the banana and the strawberry.", "swap the banana and the strawberry"),
+])
+def test_regional_slang_and_technical_voices(said: str, plain_said: str) -> None:
+    assert call_lines(said) == call_lines(plain_said)

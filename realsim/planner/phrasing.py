@@ -117,7 +117,7 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
-    text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(voices.plain(text))))))
+    text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(_by_comparison(voices.plain(text)))))))
     text = re.sub(r"\s*,?\s*(?:and )?(?:be (?:quick|fast|snappy|swift|careful|gentle|nice|quiet)(?: about it)?|make it (?:snappy|quick)|look lively"
                   r"|step (?:to it|lively)|(?:and )?(?:on|at) the double|chop[- ]chop)(?=\s*(?:$|[.,;!?]))", "", text)  # "... and be quick about it!"
     text = re.sub(r"(\b(?:swap|switch|exchange|trade)\b[^.;!?]*?),?\s*(?:the |to the )?(?:left|right) (?:for|with|and) (?:the |to the )?(?:left|right)\b", r"\1", text)
@@ -134,7 +134,7 @@ def clean(command: str) -> str:
     text = re.sub(rf"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?={VERB_START.pattern})", ", ", text)  # "tall white can -> place it left of the red can"
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*(?=(?:next to|in|into|on|onto|behind|left of|right of|in front of|between|beside)\b)", " ", text)
     text = re.sub(r"\s*(?:-+>|=+>|→|⇒|⟶)\s*", " to ", text)  # "mug -> bowl": where it goes
-    text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+(?: (?!(?:and|then|in|into|on|onto|to|next|behind|from|for|please)\b)\w+)?)",
+    text = re.sub(r"\b(can|box|bottle|jar|tin|carton|bag|packet|cup|bowl) of (?!the\b)(\w+(?: (?!(?:and|then|in|into|on|onto|to|next|behind|from|for|please|of|at|inside|with)\b)\w+)?)",
                   r"\2 \1", text)  # "the can of tomato", "a tin of tomato soup"
     text = re.sub(r"\s+by (?:its|the|their) (?:handle|rim|top|side|edge|body|lid|middle)s?\b", "", text)  # the grasp is the robot's choice
     text = re.sub(r"\s+and (?:hold|keep) (?:it|them|holding it|holding them)(?: up| there| in the air| steady| still)?(?=$|[.,;!?])", "", text)
@@ -157,7 +157,7 @@ def clean(command: str) -> str:
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:the |your )?arm (?:back )?(?:to )?home\b", "go home", text)  # "2) arm home"
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
-    text = re.sub(r"\bover (?=(?:beside|next to|near|alongside)\b)", "", text)  # "over beside the bowl": beside it
+    text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?:\bover by|(?:^|(?<=[,.;!?] ))by)(?= (?:the|that|this|my|your) )", "next to", text)  # "banana, (over) by the bowl"
     text = re.sub(r"\b((?:\w+ )?\w+) up[.!,]\s*(?:up )?off the (?:deck|table|floor|ground|surface|counter|desk)\b", r"\1 up", text)  # "marker up! off the deck!": lifted
     text = re.sub(r"\b(?:finish|end|wrap(?: it| things)? up|conclude)(?: off| up)? by (?=\w+ing\b)", "", text)  # "and finish by going back home"
@@ -187,6 +187,12 @@ def clean(command: str) -> str:
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(closer to|nearer to|farther from|further from|farther away from|further away from) (?:me|you|the robot) than (?:it|they) (?:is|are|was|were)(?: now| at the moment)?\b",
+                  lambda m: "closer" if m.group(1).startswith(("closer", "nearer")) else "further away", text)  # than where it is now
+    text = re.sub(r"\b(?:to )?within (?:about |roughly |around |some )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|a couple of|a few) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*|finger\w*)"
+                  r" (?:of|from) (?=(?:the|that|this|it|them)\b)", "next to ", text)  # "to within a couple of centimetres of the blue one"
+    text = re.sub(r"\bmore at (?:the )?(left|right)\b", r"more to the \1", text)  # "do it more at left"
+    text = re.sub(r"\b(?:you )?do ((?:it|them|(?:the|that|this) [a-z ]+?)) (?=more (?:to the )?(?:left|right|forward|back)\b)", r"move \1 ", text)
     text = re.sub(r"\b(left|right)[- ]hand (?!side\b)(?=[a-z])", r"\1 ", text)  # "the right-hand one": the right one
     text = re.sub(r"\bthe (\w+) one of the (?:two |three |four |\d )?((?:[a-z]+ )?[a-z]+?)s\b", r"the \1 \2", text)  # "the right-hand one of the two soda cans"
     text = re.sub(r"\b(?:adjacent|adjoining|contiguous) to\b", "next to", text)
@@ -260,6 +266,15 @@ def clean(command: str) -> str:
     text = re.sub(rf"(?:^|(?<=[.,;] ))((?:the|that|this) [a-z ]+?) you (?:{_YOU_MODAL} )?({VERB_START.pattern})", r"\2 \1", text)
     text = re.sub(rf"(?:^|(?<=[.,;] ))you (?:{_YOU_MODAL} )?(?={VERB_START.pattern})", "", text)  # "orange cylinder, you are sliding it left"
     return re.sub(r"\bto (forwards?|backwards?|ahead)\b", r"\1", text)  # "to forward"
+
+
+def _by_comparison(text: str) -> str:
+    """A place said by comparison with another thing: "closer to me than the mug (is)" is in front
+    of it, "farther from me than the tin" behind it, "further left than the bottle" left of it."""
+    text = re.sub(r"\b(?:closer|nearer) to (?:me|you|the robot|us) than ((?:the|that|this) [a-z ]+?)(?: is| are| does)?(?: now)?(?=$|[.,;!?])", r"in front of \1", text)
+    text = re.sub(r"\b(?:farther|further) (?:away )?from (?:me|you|the robot|us) than ((?:the|that|this) [a-z ]+?)(?: is| are| does)?(?: now)?(?=$|[.,;!?])", r"behind \1", text)
+    text = re.sub(r"\b(?:farther|further|more) (?:to the )?(left|right) than ((?:the|that|this) [a-z ]+?)(?: is| are| does)?(?=$|[.,;!?])", r"to the \1 of \2", text)
+    return re.sub(r"\b(?:of|from|at|in) the (left|right)(?:[- ]hand)? side\b(?! of)", r"on the \1", text)  # "the can of the right side"
 
 
 def split_command(command: str) -> list[str]:

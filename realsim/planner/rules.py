@@ -89,6 +89,8 @@ def _read(command: str, p: Parser) -> tuple[list[Step], dict[str, str]]:
             named = p.resolver.resolve(phrase, Context(p.ctx.last), allow_plural=True)
             kept |= {o.name: phrase for o in named}
             p.ctx.set(named)
+        if c.startswith(TOPIC) and (m := BEYOND.match(c[len(TOPIC):])):  # "peel the banana and put it in the bowl": the peel cannot be done
+            raise InputError(f"the robot cannot {m.group(0)}: it picks up, puts, pushes, swaps and opens drawers; {HELP}")
         if c.startswith(TOPIC):  # "the thing at the back, push it ...": what "it" means next
             p.ctx.set(p.resolver.resolve(c[len(TOPIC):], Context(p.ctx.last), allow_plural=True))
         elif c and steps and refines(steps[-1], " ".join(c.split())):  # "put the can next to the bowl, on the left"
@@ -275,8 +277,8 @@ def _clause(clause: str, p: Parser) -> Step:
     if not re.search(r"\b(?:closer|nearer)\b", c):  # "bring the mug closer to me" moves it, not into the hand
         c = re.sub(r"^(?:hand|pass|give|bring) (.+?) (?:over to me|over here|over|to me|here)$", r"hand me \1", c)
     verb, rest = _verb(c)
-    if verb is None and (m := BEYOND.match(c)):  # "pour the soup into the bowl": no primitive does it
-        raise InputError(f"the robot cannot {m.group(0)}: it picks up, puts, pushes, swaps and opens drawers; {HELP}")
+    if verb is None and (m := BEYOND.match(c) or _BEYOND_ASKED.search(c)):  # "(how about you) pour the soup into the bowl": no primitive does it
+        raise InputError(f"the robot cannot {m.group(1) if m.lastindex else m.group(0)}: it picks up, puts, pushes, swaps and opens drawers; {HELP}")
     if verb is None and (m := _MEANS.fullmatch(c)):  # "tidy up by putting the mug in the bowl": the means is the command
         return _clause(m.group(1), p)
     if verb is None:  # "the banana goes in the bowl", "i like the can next to the box", "mug in the bowl"
@@ -325,6 +327,8 @@ def _clause(clause: str, p: Parser) -> Step:
     raise InputError(f"cannot understand {clause!r}; {HELP}")
 
 
+# a verb no primitive does, asked of the robot inside a clause ("how about you pour the soup", "I need you to peel it")
+_BEYOND_ASKED = re.compile(rf"\b(?:you|to|please|just|and|then|could|can|would|will|must|should)\s+({BEYOND.pattern[:-2]})\b(?=\s+(?:the|it|them|that|this|some|a|an|out|in|into|over|up)\b)")
 _MEANS = re.compile(rf".+? by ((?:{VERB_START.pattern}).+)")  # a purpose, then "by" and what to do
 
 

@@ -18,8 +18,11 @@ from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
 
 _MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
-                     r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm)(?=[\s,])")
-_WEAK = re.compile(r"(?:uh+|um+|er+|erm)")
+                     r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm|hmm+)(?=[\s,])")
+# the speaker saying the whole last request was turned round, before saying it again
+_BACKWARDS = re.compile(r"[,.;\s]*(?:i |i ve |you )?(?:said|got|had|have|put|did) (?:that|it|this) (?:backwards|backward|wrong|the wrong way(?: round| around)?|mixed up|the other way(?: round| around)?)[,.;\s]*$")
+_BY = re.compile(r"(?<![a-z])by(?= (?:the|that|this|my|your|it)\b)")  # "by the mug": a place too, where a relation pattern leaves "by" out
+_WEAK = re.compile(r"(?:uh+|um+|er+|erm|hmm+)")
 _AUDIENCE = r"(?:class|students|everyone|everybody|kids|children|guys|folks|team|you all|all of you)"
 # a teacher's opening before the narration: "now students, ", "class, watch the arm: ", "everyone look here: "
 _ATTENTION = re.compile(rf"^(?:(?:now|ok|okay|alright|all right|so|right|and)[\s,]+)*(?:{_AUDIENCE}[\s,:]+)?(?:(?:now|ok|okay|alright)[\s,]+)?"
@@ -58,6 +61,11 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             continue
         weak = bool(_WEAK.fullmatch(m.group(1)))
         said = re.sub(r"^(?:(?:just|rather|instead|actually|make (?:that|it)|i meant?)\s+)+", "", after)
+        said = re.sub(r"^not (?:the |that |this |in |into |on |onto |by |next to )*[a-z ]+?,\s*(?=\S)", "", said)  # "not the bowl, onto the green box"
+        if _BACKWARDS.search(before) and (verb.match(said) or relation.search(f" {said}")):
+            # "bowl to the left of the mug. er, I said that backwards, I meant the mug to the left of the bowl": said anew
+            start = max((m.end() for m in re.finditer(r"[.;!?]\s*", _BACKWARDS.sub("", before).rstrip(" ,.;"))), default=0)
+            return f"{before[:start]}{said}".strip()
         if verb.match(said) and not weak:  # "put the mug in the bowl no sorry just pick up the bowl"
             # "..., actually no, take it out again": an undo of what was done, so what was done stays
             # unless the speaker cancelled it ("scratch that") or the new command names its own object first
@@ -65,9 +73,12 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             undo = re.match(r"[a-z ]*?\b(?:it|them)\b", said) and not re.match(r"[a-z ]*?\b(?:the|a|an|this|that)\s[a-z ]*?\b(?:it|them)\b", said)
             return f"{before}, {said}" if undo and not cancelled else said
         if relation.match(said):  # "the soup can in the mug no no in the bowl"
-            places = list(relation.finditer(before))
+            places = sorted([*relation.finditer(before), *_BY.finditer(before)], key=lambda r: r.start())  # "put it by the mug. no, between ..."
             if places:
-                return f"{before[: places[-1].start()].rstrip()} {said}"
+                old_place = re.match(r"\s*(?:\w+\s+)*?((?:the|that|this|my|your)\s[a-z ]+?)\s*(?:[,.;]|$)", before[places[-1].end():])
+                if old_place and re.search(r"\b(?:it|that one)\b", said):  # "behind the box, no, make that in front of it": of the box
+                    said = re.sub(r"\b(?:it|that one)\b", old_place.group(1), said, count=1)
+                return f"{before[: places[-1].start()].rstrip(' ,')} {said}"
         places = [r for r in relation.finditer(before) if not _POSITION.match(before, r.end())]  # "on the right" says which
         start = max([m.end() for m in verb.finditer(before)] + [r.end() for r in places], default=0)
         if re.match(r"(?:the|that|this|a|an)\s", said) and re.match(r"\s*(?:the|that|this|a|an)\s", before[start:]):

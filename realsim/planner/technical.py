@@ -24,7 +24,17 @@ _EXTREME = {(True, "y"): "on the right", (False, "y"): "on the left", (True, "x"
 _REWRITES: tuple[tuple[str, Any], ...] = (
     # "2 in toward ...": inches when no object follows the "in" (never "2 in the bowl")
     (r"(?<=\d) ?in\.?(?=\s*(?:$|[,.;(]|(?:to|toward|towards|forward|forwards|back|backward|backwards|left|right|away|closer|nearer|further|farther|along|in the)\b))", " inch"),
-    (r"\b(?:displace|reposition|re-position|re position)\b", "move"),
+    (r"\b(?:displace|reposition|re-position|re position|relocate)\b", "move"),
+    (r"\b(?:elevate|hoist)\b", "lift"), (r"\b(?:transpose|interchange|exchange) (?:the )?(?:positions|places|locations) of\b", "swap"),
+    (r"\b(?:to )?(?:a |the )?(?:position|location|place|point) (posterior|anterior) to\b", r"\1 to"),
+    (r"\bposterior to\b", "behind"), (r"\banterior to\b", "in front of"), (r"\s+(?:laterally|longitudinally|linearly)\b", ""),
+    (r",?\s*(?:and )?(?:maintain|keep|hold|retain) (?:the |its |a )?(?:grasp|grip|hold)(?: on it)?\b", ""),
+    # "apply a planar displacement of +4 cm along the y axis to the can": move the can
+    (r"\bapply (?:an? )?(?:planar |lateral |linear |small )?(?:displacement|translation|offset|shift|move) of (.+?) to ((?:the|that|this) [a-z ]+?)(?=$|[.,;])", r"move \2 \1"),
+    # an axis said in words: "along the base frame's negative x axis", "in the robot's negative y direction"
+    (r"\b(?:(?:along|in|toward|towards|on) )?(?:the )?(?:(?:base|robot|world)(?: frame)?(?: s|'s)? )?(positive|negative|\+|-) ?([xy])(?:[- ](?:axis|direction))\b",
+     lambda m: f"{'+' if m.group(1) in ('positive', '+') else '-'}{m.group(2)}"),
+    (rf"([+-])\s?(\d+(?:\.\d+)?\s*{_UNIT}) (?:along|in) (?:the )?([xy])(?:[- ](?:axis|direction))?\b", r"\2 \1\3"),
     (r"(?:(?<=\s)|^)(?:~|≈|approx\.?|ca\.|circa)\s*(?=\d)", "about "),
     (r"\b(?:approx\.?|approximately)(?=\s)", "about"),
     # a tolerance: "+/- 1 cm", "± 5 mm", "plus or minus 1 cm", "to within 1 cm", "give or take a cm"
@@ -44,7 +54,7 @@ _REWRITES: tuple[tuple[str, Any], ...] = (
     (r",?\s*(?:clear of|away from|without touching|not touching|off) (?:the|its) (?:rim|edge|edges|lip|wall|walls)\b", " "),
     (r",?\s*\bso no (?:grasp|grasping|pick|picking|lift|lifting|lift-off)\b|\bno (?:grasp|grasping|pick|lift|lifting)\b\s*(?=[:,;])", ""),  # the push says how
     (r"\b(pick up|grab|lift|grasp) and (?=(?:place|put|set|drop|move|lay) (it|them)\b)", r"\1 \2 and "),  # "execute a pick and place it ..."
-    (r"\b(?:the )?(table|counter|desk|bench)(?: (?:surface|top|plane))\b", r"the \1"),
+    (r"\b(?:the )?(table|counter|desk|bench)(?: ?(?:surface|top|plane))(?: surface)?\b", r"the \1"),
     (r",?\s*(?:wherever|where) there(?: s|'s| is)? (?:enough )?(?:clearance|room|space|free space|a free spot)\b", ""),
     # an offset along an axis from an object: "at a -x offset from the banana", "8 cm in +x from the cube"
     (rf"\b(?:at )?(?:an? )?(?:{_AMOUNT}\s+)?(?:(?:in|along|toward|towards|on the)\s+)?([+-])\s?([xy])(?:\s+(?:offset|direction|side|axis))?\s+(?:from|of|relative to|with respect to)\b",

@@ -1,4 +1,4 @@
-"""Playful voices said plainly: mock-archaic English and pirate talk.
+"""Voices said plainly: mock-archaic English, pirate talk, regional English and young people's slang.
 
 "Prithee, good arm, set thou yon mug upon the plate" is "please, set the mug on the plate";
 "Arr matey, haul the can o' soup to port o' the bowl an' be quick" is "haul the can of soup to
@@ -22,6 +22,12 @@ _WORDS: dict[str, str] = {
     "my own": "my", "your own self": "yourself", "your self": "yourself", "back and forward": "back and forth",
     "an it please you": "please", "if it please you": "please", "prithee": "please", "pray you": "please", "i pray you": "please",
     "i beseech you": "please", "beseech you": "please", "i bid you": "please", "i command you to": "", "i charge you to": "",
+    # regional English and young people's slang
+    "och": "", "gie": "give", "tae": "to", "aboot": "about", "oot": "out", "cannae": "cannot", "canna": "cannot",
+    "dinnae": "do not", "didnae": "did not", "wouldnae": "would not", "ya": "you", "y'all": "you", "yall": "you", "youse": "you",
+    "ain't": "is not", "fixin to": "going to", "fixing to": "going to", "out the road": "out of the way", "out of the road": "out of the way",
+    "no cap": "", "lowkey": "", "highkey": "", "fr fr": "", "deadass": "", "on god": "", "istg": "", "ngl": "", "yeet": "toss",
+    "chillin": "sitting", "chilling": "sitting", "vibing": "sitting", "vibin": "sitting", "plumb": "",
     # pirate talk
     "o'": "of", "an'": "and", "me hearty": "", "me hearties": "", "matey": "", "mateys": "", "swab": "", "ye scallywag": "",
     "scallywag": "", "landlubber": "", "me bucko": "", "bucko": "",
@@ -44,8 +50,10 @@ def _eth(m: re.Match[str]) -> str:
 
 
 def plain(text: str) -> str:
-    """``text`` (lower case) with archaic and pirate word forms said plainly."""
-    if not re.search(r"\b(?:thou|thee|thy|thine|ye|yer|yon|yonder|unto|upon|betwixt|o'er|doth|hath|shalt|wilt|prithee|beseech|o'|an'"
+    """``text`` (lower case) with archaic, pirate, regional and slang word forms said plainly."""
+    if not re.search(r"\b(?:thou|thee|thy|thine|ye|yer|yon|yonder|unto|upon|betwixt|o'er|doth|hath|shalt|wilt|prithee|beseech|o'|an'|och|gie|tae|aboot|oot|wee"
+                     r"|cannae|canna|dinnae|didnae|wouldnae|ya|y'all|yall|youse|ain't|fixin|fixing to|road|no cap|lowkey|highkey|fr|deadass|on god|istg|ngl"
+                     r"|yeet|chillin|chilling|vibing|vibin|plumb"
                      rf"|matey|swab|hearty|\w+eth|{_INTERJECTIONS})(?!\w)", text):
         return text
     text = _OPENER.sub(" ", text)
@@ -53,7 +61,9 @@ def plain(text: str) -> str:
     for old, new in sorted(_WORDS.items(), key=lambda kv: (" " in kv[0], -len(kv[0]))):  # words, then phrases
         text = re.sub(rf"(?<![\w']){re.escape(old)}(?![\w'])", new, text)
     text = _ETH.sub(_eth, text)
+    text = re.sub(r"\bwee\b(?! bit)", "small", text)  # "yon wee cube"; "a wee bit" is an amount
     text = re.sub(r"\b(on|at|to) (?:the|your|my) (left|right) hand\b(?! side)", r"\1 the \2", text)  # "upon the right hand"
+    text = re.sub(r"\bgive ((?:it|them|(?:the|that|this) [a-z ]+?)) an? (?:(?:little|small|gentle|good|wee) )?(?:shove|push|nudge|poke|bump|tap)\b", r"push \1", text)  # "gie yon wee cube a shove"
     text = re.sub(r"\b(set|place|put|lift|raise|move|push|slide|carry|take|bring|remove|grab|haul|fetch) you\b(?! (?:the )?(?:left|right))", r"\1", text)  # "set thou the mug"
     text = re.sub(r"\byou (?:will|must|shall) (?=(?:set|place|put|lift|raise|move|push|slide|carry|take|bring|remove|grab|swap|haul)\b)", "", text)
     return re.sub(r"\s{2,}", " ", text).strip()

@@ -16,7 +16,7 @@ from realsim.planner.lexicon import RELATIONS
 
 __all__ = ["as_request"]
 
-_THING = r"(it|them|(?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|nearest|farthest|furthest|closer|nearer|further|farther)\b)[a-z]+)+?)"
+_THING = r"(it|them|(?:the|that|this|those|these|my|both|all(?: the)?)(?: (?!(?:closest|nearest|farthest|furthest|closer|nearer|further|farther)\b)[a-z']+)+?)"
 # a place the object is wished at; "to", "by", "over" and the like also say which one ("the can closest to the bowl")
 _PLACE = "|".join(re.escape(w) for w, _ in sorted(RELATIONS, key=lambda r: -len(r[0]))
                   if w not in ("to", "by", "over", "above", "near", "nearby", "toward", "towards", "closer to", "nearer to", "close to", "against"))
@@ -27,7 +27,7 @@ _FRAMES = (
     r"(?:it|that|things)(?: would| ?'d| will| might)? be (?:(?:really|so|very|quite|rather) )?(?:nice|lovely|great|good|grand|wonderful|helpful|ideal"
     r"|better|perfect|cool|neat|awesome|brilliant|handy|fab|fabulous) if ",
     r"i(?: was| ?'m| am| have been| ?'ve been| ?'d been)? (?:(?:sort of|kind of|kinda|really|rather|just) )?hoping (?:that )?",
-    r"i(?: would| ?'d)? (?:much |far )?rather (?:have )?",
+    r"i(?: would| ?'d)? (?:much |far )?rather (?:have )?", r"(?:make|have) (?:it )?so (?:that )?",
     r"(?:i|we)(?: would| ?'d| will| ?'ll)? (?:feel|be) (?:(?:a lot|much|so|far) )?(?:better|happier|calmer|more comfortable|safer) (?:with |if )",
     r"(?:i|we)(?: would| ?'d| will| ?'ll)? be (?:(?:ever so|so|very|really|most|eternally|truly|forever|super|awfully) )*"
     r"(?:grateful|thankful|happy|glad|delighted|pleased|obliged|chuffed|thrilled|relieved) if ",
@@ -37,7 +37,7 @@ _FRAMES = (
     r"|all i (?:want|need) is|my goal is|the goal is|ideally|in the end|in my (?:head|mind|mind ?'?s eye))[:,]? ",
 )
 # asked, not told: "could the can perhaps go in front of the box?", "is there any way the mug could end up left of the bowl?"
-_WHOLE_THING = r"((?:the|that|this|my)(?: (?!(?:could|might|would|may|should|will|perhaps|maybe|possibly)\b)[a-z]+)+)"  # greedy: "the tall white can perhaps go" keeps "can" in the thing
+_WHOLE_THING = r"((?:the|that|this|my)(?: (?!(?:could|might|would|may|should|will|perhaps|maybe|possibly)\b)[a-z']+)+)"  # greedy: "the tall white can perhaps go" keeps "can" in the thing
 _SOFT = r"(?:(?:perhaps|maybe|possibly|please|just|somehow) )*"
 _GOES = (r"(?:go|end up|sit|be|stand|move|get|be put|be placed|be moved|be set|rest) (?:(?:neatly|nicely|right|just|over|somewhere|someplace|anywhere) )*"
          rf"(?=(?:{_PLACE}|where) )")
