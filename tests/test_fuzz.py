@@ -7,9 +7,11 @@ memory of the whole run stays bounded. Examples are derandomized so the suite is
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import io
 import resource
+import shutil
 import tempfile
 import time
 from pathlib import Path
@@ -32,6 +34,7 @@ FUZZ = settings(max_examples=200, deadline=None, derandomize=True, database=None
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 SECONDS_PER_EXAMPLE = 10.0
 WORK = Path(tempfile.mkdtemp(prefix="realsim-fuzz-"))
+atexit.register(shutil.rmtree, WORK, ignore_errors=True)  # the run's own scratch files go with it
 
 
 def _seed_files() -> dict[str, list[bytes]]:
