@@ -19,8 +19,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.cutsearch import best_cut
-from realsim.completion.hull import (MeshArrays, extreme_points, from_arrays, mesh_arrays, triangles_and_areas, trimesh_hull, volume,
-                                    within_convex)
+from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, triangles_and_areas, trimesh_hull, volume, within_convex
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
