@@ -20,6 +20,8 @@ import sys
 from multiprocessing.connection import Connection
 from typing import Any, Callable, Generic, TypeVar
 
+from realsim.alloc import release_free_memory
+
 R = TypeVar("R")
 
 TIMEOUT = 120.0  # s: a helper not done this long after this process ran out of items is given up
@@ -49,6 +51,7 @@ def _helper(fn: Callable[[int], Any], n: int, counter: Any, send: Connection) ->
     """Take items until none is left, then send all the results in one message (never blocking on a
     full pipe while there is work: the parent reads only when it asks for the results)."""
     _in_helper.append(True)
+    release_free_memory()  # the free heap's pages are then the parent's alone: its temporaries write them in place
     done: dict[int, Any] = {}
     try:
         while (i := _claim(counter, n)) is not None:

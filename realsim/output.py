@@ -82,6 +82,6 @@ def write_scene(scene: Scene, dest: Path, *, force: bool = False) -> Path:
         if scene.labels is not None:
             np.save(tmp / "labels.npy", scene.labels.astype(np.int32))
         (tmp / "scene.json").write_text(json.dumps(scene_record(scene), indent=2) + "\n")
-        model = verify_compiles(tmp / "scene.xml")
+        model = verify_compiles(tmp / "scene.xml", written_from=scene.spec)
         write_preview(tmp, model=model)  # the model just loaded from the written files
     return Path(dest)

@@ -93,7 +93,7 @@ def jsonable(value: Any, digits: int = 6) -> Any:
     return value
 
 
-def verify_compiles(xml_path: Path) -> mujoco.MjModel:
+def verify_compiles(xml_path: Path, written_from: mujoco.MjSpec | None = None) -> mujoco.MjModel:
     """Compile a written scene from another working directory; raise if it does not load.
 
     Every file the XML names (meshes, textures, height fields, skins) is read where
@@ -101,10 +101,12 @@ def verify_compiles(xml_path: Path) -> mujoco.MjModel:
     same model, and meshes and textures an earlier compile of the same bytes processed come from
     MuJoCo's asset cache instead of being processed again (0.55 s of a 1 M-point scene's
     conversion). XML that names two different files of one base name is loaded from its path.
+    ``written_from``: the spec the XML was written from (``to_xml``), which names the same files
+    (then the XML is not parsed once more to find them).
     """
     xml_path = Path(xml_path)
     text = xml_path.read_text()
-    files = _named_files(xml_path, text)
+    files = _named_files(xml_path, text, written_from)
     cwd = os.getcwd()
     try:
         os.chdir(tempfile.gettempdir())
@@ -115,14 +117,16 @@ def verify_compiles(xml_path: Path) -> mujoco.MjModel:
         os.chdir(cwd)
 
 
-def _named_files(xml_path: Path, text: str) -> dict[str, bytes] | None:
-    """The files an MJCF text names, by the path MuJoCo asks for, read relative to ``xml_path``;
-    None when one is missing, base names clash (MuJoCo's virtual files match by base name) or
-    the XML does not parse here (then loading it from its path reports what is wrong)."""
-    try:
-        spec = mujoco.MjSpec.from_string(text)
-    except Exception:
-        return None
+def _named_files(xml_path: Path, text: str, spec: mujoco.MjSpec | None = None) -> dict[str, bytes] | None:
+    """The files an MJCF text names (or ``spec``, the one it was written from), by the path MuJoCo asks
+    for, read relative to ``xml_path``; None when one is missing, base names clash (MuJoCo's virtual
+    files match by base name) or the XML does not parse here (then loading it from its path reports
+    what is wrong)."""
+    if spec is None:
+        try:
+            spec = mujoco.MjSpec.from_string(text)
+        except Exception:
+            return None
     if spec.strippath:
         return None
     named = [(spec.meshdir, m.file) for m in spec.meshes] + [(spec.meshdir, h.file) for h in spec.hfields]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import trimesh
 
-from realsim.completion.hull import extreme_points, trimesh_hull
+from realsim.completion.hull import extreme_points, triangles_and_areas, trimesh_hull
 from realsim.completion.neighbours import clip_convex
 
 
@@ -31,6 +31,16 @@ def test_the_hull_is_trimeshs_on_clouds_boxes_and_clipped_pieces() -> None:
         if cut is not None:
             v = np.asarray(cut.vertices)
             assert _same(trimesh.convex.convex_hull(v), trimesh_hull(v)), k
+
+
+def test_triangles_and_areas_are_trimeshs_bit_for_bit() -> None:
+    rng = np.random.default_rng(8)
+    meshes = [trimesh_hull(rng.normal(size=(int(rng.integers(5, 120)), 3)) * rng.uniform(0.005, 0.1, 3)) for _ in range(60)]
+    meshes += [trimesh.creation.icosphere(2, 0.05), trimesh.creation.box([0.1, 0.06, 0.2])]
+    for k, mesh in enumerate(meshes):
+        tri, area = triangles_and_areas(mesh)
+        fresh = trimesh.Trimesh(mesh.vertices.copy(), mesh.faces.copy(), process=False)
+        assert np.array_equal(tri, fresh.triangles) and np.array_equal(area, fresh.area_faces), k
 
 
 def test_extreme_points_hold_every_directions_maximum_bit_for_bit() -> None:

@@ -9,7 +9,7 @@ import trimesh
 from conftest import MOSD
 from realsim.colours import colour_words
 from realsim.pipeline import convert
-from realsim.understanding.naming import Name, distinct, offline_name, shape_word, white_balance
+from realsim.understanding.naming import Name, balanced, distinct, offline_name, shape_word, white_balance, white_point
 from realsim.understanding.shape_label import is_cylinder, is_prism
 
 NO_ROBOT = {"robot": {"enabled": False}}
@@ -21,6 +21,16 @@ def test_colour_words_of_plain_colours() -> None:
     rgb = np.array([[0.8, 0.1, 0.1], [0.1, 0.6, 0.15], [0.15, 0.2, 0.8], [0.9, 0.85, 0.2], [0.92, 0.92, 0.9],
                     [0.45, 0.45, 0.47], [0.05, 0.05, 0.05], [0.45, 0.28, 0.12]])
     assert colour_words(rgb).tolist() == ["red", "green", "blue", "yellow", "white", "grey", "black", "brown"]
+
+
+def test_some_colours_balanced_to_the_captures_white_point_are_white_balances_bit_for_bit() -> None:
+    rng = np.random.default_rng(2)
+    colours = rng.uniform(0.0, 0.8, (5000, 3)) * [0.9, 0.95, 1.0]
+    colours[rng.random(5000) < 0.1] = np.nan
+    picked = rng.random(5000) < 0.3
+    assert np.array_equal(balanced(colours[picked], white_point(colours)), white_balance(colours)[picked], equal_nan=True)
+    few = colours[:5]  # too few colours to balance: left as they are
+    assert white_point(few) is None and np.array_equal(balanced(few, None), few, equal_nan=True)
 
 
 def test_white_balance_removes_a_colour_cast() -> None:

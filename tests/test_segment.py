@@ -197,6 +197,20 @@ def test_touching_and_stacked_boxes_organized() -> None:
     _check_boxes(result, gt, 0.9)
 
 
+def test_relations_made_once_when_no_backdrop_patch_is_dropped(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The view's labels are left as they are by the backdrop-patch check: their support relations are
+    not made again (the same labels, the same relations), and the result is the one checked above."""
+    import realsim.perception.segment as segment
+
+    calls: list[int] = []
+    made = segment.support_relations
+    monkeypatch.setattr(segment, "support_relations", lambda *a: calls.append(1) or made(*a))
+    points, colors, gt = _render_boxes(BOXES)
+    result = segment_objects(points, colors, [_table()], (240, 320), SegmentParams(), seed=0)
+    assert len(calls) == 1
+    _check_boxes(result, gt, 0.9)
+
+
 def test_touching_and_stacked_boxes_unorganized() -> None:
     """The same scene sampled as an unorganized cloud (k-nearest-neighbour links)."""
     points, colors, gt = _synthetic_scene(BOXES)

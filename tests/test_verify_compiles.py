@@ -72,3 +72,30 @@ def test_attached_panda_writes_and_verifies(tmp_path):
     assert model.nmesh == compiled.nmesh > 0 and model.nbody == compiled.nbody
     assert np.array_equal(model.mesh_vert, compiled.mesh_vert)
     assert _same(model, mujoco.MjModel.from_xml_path(str(tmp_path / "scene.xml")))
+
+
+def test_the_spec_written_from_names_the_files_without_parsing_again(tmp_path, monkeypatch):
+    """Given the spec the XML was written from, the check reads the files it names (no second parse of
+    the XML) and compiles the same model, byte for byte."""
+    spec = mujoco.MjSpec()
+    spec.meshdir = "assets"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        handles = attach_robot(spec, (0.1, -0.2, 0.5), base_z=0.0)
+        (tmp_path / "assets").mkdir()
+        for name, data in handles.assets.items():
+            (tmp_path / "assets" / name).write_bytes(data)
+        (tmp_path / "scene.xml").write_text(spec.to_xml())
+    parsed = verify_compiles(tmp_path / "scene.xml")
+    parses: list[str] = []
+    real = mujoco.MjSpec.from_string
+    monkeypatch.setattr(mujoco.MjSpec, "from_string", staticmethod(lambda text, *a, **k: parses.append(text) or real(text, *a, **k)))
+    given = verify_compiles(tmp_path / "scene.xml", written_from=spec)
+    assert parses == []
+
+    def mjb(model: mujoco.MjModel) -> bytes:
+        buffer = np.empty(mujoco.mj_sizeModel(model), np.uint8)
+        mujoco.mj_saveModel(model, None, buffer)
+        return buffer.tobytes()
+
+    assert mjb(given) == mjb(parsed)

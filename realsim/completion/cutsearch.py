@@ -62,9 +62,10 @@ def best_cut(inside: np.ndarray, bad: np.ndarray, normals: np.ndarray, samples: 
     beat the best cut that leaves none are weighed (leaving each costs MISS_WEIGHT / samples); with
     ``bound``, only cuts that may cost no more than it (the answer is exact when one does)."""
     pb = bad @ normals.T
-    pt = (inside @ normals.T).T  # (N, n), a view: the open rows are gathered contiguous before sorting
+    projections = inside @ normals.T
+    pt = projections.T  # (N, n), a view: the open rows are gathered contiguous before sorting
     count = max(pt.shape[1], 1)
-    low_pi, high_pi = pt.min(axis=1), pt.max(axis=1)
+    low_pi, high_pi = projections.min(axis=0), projections.max(axis=0)  # along the contiguous rows: the same values
     width = 1e-6 * np.maximum(high_pi - low_pi, 1e-9)
     limit = (keep @ normals.T).max(axis=0)[None, :] if keep is not None and len(keep) else None
     none = MISS_WEIGHT * len(bad) / samples

@@ -19,7 +19,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from realsim.completion.carving import voxel_centres
 from realsim.completion.cutsearch import best_cut
-from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, trimesh_hull, volume, within_convex
+from realsim.completion.hull import MeshArrays, extreme_points, from_arrays, mesh_arrays, triangles_and_areas, trimesh_hull, volume, within_convex
 from realsim.completion.neighbours import clip_convex
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
@@ -62,8 +62,7 @@ def _directions(ray: np.ndarray) -> np.ndarray:
 def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     """Surface samples of a convex piece: its vertices and area-weighted points on its faces."""
     rng = np.random.default_rng(seed)
-    tri = piece.triangles
-    area = piece.area_faces
+    tri, area = triangles_and_areas(piece)
     if area.sum() <= 0:
         return np.asarray(piece.vertices)
     face = rng.choice(len(tri), SURFACE_SAMPLES, p=area / area.sum())

@@ -112,6 +112,13 @@ def _cross(tri: np.ndarray) -> np.ndarray:
                             a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]])
 
 
+def triangles_and_areas(mesh: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray]:
+    """``mesh.triangles`` and ``mesh.area_faces`` (the same operations, so the same bits) without
+    trimesh's cache: a piece made once and sampled once pays no cache bookkeeping."""
+    tri = np.asarray(mesh.vertices).view(np.ndarray)[np.asarray(mesh.faces).view(np.ndarray)]
+    return tri, np.sqrt((_cross(tri) ** 2).sum(axis=1)) / 2.0
+
+
 def _normals_match(vertices: np.ndarray, faces: np.ndarray, normals: np.ndarray) -> bool:
     """Whether ``Trimesh(face_normals=normals)`` keeps them: finite, not all zero, and the first 20 within
     ``np.allclose`` of the normals of those triangles (its setter's checks, for finite values)."""

@@ -453,8 +453,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
     if axis is not None and grid_shape is not None:  # a view: a patch cut out of the surface behind is backdrop
         assert measured is not None
-        labels = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params, measured.result())
-        support_of, resting_on = support_relations(points, labels, support, height, planes, params)
+        kept = _drop_backdrop_patches(points, labels, grid_shape, axis, planes, params, measured.result())
+        if kept is not labels:  # a patch was dropped: the relations of what is left
+            labels = kept
+            support_of, resting_on = support_relations(points, labels, support, height, planes, params)
         joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
                                      params.jump_distance, axis, grid_shape)
         if not np.array_equal(joined, labels):  # a handle or a container's inside is its body's

@@ -44,11 +44,24 @@ def white_balance(colors: np.ndarray) -> np.ndarray:
     """White-patch balance of a whole capture's colours ((N, 3) in [0, 1], NaN allowed): each
     channel scaled so its 99th percentile is white (grey-world fails on scenes dominated by a
     wooden table, which it turns grey and everything else blue)."""
+    return balanced(colors, white_point(colors))
+
+
+def white_point(colors: np.ndarray) -> np.ndarray | None:
+    """What :func:`white_balance` divides a capture's colours by (per channel), None when fewer than
+    10 colours are finite (then they stay as they are)."""
     c = np.asarray(colors, float)
     ok = np.all(np.isfinite(c), axis=1)
     if ok.sum() < 10:
-        return c
-    return np.clip(c / np.maximum(np.percentile(c[ok], 99, axis=0), 1e-3), 0, 1)
+        return None
+    return np.maximum(np.percentile(c[ok], 99, axis=0), 1e-3)
+
+
+def balanced(colors: np.ndarray, white: np.ndarray | None) -> np.ndarray:
+    """``colors`` (some of a capture's) balanced to the capture's ``white`` point (:func:`white_point`):
+    each the value :func:`white_balance` gives it."""
+    c = np.asarray(colors, float)
+    return c if white is None else np.clip(c / white, 0, 1)
 
 
 def dominant_colours(rgb: np.ndarray) -> list[tuple[str, float]]:

@@ -31,7 +31,7 @@ from realsim.scene import Scene, SceneObject
 from realsim.understanding.calls import CallLog
 from realsim.understanding.camera import capture_camera
 from realsim.understanding.manifest_claude import claude_manifest, fallback_manifest
-from realsim.understanding.naming import distinct, offline_name, white_balance
+from realsim.understanding.naming import balanced, distinct, offline_name, white_point
 from realsim.understanding.photo import PhotoObject, find_photo, label_photo, match_clusters
 from realsim.understanding.primitives import prepared_from_mesh, primitive_extents, primitive_mesh
 from realsim.understanding.sanitize import clean_text, safe_label
@@ -165,13 +165,13 @@ class Understanding:
     def _name_offline(self, objects: list[SceneObject]) -> None:
         """Colour+shape names (:mod:`realsim.understanding.naming`), distinct within the scene."""
         scene = self.scene
-        colors = white_balance(scene.colors) if scene.colors is not None else None
+        white = white_point(scene.colors) if scene.colors is not None else None  # each object's own colours balanced to it
         camera = capture_camera(scene)
         names, volumes, colours, image_x = [], [], [], []
         for o in objects:
             mask = scene.labels == o.id
             pts = scene.points[mask]
-            rgb = colors[mask] if colors is not None else np.zeros((0, 3))
+            rgb = balanced(scene.colors[mask], white) if scene.colors is not None else np.zeros((0, 3))
             size, cylinder, prism = _extents(o)
             completed = " ".join(n for n in o.notes if n.startswith("completed"))
             if "open container" in completed or "as a cylinder" in completed:  # fitted round from its visible profile,
