@@ -53,6 +53,7 @@ class CompletionParams:
     mirror_crest: bool = True  # a low body lying flat is mirrored behind its crest (its highest line across the line of sight)
     mirror_crest_slice: float = 0.005  # m: the least width of the slices across the line of sight in which the crest is found
     mirror_crest_tolerance: float = 0.003  # m: points this close to a slice's highest are on its crest
+    mirror_crest_curved: bool = True  # a slice also has a crest where its upper side is seen curving over one (a marker falls away past it by less than the tolerance)
     mirror_crest_reach: float = 0.75  # the near side mirrored reaches this share of the slice's height before its crest (a round section: half)
     underside: bool = True  # a lying body's underside is its upper side mirrored below its widest level (not extruded straight down)
     underside_max_height_share: float = 0.5  # lying: lower than this share of its longest horizontal extent
