@@ -12,7 +12,7 @@ from realsim.completion.hull import solid_hull, trimesh_hull, volume
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
-Voxels = tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # step, column xy, voxel column, centre, free
+Voxels = tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # step, column xy, voxel column, centre, free, ends
 
 
 def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -41,24 +41,33 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
 
 def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
-    column xy centres (M, 2), each voxel's column and centre, and which voxels are free (seen through;
-    with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`)."""
+    column xy centres (M, 2), each voxel's column and centre, which voxels are free (seen through;
+    with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`),
+    and each voxel's (low, high) ends: with ``carve_surface_ends`` a column's first voxel reaches down
+    to the mesh's underside there (a round underside stays round, not its lowest voxel centres laid
+    on the support; nothing was seen of it), else (and every other voxel) its centre."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
-    xy, col, cells = _cells(mesh, step)
+    xy, col, cells, ends = _cells(mesh, step, params.carve_surface_ends)
     free = view.seen_through(cells, params.carve_tolerance, own, footprint=False)
-    return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free
+    return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free, ends
 
 
-def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Voxel centres inside the convex ``mesh``: column xy centres (M, 2), each voxel's column and centre."""
+def _cells(mesh: trimesh.Trimesh, step: float, surface_ends: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Voxel centres inside the convex ``mesh``: column xy centres (M, 2), each voxel's column and
+    centre, and its (low, high) ends (N, 2): the centre's height, or with ``surface_ends`` the
+    mesh's bottom for its column's first voxel (the top is the seen points', which the hulls take)."""
     xy, z_bot, z_top = _columns(mesh, step)
     if len(xy) == 0:
-        return xy, np.zeros(0, np.int64), np.zeros((0, 3))
+        return xy, np.zeros(0, np.int64), np.zeros((0, 3)), np.zeros((0, 2))
     counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
     col = np.repeat(np.arange(len(xy)), counts)
     k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
-    return xy, col, np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
+    z = np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])
+    ends = np.column_stack([z, z])
+    if surface_ends:
+        ends[:, 0] = np.where(k == 0, z_bot[col], z)
+    return xy, col, np.column_stack([xy[col], z]), ends
 
 
 def voxel_centres(mesh: trimesh.Trimesh, step: float) -> np.ndarray:
@@ -94,7 +103,7 @@ def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.nd
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
-    hull = _carved_hull(mesh, voxels, base_z, observed)
+    hull = _carved_hull(mesh, voxels, base_z, observed, not params.carve_surface_ends)
     free = voxels[4]  # seen-through voxels the carved hull fills again (only those are tested)
     refilled = float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
     many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
@@ -109,12 +118,15 @@ def _inside_convex(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
     return np.asarray(np.all(points @ n.T <= d + 1e-9, axis=1))
 
 
-def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:
-    step, xy, col, cells, free = voxels
-    z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
+def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray, snap: bool = True) -> trimesh.Trimesh:
+    step, xy, col, cells, free, ends = voxels
+    z_lo = _column_extremes(len(xy), col[~free], ends[~free, 0])[0]
+    z_hi = _column_extremes(len(xy), col[~free], ends[~free, 1])[1]
     good = np.isfinite(z_lo)  # the lowest and highest kept voxel of each column bound the hull
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
-    kept[kept[:, 2] < base_z + step, 2] = base_z
+    low = kept[:, 2] < base_z + step  # near the base: seen points, and voxel centres (unless ``snap`` is off: surface ends), stand for a body reaching down to it
+    low[: 2 * np.count_nonzero(good)] &= snap
+    kept[low, 2] = base_z
     try:
         hull: trimesh.Trimesh = trimesh_hull(kept)  # trimesh's triangulation: the painted surface
         return hull
@@ -147,9 +159,11 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
 
 
 def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
-    step, xy, col, cells, free = voxels
-    kept, kept_col = cells[~free].copy(), col[~free]
-    kept[kept[:, 2] < base_z + step, 2] = base_z
+    step, xy, col, cells, free, ends = voxels
+    kept, kept_col, kept_ends = cells[~free].copy(), col[~free], ends[~free].copy()
+    kept[kept[:, 2] < base_z + step, 2] = base_z  # voxel centres within a step of the base stand for a body reaching down to it ...
+    if not params.carve_surface_ends:  # ... unless their column's underside is known (the tiles are laid out on them either way)
+        kept_ends = kept[:, [2, 2]]
     tile = max(params.carve_tile, float(np.cbrt(np.prod(np.ptp(kept, axis=0) + step) / params.max_pieces)))
     origin = kept.min(axis=0) - step
     shifts = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], float) * step
@@ -160,8 +174,8 @@ def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: Completi
     # a tile's hull needs only the lowest and highest of its voxels in each column
     groups, inverse = np.unique(tiles * len(xy) + kept_col[index], return_inverse=True)
     z_lo, z_hi = np.full(len(groups), np.inf), np.full(len(groups), -np.inf)
-    np.minimum.at(z_lo, inverse, kept[index, 2])
-    np.maximum.at(z_hi, inverse, kept[index, 2])
+    np.minimum.at(z_lo, inverse, kept_ends[index, 0])
+    np.maximum.at(z_hi, inverse, kept_ends[index, 1])
     group_tile, group_xy = groups // len(xy), xy[groups % len(xy)]
     starts = np.flatnonzero(np.r_[True, group_tile[1:] != group_tile[:-1]])  # groups are sorted by tile
     obs_grid = np.floor((observed - origin) / tile).astype(np.int64) if len(observed) else np.zeros((0, 3), np.int64)
