@@ -159,11 +159,9 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
 
 
 def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
-    step, xy, col, cells, free, ends = voxels
-    kept, kept_col, kept_ends = cells[~free].copy(), col[~free], ends[~free].copy()
-    kept[kept[:, 2] < base_z + step, 2] = base_z  # voxel centres within a step of the base stand for a body reaching down to it ...
-    if not params.carve_surface_ends:  # ... unless their column's underside is known (the tiles are laid out on them either way)
-        kept_ends = kept[:, [2, 2]]
+    step, xy, col, cells, free, _ = voxels
+    kept, kept_col = cells[~free].copy(), col[~free]
+    kept[kept[:, 2] < base_z + step, 2] = base_z  # voxel centres within a step of the base stand on it: separate convex tiles, each round underneath, would rock (a tiled banana rolled 21 mm while settling)
     tile = max(params.carve_tile, float(np.cbrt(np.prod(np.ptp(kept, axis=0) + step) / params.max_pieces)))
     origin = kept.min(axis=0) - step
     shifts = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], float) * step
@@ -174,8 +172,8 @@ def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: Completi
     # a tile's hull needs only the lowest and highest of its voxels in each column
     groups, inverse = np.unique(tiles * len(xy) + kept_col[index], return_inverse=True)
     z_lo, z_hi = np.full(len(groups), np.inf), np.full(len(groups), -np.inf)
-    np.minimum.at(z_lo, inverse, kept_ends[index, 0])
-    np.maximum.at(z_hi, inverse, kept_ends[index, 1])
+    np.minimum.at(z_lo, inverse, kept[index, 2])
+    np.maximum.at(z_hi, inverse, kept[index, 2])
     group_tile, group_xy = groups // len(xy), xy[groups % len(xy)]
     starts = np.flatnonzero(np.r_[True, group_tile[1:] != group_tile[:-1]])  # groups are sorted by tile
     obs_grid = np.floor((observed - origin) / tile).astype(np.int64) if len(observed) else np.zeros((0, 3), np.int64)
