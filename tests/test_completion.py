@@ -51,6 +51,30 @@ def test_a_shape_grown_where_the_camera_saw_the_floor_is_carved_back() -> None:
     assert len(bad_pixels) < 0.15 * len(before)
 
 
+def test_a_carved_round_underside_stays_round() -> None:
+    # a 6 cm bottle lying along y, 0.9-1 m below the camera, completed 3 cm too high over its round
+    # underside (the hull of its section and that section raised): carved back to what the camera
+    # saw, it still touches the floor along a line, not on its lowest voxel row laid flat
+    r, floor = 0.03, -1.0
+    a = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
+    ring = np.column_stack([r * np.cos(a), np.zeros(a.size), floor + r + r * np.sin(a)])
+    ends = [ring + [0.0, y, dz] for dz in (0.0, 0.03) for y in (-0.06, 0.06)]
+    too_high = trimesh.convex.convex_hull(np.vstack(ends))
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
+    x, y = (u - INTR.cx) / INTR.fx * 0.94, -(v - INTR.cy) / INTR.fy * 0.94
+    on_body = (np.abs(x) < r) & (np.abs(y) <= 0.06)
+    depth = np.where(on_body, -(floor + r + np.sqrt(np.clip(r * r - x * x, 0.0, None))), -floor)
+    view = _view(depth, np.where(on_body, 1, 0))
+    seen = np.column_stack([x[on_body], y[on_body], -depth[on_body]])
+    widths = []
+    for surface in (True, False):
+        carved, fraction = carve_free_space(too_high, view, floor, seen, CompletionParams(carve_surface_ends=surface), own=1)
+        assert fraction > 0.2
+        bottom = carved.vertices[carved.vertices[:, 2] < floor + 0.0005]
+        widths.append(float(np.ptp(bottom[:, 0])))
+    assert widths[0] < 0.011 and widths[0] < 0.7 * widths[1]  # laid flat: the chord where the lowest voxel centres lie
+
+
 def test_veil_pixels_are_the_ones_seen_edge_on() -> None:
     depth = _depth_of_box(np.array([-0.05, -0.04, -1.0]), np.array([0.05, 0.04, -0.9]), floor=-1.0)
     veil = _view(depth).veil(80.0)
