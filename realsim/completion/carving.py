@@ -39,16 +39,17 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
-def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float) -> Voxels:
+def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float,
+            surface_ends: bool = False) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
     column xy centres (M, 2), each voxel's column and centre, which voxels are free (seen through;
     with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`),
-    and each voxel's (low, high) ends: with ``carve_surface_ends`` a column's first voxel reaches down
+    and each voxel's (low, high) ends: with ``surface_ends`` a column's first voxel reaches down
     to the mesh's underside there (a round underside stays round, not its lowest voxel centres laid
     on the support; nothing was seen of it), else (and every other voxel) its centre."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
-    xy, col, cells, ends = _cells(mesh, step, params.carve_surface_ends)
+    xy, col, cells, ends = _cells(mesh, step, surface_ends)
     free = view.seen_through(cells, params.carve_tolerance, own, footprint=False)
     return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free, ends
 
@@ -94,16 +95,16 @@ class Carving:
 
 
 def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray, params: CompletionParams,
-          own: int | None = None, tiles: bool = True) -> Carving:
+          own: int | None = None, tiles: bool = True, surface_ends: bool = False) -> Carving:
     """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when ``tiles`` and
     the body is evidently not convex (at least ``tile_min_fraction`` is seen through, or the carved
     hull fills ``carve_min_fraction`` of the voxels again with space the camera saw through), its
-    tiles (see :func:`carve_to_tiles`)."""
-    voxels = _voxels(mesh, view, params, own, base_z)
+    tiles (see :func:`carve_to_tiles`). ``surface_ends``: see :func:`_voxels`."""
+    voxels = _voxels(mesh, view, params, own, base_z, surface_ends)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
-    hull = _carved_hull(mesh, voxels, base_z, observed, not params.carve_surface_ends)
+    hull = _carved_hull(mesh, voxels, base_z, observed, not surface_ends)
     free = voxels[4]  # seen-through voxels the carved hull fills again (only those are tested)
     refilled = float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
     many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
@@ -135,11 +136,11 @@ def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed:
 
 
 def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
-                     params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
+                     params: CompletionParams, own: int | None = None, surface_ends: bool = False) -> tuple[trimesh.Trimesh, float]:
     """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
     the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
-    ``carve_min_fraction`` is free."""
-    result = carve(mesh, view, base_z, observed, params, own, tiles=False)
+    ``carve_min_fraction`` is free. ``surface_ends``: see :func:`_voxels`."""
+    result = carve(mesh, view, base_z, observed, params, own, tiles=False, surface_ends=surface_ends)
     return result.hull, result.fraction
 
 
@@ -194,10 +195,10 @@ def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: Completi
 def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, params: CompletionParams,
                  own: int | None = None) -> tuple[list[trimesh.Trimesh], float]:
     """Each convex piece of a shape carved by the free space (pieces left empty dropped), and the
-    volume share carved."""
+    volume share carved; with ``carve_surface_ends`` each keeps its completed underside (see :func:`_voxels`)."""
     out, before, after = [], 0.0, 0.0
     for piece in pieces:
-        carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own)
+        carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own, params.carve_surface_ends)
         before += volume(piece)
         if fraction > 0.9:
             continue  # all but seen through

@@ -37,7 +37,7 @@ class CompletionParams:
     free_space_sigmas: float = 4.0  # a piece nearer than the captured depth by this many sensor-noise sigmas is cut back
     free_space_min_tolerance: float = 0.003  # m: the least such tolerance (quantized depth shows no noise)
     carve_over_support: bool = False  # voxels above the support where the camera saw it are free too (fewer seen-free pixels covered; test55 PSNR -0.14 dB, drift 0.16 -> 0.19 mm: off)
-    carve_surface_ends: bool = True  # a carved hull's voxel columns reach down to the completed underside (a round underside stays round), not their lowest centres laid on the support (tiles keep them on it: separate round pieces rock)
+    carve_surface_ends: bool = True  # a carved piece of a shape in pieces (a revolved profile, slabs) keeps its completed underside (a round one stays round), not its lowest voxel centres laid on the support (a single hull and tiles keep them on it: test55's hulls' seen feet, separate round tiles rock)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
     slab: float = 0.025  # a body that is not convex is extruded in slabs about this long (m)
     max_slabs: int = 8
