@@ -7,6 +7,7 @@ import trimesh
 from ball_drop import drop_ball
 
 from realsim.completion import CompletionParams, DepthView, carve_free_space, clip_convex, mirror_hidden_half
+from realsim.completion.carving import carve_pieces
 from realsim.perception.intrinsics import Intrinsics
 
 INTR = Intrinsics(fx=200.0, fy=200.0, cx=79.5, cy=59.5, width=160, height=120)
@@ -49,6 +50,29 @@ def test_a_shape_grown_where_the_camera_saw_the_floor_is_carved_back() -> None:
     too_big_pts = too_big.sample(20000, seed=0)
     before = {tuple(p) for p in np.rint(INTR.project(too_big_pts[view.seen_through(too_big_pts, 0.006)] * [1, -1, -1])).astype(int)}
     assert len(bad_pixels) < 0.15 * len(before)
+
+
+def test_a_carved_round_underside_stays_round() -> None:
+    # a 6 cm bottle lying along y, 0.9-1 m below the camera, one piece of it completed 3 cm too high
+    # over its round underside (the hull of its section and that section raised): carved back to what
+    # the camera saw, it still touches the floor along a line, not on its lowest voxel row laid flat
+    r, floor = 0.03, -1.0
+    a = np.linspace(0.0, 2 * np.pi, 48, endpoint=False)
+    ring = np.column_stack([r * np.cos(a), np.zeros(a.size), floor + r + r * np.sin(a)])
+    ends = [ring + [0.0, y, dz] for dz in (0.0, 0.03) for y in (-0.06, 0.06)]
+    too_high = trimesh.convex.convex_hull(np.vstack(ends))
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
+    x, y = (u - INTR.cx) / INTR.fx * 0.94, -(v - INTR.cy) / INTR.fy * 0.94
+    on_body = (np.abs(x) < r) & (np.abs(y) <= 0.06)
+    depth = np.where(on_body, -(floor + r + np.sqrt(np.clip(r * r - x * x, 0.0, None))), -floor)
+    view = _view(depth, np.where(on_body, 1, 0))
+    widths = []
+    for surface in (True, False):
+        pieces, fraction = carve_pieces([too_high], view, floor, CompletionParams(carve_surface_ends=surface), own=1)
+        assert fraction > 0.2 and len(pieces) == 1
+        bottom = pieces[0].vertices[pieces[0].vertices[:, 2] < floor + 0.0005]
+        widths.append(float(np.ptp(bottom[:, 0])))
+    assert widths[0] < 0.011 and widths[0] < 0.7 * widths[1]  # laid flat: the chord where the lowest voxel centres lie
 
 
 def test_veil_pixels_are_the_ones_seen_edge_on() -> None:

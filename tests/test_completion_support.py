@@ -108,6 +108,19 @@ def test_a_base_that_does_not_hold_the_centre_of_mass_is_completed_under_it() ->
     assert not brace(obj, 0.005)  # it stands: nothing more to do
 
 
+def test_a_narrow_body_is_braced_on_a_foot_no_wider_than_its_margin_needs() -> None:
+    # A 12 cm prism lying along x on a 6 mm strip (a marker's contact): its centre of mass is over the
+    # strip but within the 5 mm margin of its edges. The foot holds it 5 mm inside, and is not the
+    # 2 cm disc a marker's 19 mm section would rest on.
+    pts = np.array([[x, y, z] for x in (0.0, 0.12) for y, z in ((-0.003, 0.0), (0.003, 0.0), (-0.009, 0.01), (0.009, 0.01), (0.0, 0.019))])
+    obj = _object(1, trimesh.convex.convex_hull(pts))
+    assert brace(obj, 0.005)
+    polygon = base_polygon(obj.collision)
+    com = centre_of_mass(obj.collision)
+    assert polygon is not None and inside_convex_polygon(com[None, :2], polygon, -0.005)[0]
+    assert np.ptp(polygon[:, 1]) < 3 * 0.005  # about 1.25 margins each side of the centre of mass
+
+
 def test_stacking_levels_never_put_an_object_with_what_it_rests_on() -> None:
     """Objects are completed a level at a time (in parallel within one): each level holds no object
     and its supporter, the order is kept, and a stack three high takes three levels."""

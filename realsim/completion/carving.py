@@ -12,7 +12,7 @@ from realsim.completion.hull import solid_hull, trimesh_hull, volume
 from realsim.completion.params import CompletionParams
 from realsim.completion.view import DepthView
 
-Voxels = tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # step, column xy, voxel column, centre, free
+Voxels = tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # step, column xy, voxel column, centre, free, ends
 
 
 def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -39,26 +39,36 @@ def _columns(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray
     return xy[ok], np.maximum(z_bot[ok], lo[2]), np.minimum(z_top[ok], hi[2])
 
 
-def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float) -> Voxels:
+def _voxels(mesh: trimesh.Trimesh, view: DepthView, params: CompletionParams, own: int | None, base_z: float,
+            surface_ends: bool = False) -> Voxels:
     """Voxelize the convex ``mesh`` and test every voxel against the free space: the voxel step,
-    column xy centres (M, 2), each voxel's column and centre, and which voxels are free (seen through;
-    with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`)."""
+    column xy centres (M, 2), each voxel's column and centre, which voxels are free (seen through;
+    with ``carve_over_support`` also above the support at ``base_z`` where the camera saw it: :meth:`DepthView.over_support`),
+    and each voxel's (low, high) ends: with ``surface_ends`` a column's first voxel reaches down
+    to the mesh's underside there (a round underside stays round, not its lowest voxel centres laid
+    on the support; nothing was seen of it), else (and every other voxel) its centre."""
     lo, hi = mesh.bounds
     step = float(np.clip(np.max(hi - lo) / params.carve_voxels, 0.002, 0.005))
-    xy, col, cells = _cells(mesh, step)
+    xy, col, cells, ends = _cells(mesh, step, surface_ends)
     free = view.seen_through(cells, params.carve_tolerance, own, footprint=False)
-    return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free
+    return step, xy, col, cells, (free | view.over_support(cells, base_z)) if params.carve_over_support else free, ends
 
 
-def _cells(mesh: trimesh.Trimesh, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Voxel centres inside the convex ``mesh``: column xy centres (M, 2), each voxel's column and centre."""
+def _cells(mesh: trimesh.Trimesh, step: float, surface_ends: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Voxel centres inside the convex ``mesh``: column xy centres (M, 2), each voxel's column and
+    centre, and its (low, high) ends (N, 2): the centre's height, or with ``surface_ends`` the
+    mesh's bottom for its column's first voxel (the top is the seen points', which the hulls take)."""
     xy, z_bot, z_top = _columns(mesh, step)
     if len(xy) == 0:
-        return xy, np.zeros(0, np.int64), np.zeros((0, 3))
+        return xy, np.zeros(0, np.int64), np.zeros((0, 3)), np.zeros((0, 2))
     counts = np.maximum(np.ceil((z_top - z_bot) / step).astype(np.int64), 1)
     col = np.repeat(np.arange(len(xy)), counts)
     k = np.arange(len(col)) - np.repeat(np.cumsum(counts) - counts, counts)
-    return xy, col, np.column_stack([xy[col], np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])])
+    z = np.minimum(z_bot[col] + (k + 0.5) * step, z_top[col])
+    ends = np.column_stack([z, z])
+    if surface_ends:
+        ends[:, 0] = np.where(k == 0, z_bot[col], z)
+    return xy, col, np.column_stack([xy[col], z]), ends
 
 
 def voxel_centres(mesh: trimesh.Trimesh, step: float) -> np.ndarray:
@@ -85,16 +95,16 @@ class Carving:
 
 
 def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray, params: CompletionParams,
-          own: int | None = None, tiles: bool = True) -> Carving:
+          own: int | None = None, tiles: bool = True, surface_ends: bool = False) -> Carving:
     """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when ``tiles`` and
     the body is evidently not convex (at least ``tile_min_fraction`` is seen through, or the carved
     hull fills ``carve_min_fraction`` of the voxels again with space the camera saw through), its
-    tiles (see :func:`carve_to_tiles`)."""
-    voxels = _voxels(mesh, view, params, own, base_z)
+    tiles (see :func:`carve_to_tiles`). ``surface_ends``: see :func:`_voxels`."""
+    voxels = _voxels(mesh, view, params, own, base_z, surface_ends)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
-    hull = _carved_hull(mesh, voxels, base_z, observed)
+    hull = _carved_hull(mesh, voxels, base_z, observed, not surface_ends)
     free = voxels[4]  # seen-through voxels the carved hull fills again (only those are tested)
     refilled = float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
     many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
@@ -109,12 +119,15 @@ def _inside_convex(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:
     return np.asarray(np.all(points @ n.T <= d + 1e-9, axis=1))
 
 
-def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray) -> trimesh.Trimesh:
-    step, xy, col, cells, free = voxels
-    z_lo, z_hi = _column_extremes(len(xy), col[~free], cells[~free, 2])
+def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed: np.ndarray, snap: bool = True) -> trimesh.Trimesh:
+    step, xy, col, cells, free, ends = voxels
+    z_lo = _column_extremes(len(xy), col[~free], ends[~free, 0])[0]
+    z_hi = _column_extremes(len(xy), col[~free], ends[~free, 1])[1]
     good = np.isfinite(z_lo)  # the lowest and highest kept voxel of each column bound the hull
     kept = np.vstack([np.column_stack([xy[good], z_lo[good]]), np.column_stack([xy[good], z_hi[good]]), observed])
-    kept[kept[:, 2] < base_z + step, 2] = base_z
+    low = kept[:, 2] < base_z + step  # near the base: seen points, and voxel centres (unless ``snap`` is off: surface ends), stand for a body reaching down to it
+    low[: 2 * np.count_nonzero(good)] &= snap
+    kept[low, 2] = base_z
     try:
         hull: trimesh.Trimesh = trimesh_hull(kept)  # trimesh's triangulation: the painted surface
         return hull
@@ -123,11 +136,11 @@ def _carved_hull(mesh: trimesh.Trimesh, voxels: Voxels, base_z: float, observed:
 
 
 def carve_free_space(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray,
-                     params: CompletionParams, own: int | None = None) -> tuple[trimesh.Trimesh, float]:
+                     params: CompletionParams, own: int | None = None, surface_ends: bool = False) -> tuple[trimesh.Trimesh, float]:
     """The convex ``mesh`` without the space the camera saw through (the hull of the voxels left and
     the ``observed`` surface points), and the share of voxels carved; ``mesh`` itself when less than
-    ``carve_min_fraction`` is free."""
-    result = carve(mesh, view, base_z, observed, params, own, tiles=False)
+    ``carve_min_fraction`` is free. ``surface_ends``: see :func:`_voxels`."""
+    result = carve(mesh, view, base_z, observed, params, own, tiles=False, surface_ends=surface_ends)
     return result.hull, result.fraction
 
 
@@ -147,9 +160,9 @@ def carve_to_tiles(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observ
 
 
 def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: CompletionParams) -> list[trimesh.Trimesh] | None:
-    step, xy, col, cells, free = voxels
+    step, xy, col, cells, free, _ = voxels
     kept, kept_col = cells[~free].copy(), col[~free]
-    kept[kept[:, 2] < base_z + step, 2] = base_z
+    kept[kept[:, 2] < base_z + step, 2] = base_z  # voxel centres within a step of the base stand on it: separate convex tiles, each round underneath, would rock (a tiled banana rolled 21 mm while settling)
     tile = max(params.carve_tile, float(np.cbrt(np.prod(np.ptp(kept, axis=0) + step) / params.max_pieces)))
     origin = kept.min(axis=0) - step
     shifts = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], float) * step
@@ -182,10 +195,10 @@ def _tiles(voxels: Voxels, base_z: float, observed: np.ndarray, params: Completi
 def carve_pieces(pieces: list[trimesh.Trimesh], view: DepthView, base_z: float, params: CompletionParams,
                  own: int | None = None) -> tuple[list[trimesh.Trimesh], float]:
     """Each convex piece of a shape carved by the free space (pieces left empty dropped), and the
-    volume share carved."""
+    volume share carved; with ``carve_surface_ends`` each keeps its completed underside (see :func:`_voxels`)."""
     out, before, after = [], 0.0, 0.0
     for piece in pieces:
-        carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own)
+        carved, fraction = carve_free_space(piece, view, base_z, np.zeros((0, 3)), params, own, params.carve_surface_ends)
         before += volume(piece)
         if fraction > 0.9:
             continue  # all but seen through

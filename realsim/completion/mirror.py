@@ -113,13 +113,38 @@ def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z
         zs, ss = points[sl, 2], s[sl]
         top = float(np.percentile(zs, 98))
         crest = float(np.median(ss[zs >= top - tol]))
-        if not np.any(zs[ss > crest] < top - tol):
-            continue  # not seen falling away past the crest: a flat top or one rising to its far edge
+        if not np.any(zs[ss > crest] < top - tol):  # not seen falling away past the crest: a flat top, one rising to its far edge ...
+            apex = _curved_crest(ss, zs, top, base_z, tol) if params.mirror_crest_curved else None
+            if apex is None:
+                continue
+            crest = apex  # ... or a small round body seen just over its crest
         near = points[sl][(ss < crest) & (ss >= crest - params.mirror_crest_reach * (top - base_z))]
         images.append(near - 2.0 * (near @ d - crest)[:, None] * d[None, :])
     mirrored = np.vstack(images) if images else np.zeros((0, 3))
     mirrored = mirrored[~view.seen_through(mirrored, params.carve_tolerance, footprint=False)]  # not where the camera saw through
     return np.vstack([points, mirrored]) if len(mirrored) else None
+
+
+def _curved_crest(s: np.ndarray, z: np.ndarray, top: float, base_z: float, tol: float) -> float | None:
+    """Where a slice's upper side (its points within a quarter of its height of its ``top``, at least
+    ``tol``) curves over a crest, else None: the vertex of a parabola z(s) fitted to it, turning down
+    on both sides, as curved as a round section (its radius of curvature at most the slice's height
+    and at least half the slice's seen depth: a flat top with a rounded edge is far deeper than that
+    edge's radius) and as smooth (within half ``tol`` RMS: a box's corner is no parabola), seen at
+    least ``tol`` before the vertex and up to within ``tol`` of it. A small round body (a marker)
+    falls away past its crest by less than the tolerance before its far side turns out of sight
+    (r (1 - cos e), e the camera's elevation); a flat top or one rising to its far edge is not curved so."""
+    upper = z >= top - max(tol, 0.25 * (top - base_z))
+    if np.count_nonzero(upper) < 8 or np.ptp(s[upper]) <= 0:
+        return None
+    fit = np.polyfit(s[upper], z[upper], 2)
+    a, b = float(fit[0]), float(fit[1])
+    if a >= 0 or not 0.5 * float(np.ptp(s)) <= -0.5 / a <= top - base_z:
+        return None
+    if float(np.sqrt(np.mean((np.polyval(fit, s[upper]) - z[upper]) ** 2))) > 0.5 * tol:
+        return None
+    vertex = -b / (2 * a)
+    return vertex if s[upper].min() + tol <= vertex <= s[upper].max() + tol else None
 
 
 def _both_sides_clear(band: np.ndarray, w: np.ndarray, lateral: np.ndarray, view: DepthView, probe: float) -> bool:

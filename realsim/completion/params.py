@@ -37,6 +37,7 @@ class CompletionParams:
     free_space_sigmas: float = 4.0  # a piece nearer than the captured depth by this many sensor-noise sigmas is cut back
     free_space_min_tolerance: float = 0.003  # m: the least such tolerance (quantized depth shows no noise)
     carve_over_support: bool = False  # voxels above the support where the camera saw it are free too (fewer seen-free pixels covered; test55 PSNR -0.14 dB, drift 0.16 -> 0.19 mm: off)
+    carve_surface_ends: bool = True  # a carved piece of a shape in pieces (a revolved profile, slabs) keeps its completed underside (a round one stays round), not its lowest voxel centres laid on the support (a single hull and tiles keep them on it: test55's hulls' seen feet, separate round tiles rock)
     carve_min_fraction: float = 0.01  # carve only when at least this share of the voxels is free space
     slab: float = 0.025  # a body that is not convex is extruded in slabs about this long (m)
     max_slabs: int = 8
@@ -53,6 +54,7 @@ class CompletionParams:
     mirror_crest: bool = True  # a low body lying flat is mirrored behind its crest (its highest line across the line of sight)
     mirror_crest_slice: float = 0.005  # m: the least width of the slices across the line of sight in which the crest is found
     mirror_crest_tolerance: float = 0.003  # m: points this close to a slice's highest are on its crest
+    mirror_crest_curved: bool = True  # a slice also has a crest where its upper side is seen curving over one (a marker falls away past it by less than the tolerance)
     mirror_crest_reach: float = 0.75  # the near side mirrored reaches this share of the slice's height before its crest (a round section: half)
     underside: bool = True  # a lying body's underside is its upper side mirrored below its widest level (not extruded straight down)
     underside_max_height_share: float = 0.5  # lying: lower than this share of its longest horizontal extent
