@@ -73,3 +73,13 @@ def test_a_placing_without_its_verb_is_never_dropped_as_talk() -> None:
         "put the strawberry between the banana and the red cube")
     assert call_lines("Butt the strawberry up tight against the right-hand side of the bowl.") == call_lines("put the strawberry to the right of the bowl")
     assert call_lines("Line the strawberry up behind the bowl.") == call_lines("put the strawberry behind the bowl")
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("Put the strawberry on my right side of the bowl.", "put the strawberry to the right of the bowl"),  # the speaker's side is the robot's
+    ("Grab the thing that sits between the bowl and the banana.", "pick up the blue cube"),
+    ("Lift the cube directly behind the bowl.", "lift the blue cube"),
+    ("Slide the dish you'd eat your cereal out of 5 cm to the left.", "push the bowl 5 cm to the left"),
+])
+def test_places_and_uses_said_by_people(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

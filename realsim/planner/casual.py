@@ -53,9 +53,11 @@ def terse(clause: str, has_place: bool) -> str | None:
 
 _THING = r"(?:thing|one|object|item)"
 # what people do with a kind of thing -> the kind (its synonyms and kinds in vocab do the rest)
-_USES = ((r"(?:drink|sip) (?:out of|from)|drink (?:coffee|tea|water) (?:out of|from|in)", "cup"),
-         (r"eat (?:out of|from|off)|eat (?:cereal|soup) (?:out of|from|in)", "dish"),
+_FOOD = r"(?:(?:my|your|the|some|our|their|his|her) )?(?:(?:morning|evening|hot|cold) )?(?:[a-z]+ )?"  # "my morning coffee", "your cereal"
+_USES = ((rf"(?:drink|sip) {_FOOD}(?:out of|from|in)", "cup"),
+         (rf"eat {_FOOD}(?:out of|from|off|in)", "dish"),
          (r"write with|draw with", "marker"), (r"(?:drink|sip)", "drink"))
+_HEADS = r"(?:thing|one|object|item|dish|container|box|bowl|cup|vessel)"
 
 
 def described(text: str) -> str:
@@ -63,8 +65,10 @@ def described(text: str) -> str:
     its use ("the thing with the handle you drink out of" -> "the cup")."""
     text = re.sub(rf"\b([a-z]+)(?:[- ](?:looking|shaped)|-like) {_THING}\b", r"\1", text)
     for use, kind in _USES:
-        text = re.sub(rf"\b{_THING}(?: with (?:a|the) handle)? (?:that |which )?(?:you|we|i|people|one) (?:can |could |would )?(?:{use})\b", kind, text)
-    return text
+        text = re.sub(rf"\b{_HEADS}(?: with (?:a|the) handle)? (?:that |which )?(?:you|we|i|people|one)(?: ?'?d| would| can| could| usually| normally)? (?:{use})\b", kind, text)
+    # "the box the breakfast flakes come in", "the box your breakfast comes out of": the cereal box
+    return re.sub(r"\bbox (?:that |which )?(?:(?:my|your|the|our) )?(?:breakfast|cereal|flakes|breakfast flakes|corn ?flakes)(?: flakes)? (?:comes?|came|is kept|are kept)"
+                  r" (?:out of|in)\b", "cereal box", text)
 
 
 _WHO = r"((?:the|that|this|those|these|both|all)(?: (?!(?:across|to|of|in|on|at|from|with|over|into|by|for|through|past)\b)[a-z-]+){1,5}?|them|it|'?em)"

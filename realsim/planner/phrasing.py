@@ -194,6 +194,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\bmore at (?:the )?(left|right)\b", r"more to the \1", text)  # "do it more at left"
     text = re.sub(r"\b(?:you )?do ((?:it|them|(?:the|that|this) [a-z ]+?)) (?=more (?:to the )?(?:left|right|forward|back)\b)", r"move \1 ", text)
     text = re.sub(r"\b(left|right)[- ]hand (?!side\b)(?=[a-z])", r"\1 ", text)  # "the right-hand one": the right one
+    text = re.sub(r"\bmy (left|right)\b", r"the \1", text)  # the speaker stands behind the robot: their left is its left
     text = re.sub(r"\bthe (\w+) one of the (?:two |three |four |\d )?((?:[a-z]+ )?[a-z]+?)s\b", r"the \1 \2", text)  # "the right-hand one of the two soda cans"
     text = re.sub(r"\b(?:adjacent|adjoining|contiguous) to\b", "next to", text)
     text = re.sub(r"\b(?:to|at) (?=(?:behind|beside|in front of|next to|between|inside|onto|on top of)\b)", "", text)  # "to behind of", "at beside of"

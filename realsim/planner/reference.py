@@ -34,16 +34,17 @@ SINGULAR_PRONOUNS = {"it", "this", "that", "this one", "that one", "the same one
                      "the one", "same thing", "the same thing", "that thing", "this thing", "it again", "the object", "one"}
 PLURAL_PRONOUNS = {"them", "they", "those", "these", "both", "both of them", "all of them", "them all", "all of those",
                    "all of these", "those ones", "these ones", "the two", "both objects"}
+_SAID_WHERE = r"(?:that is |thats |which is |that |which |sitting |lying |standing |(?:that |which )?(?:sits|stands|lies|is sitting|is standing|is lying) )?"
 LOCATOR_RELATIONS = (
-    (r"(?:that is |thats |which is |that |which |sitting |lying |standing )?(?:right )?(?:next to|beside|near|by|close to)", "next"),
+    (rf"{_SAID_WHERE}(?:right )?(?:next to|beside|near|by|close to)", "next"),
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:on top of|on)", "on"),
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in(?! front of\b))", "in"),
     (r"(?:that is |thats |which is |that |which |sitting |lying |hanging )?(?:right |just |directly )?(?:above|over)", "above"),  # on or in it
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:right |just |directly )?(?:under|underneath|below|beneath)", "under"),
     (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
     (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
-    (r"(?:that is |thats |which is )?behind", "behind"),
-    (r"(?:that is |thats |which is )?in front of", "front"),
+    (rf"{_SAID_WHERE}(?:right |just |directly |immediately )?behind", "behind"),
+    (rf"{_SAID_WHERE}(?:right |just |directly |immediately )?in front of", "front"),
     (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
 )
 
@@ -304,7 +305,7 @@ class Resolver:
         if m:  # "the red can on the table": one standing on no other object
             text = m.group(1)
             cands = [o for o in cands if not any(r.name != o.name and relation_holds("on", o, r, self.forward, self.left) for r in self.objects)] or cands
-        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |sitting |standing )?(?:in )?between (.+)", text)
+        m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is |that s |sitting |standing |(?:that |which )?(?:sits|stands|lies) )?(?:right |directly |just )?(?:in )?between (.+)", text)
         if m:  # "the cube between the red and the green one", "the cube in between the other two"
             text, cands, located = m.group(1), between_of(m.group(1), m.group(2), cands, self._all), True
         m = re.fullmatch(r"(.+?)\s+(?:that is |thats |which is )?(?:(closest|nearest|closer|nearer)(?: to)?|(?:farthest|furthest|further|farther)(?: away)? from)"
