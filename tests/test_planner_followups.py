@@ -83,3 +83,14 @@ def test_a_placing_without_its_verb_is_never_dropped_as_talk() -> None:
 ])
 def test_places_and_uses_said_by_people(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
+
+
+def test_things_named_alone_then_a_place_for_the_first_in_the_second() -> None:
+    assert call_lines("Strawberry. Bowl. In it goes.") == call_lines("put the strawberry in the bowl")
+    assert call_lines("Red cube. Bowl. In it. How hard can that possibly be?") == call_lines("put the red cube in the bowl")
+
+
+def test_a_body_name_said_whole() -> None:
+    assert call_lines("put obj8_strawberry in obj6_bowl") == call_lines("put the strawberry in the bowl")
+    with pytest.raises(InputError, match="no object 8 bowl"):
+        RulePlanner().plan("lift obj8_bowl", CLUTTER)

@@ -232,11 +232,12 @@ class Resolver:
             if not ctx.last:
                 raise InputError(f"{phrase.strip()!r} does not refer to anything yet; name the object; {self.listing()}")
             return list(ctx.last)
-        m = re.fullmatch(r"(?:obj|object|item|thing|number|no)\s*#?\s*(\d+)", text)  # "object 3", "obj4": the scene's numbering
+        m = re.fullmatch(r"(?:obj|object|item|thing|number|no)\s*#?\s*(\d+)((?: [a-z]+)*)", text)  # "object 3", "obj4", "obj1_cube": the scene's numbering
         if m:
-            numbered = [o for o in self.objects if re.match(rf"obj{int(m.group(1))}(?:_|$)", o.name) and o.name not in exclude]
+            numbered = [o for o in self.objects if re.match(rf"obj{int(m.group(1))}(?:_|$)", o.name) and o.name not in exclude
+                        and set(m.group(2).split()) <= set(name_words(o.name))]  # the body name said whole: its words must be its own
             if not numbered:
-                raise InputError(f"there is no object {m.group(1)}; {self.listing()}")
+                raise InputError(f"there is no object {m.group(1)}{m.group(2)}; {self.listing()}")
             return numbered
         m = re.fullmatch(r"(?:that |this )?same (.+)", text)  # "that same cube": the cube just named
         if m and ctx.last and m.group(1) not in ("one", "ones", "thing", "object"):

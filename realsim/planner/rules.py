@@ -174,6 +174,13 @@ def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]]
     place = cleaned(sentence)
     if not p.ctx.last or not relation_start(place):
         return None
+    m = re.fullmatch(r"(.+?) (?:it|there|that one)(?: (?:goes|go|it goes|please))?", place)
+    if m and len(p.ctx.last) == 1 and len(p.ctx.seen) >= 2 and p.ctx.seen[-2] != p.ctx.last[0]:
+        thing, target = p.ctx.seen[-2], p.ctx.last[0]  # "Strawberry. Bowl. In it goes.": the first named, into the second
+        try:
+            return _read(f"put {thing.name} {m.group(1)} {target.name}", p)
+        except InputError:
+            return None
     try:
         return _read(f"put it {place}", p)
     except InputError:
