@@ -86,11 +86,12 @@ def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray)
     parts: dict[int, trimesh.Trimesh | None] = {}
 
     def part(i: int) -> trimesh.Trimesh | None:
+        if estimates is not None and whole - estimates[0][i] + estimates[1] < MIN_PART_VOLUME:
+            return None  # what clip_convex gives a part this small
         j = order[i]
         key = -1 if np.all(v @ normals[j] - offsets[j] >= 0) else i  # a plane missing the body keeps all its corners
         if key not in parts:
-            too_small = estimates is not None and whole - estimates[0][i] + estimates[1] < MIN_PART_VOLUME  # clip_convex: None
-            parts[key] = None if too_small else clip_convex(moved, normals[j], float(offsets[j]))
+            parts[key] = clip_convex(moved, normals[j], float(offsets[j]))
         return parts[key]
 
     def estimate(i: int) -> tuple[float, float]:
