@@ -32,7 +32,7 @@ def convexity_excess(vertices: np.ndarray, faces: np.ndarray, normals: np.ndarra
 
 def _cones(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
     """Six times the signed volumes of the tetrahedra (origin, a, b, c), row by row."""
-    return np.einsum("ik,ik->i", a, np.cross(b, c))
+    return np.asarray(np.einsum("ik,ik->i", a, np.cross(b, c)))
 
 
 def clipped_volumes(mesh: trimesh.Trimesh, normals: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, float] | None:
