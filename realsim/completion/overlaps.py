@@ -24,7 +24,7 @@ from realsim.scene import SceneObject
 DIRECTIONS = 192  # candidate plane normals spread over the sphere (plus the other shape's face normals)
 KEEP_SEEN = 0.995  # a cut must keep this share of the cut object's observed points
 SEEN_TOLERANCE = 0.003  # m an observed point may lie beyond the cut and still count as kept
-ROUGH_MARGIN = 1e-7  # share of a piece's volume a Qhull-only estimate of a cut's loss is trusted to
+ROUGH_MARGIN = 1e-7  # share of a piece's volume a closed-form or Qhull-only estimate of a cut's loss is trusted to
 
 
 def _sphere(count: int) -> np.ndarray:
