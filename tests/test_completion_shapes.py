@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
+import pytest
 import trimesh
 
-from realsim.completion import CompletionParams, DepthView
+from realsim.completion import CompletionParams, DepthView, carving
 from realsim.completion.carving import carve_pieces, carve_to_tiles
 from realsim.completion.extrusion import complete_hull, complete_slabs
 from realsim.completion.revolution import complete_revolved
@@ -138,3 +141,23 @@ def test_a_body_with_a_gap_is_kept_as_tiles_that_leave_the_gap_empty() -> None:
         return (np.abs(np.abs(p[:, 0]) - 0.04) <= 0.02) & (np.abs(p[:, 1]) <= 0.04) & (p[:, 2] >= -1.0) & (p[:, 2] <= -0.9)
 
     assert _iou(pieces, truth, np.array([-0.07, -0.05, -1.0]), np.array([0.07, 0.05, -0.9])) >= 0.8
+
+
+def test_the_refilled_share_is_measured_only_when_it_decides_tiling(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the two blocks of the test above: their carved hull fills the seen gap again
+    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
+    x, y = (u - INTR.cx) / INTR.fx * 0.9, -(v - INTR.cy) / INTR.fy * 0.9
+    on_body = (np.abs(np.abs(x) - 0.04) <= 0.02) & (np.abs(y) <= 0.04)
+    view = DepthView(INTR, np.diag([1.0, -1.0, -1.0, 1.0]), 1.0, np.where(on_body, 0.9, 1.0), np.where(on_body, 1, 0))
+    hull = trimesh.creation.box(bounds=[[-0.06, -0.04, -1.0], [0.06, 0.04, -0.9]])
+    top = np.column_stack([x[on_body], y[on_body], np.full(on_body.sum(), -0.9)])
+    measured = []
+    inside = carving._inside_convex
+    monkeypatch.setattr(carving, "_inside_convex", lambda mesh, pts: measured.append(len(pts)) or inside(mesh, pts))
+    params = CompletionParams()
+    assert carving.carve(hull, view, -1.0, top, params, own=1, tiles=False).tiles is None
+    assert carving.carve(hull, view, -1.0, top, params, own=1).tiles is not None  # seen through enough to tile
+    assert carving.carve(hull, view, -1.0, top, replace(params, tile_min_fraction=np.inf), own=1).tiles is None
+    assert not measured  # none of these asked for it
+    refill = replace(params, tile_min_fraction=np.inf, tile_when_refilled=True)
+    assert carving.carve(hull, view, -1.0, top, refill, own=1).tiles is not None and measured  # it decides here

@@ -105,11 +105,15 @@ def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.nd
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
     hull = _carved_hull(mesh, voxels, base_z, observed, not surface_ends)
-    free = voxels[4]  # seen-through voxels the carved hull fills again (only those are tested)
-    refilled = float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
-    many = fraction >= params.tile_min_fraction or (params.tile_when_refilled and refilled >= params.carve_min_fraction)
-    pieces = _tiles(voxels, base_z, observed, params) if tiles and many else None
+    many = tiles and (fraction >= params.tile_min_fraction or (params.tile_when_refilled and _refilled(hull, voxels) >= params.carve_min_fraction))
+    pieces = _tiles(voxels, base_z, observed, params) if many else None
     return Carving(fraction, hull, pieces)
+
+
+def _refilled(hull: trimesh.Trimesh, voxels: Voxels) -> float:
+    """The share of the seen-through voxels that the carved ``hull`` fills again (only those are tested)."""
+    free = voxels[4]
+    return float(np.count_nonzero(_inside_convex(hull, voxels[3][free]))) / len(free)
 
 
 def _inside_convex(mesh: trimesh.Trimesh, points: np.ndarray) -> np.ndarray:

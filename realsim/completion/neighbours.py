@@ -11,6 +11,8 @@ from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
 
+MIN_PART_VOLUME = 1e-7  # m^3 a clipped part must exceed to be kept
+
 
 def foreign_fraction(mesh: trimesh.Trimesh, others: np.ndarray) -> float:
     if len(others) == 0:
@@ -54,7 +56,7 @@ def clip_convex(mesh: trimesh.Trimesh, normal: np.ndarray, offset: float) -> tri
         out = trimesh_hull(points)
     except QhullError:
         return None
-    return out if volume(out) > 1e-7 else None
+    return out if volume(out) > MIN_PART_VOLUME else None
 
 
 def separate_neighbours(objects: list[SceneObject], done: dict[int, trimesh.Trimesh], observed: dict[int, np.ndarray],

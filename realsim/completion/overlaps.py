@@ -14,8 +14,9 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
+from realsim.completion.clipvolume import clipped_volumes
 from realsim.completion.hull import trimesh_hull, volume, within_convex
-from realsim.completion.neighbours import clip_convex, kept_points, unique_edges
+from realsim.completion.neighbours import MIN_PART_VOLUME, clip_convex, kept_points, unique_edges
 from realsim.completion.params import CompletionParams
 from realsim.completion.stacking import set_shape
 from realsim.scene import SceneObject
@@ -23,7 +24,7 @@ from realsim.scene import SceneObject
 DIRECTIONS = 192  # candidate plane normals spread over the sphere (plus the other shape's face normals)
 KEEP_SEEN = 0.995  # a cut must keep this share of the cut object's observed points
 SEEN_TOLERANCE = 0.003  # m an observed point may lie beyond the cut and still count as kept
-ROUGH_MARGIN = 1e-7  # share of a piece's volume a Qhull-only estimate of a cut's loss is trusted to
+ROUGH_MARGIN = 1e-7  # share of a piece's volume a closed-form or Qhull-only estimate of a cut's loss is trusted to
 
 
 def _sphere(count: int) -> np.ndarray:
@@ -57,25 +58,64 @@ def _rough_volume(points: np.ndarray) -> float:
         return float("inf")
 
 
+def _removed_estimates(moved: trimesh.Trimesh, normals: np.ndarray, offsets: np.ndarray,
+                       whole: float) -> tuple[np.ndarray, float] | None:
+    """Per cut, the volume it removes from ``moved`` (of volume ``whole``) from closed forms, and how far
+    the exact hull's may differ; None when ``moved`` is not a closed convex mesh."""
+    clipped = clipped_volumes(moved, normals, offsets) if len(normals) else None
+    if clipped is None:
+        return None
+    kept, excess = clipped
+    return whole - kept, ROUGH_MARGIN * whole + excess
+
+
 def _best_part(moved: trimesh.Trimesh, fixed: trimesh.Trimesh, seen: np.ndarray) -> tuple[float, np.ndarray, float] | None:
     """(volume removed, normal, offset) of the cheapest cut keeping ``moved`` where ``n . x >= offset``
-    with the plane touching ``fixed`` from outside, keeping ``KEEP_SEEN`` of ``seen``; None if none does."""
+    with the plane touching ``fixed`` from outside, keeping ``KEEP_SEEN`` of ``seen``; None if none does.
+    Of cuts removing the same volume, the shallowest wins. Exact hulls are made only for cuts whose
+    estimated loss is within the estimate's margin of the best so far, and of the cut estimated cheapest
+    (a bound the winner cannot exceed)."""
     normals = np.vstack([_sphere(DIRECTIONS), -fixed.face_normals[:: max(1, len(fixed.faces) // 64)]])
     offsets = (fixed.vertices @ normals.T).max(axis=0)
     low = (moved.vertices @ normals.T).min(axis=0)
     kept = np.mean(seen @ normals.T >= offsets - SEEN_TOLERANCE, axis=0) >= KEEP_SEEN if len(seen) else np.ones(len(normals), bool)
-    best: tuple[float, np.ndarray, float] | None = None
+    order = [int(j) for j in np.argsort(offsets - low) if kept[j]]  # shallow cuts first
     whole = volume(moved)
     v, edges = np.asarray(moved.vertices), unique_edges(moved.faces)
-    for j in np.argsort(offsets - low):  # shallow cuts first
-        if not kept[j]:
+    estimates = _removed_estimates(moved, normals[order], offsets[order], whole)
+    parts: dict[int, trimesh.Trimesh | None] = {}
+
+    def part(i: int) -> trimesh.Trimesh | None:
+        if estimates is not None and whole - estimates[0][i] + estimates[1] < MIN_PART_VOLUME:
+            return None  # what clip_convex gives a part this small
+        j = order[i]
+        key = -1 if np.all(v @ normals[j] - offsets[j] >= 0) else i  # a plane missing the body keeps all its corners
+        if key not in parts:
+            parts[key] = clip_convex(moved, normals[j], float(offsets[j]))
+        return parts[key]
+
+    def estimate(i: int) -> tuple[float, float]:
+        if estimates is not None:
+            return float(estimates[0][i]), estimates[1]
+        return whole - _rough_volume(kept_points(v, edges, normals[order[i]], float(offsets[order[i]]))), ROUGH_MARGIN * whole
+
+    bound = float("inf")  # the exact loss of one valid cut: the winner loses at most this
+    if estimates is not None:
+        for i in np.argsort(estimates[0], kind="stable"):
+            if (cut := part(int(i))) is not None:
+                bound = whole - volume(cut)
+                break
+    best: tuple[float, np.ndarray, float] | None = None
+    for i, j in enumerate(order):
+        limit = min(bound, best[0]) if best is not None else bound
+        if limit < float("inf"):
+            loss, margin = estimate(i)
+            if loss > limit + margin:
+                continue  # surely loses more than a cut already found: not worth the exact hull
+        cut = part(i)
+        if cut is None:
             continue
-        if best is not None and whole - _rough_volume(kept_points(v, edges, normals[j], float(offsets[j]))) > best[0] + ROUGH_MARGIN * whole:
-            continue  # surely loses more than the best so far: not worth the exact hull
-        part = clip_convex(moved, normals[j], float(offsets[j]))
-        if part is None:
-            continue
-        removed = whole - volume(part)
+        removed = whole - volume(cut)
         if best is None or removed < best[0]:
             best = (removed, normals[j], float(offsets[j]))
     return best
