@@ -123,15 +123,20 @@ def test_pieces_grown_into_seen_free_space_are_carved_back() -> None:
     assert view.seen_through(pts, 0.006).mean() < 0.02
 
 
-def test_a_body_with_a_gap_is_kept_as_tiles_that_leave_the_gap_empty() -> None:
-    # two 4 x 8 x 10 cm blocks 4 cm apart (a handle beside a body), 0.9 m below a camera looking down:
-    # their hull bridges the gap, where the camera saw the floor
+def _two_blocks_seen_from_above() -> tuple[DepthView, trimesh.Trimesh, np.ndarray]:
+    """Two 4 x 8 x 10 cm blocks 4 cm apart (a handle beside a body), 0.9 m below a camera looking
+    down: the view, the hull that bridges the gap where the camera saw the floor, the seen top."""
     v, u = np.mgrid[0:INTR.height, 0:INTR.width]
     x, y = (u - INTR.cx) / INTR.fx * 0.9, -(v - INTR.cy) / INTR.fy * 0.9
     on_body = (np.abs(np.abs(x) - 0.04) <= 0.02) & (np.abs(y) <= 0.04)
     view = DepthView(INTR, np.diag([1.0, -1.0, -1.0, 1.0]), 1.0, np.where(on_body, 0.9, 1.0), np.where(on_body, 1, 0))
     hull = trimesh.creation.box(bounds=[[-0.06, -0.04, -1.0], [0.06, 0.04, -0.9]])
     top = np.column_stack([x[on_body], y[on_body], np.full(on_body.sum(), -0.9)])
+    return view, hull, top
+
+
+def test_a_body_with_a_gap_is_kept_as_tiles_that_leave_the_gap_empty() -> None:
+    view, hull, top = _two_blocks_seen_from_above()
     pieces, share = carve_to_tiles(hull, view, -1.0, top, CompletionParams(), own=1)
     assert pieces is not None and 0.25 < share < 0.45
     gap = np.column_stack([np.zeros(9), np.linspace(-0.03, 0.03, 9), np.full(9, -0.95)])
@@ -144,13 +149,7 @@ def test_a_body_with_a_gap_is_kept_as_tiles_that_leave_the_gap_empty() -> None:
 
 
 def test_the_refilled_share_is_measured_only_when_it_decides_tiling(monkeypatch: pytest.MonkeyPatch) -> None:
-    # the two blocks of the test above: their carved hull fills the seen gap again
-    v, u = np.mgrid[0:INTR.height, 0:INTR.width]
-    x, y = (u - INTR.cx) / INTR.fx * 0.9, -(v - INTR.cy) / INTR.fy * 0.9
-    on_body = (np.abs(np.abs(x) - 0.04) <= 0.02) & (np.abs(y) <= 0.04)
-    view = DepthView(INTR, np.diag([1.0, -1.0, -1.0, 1.0]), 1.0, np.where(on_body, 0.9, 1.0), np.where(on_body, 1, 0))
-    hull = trimesh.creation.box(bounds=[[-0.06, -0.04, -1.0], [0.06, 0.04, -0.9]])
-    top = np.column_stack([x[on_body], y[on_body], np.full(on_body.sum(), -0.9)])
+    view, hull, top = _two_blocks_seen_from_above()  # their carved hull fills the seen gap again
     measured = []
     inside = carving._inside_convex
     monkeypatch.setattr(carving, "_inside_convex", lambda mesh, pts: measured.append(len(pts)) or inside(mesh, pts))

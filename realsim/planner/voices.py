@@ -42,6 +42,15 @@ _ETH = re.compile(r"\b([a-z]{3,})eth\b")
 _NOT_ETH = {"beneath", "seventh", "eleventh", "twentieth", "thirtieth", "fortieth", "fiftieth", "hundredth", "something", "teeth"}
 
 
+
+def _alternation(words: list[str]) -> str:
+    return "|".join(re.escape(w) for w in sorted(words, key=len, reverse=True))
+
+
+_FORMS = tuple(re.compile(rf"(?<![\w'])(?:{_alternation([w for w in _WORDS if (' ' in w) == phrase])})(?![\w'])") for phrase in (False, True))
+# a text in one of these voices: any word of theirs, an old verb ending or an interjection
+_MARKED = re.compile(rf"(?<![\w'])(?:{_alternation(list(_WORDS))}|wee|\w+eth|{_INTERJECTIONS})(?![\w'])")
+
 def _eth(m: re.Match[str]) -> str:
     word, stem = m.group(0), m.group(1)
     if word in _NOT_ETH:
@@ -51,15 +60,12 @@ def _eth(m: re.Match[str]) -> str:
 
 def plain(text: str) -> str:
     """``text`` (lower case) with archaic, pirate, regional and slang word forms said plainly."""
-    if not re.search(r"\b(?:thou|thee|thy|thine|ye|yer|yon|yonder|unto|upon|betwixt|o'er|doth|hath|shalt|wilt|prithee|beseech|o'|an'|och|gie|tae|aboot|oot|wee"
-                     r"|cannae|canna|dinnae|didnae|wouldnae|ya|y'all|yall|youse|ain't|fixin|fixing to|road|no cap|lowkey|highkey|fr|deadass|on god|istg|ngl"
-                     r"|yeet|chillin|chilling|vibing|vibin|plumb"
-                     rf"|matey|swab|hearty|\w+eth|{_INTERJECTIONS})(?!\w)", text):
+    if not _MARKED.search(text):
         return text
     text = _OPENER.sub(" ", text)
     text = _CLOSER.sub("", text)
-    for old, new in sorted(_WORDS.items(), key=lambda kv: (" " in kv[0], -len(kv[0]))):  # words, then phrases
-        text = re.sub(rf"(?<![\w']){re.escape(old)}(?![\w'])", new, text)
+    for forms in _FORMS:  # words, then phrases (written in the words' plain forms)
+        text = forms.sub(lambda m: _WORDS[m.group(0)], text)
     text = _ETH.sub(_eth, text)
     text = re.sub(r"\bwee\b(?! bit)", "small", text)  # "yon wee cube"; "a wee bit" is an amount
     text = re.sub(r"\b(on|at|to) (?:the|your|my) (left|right) hand\b(?! side)", r"\1 the \2", text)  # "upon the right hand"
