@@ -434,7 +434,7 @@ def _number(s: str) -> bool:
 
 
 def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) -> Row:
-    from realsim.planner.goals import evaluate_all, prepare_all
+    from realsim.planner.goals import GoalResult, prepare_all
 
     t0 = time.perf_counter()
     sim.reset()
@@ -443,14 +443,17 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
     prepare_all(goals, sim)  # run_command starts from the same keyframe
     start_poses = sim.state()
     try:
-        rec = _run_sentence(sim, sentence, planner, seed)
+        plan, rec = _run_sentence(sim, sentence, planner, seed)
     except InputError as exc:
         ok = refuse and any(w in str(exc) for w in ("ambiguous", "no object", "does not refer", "candidates", "objects in the scene"))
         return Row(scene, sentence, spec, ok, 0, [], "" if ok else f"refused: {exc}", 0.0, time.perf_counter() - t0, "" if ok else "plan")
     if refuse:
         return Row(scene, sentence, spec, False, len(rec.calls), [], "acted instead of asking which object", rec.sim_time,
                    time.perf_counter() - t0, "plan")
-    results = evaluate_all(goals, sim)
+    # a goal a later step undoes ("lift it, then put it back") is judged when the plan checked it, between its calls
+    checked = {c.describe(): r for c in plan.checkpoints for r in rec.goals if r["goal"] == c.describe()}
+    results = [next((GoalResult(g.describe(), checked[c.describe()]["ok"], checked[c.describe()]["measured"])
+                     for c in plan.checkpoints if _same_goal(g, c.goal) and c.describe() in checked), None) or g.evaluate(sim) for g in goals]
     acted = [c for c in rec.actions if c["primitive"] not in ("go_home", "open_gripper", "close_gripper", "move_ee_to")]
     wrong = sum(1 for a in acted if _acted_object(a["call"]) not in movers)
     moved = []
@@ -474,7 +477,8 @@ def _run_sentence(sim, sentence: str, planner: str, seed: int):
 
     sim.reset()
     plan = make_planner(planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw(), robot_base=sim.robot_base())
-    return run_program(sim, plan.calls if plan.calls is not None else plan.program, seed=seed, name=plan.planner)
+    record = run_program(sim, plan.calls if plan.calls is not None else plan.program, seed=seed, name=plan.planner, checkpoints=plan.checkpoints)
+    return plan, record
 
 
 def _acted_object(call: str) -> str:
@@ -591,9 +595,10 @@ def bench_plans(args: argparse.Namespace) -> int:
             movers = movers - still
             goals = [g for g in goals if getattr(g, "obj", None) not in still]
             ok, got = spec != "refuse" and acted == movers, ", ".join(sorted(acted)) or "nothing"
-            missing = sorted(g.describe() for g in goals if not any(_same_goal(g, h) for h in plan.goals))
+            planned = [*plan.goals, *(c.goal for c in plan.checkpoints)]  # a goal a later step undoes is checked when its step ends
+            missing = sorted(g.describe() for g in goals if not any(_same_goal(g, h) for h in planned))
             if ok and missing:  # the right objects, but another relation, side, direction or distance
-                ok, got = False, f"{got}; goals {sorted(g.describe() for g in plan.goals)} lack {missing}"
+                ok, got = False, f"{got}; goals {sorted(g.describe() for g in planned)} lack {missing}"
         except InputError as exc:
             ok, got = spec == "refuse", f"refused: {exc}"
         right += ok

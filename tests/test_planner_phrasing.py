@@ -300,3 +300,33 @@ def test_an_object_not_to_touch_is_never_acted_on(sentence: str) -> None:
 ])
 def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("slide the banana to the left by about three fingers' width", "push the banana left 6 cm"),  # a finger about 2 cm
+    ("push the bowl two hands widths forward", "push the bowl forward 20 cm"),
+    ("banana 10cm L", "push the banana left 10 cm"),  # note-taking shorthand
+    ("strawberry -> R of bowl", "put the strawberry right of the bowl"),
+    ("That banana keeps getting in my way.", "move the banana out of the way"),  # a complaint said alone asks for it moved
+    ("The bowl is cluttering up the middle of the table, I need it out of there.", "move the bowl out of the way"),
+    ("Clear the bowl out of the workspace, then place the strawberry at the bowl's initial pose.",
+     "move the bowl out of the way, then put the strawberry where the bowl was"),
+    ("Apply a +0.04 m x-offset to the banana via a push, no grasp required.", "push the banana forward 4 cm"),
+    ("Grasp the strawberry and place it inside the bowl frame.", "grasp the strawberry and place it inside the bowl"),
+    ("Move the banana 8 cm left, then return to home configuration.", "push the banana left 8 cm, then go home"),
+    ("Whenever it's convenient for you, would you please swap the red cube and the green cube?", "swap the red cube and the green cube"),
+    ("Level 3, tower builder: blue cube on top of the red cube. Clock's ticking.", "put the blue cube on the red cube"),
+    ("Speedrun category: banana and strawberry trade places, any percent, no fumbles allowed.", "swap the banana and the strawberry"),
+    ("It bothers me that the strawberry is way over there; it would look better sitting beside the bowl.", "put the strawberry next to the bowl"),
+])
+def test_what_people_say_in_their_own_words(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
+
+
+def test_the_thing_to_its_side_is_the_next_one_over() -> None:
+    """Nothing stands squarely right of the red cube (the blue one is 20 cm over, the can 15 cm
+    nearer): "the thing immediately to its right" is the nearest one beyond its side."""
+    assert call_lines("pick up the thing immediately to the right of the red cube") == ["grasp('obj4_cube')"]
+    assert call_lines("The red cube: put that in front of the thing immediately to its right.") == call_lines("put the red cube in front of the blue cube")
+    with pytest.raises(InputError, match="ambiguous"):  # without "immediately" both things right of it are meant
+        RulePlanner().plan("pick up the thing to the right of the red cube", CLUTTER)

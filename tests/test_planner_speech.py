@@ -50,3 +50,28 @@ def test_an_undo_keeps_what_it_undoes() -> None:
 ])
 def test_a_place_taken_back_and_said_again(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    # the place said again after the marker, its object carried over from the place it replaces
+    ("Put the banana behind the bowl -- wait, no, in front of it.", "put the banana in front of the bowl"),
+    ("Red cube to the left of the bowl. No, to the right, sorry.", "put the red cube to the right of the bowl"),
+    # only the object said anew: the amount and the direction the command said stay
+    ("Push the red cube five centimetres to the left. Hang on, I meant the blue cube, not the red one.", "push the blue cube 5 cm to the left"),
+    # "X I mean" after the phrase it repairs
+    ("Move the right can, er, the left one I mean, over next to the bowl.", "put the left can next to the bowl"),
+    # an amount corrected by a bare number keeps its unit; number words are amounts too
+    ("Slide the banana forward ten centimetres, sorry, make that fifteen.", "push the banana forward 15 cm"),
+])
+def test_a_repair_replaces_only_what_it_says_again(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)
+
+
+@pytest.mark.parametrize(("said", "plain"), [
+    ("put the strawberry next too the bowl", "put the strawberry next to the bowl"),  # dictation homophones
+    ("move the strawberry so its next two the bowl", "put the strawberry next to the bowl"),
+    ("pick up the blew cube", "pick up the blue cube"),
+    ("pick up the banana than put it back were it was", "pick up the banana then put it back where it was"),
+])
+def test_words_speech_to_text_writes_for_others(said: str, plain: str) -> None:
+    assert call_lines(said) == call_lines(plain)

@@ -66,6 +66,17 @@ def test_pick_and_place_sentence_reaches_goal(scene: Path, tmp_path: Path, capsy
     assert sim.state() == {k: v for k, v in rec["objects_before"].items()}
 
 
+def test_a_lift_put_back_is_checked_when_the_lift_ends(scene: Path, tmp_path: Path, capsys) -> None:
+    """"lift the mug, then put it back": the end state alone cannot tell it was lifted; the lift is
+    checked in the simulation when its call returns."""
+    log = tmp_path / "log.json"
+    code, out, err = _run(capsys, str(scene), "lift the mug, then put it back where it was", "--planner", "rules", "--log", str(log))
+    assert code == 0, out + err
+    goals = json.loads(log.read_text())["goals"]
+    assert [g["goal"] for g in goals][0] == "obj2_mug lifted (after call 1)" and all(g["ok"] for g in goals)
+    assert float(goals[0]["measured"].split()[1]) >= 0.03  # "raised +0.1xx m (>= 0.030)"
+
+
 def test_default_log_goes_to_numbered_runs(scene: Path, capsys) -> None:
     code, out, err = _run(capsys, str(scene), "go home", "--planner", "rules")
     assert code == 0, out + err

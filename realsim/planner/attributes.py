@@ -6,7 +6,7 @@ size words, ordinal names, and whether a locator relation ("the can next to the 
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -132,6 +132,18 @@ def relation_holds(rel: str, o: ObjectInfo, ref: ObjectInfo, forward: np.ndarray
         return relations.inside(a, b).ok or (relations.xy_gap(a, b) == 0.0 and a[:, 2].min() < b[:, 2].max())
     d = {"left": left, "right": -left, "behind": forward, "front": -forward}[rel]
     return relations.side_of(a, b, d, max_gap=0.3).ok
+
+
+def next_over(rel: str, cands: Sequence[ObjectInfo], ref: ObjectInfo, forward: np.ndarray, left: np.ndarray) -> list[ObjectInfo]:
+    """"the thing to the right of the can" when nothing stands squarely to its right: the one object
+    whose centre lies beyond the can's own side in that direction and nearest along it (the next one over)."""
+    d = {"left": left, "right": -left, "behind": forward, "front": -forward}[rel][:2]
+    centre, half = np.asarray(ref.position[:2], float), float(np.abs(np.asarray(ref.size[:2], float)) @ np.abs(d)) / 2
+    beyond = [(float((np.asarray(o.position[:2], float) - centre) @ d), o) for o in cands if o.name != ref.name]
+    beyond = sorted(((s, o) for s, o in beyond if s > half), key=lambda t: t[0])
+    if not beyond or (len(beyond) > 1 and beyond[1][0] - beyond[0][0] < 0.02):  # two as near: the speaker is asked
+        return [o for s, o in beyond if s - beyond[0][0] < 0.02] if beyond else []
+    return [beyond[0][1]]
 
 
 def holding(head: str, held_phrase: str, resolve_all: Callable[[str], list[ObjectInfo]],

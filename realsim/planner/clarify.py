@@ -16,6 +16,7 @@ import re
 from realsim.errors import InputError
 from realsim.planner.lexicon import RELATION_AT, RELATIONS, VERB_ANYWHERE, VERB_START
 from realsim.planner.speech import noun_phrases, one_as
+from realsim.planner.vocab import NUMBERS
 
 __all__ = ["amount", "clarify"]
 
@@ -94,9 +95,12 @@ def clarify(text: str) -> str:
     raise asked
 
 
-_AMOUNT = r"(?:about |around |roughly )?\d+(?:\.\d+)? ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+_COUNT = rf"(?:\d+(?:\.\d+)?|(?:{'|'.join(sorted((w for w in NUMBERS if ' ' not in w), key=len, reverse=True))})(?:[ -](?:one|two|three|four|five|six|seven|eight|nine))?)"
+_UNIT = r"(?:cm|mm|centimet\w*|millimet\w*|inch\w*)"
+_AMOUNT = rf"(?:about |around |roughly )?{_COUNT} ?{_UNIT}"
+# "make that fifteen": a bare number keeps the unit of the amount it corrects
 _NEW_AMOUNT = re.compile(rf"(?:^|(?<=[.,;!?]))\s*(?:(?:oh|no|wait|sorry|actually|um|uh|hmm)\s*,?\s*)*(?:make (?:it|that)|i meant?|(?:no|sorry|actually),?)\s+"
-                         rf"({_AMOUNT})(?: instead)?\s*(?=$|[.,;!?])")
+                         rf"((?:about |around |roughly )?{_COUNT}(?: ?{_UNIT})?)(?: instead)?\s*(?=$|[.,;!?])")
 
 
 def amount(text: str) -> str:
@@ -109,5 +113,7 @@ def amount(text: str) -> str:
     said = list(re.finditer(_AMOUNT, before))
     if not said:
         raise InputError(f"{text.strip()!r}: '{m.group(1)}' corrects no amount the command said; say the whole command again")
-    last = said[-1]
-    return f"{before[: last.start()]}{m.group(1)}{before[last.end():]}{text[m.end():]}"
+    last, new = said[-1], m.group(1)
+    if not re.search(rf"{_UNIT}$", new):
+        new = f"{new} {re.search(rf'{_UNIT}$', last.group(0)).group(0)}"  # type: ignore[union-attr]
+    return f"{before[: last.start()]}{new}{before[last.end():]}{text[m.end():]}"

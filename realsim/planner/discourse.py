@@ -36,7 +36,9 @@ TALK: tuple[str, ...] = (
     r"(?:lovely|great|perfect|brilliant|wonderful|awesome|fantastic|super|splendid|marvellous|marvelous|excellent|nice|cool|sweet|good job|well done|nice one|good stuff|bless you)",
     # politeness and hedges said as a piece of their own
     r"if you please", r"if you (?:would|could|will|can|dont mind|do not mind|wouldnt mind|would not mind)", r"if (?:it|that) s? ?(?:ok|okay|alright|all right|fine|possible|easy|no trouble|not too much trouble)",
-    r"(?:if|when) you (?:get|have) (?:a )?(?:chance|moment|sec|second|minute)", r"(?:(?:i m|im|i am) (?:so |very |really |terribly |awfully |truly )?|(?:so |very |really |terribly |awfully |truly ))(?:sorry|apologies)"
+    r"(?:if|when) you (?:get|have) (?:a )?(?:chance|moment|sec|second|minute)",
+    r"(?:when|whenever|if) (?:it s|its|it is|it ll be|it would be|it d be|you re|youre|you are) (?:most |more |quite |at all )?(?:convenient|handy|free|ready|able|not busy)(?: for you)?",
+    r"at your (?:earliest |own )?(?:convenience|leisure)", r"in your own time", r"whenever you (?:can|like|want|are ready|re ready|get round to it|get around to it)", r"(?:(?:i m|im|i am) (?:so |very |really |terribly |awfully |truly )?|(?:so |very |really |terribly |awfully |truly ))(?:sorry|apologies)"
     r"(?: (?:to bother you|for the trouble|for bothering you|to ask|to be a pain|to be difficult))?",  # not "sorry" alone: a correction
     r"(?:sorry|apologies) (?:to bother you|for the trouble|for bothering you|to ask|to be a pain|to be difficult)",
     r"(?:but )?(?:only )?if (?:it s|its|it is|that s|thats|that is) (?:no|not any|not too much|not too much of an?|not an?) (?:trouble|bother|imposition|hassle|problem|pain)(?: at all| for you)?",

@@ -367,6 +367,19 @@ class AtHome(Goal):
         return GoalResult(self.describe(), ok, f"end effector at ({float(e[0]):.3f}, {float(e[1]):.3f}, {float(e[2]):.3f})")
 
 
+@dataclass
+class Checkpoint:
+    """A goal of a step that a later step undoes ("lift the can, then put it back"): prepared once
+    the program's first ``start`` calls have run and checked once its first ``after`` calls have."""
+
+    start: int
+    after: int
+    goal: Goal
+
+    def describe(self) -> str:
+        return f"{self.goal.describe()} (after call {self.after})"
+
+
 def prepare_all(goals: Sequence[Goal], world: WorldView) -> None:
     """Record every goal's start state; call before running the program."""
     for g in goals:

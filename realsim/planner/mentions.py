@@ -19,6 +19,7 @@ __all__ = ["mentioned", "named_alone"]
 
 _LONGEST = 6  # words in a noun phrase with its colour, size and locator words
 _JOINS = {"and", "or", "with", "then"}
+_WHERE_ENDS = {"back", "front", "left", "right", "middle", "centre", "center"}  # "the thing farthest back": a locator ends the phrase
 _LOCATING = {"other", "between"}  # "(between) the other two blocks": a locator's reference, not a mention
 _COUNTS = {w for w in NUMBERS if " " not in w} | {"both", "all"}
 _PRONOUN_WORDS = {"one", "ones", "it", "same", "other"}  # "the same one" is what was named before, not a new mention
@@ -41,7 +42,7 @@ def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
         end, matched = i + 1, False
         if words[i] in DETERMINERS or words[i] in COLOR_WORDS or words[i] in _COUNTS or singular(words[i]) in nouns:
             for j in range(min(len(words), i + _LONGEST), i, -1):
-                if singular(words[j - 1]) not in nouns or _JOINS & set(words[i:j]):
+                if (singular(words[j - 1]) not in nouns and words[j - 1] not in _WHERE_ENDS) or _JOINS & set(words[i:j]):
                     continue  # a phrase ends at its noun and names one thing
                 phrase = re.sub(r"^(?:a|an|any|some) ", "the ", " ".join(words[i:j]))  # "there's a soda can": only if there is one
                 plural = (is_plural(words[j - 1]) and words[j - 1] not in nouns  # "the two soda cans": all of them

@@ -102,6 +102,12 @@ _TEXTING = {"u": "you", "ur": "your", "plz": "please", "plse": "please", "thx": 
             "tryna": "trying to", "bout": "about", "cos": "because", "coz": "because", "rly": "really", "k": "okay", "kk": "okay"}
 # "bring it over to sit with the banana": a thing brought somewhere to be there
 _KEEP_COMPANY = r"\b((?:bring|move|put|take|carry|get|set|place|haul|scoot|slide|shift)\b[^.;!?]*?)(?: over| across| round| around)? to (?:sit|stand|rest|be|stay|live|hang out|go|hide|wait|lie|nap|sleep|play)"
+# a thing complained of as being in the way, said as a sentence of its own (not "... , move it": that names the request)
+_IN_THE_WAY = re.compile(r"(^|(?<=[.;!?] ))(?:(?:ugh|argh|man|honestly|seriously|so|well|god|gosh|jeez|sigh)[,!]? )*((?:the|that|this|my) [a-z]+(?: [a-z]+){0,2}?) (?:is|keeps|s)"
+                         r"(?: (?:always|still|constantly|just|kind of|sort of|really|totally|completely|now))* (?:in (?:the|my|your) way|getting in (?:the|my) way"
+                         r"|blocking (?:things|everything|me|the way|my (?:view|reach|path|arm|hand))|(?:cluttering|crowding|hogging|taking up)(?: up)? [a-z ]+?"
+                         r"|obstructing [a-z ]+?)(?: again| all the time| constantly)?(?=\s*(?:[.;!?]|$|,\s*i (?:need|want) it (?:out of there|gone|moved|away)\s*(?:[.;!?]|$)))")
+_BODY_WIDTH_CM = {"hand": 10, "palm": 8, "finger": 2, "thumb": 2}  # a hand's width is about 10 cm, a finger's 2 cm
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
            "opening": "open", "closing": "close", "bringing": "bring", "going": "go", "shoving": "shove", "nudging": "nudge",
@@ -166,11 +172,14 @@ def clean(command: str) -> str:
     text = re.sub(r"(?<![\w'])'?em\b", "them", text)  # "swap 'em"
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
+    text = re.sub(r"(?<![\w'-])([lr])(?= of\b)|(?<=\d)( ?(?:cm|mm|in|inch|inches|centimet\w*|millimet\w*) )([lr])(?![\w'-])",  # "L of red can", "10cm L"
+                  lambda m: f"{m.group(2) or ''}{'left' if (m.group(1) or m.group(3)) == 'l' else 'right'}", text)
     # spoken fractions and trade units: "two and a half centimetres", "three quarters of an inch", "ten mil", "a hand's width"
     text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten) and a half\b", lambda m: f"{float(NUMBERS.get(m.group(1), m.group(1))) + 0.5:g}", text)
     text = re.sub(r"\b(?:(three)|an?|one) quarters? of an? (?=inch|centimet|cm|millimet|mm)", lambda m: "0.75 " if m.group(1) else "0.25 ", text)
     text = re.sub(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twenty) mils?\b", r"\1 mm", text)
-    text = re.sub(r"\ban? (hand|palm|finger|thumb)(?:'?s|s)? (?:width|breadth)\b", lambda m: {"hand": "10 cm", "palm": "8 cm"}.get(m.group(1), "2 cm"), text)
+    text = re.sub(r"\b(an?|\d+|one|two|three|four|five|six|seven|eight|nine|ten) (hand|palm|finger|thumb)(?:'?s|s'?)? ?(?:width|breadth)s?\b",
+                  lambda m: f"{float(NUMBERS.get(m.group(1), 1 if m.group(1) in ('a', 'an') else m.group(1))) * _BODY_WIDTH_CM[m.group(2)]:g} cm", text)  # "three fingers' width"
     text = re.sub(r"(\d\s*(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b[^.;!?]*?)[.;,]\s*(?:call it|say|make (?:it|that)|let'?s say) (?:about |roughly )?[\w.]+ (?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b", r"\1", text)
     text = re.sub(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twenty)[- ]?ish\b", r"\1", text)  # "three-ish inches"
     text = re.sub(r"(?<!\bhalf )(?<!\bquarter of )\ban? (?=(?:inch|centimet\w*|cm|millimet\w*|mm)\b)", "1 ", text)  # "an inch", not "half an inch"
@@ -186,6 +195,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:(?:to|toward|towards) )?(?:the |your )?(?:robot|franka|panda)'?s (left|right)\b", r"to the \1", text)  # its own
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
+    text = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?: hand)?(?: side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)  # "the thing to its right"
     text = re.sub(r"\bside by side\b", "next to each other", text)
     text = re.sub(r"\b(closer to|nearer to|farther from|further from|farther away from|further away from) (?:me|you|the robot) than (?:it|they) (?:is|are|was|were)(?: now| at the moment)?\b",
                   lambda m: "closer" if m.group(1).startswith(("closer", "nearer")) else "further away", text)  # than where it is now
@@ -243,9 +253,10 @@ def clean(command: str) -> str:
     # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
     text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
                   r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
+    text = _IN_THE_WAY.sub(r"\1put \2 aside", text)  # "that foam brick keeps getting in my way.": a complaint said alone asks for it moved
     text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)  # "move it somewhere else"
-    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) (?:way|path)(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:from|off) (?:my|your|our|the) path|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
-    text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=$|[.,;]| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
+    text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) (?:way|path|workspace|work space|work area|workzone|reach)(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:from|off) (?:my|your|our|the) path|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park|clear) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=\s*(?:$|[.,;])| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (away|off|out) (?!(?:the|that|this|those|these|my|your|a|an|it|them)\b)", r"clear \1 the ", text)  # "clear away cereal box"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
                   r"(?: (?:away|off|out|aside))?(?: for (?:me|us))?(?=\s*(?:$|[.,;])| and\b| then\b)",

@@ -21,7 +21,17 @@ import numpy as np
 
 from realsim.errors import InputError
 from realsim.planner import noun_phrase, typos, vocab
-from realsim.planner.attributes import between_of, colors_of, holding, left_order, neighbour_colour_pick, relation_holds, size_pick, usual_colour_pick
+from realsim.planner.attributes import (
+    between_of,
+    colors_of,
+    holding,
+    left_order,
+    neighbour_colour_pick,
+    next_over,
+    relation_holds,
+    size_pick,
+    usual_colour_pick,
+)
 from realsim.planner.clock import AT_CLOCK, bearing_gap
 from realsim.planner.core_noun import core_words
 from realsim.planner.ordering import EXTREMES, middle_of, ordered
@@ -41,8 +51,8 @@ LOCATOR_RELATIONS = (
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:inside of|inside|in(?! front of\b))", "in"),
     (r"(?:that is |thats |which is |that |which |sitting |lying |hanging )?(?:right |just |directly )?(?:above|over)", "above"),  # on or in it
     (r"(?:that is |thats |which is |that |which |sitting |lying )?(?:right |just |directly )?(?:under|underneath|below|beneath)", "under"),
-    (r"(?:that is |thats |which is )?(?:to the left of|left of)", "left"),
-    (r"(?:that is |thats |which is )?(?:to the right of|right of)", "right"),
+    (rf"{_SAID_WHERE}(?:just |directly |immediately )?(?:to the left of|left of)", "left"),
+    (rf"{_SAID_WHERE}(?:just |directly |immediately )?(?:to the right of|right of)", "right"),
     (rf"{_SAID_WHERE}(?:right |just |directly |immediately )?behind", "behind"),
     (rf"{_SAID_WHERE}(?:right |just |directly |immediately )?in front of", "front"),
     (r"(?:that is |thats |which is )?(?:out of|out from|from inside|from within|from|off of|off)", "from"),  # where it is now
@@ -323,11 +333,15 @@ class Resolver:
                         refs = self.resolve(m.group(2), Context(ctx.last), allow_plural=True, loose=True)
                     except InputError:
                         continue
-                    text = m.group(1)
+                    text, around = m.group(1), cands
                     rels = ("in", "on") if rel in ("from", "above") else ("on",) if rel == "under" else (rel,)
                     cands = [o for o in cands if any(o.name != r.name and (relation_holds(k, r, o, self.forward, self.left) if rel == "under"
                                                                            else relation_holds(k, o, r, self.forward, self.left))
                                                      for r in refs for k in rels)]
+                    adjacent = re.search(r"\b(?:immediately|directly|just)\b", m.group(0)[len(m.group(1)): m.start(2)])
+                    if (not cands or (adjacent and len(cands) > 1)) and len(refs) == 1 and rel in ("left", "right", "behind", "front"):
+                        # nothing squarely there, or "immediately to its right" of several: the next one over
+                        cands = next_over(rel, cands or around, refs[0], self.forward, self.left)
                     located = len(cands) == 1  # the relation alone says which
                     break
         # positional locators: "at the front on the right" (a corner), "on the left", "in the back", "closest to you", "in the middle"

@@ -15,6 +15,7 @@ Anything it cannot read, or any reference that is unknown or ambiguous, raises
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 
@@ -24,7 +25,7 @@ from realsim.planner.aside import ASIDE, WHERE, aside, where_was
 from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
 from realsim.planner.fit import check_fits, held_in
-from realsim.planner.goals import AtHome, Between, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
+from realsim.planner.goals import AtHome, Between, Checkpoint, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START, relation_start
 from realsim.planner.mentions import mentioned, named_alone
 from realsim.planner.phrasing import avoided, rephrase, split_command
@@ -54,14 +55,22 @@ class RulePlanner:
 
     def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0,
              robot_base: tuple[float, float] | None = None) -> Plan:
-        calls, goals = parse_calls(command, scene_objects, robot_yaw, robot_base)
-        program = Program(tuple(calls), command)
-        return Plan(program=program.source(), goals=goals, planner=self.name, calls=program)
+        steps = parse_steps(command, scene_objects, robot_yaw, robot_base)
+        program = Program(tuple(c for s in steps for c in s.calls), command)
+        goals, checkpoints = _goals(steps, {o.name: o.position[:2] for o in scene_objects})
+        return Plan(program=program.source(), goals=goals, planner=self.name, calls=program, checkpoints=checkpoints)
 
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> tuple[list[Call], list[Goal]]:
-    """Primitive calls and goals for ``command``; raises :class:`InputError` when it cannot."""
+    """Primitive calls and the goals that hold at the end for ``command``; raises :class:`InputError` when it cannot."""
+    steps = parse_steps(command, objects, robot_yaw, robot_base)
+    return [c for s in steps for c in s.calls], _goals(steps, {o.name: o.position[:2] for o in objects})[0]
+
+
+def parse_steps(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
+                robot_base: tuple[float, float] | None = None) -> list[Step]:
+    """The steps (calls and goals) ``command`` asks for; raises :class:`InputError` when it cannot."""
     if is_question(command):
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
     try:
@@ -145,14 +154,20 @@ def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tupl
     return (steps, kept) if steps else None
 
 
+_POINTS = re.compile(r"\b(?:it|them|one|ones|that|this|those|these|there|here|left|right|front|back|behind|near|next|on|in|into|onto|touch\w*|move\w*|drop\w*)\b")
+
+
 def _idle(piece: str, p: Parser) -> bool:
     """Whether a phrase is idle talk: no condition, choice or negation, and no thing of the scene
     named except as the one thing it is about ("la banana")."""
-    if re.search(r"\b(?:if|unless|when|whenever|otherwise|instead|not|no|dont|don't|never|out of|among|of all|except|but)\b", piece.lower()):
-        return False
     words = re.sub(r"[^a-z0-9 ]", " ", piece.lower()).split()
     said = {w for w in p.resolver.scene_words if w not in GENERIC} | set(COLOR_WORDS)
-    return named_alone(piece, p) or not any(w.isdigit() or singular(w) in said for w in words)
+    names = any(w.isdigit() or singular(w) in said for w in words)
+    if re.search(r"\b(?:if|unless|when|whenever|otherwise|instead|out of|among|of all|except|but)\b", piece.lower()):
+        return False
+    if re.search(r"\b(?:not|no|dont|don't|never)\b", piece.lower()) and (names or _POINTS.search(piece.lower())):
+        return False  # "not the red one", "don't drop it"; "no fumbles allowed" denies nothing of the scene
+    return named_alone(piece, p) or not names
 
 
 def _asked_within(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]] | None:
@@ -187,8 +202,8 @@ def _placed_there(sentence: str, p: Parser) -> tuple[list[Step], dict[str, str]]
         return None
 
 
-def _finish(steps: list[Step], kept: dict[str, str]) -> tuple[list[Call], list[Goal]]:
-    """The calls and the goals still to hold once every step is done."""
+def _finish(steps: list[Step], kept: dict[str, str]) -> list[Step]:
+    """The steps to run, checked: no pending take, nothing the command said not to touch."""
     for i, step in enumerate(steps):
         if step.pending and not any(s.objects for s in steps[i + 1 :]):
             raise InputError(step.pending)
@@ -200,7 +215,7 @@ def _finish(steps: list[Step], kept: dict[str, str]) -> tuple[list[Call], list[G
                          "say which you mean")
     if not steps:
         raise InputError(f"the command only says what not to touch; what should I do? {HELP}")
-    return calls, _final_goals(steps)
+    return steps
 
 
 def _same(step: Step, before: Step) -> bool:
@@ -233,19 +248,36 @@ def _superseded(steps: list[Step]) -> list[Step]:
     return out
 
 
-def _final_goals(steps: list[Step]) -> list[Goal]:
-    """Goals not undone by later steps (a lifted mug later placed; home, then the arm moved again)."""
+def _goals(steps: list[Step], starts: dict[str, tuple[float, ...]]) -> tuple[list[Goal], list[Checkpoint]]:
+    """Goals still to hold once every step is done, and checkpoints for those a later step undoes
+    (a mug put in the bowl, then taken out; home, then the arm moved again): each checked when its
+    step ends. A lift that a later placing needs anyway is no checkpoint; one before the object is
+    put back where it started ("lift it, then put it back") is the point of the command, and is."""
     goals: list[Goal] = []
+    checkpoints: list[Checkpoint] = []
+    done = 0
     for i, step in enumerate(steps):
         later = steps[i + 1 :]
         later_objects = {o for s in later for o in s.objects}
         for g in step.goals:
             if isinstance(g, AtHome):
-                if not any(s.moves_robot and not any(isinstance(h, AtHome) for h in s.goals) for s in later):
-                    goals.append(g)
-            elif getattr(g, "obj", None) not in later_objects and not _disturbed(g, later):
+                kept = not any(s.moves_robot and not any(isinstance(h, AtHome) for h in s.goals) for s in later)
+            else:
+                kept = getattr(g, "obj", None) not in later_objects and not _disturbed(g, later)
+            if kept:
                 goals.append(g)
-    return goals
+            elif step.calls and not (isinstance(g, Lifted) and not _put_back(g.obj, later, starts)):
+                checkpoints.append(Checkpoint(done, done + len(step.calls), g))
+        done += len(step.calls)
+    return goals, checkpoints
+
+
+def _put_back(obj: str, later: list[Step], starts: dict[str, tuple[float, ...]]) -> bool:
+    """Whether the last goal later steps set for ``obj`` puts it down where it started (within 2 cm)."""
+    placed = [g for s in later for g in s.goals if getattr(g, "obj", None) == obj]
+    start = starts.get(obj)
+    return (bool(placed) and isinstance(placed[-1], Placed) and start is not None
+            and math.dist(placed[-1].xy, start[:2]) <= 0.02)
 
 
 def _disturbed(goal: Goal, later: list[Step]) -> bool:

@@ -49,6 +49,7 @@ def cleaned(text: str) -> str:
         return ""
 
 
+_LABEL = re.compile(r"\b(?:level|stage|round|step|part|phase|task|mission|quest|challenge|chapter|episode|lesson|exercise|question|number|no)\.? ?#?\d+\b")
 _REMNANTS = {"only", "but", "if", "just", "so", "and", "then", "too", "also", "or", "of course"}  # what is left of a hedge once its words are gone
 _STAND_INS = {"one", "ones", "it", "them"}  # words standing for a thing named before ("the last one", "it")
 # words that join a step to the one before ("then put ..."), not part of the step itself
@@ -62,7 +63,7 @@ def is_request(sentence: str, scene_words: Collection[str] = ()) -> bool:
     text = cleaned(sentence)
     if any(VERB_START.match(piece.strip()) for piece in re.split(r"[,;]", text)):  # "if not, put it next to the bowl"
         return True
-    if re.search(r"\d", text):  # an amount ("make it 5 cm") is never talk
+    if re.search(r"\d", _LABEL.sub("", text)):  # an amount ("make it 5 cm") is never talk; a label ("level 3") is
         return True
     words = text.split()
     if any(relation_start(" ".join(words[i:])) and any(singular(w) in scene_words or w in _STAND_INS for w in words[:i]) for i in range(1, len(words))) and not re.search(

@@ -17,8 +17,10 @@ from realsim.planner.vocab import BIG, COLOR_WORDS, SMALL
 
 __all__ = ["instead", "noun_phrases", "object_first", "one_as", "reasons", "repair"]
 
-_MARKER = re.compile(r"(?:^|(?<=[\s,]))(no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
-                     r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm|hmm+)(?=[\s,])")
+_MARKERS = (r"no no|no wait|no sorry|(?:scratch|strike|forget|cancel|ignore) that|or rather|let me rephrase|correction|hold on|hang on"
+            r"|no|sorry|wait|actually|i meant|i mean|uh+|um+|er+|erm|hmm+")
+_MARKER = re.compile(rf"(?:^|(?<=[\s,]))({_MARKERS})(?=[\s,])")
+_TRAILING = re.compile(rf"(?:[\s,;.!?-]*\b(?:{_MARKERS}))+[\s,;.!?-]*$")  # "... to the left. hang on," before the repair itself
 # the speaker saying the whole last request was turned round, before saying it again
 _BACKWARDS = re.compile(r"[,.;\s]*(?:i |i ve |you )?(?:said|got|had|have|put|did) (?:that|it|this) (?:backwards|backward|wrong|the wrong way(?: round| around)?|mixed up|the other way(?: round| around)?)[,.;\s]*$")
 _BY = re.compile(r"(?<![a-z])by(?= (?:the|that|this|my|your|it)\b)")  # "by the mug": a place too, where a relation pattern leaves "by" out
@@ -45,6 +47,7 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     text = re.sub(r"(?<!\bi )(?<!\bd )(?<!would )(?<!\byou )\blike\b(?! (?:to|this|that)\b)", " ", text)  # "put it like right there"
     text = " ".join(text.split())
     text = instead(reasons(text, verb, relation))
+    text = _MEANT_AFTER.sub(r", i mean \1,", text)  # "the right can, er, the left one I mean, next to the mug"
     for _ in range(4):
         step = _one_repair(text, verb, relation)
         if step == text:
@@ -56,12 +59,13 @@ def repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
 
 def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> str:
     for m in reversed(list(_MARKER.finditer(text))):
-        before, after = text[: m.start()].strip(" ,"), text[m.end():].strip(" ,")
+        before, after = _TRAILING.sub("", text[: m.start()]).strip(" ,"), _TRAILING.sub("", text[m.end():]).strip(" ,")
         if not before or not after:
             continue
         weak = bool(_WEAK.fullmatch(m.group(1)))
         said = re.sub(r"^(?:(?:just|rather|instead|actually|make (?:that|it)|i meant?)\s+)+", "", after)
         said = re.sub(r"^not (?:the |that |this |in |into |on |onto |by |next to )*[a-z ]+?,\s*(?=\S)", "", said)  # "not the bowl, onto the green box"
+        said = _CONFIRMED.sub("", said)  # "I meant the red box, not the blue one": the contrast only confirms
         if _BACKWARDS.search(before) and (verb.match(said) or relation.search(f" {said}")):
             # "bowl to the left of the mug. er, I said that backwards, I meant the mug to the left of the bowl": said anew
             start = max((m.end() for m in re.finditer(r"[.;!?]\s*", _BACKWARDS.sub("", before).rstrip(" ,.;"))), default=0)
@@ -75,9 +79,11 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
         if relation.match(said):  # "the soup can in the mug no no in the bowl"
             places = sorted([*relation.finditer(before), *_BY.finditer(before)], key=lambda r: r.start())  # "put it by the mug. no, between ..."
             if places:
-                old_place = re.match(r"\s*(?:\w+\s+)*?((?:the|that|this|my|your)\s[a-z ]+?)\s*(?:[,.;]|$)", before[places[-1].end():])
+                old_place = re.match(r"\s*(?:\w+\s+)*?((?:the|that|this|my|your)\s[a-z ]+?)\s*(?:[^a-z ]|$)", before[places[-1].end():])
                 if old_place and re.search(r"\b(?:it|that one)\b", said):  # "behind the box, no, make that in front of it": of the box
                     said = re.sub(r"\b(?:it|that one)\b", old_place.group(1), said, count=1)
+                elif old_place and (side := _BARE_SIDE.fullmatch(said.strip(" ,.;!?"))):  # "left of the plate. no, to the right": of the plate
+                    said = f"{side.group(0)}{'' if side.group(0).endswith(('behind', 'beside', 'next to')) else ' of'} {old_place.group(1)}"
                 return f"{before[: places[-1].start()].rstrip(' ,')} {said}"
         places = [r for r in relation.finditer(before) if not _POSITION.match(before, r.end())]  # "on the right" says which
         start = max([m.end() for m in verb.finditer(before)] + [r.end() for r in places], default=0)
@@ -87,14 +93,29 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             said = _continued(said, verb, relation)
             if re.search(r"(?:^|\s)(?:the|that|this|a|an)\s", before[:start]) and not weak:  # which of two does it replace?
                 return _contrast(before, said, text, verb, relation)
+            if (said_np := _PHRASE_ONLY.fullmatch(said.strip(" ,.;!?"))) and not any(relation.match(said, w.start()) for w in re.finditer(r"\b\w", said)) and (old_np := _OBJECT_PHRASE.match(before, len(before) - len(before[start:].lstrip()))) and old_np.end() < len(before):
+                # "push the blue box 5 cm to the left. hang on, I meant the red box": only the object said anew
+                return f"{before[:old_np.start()]}{one_as(said_np.group(0), old_np.group(0))} {before[old_np.end():]}".strip(" ,")
             return f"{before[:start].rstrip()} {one_as(said, before[start:])}".strip()  # "put the soup can uh the tomato one behind the bowl"
         if weak:
             return f"{before} {after}"
     return text
 
 
+_MEANT_AFTER = re.compile(r"(?:(?<=[,;-])|(?<=\.))\s*(?:(?:er+|um+|uh+|erm)\s*,?\s*)?((?:the|that|this) [a-z ]+?),? i mean(?=\s*[,.;-]|$)")
+_CONFIRMED = re.compile(r",?\s*(?:and )?not (?:the|that|this) [a-z ]+?(?=$|[.,;!?])")
+# a side said alone as a repair ("no, to the right"): of the thing the replaced place named
+_BARE_SIDE = re.compile(r"(?:to the |on the )?(?:left|right)|in front|on top|behind|beside|next to")
+# a repair that is only an object phrase, and the object phrase of a command it replaces (up to an amount, place or pause)
+_PHRASE_ONLY = re.compile(r"(?:the|that|this|a|an) [a-z ]+")
+_OBJECT_PHRASE = re.compile(r"(?:the|that|this|a|an) (?:(?!(?:to|in|into|on|onto|next|behind|beside|by|toward|towards|forward|back|left|right|up|down"
+                            r"|one|two|three|four|five|six|seven|eight|nine|ten|a|an|about|around|roughly)\b)[a-z]+ ?)+")
 _POSITION = re.compile(r"\s+(?:the )?(?:far |very )?(?:left|right|front|back|middle|center|centre)\b")
 _HOMOPHONES = ((r"\b(?:too|two)\b(?= (?:the )?(?:left|right|front|back|side|top)\b)", "to"),  # "move it two the left"
+               (r"\b(next|close|closer|near|nearer|back|up|over) (?:too|two)\b(?= (?:the|my|your|it|them|that|this|where)\b)", r"\1 to"),  # "next two the bowl"
+               (r"\b(?:too|two)\b(?= (?:the|my|your|where)\b)", "to"),  # "move it two the bowl": a count never precedes "the"
+               (r"\bwere (?=(?:it|they) (?:was|were|is|are|came|started|stood|sat|used)\b)", "where "),  # "put it back were it was"
+               (r"\bblew\b", "blue"),  # "the blew cube"
                (r"\bfor\b(?= (?:cm|mm|centimet|millimet|inch))", "four"),  # "for centimeters"
                (r"(?<=[a-z] )2(?= (?:the|my|your|it|them|where)\b)", "to"),  # "next 2 the banana": a count never precedes "the"
                (r"\b(next|nxt|close|closer|near|nearer|left|right|up) 2\b(?![.,]\d)(?! ?(?:cm|mm|inch|centimet|millimet|more|of))", r"\1 to"),  # "nxt 2 bowl"

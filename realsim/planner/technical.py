@@ -68,7 +68,17 @@ _REWRITES: tuple[tuple[str, Any], ...] = (
     (r"\bhome (?:the (?:arm|robot|manipulator|gripper|end effector)|yourself)\b", "go home"),
     (r"\bstand ?by (?:at|in) (?:the |your )?home(?: (?:position|pose|config|configuration))?\b", "go home"),
     (r"\b(?:the )?robot(?: s|'s)? base\b", "the robot"),
-    (r"\b(?:its|the|your) (?:home|rest|ready|start) (?:configuration|config|pose|position)\b", "home position"),
+    (r"\b(?:(?:its|the|your) )?(?:home|rest|ready|start) (?:configuration|config|pose|position)\b", "home position"),
+    # "at the bowl's initial pose": where the bowl was
+    (r"\b(?:at|to|in|into|on|onto) (?:the )?((?!(?:its|their|his|her|my|your)\b)[a-z]+(?: [a-z]+){0,2}?)(?:'s| s|s') (?:initial|original|starting|start|previous|old|former|prior)"
+     r" (?:pose|position|location|spot|place|coordinates|xy)\b", r"where the \1 was"),
+    # "a +0.04 m x-offset to the can": a move of the can along that axis
+    (rf"\b(?:apply|give|impose|add) (?:an? )?([+-]?)\s?(\d+(?:\.\d+)?\s*{_UNIT}) ([xy])[- ]?(?:axis )?(?:offset|displacement|translation|shift|move) (?:to|on) ((?:the|that|this) [a-z ]+?)(?=$|[.,;]| via\b| by\b| with\b)",
+     lambda m: f"move {m.group(4)} {m.group(2)} {m.group(1) or '+'}{m.group(3)}"),
+    (r"\s+(?:via|by|using|with) (?:an? )?(?:planar |simple |lateral |gentle |non-prehensile |nonprehensile )?(?:push|pushing|slide|sliding)\b", " by pushing"),
+    (r",?\s*(?:no|without) (?:grasp|grasping|pick|picking|lift|lifting|grip|gripping)(?: (?:is |are )?(?:required|needed|necessary|wanted))?(?=\s*(?:$|[.,;]))", ""),
+    # "inside the white bowl frame": in the bowl (an object's frame is where it is)
+    (r"\b(in|inside|into|on|onto|at|to|of) ((?:the|that|this) [a-z]+(?: [a-z]+){0,2}?) (?:frame|coordinate frame|reference frame)\b", r"\1 \2"),
     # the arm as the object of a move home: "return the arm to its home position" is going home
     (r"\b(?:return|move|bring|send|take) (?:the (?:arm|robot|gripper|hand|manipulator|end effector|end-effector|eef|ee|tcp|tool)|yourself|your arm)(?: back)?(?: to)? (?:the |your |its )?"
      r"(?=(?:home|start|starting|rest|resting|ready|initial|original|default|neutral)\b)", "go back to the "),

@@ -11,7 +11,7 @@ from realsim.planner.program import Call, Program
 __all__ = ["AFFORDANCES", "Call", "ObjectInfo", "Plan", "Planner", "Program"]
 
 if TYPE_CHECKING:
-    from realsim.planner.goals import Goal
+    from realsim.planner.goals import Checkpoint, Goal
 
 AFFORDANCES = ("graspable", "container", "support", "pushable", "drawer", "door")
 
@@ -61,6 +61,7 @@ class Plan:
     usage: Usage = field(default_factory=Usage)
     notes: list[str] = field(default_factory=list)
     calls: Program | None = None
+    checkpoints: list[Checkpoint] = field(default_factory=list)  # goals checked between the typed calls
 
 
 class Planner(Protocol):

@@ -46,12 +46,17 @@ _ASKED = (re.compile(rf"{_START}(?:(?:but|and|so) )?(?:(?:is there (?:any|a|some
                      r"|(?:i )?(?:don ?'?t|do not) suppose|(?:i )?(?:wonder|was wondering|am wondering|m wondering) (?:if|whether)) (?:that )?"
                      rf"|(?:could|can|might|would|may) (?:you (?:have|get|let|make) )?){_WHOLE_THING} {_SOFT}(?:(?:could|can|might|would) {_SOFT})?{_GOES}"),
           re.compile(rf"{_START}{_WHOLE_THING} {_SOFT}(?:could|might|would|can) {_SOFT}{_GOES}"))
+# said as how it would look: "it would look better standing beside the bowl", "the mug would be happier in the bowl"
+_BETTER = re.compile(rf"{_START}(?:(?:but|and|so|honestly|really) )?(it|they|them|{_WHOLE_THING}) (?:would|d|will|might|could) (?:look|be|sit|fit|feel|go)(?: so| much| a lot| far| way)?"
+                     r" (?:better|nicer|best|good|great|lovely|neater|tidier|happier|right|perfect)(?: (?:standing|sitting|resting|placed|put|set|lying))?"
+                     rf"(?: (?:if (?:it|they) (?:were|was|went|sat|stood)|(?:over )?there|instead))? (?=(?:{_PLACE}) )")
 _WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so|though|although|yet) )?(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
 
 def as_request(text: str) -> str:
     """``text`` (lower case) with every wish for an object to be at a place turned into "put X ..."."""
     text = _WISH.sub(lambda m: f"put {m.group(1)} ", text)
+    text = _BETTER.sub(lambda m: f"put {m.group(1)} ", text)
     for asked in _ASKED:
         text = asked.sub(lambda m: f"put {m.group(1)} ", text)
     return text

@@ -15,6 +15,7 @@ import json
 import os
 import re
 import time
+from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
@@ -22,7 +23,7 @@ from typing import Any
 from realsim import llm
 from realsim.errors import InputError
 from realsim.planner import make_planner, sandbox
-from realsim.planner.goals import Goal, GoalResult, evaluate_all, prepare_all, verdict
+from realsim.planner.goals import Checkpoint, Goal, GoalResult, evaluate_all, prepare_all, verdict
 from realsim.planner.program import Program
 from realsim.planner.types import Plan
 from realsim.planner.vocab import with_colors
@@ -134,13 +135,15 @@ def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, vi
     funcs = api.functions()
     if on_call is not None:
         funcs = {k: _notify(k, f, on_call) for k, f in funcs.items()}
+    checks = _Checkpoints(plan.checkpoints if isinstance(program, Program) else [], sim)
+    funcs = {k: checks.counted(f) for k, f in funcs.items()}
     try:
         report = sandbox.run(program, funcs, limits=limits, objects=sim.object_names())
     finally:
         if recorder is not None:
             recorder.close()
     t_run = time.perf_counter() - t0
-    results: list[GoalResult] = evaluate_all(goals, sim)
+    results: list[GoalResult] = checks.results() + evaluate_all(goals, sim)
     record.calls = [_call_dict(c) for c in report.calls]
     record.actions = api.actions
     record.output = list(report.output)
@@ -161,6 +164,39 @@ def _execute(sim: Sim, plan: Plan, record: RunRecord, limits: sandbox.Limits, vi
         record.video = {"path": str(recorder.path), "frames": recorder.frames, "fps": round(recorder.fps, 3),
                         "size": [recorder.width, recorder.height]}
     return record
+
+
+class _Checkpoints:
+    """Prepares and checks a plan's checkpoints as the typed program's calls run (counted as they return)."""
+
+    def __init__(self, checkpoints: Sequence[Checkpoint], sim: Sim) -> None:
+        self.checkpoints, self.sim, self.done = list(checkpoints), sim, 0
+        self.found: dict[int, GoalResult] = {}
+        self._prepare()
+
+    def _prepare(self) -> None:
+        for c in self.checkpoints:
+            if c.start == self.done:
+                c.goal.prepare(self.sim)
+
+    def counted(self, fn: Any) -> Any:
+        def wrapped(*args: Any, **kwargs: Any) -> Any:
+            result = fn(*args, **kwargs)
+            self.done += 1
+            for i, c in enumerate(self.checkpoints):
+                if c.after == self.done:
+                    r = c.goal.evaluate(self.sim)
+                    self.found[i] = GoalResult(c.describe(), r.ok, r.measured)
+            self._prepare()
+            return result
+
+        wrapped.__name__ = getattr(fn, "__name__", "primitive")
+        return wrapped
+
+    def results(self) -> list[GoalResult]:
+        """Each checkpoint's result; one the program never reached is not met."""
+        return [self.found.get(i, GoalResult(c.describe(), False, "the program stopped before this step ended"))
+                for i, c in enumerate(self.checkpoints)]
 
 
 def _notify(name: str, fn: Any, on_call: Any) -> Any:
@@ -205,9 +241,10 @@ def run_command(sim: Sim, text: str, planner: str = "auto", seed: int | None = N
 
 def run_program(sim: Sim, source: str | Program, seed: int | None = None, *, limits: sandbox.Limits = sandbox.Limits(),
                 video: str | Path | None = None, on_call: Any = None, name: str = "program",
-                video_fps: float = 30.0) -> RunRecord:
+                video_fps: float = 30.0, checkpoints: Sequence[Checkpoint] = ()) -> RunRecord:
     """Run a user's own program (same primitives, same sandbox) from keyframe "initial";
-    ``source`` is program text or a typed :class:`Program` of calls.
+    ``source`` is program text or a typed :class:`Program` of calls (whose ``checkpoints`` are
+    checked as its calls run).
 
     Raises :class:`SandboxViolation` (an :class:`InputError` naming the line) before anything
     moves when the program breaks a rule. There are no goals: the verdict is "goal unknown" and
@@ -216,7 +253,7 @@ def run_program(sim: Sim, source: str | Program, seed: int | None = None, *, lim
     if seed is not None:
         sim.seed = seed
     text = source.source() if isinstance(source, Program) else source
-    plan = Plan(program=text, goals=[], planner=name, calls=source if isinstance(source, Program) else None)
+    plan = Plan(program=text, goals=[], planner=name, calls=source if isinstance(source, Program) else None, checkpoints=list(checkpoints))
     record = RunRecord(scene=str(sim.folder), command=None, planner=name, program=text, seed=sim.seed)
     _execute(sim, plan, record, limits, video, on_call, video_fps)
     record.wall_time["total"] = round(time.perf_counter() - t0, 3)
