@@ -56,6 +56,7 @@ def test_a_place_taken_back_and_said_again(said: str, plain: str) -> None:
     # the place said again after the marker, its object carried over from the place it replaces
     ("Put the banana behind the bowl -- wait, no, in front of it.", "put the banana in front of the bowl"),
     ("Red cube to the left of the bowl. No, to the right, sorry.", "put the red cube to the right of the bowl"),
+    ("Move the red cube 10 cm to the left. Sorry, I meant to the right.", "push the red cube 10 cm to the right"),  # a way, not a thing
     # only the object said anew: the amount and the direction the command said stay
     ("Push the red cube five centimetres to the left. Hang on, I meant the blue cube, not the red one.", "push the blue cube 5 cm to the left"),
     # "X I mean" after the phrase it repairs

@@ -82,7 +82,7 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
                 old_place = re.match(r"\s*(?:\w+\s+)*?((?:the|that|this|my|your)\s[a-z ]+?)\s*(?:[^a-z ]|$)", before[places[-1].end():])
                 if old_place and re.search(r"\b(?:it|that one)\b", said):  # "behind the box, no, make that in front of it": of the box
                     said = re.sub(r"\b(?:it|that one)\b", old_place.group(1), said, count=1)
-                elif old_place and (side := _BARE_SIDE.fullmatch(said.strip(" ,.;!?"))):  # "left of the plate. no, to the right": of the plate
+                elif old_place and not _POSITION.fullmatch(f" {old_place.group(1)}") and (side := _BARE_SIDE.fullmatch(said.strip(" ,.;!?"))):  # "left of the plate. no, to the right": of the plate
                     said = f"{side.group(0)}{'' if side.group(0).endswith(('behind', 'beside', 'next to')) else ' of'} {old_place.group(1)}"
                 return f"{before[: places[-1].start()].rstrip(' ,')} {said}"
         places = [r for r in relation.finditer(before) if not _POSITION.match(before, r.end())]  # "on the right" says which
