@@ -318,6 +318,21 @@ def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> No
     ("Level 3, tower builder: blue cube on top of the red cube. Clock's ticking.", "put the blue cube on the red cube"),
     ("Speedrun category: banana and strawberry trade places, any percent, no fumbles allowed.", "swap the banana and the strawberry"),
     ("It bothers me that the strawberry is way over there; it would look better sitting beside the bowl.", "put the strawberry next to the bowl"),
+    # steps said out of order
+    ("Put the red cube on the bowl second; first, nudge the green cube 3 cm forward.", "push the green cube forward 3 cm, then put the red cube on the bowl"),
+    ("Put the strawberry where the banana was, but before that, move the banana out of the way.",
+     "move the banana out of the way, then put the strawberry where the banana was"),
+    ("The strawberry goes in the bowl, but not until you've moved the banana out of the way.",
+     "move the banana out of the way, then put the strawberry in the bowl"),
+    ("Move the banana out of the way. The strawberry goes in the bowl.", "move the banana out of the way, then put the strawberry in the bowl"),  # never both in
+    # stiff legal or office English
+    ("The operator hereby requests that the banana be relocated to a position immediately adjacent to the bowl.", "put the banana next to the bowl"),
+    ("Notwithstanding any prior instructions, the banana is to be displaced a distance of eight centimetres in the forward direction, i.e. away from the robot.",
+     "push the banana forward 8 cm"),
+    ("Kindly effect the transfer of the green cube to a position directly behind the red cube, 'behind' being understood as farther from the robot.",
+     "put the green cube behind the red cube"),
+    ("Be advised that the strawberry is to be removed from atop the red cube and deposited adjacent to the bowl.", "put the strawberry next to the bowl"),
+    ("The bowl shall, upon receipt of this instruction, be relocated to the left-hand side of the banana.", "put the bowl left of the banana"),
 ])
 def test_what_people_say_in_their_own_words(said: str, plain: str) -> None:
     assert call_lines(said) == call_lines(plain)
@@ -330,3 +345,12 @@ def test_the_thing_to_its_side_is_the_next_one_over() -> None:
     assert call_lines("The red cube: put that in front of the thing immediately to its right.") == call_lines("put the red cube in front of the blue cube")
     with pytest.raises(InputError, match="ambiguous"):  # without "immediately" both things right of it are meant
         RulePlanner().plan("pick up the thing to the right of the red cube", CLUTTER)
+
+
+def test_a_thing_named_by_a_part_it_has() -> None:
+    """"the thing with the handle": of the kinds in the scene only a mug has one; a part no kind has says nothing."""
+    objects = [*CLUTTER, ObjectInfo("obj9_mug", "mug", (), (0.45, -0.3, 0.05), (0.08, 0.08, 0.1), "white")]
+    assert call_lines("pick up the thing with the handle", objects) == ["grasp('obj9_mug')"]
+    assert call_lines("pick up the white thing with a handle", objects) == ["grasp('obj9_mug')"]
+    with pytest.raises(InputError, match="ambiguous"):
+        RulePlanner().plan("pick up the red thing with the stripes", objects)

@@ -312,7 +312,8 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 and not _STATES.search(f"{clauses[-1]} {part}") else None
-            if AVOID.match(part) or (_WILL_BE.match(part) and verb_re.match(clauses[-1])):  # "..., and don't touch the mug"; "..., it should be back where it is"
+            if AVOID.match(part) or ((_WILL_BE.match(part) or _GOES_THERE.match(part)) and verb_re.match(clauses[-1])):
+                # "..., and don't touch the mug"; "..., it should be back where it is"; "... aside. the strawberry goes in the bowl": a step of its own
                 clauses.append(part)
             elif (same := re.fullmatch(r"(?:(?:in|on|into|onto|to|at) )?(?:the )?same (\w+)(?: again| too| as well)?", part)) and rel and (
                     same.group(1) in ("place", "spot", "one", "location", "position") or re.search(rf"\b{same.group(1)}\b", clauses[-1][rel.start():])):
@@ -444,9 +445,16 @@ def _in_order(text: str) -> str:
     A, do B" -> "B, A"; "do A before you do B" -> "A, B"."""
     verbs = "|".join(re.escape(v) for v in sorted([*ALL_VERBS, *_PAST], key=len, reverse=True))
     you = r"(?:you |i )?(?:have |ve )?"
+    text = re.sub(r"\s+\.$", ".", text)
     m = re.fullmatch(rf"before {you}((?:{verbs})\b.+?), (.+)", text)
+    # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A, but not until you've B"
+    late = (re.fullmatch(r"(.+?),? (?:but )?(?:before (?:that|this|you do (?:that|this|it)|doing (?:that|this|so))|first(?: of all)?)[,:]? (.+?)\.?", text)
+            or re.fullmatch(r"(.+?) (?:second|last|afterwards|after that)[,;]? (?:then |and )?(?:first|before that)?[,:]? ?(.+?)\.?", text)
+            or re.fullmatch(rf"(.+?),? (?:but )?not (?:until|before) {you}((?:{verbs})\b.+?)\.?", text))
     if m:
         first, then = m.group(2), m.group(1)
+    elif late and (VERB_START.match(late.group(2)) or late.group(2).split()[0] in _PAST):
+        first, then = late.group(2), f"then {late.group(1)}"
     elif m := re.fullmatch(rf"(.+?),? (?:after|once|as soon as) {you}((?:{verbs})\b.+)", text):
         first, then = m.group(2), m.group(1)
     elif m := re.fullmatch(rf"(.+?),? before {you}((?:{verbs})\b.+)", text):
@@ -467,6 +475,7 @@ _ASK = re.compile(r"^(?:(?:can|could|may|might|shall) i (?:please )?(?:have|get|
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL_WORDS = r"(?:should|needs to|need to|has to|have to|must|will|would|is to|ought to|is supposed to)"
 WHICH_ONE = re.compile(r"(?:which|what) (one|\w+) (?:is|s) (.+)")
+_GOES_THERE = re.compile(r"^(?:the|that|this|my|it|they)\b[a-z ]*? (?:goes|go|belongs|belong|needs to go|has to go|ought to go|is going) (?:back )?(?:in|into|inside|on|onto|next|beside|behind|in front|left|right|between|to the)\b")
 _WILL_BE = re.compile(rf"^.+? {_MODAL_WORDS} (?:have |be |go |end up |stay )")
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
 _GOES = re.compile(rf"^(?:(?:can|could|will|would|should|shall|may) )?(.+?)\s+(?:[a-z]+ly\s+)?(?:(?:{_MODAL}\s+)?(?:go|be|sit|end up|stand|live|stay)(?: (?:sitting|standing|lying|resting))?"

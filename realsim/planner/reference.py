@@ -36,7 +36,7 @@ from realsim.planner.clock import AT_CLOCK, bearing_gap
 from realsim.planner.core_noun import core_words
 from realsim.planner.ordering import EXTREMES, middle_of, ordered
 from realsim.planner.types import ObjectInfo
-from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, is_plural, name_words, norm, record, singular
+from realsim.planner.vocab import BIG, COLOR_WORDS, GENERIC, KINDS, NUMBERS, ORDINALS, SMALL, SYNONYMS, has_part, is_plural, name_words, norm, record, singular
 
 DETERMINERS = {"the", "a", "an", "my", "your", "our", "some", "any", "of", "that", "this", "these", "those",
                "le", "la", "les", "el", "los", "las", "der", "die", "das", "den", "dem", "il", "lo", "un", "une", "una", "ein", "eine"}  # mixed in
@@ -232,6 +232,9 @@ class Resolver:
         m = re.fullmatch(r"(.+?)\s+with\s+(.+)", text)  # "the cube with many colours": what it has, when that is no scene object
         if m and not {singular(w) for w in m.group(2).split()} & self._heads:  # "the cup with the handle": a part it has
             text = m.group(1)
+            having = {o.name for o in self.objects if has_part(m.group(2), {w for n in self._words[o.name] for w in n})}
+            if having and (others := [o.name for o in self.objects if o.name not in having]):  # "the thing with the handle": the mug, not the bowl
+                return self.resolve(text, ctx, want=want, exclude=[*exclude, *others], allow_plural=allow_plural, loose=loose)
         elif m:  # "the bowl with the strawberry (in it)": the one holding it, never the strawberry
             return holding(m.group(1), re.sub(r"\s+(?:in|on) (?:it|them)$", "", m.group(2)), self._all, lambda k, o, r: relation_holds(k, o, r, self.forward, self.left), phrase)
         if not text:

@@ -102,6 +102,25 @@ VAGUE_DISTANCES: dict[str, float] = {"a tiny bit": 0.03, "a little bit": 0.04, "
                                      "a wee bit": 0.03, "a fraction": 0.01, "a skosh": 0.02, "a titch": 0.02}
 
 
+# parts a kind of thing has, for "the thing with the handle" (only kinds that have the part are meant)
+PARTS: dict[str, tuple[str, ...]] = {
+    "handle": ("mug", "cup", "pitcher", "jug", "kettle", "pan", "saucepan", "pot", "teapot", "drill", "hammer", "screwdriver", "spatula", "knife",
+               "scissors", "basket", "bucket", "bag", "mallet", "wrench", "ladle", "spoon", "fork", "brush", "iron", "skillet", "suitcase"),
+    "lid": ("jar", "pot", "kettle", "pitcher", "teapot", "box", "tin", "bin", "container", "tupperware", "saucepan"),
+    "cap": ("bottle", "marker", "pen", "jar", "tube"),
+    "spout": ("pitcher", "jug", "kettle", "teapot", "watering"),
+    "blade": ("knife", "scissors", "saw", "spatula"),
+    "trigger": ("drill", "spray"),
+    "stem": ("strawberry", "apple", "cherry", "pear", "glass", "wineglass"),
+    "label": ("can", "tin", "bottle", "jar", "box"),
+}
+
+
+def has_part(said: str, words: set[str]) -> bool:
+    """Whether a thing named by ``words`` has the part ``said`` names ("the handle", "a lid", "handles")."""
+    return any(singular(w) in PARTS and words & set(PARTS[singular(w)]) for w in said.split())
+
+
 def singular(word: str) -> str:
     """English singular of one word (good enough for object nouns)."""
     irregular = {"knives": "knife", "boxes": "box", "glasses": "glass", "dishes": "dish", "matches": "match", "scissors": "scissors",
