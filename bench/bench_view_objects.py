@@ -40,7 +40,8 @@ def failure_cause(gt_ids: np.ndarray, pred: np.ndarray, points: np.ndarray, obj:
     k > 0 segments) alone, or "" when it is: "hidden" (no pixel in view); "split at a fold" (its two
     largest pieces are image neighbours within ``jump``, m, on at least half their border: the surface goes
     on across it), "split at a depth jump" (mostly farther apart), "parted by a nearer object" (no
-    image neighbours at all); "merged with a neighbour" (its best segment holds another true object's
+    image neighbours at all); "part taken by a neighbour" (a piece of it lies in a segment that is mostly
+    another true object's); "merged with a neighbour" (its best segment holds another true object's
     pixels, at least ``SHARE`` of its own); "absorbed by the support" or "dropped as too small" (no
     segment holds ``SHARE`` of it: most of the rest is support, or noise)."""
     mine = gt_ids == obj
@@ -51,7 +52,11 @@ def failure_cause(gt_ids: np.ndarray, pred: np.ndarray, points: np.ndarray, obj:
     pieces = ids[counts > SHARE * total][np.argsort(-counts[counts > SHARE * total], kind="stable")]
     if len(pieces) == 0:
         return "absorbed by the support" if np.count_nonzero(pred[mine] == 0) >= np.count_nonzero(pred[mine] < 0) else "dropped as too small"
-    if len(pieces) >= 2:
+    if len(pieces) >= 2:  # a piece that holds more of other true objects than of this one is theirs
+        own = [k for k in pieces if np.count_nonzero((pred == k) & mine) >= np.count_nonzero((pred == k) & ~mine & (gt_ids > 0))]
+        if len(own) < len(pieces) and len(own) <= 1:
+            return "part taken by a neighbour"
+        pieces = np.asarray(own)
         image = np.where(mine, pred, 0).reshape(shape)
         xyz = points.reshape(*shape, 3)
         linked = pairs = 0

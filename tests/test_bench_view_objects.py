@@ -57,3 +57,12 @@ def test_merged_absorbed_dropped_hidden() -> None:
     assert failure_cause(gt, _pred(0, 0), points, 1, SHAPE) == "absorbed by the support"
     assert failure_cause(gt, _pred(-1, -1), points, 1, SHAPE) == "dropped as too small"
     assert failure_cause(gt, _pred(1, 1), points, 5, SHAPE) == "hidden"
+
+
+def test_part_taken_by_a_neighbour() -> None:
+    points, gt = _view()
+    pred = _pred(1, 2)
+    gt2 = np.where(np.arange(48) % 8 == 7, 2, gt)
+    pred[np.arange(48) % 8 == 7] = 2  # segment 2 holds columns 4-6 of object 1 and column 7 ... of object 2
+    gt2[(np.arange(48) % 8 >= 5) & (np.arange(48) % 8 <= 6)] = 2  # ... and columns 5-6 are object 2's too
+    assert failure_cause(gt2, pred, points, 1, SHAPE) == "part taken by a neighbour"
