@@ -14,7 +14,11 @@ generator cannot lay out (five objects too large for the table at that seed) is 
 an object the generator's camera could not frame wholly (``out_of_view``) is listed apart, not scored. Run:
 
     .venv/bin/python bench/bench_completion.py [--seeds 0 1 2] [--objects 5] [--all] [--baseline] [--keep out/completion]
-        [--overrides '{"complete": {...}}'] [--where]
+        [--overrides '{"complete": {...}}'] [--where] [--settling]
+
+``--settling`` also scores each completed solid at its completion pose (the body's pose in scene.xml,
+before settling) and splits the IoU lost between the completed shape and the settling (sinking,
+tilting, sliding to keyframe ``initial``).
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
+import mujoco
 import numpy as np
 import open3d as o3d
 import trimesh
@@ -209,7 +214,8 @@ def all_objects(seed: int) -> list[tuple[str, tuple[str, ...]]]:
 
 
 def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layout: str = "table",
-            objects: tuple[str, ...] | None = None, overrides: dict | None = None, where: bool = False) -> list[dict]:
+            objects: tuple[str, ...] | None = None, overrides: dict | None = None, where: bool = False,
+            settling: bool = False) -> list[dict]:
     scene = make_scene(SceneSpec(layout=layout, objects=objects, n_objects=n_objects, stacked=True, touching=True, seed=seed))
     tag = f"{layout}{seed}_{'-'.join(o[:3] for o in objects or ())}"
     capture = root / f"seed{tag}"
@@ -227,6 +233,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
     gt_ids = np.where(pcd.labels >= 10, pcd.labels // 10, 0)
     depth = pcd.points[:, 2].reshape(480, 640)
     world_to_optical = np.linalg.inv(np.asarray(record["capture"]["input_to_world"]))
+    composed = mujoco.MjModel.from_xml_path(str(out / "scene.xml")) if settling else None
     rows = []
     for obj in scene.objects:
         if obj.name in form["out_of_view"]:  # the capture's fault, not the completion's
@@ -246,9 +253,8 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         local = trimesh.util.concatenate(hulls)  # object frame: base at z = 0
         ball = (ball_in_container_test(SimpleNamespace(hulls=hulls, solid=local, size=local.extents))["inside"]  # type: ignore[arg-type]
                 if obj.name in CONTAINERS else None)
-        pose = np.eye(4)
-        pose[:3, :3] = Rotation.from_quat(np.roll(rec["quat_wxyz"], -1)).as_matrix()
-        pose[:3, 3] = rec["position"]
+        at_completion = _settling_split(hulls, composed.body(rec["name"]), rec, obj.mesh().apply_transform(synth_to_realsim)) if composed else {}
+        pose = _pose(rec["position"], rec["quat_wxyz"])
         for h in hulls:
             h.apply_transform(pose)
         solid = trimesh.util.concatenate(hulls)
@@ -256,7 +262,7 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
         truth.apply_transform(synth_to_realsim)  # the conversion levels and centres the scene its own way
         iou, inside, covered = volume_overlap(hulls, truth)
         rule = next((n for n in rec["notes"] if n.startswith("completed from")), "").split(" as a ")[-1]
-        rows.append({**row, "iou": iou, "inside": inside, "covered": covered, "rule": _rule(rule), "f5": surface_f_score(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
+        rows.append({**row, **at_completion, "iou": iou, "inside": inside, "covered": covered, "rule": _rule(rule), "f5": surface_f_score(hulls, truth), "size_err_mm": float(np.max(np.abs(obb_extents(solid) - obb_extents(truth))) * 1000),
                      "free_px": free_space_pixels(hulls, world_to_optical, form["intrinsics"], depth), "pieces": len(hulls),
                      "label": rec["label"], "hollow": any("open container" in n for n in rec["notes"]),
                      "ball": ball, "fits": narrowest_width(np.asarray(truth.vertices)) <= HAND_FITS,
@@ -266,6 +272,29 @@ def measure(seed: int, n_objects: int, root: Path, baseline: bool = False, layou
                      "where": where_off(hulls, truth, (gt_ids == obj.id).reshape(depth.shape), ((gt_ids > 0) & (gt_ids != obj.id)).reshape(depth.shape),
                                         depth, world_to_optical, form["intrinsics"]) if where else None})
     return rows
+
+
+def _pose(position, quat_wxyz) -> np.ndarray:
+    """4x4 pose of a position and a (w, x, y, z) quaternion."""
+    pose = np.eye(4)
+    pose[:3, :3] = Rotation.from_quat(np.roll(np.asarray(quat_wxyz, float), -1)).as_matrix()
+    pose[:3, 3] = position
+    return pose
+
+
+def _settling_split(hulls: list[trimesh.Trimesh], body, rec: dict, truth: trimesh.Trimesh) -> dict:
+    """The completed solid scored at its completion pose (``body``: its scene.xml body, the pose it was
+    composed at) and how settling moved it: the lowest point's drop (mm, + down), the sideways motion (mm)
+    and the turn (degrees) from the completion pose to keyframe ``initial`` (``rec``), and the lowest
+    point's height over the truth's before and after (mm)."""
+    before, after = _pose(body.pos, body.quat), _pose(rec["position"], rec["quat_wxyz"])
+    placed = [h.copy().apply_transform(before) for h in hulls]
+    low0 = min(float(h.bounds[0][2]) for h in placed)
+    low1 = min(float(h.copy().apply_transform(after).bounds[0][2]) for h in hulls)
+    turn = Rotation.from_matrix(after[:3, :3] @ before[:3, :3].T).magnitude()
+    low = float(truth.bounds[0][2])
+    return {"iou0": volume_iou(placed, truth), "drop_mm": 1000 * (low0 - low1), "low0_mm": 1000 * (low0 - low), "low1_mm": 1000 * (low1 - low),
+            "slide_mm": 1000 * float(np.linalg.norm(after[:2, 3] - before[:2, 3])), "turn_deg": float(np.degrees(turn))}
 
 
 RULES = (("open container", "hollow"), ("solid of revolution", "revolved"), ("cylinder", "cylinder"), ("silhouette", "mirror"),
@@ -286,6 +315,7 @@ def main() -> None:
     parser.add_argument("--keep", type=Path, default=None, help="write the captures and outputs here (a new folder)")
     parser.add_argument("--overrides", type=json.loads, default=None, help="stage parameters as JSON, as realsim.convert takes them (an A/B in one tree)")
     parser.add_argument("--where", action="store_true", help="also where each completed solid misses and exceeds the truth (see where_off)")
+    parser.add_argument("--settling", action="store_true", help="also the IoU at the completion pose, before settling (see _settling_split)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
@@ -293,7 +323,7 @@ def main() -> None:
         rows, skipped = [], []
         for seed, layout, objects in runs:
             try:
-                rows += measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides, args.where)
+                rows += measure(seed, args.objects, root, args.baseline, layout, objects, args.overrides, args.where, args.settling)
             except InputError as error:  # the generator could not lay the scene out: no capture to measure
                 skipped.append(f"seed {seed} {layout} ({error})")
     unframed = [r for r in rows if r.get("out_of_view")]
@@ -321,6 +351,8 @@ def main() -> None:
         print(f"scenes not measured (the generator could not lay them out): {'; '.join(skipped)}")
     if args.where:
         _print_where(rows)
+    if args.settling:
+        _print_settling(rows)
     fits = [r for r in rows if r.get("fits")]
     print(f"objects the hand fits in truth (narrowest width <= {1000 * HAND_FITS:.0f} mm): {len(fits)}, "
           f"declared graspable {sum(bool(r.get('graspable')) for r in fits)}")
@@ -338,6 +370,23 @@ def _print_where(rows: list[dict]) -> None:
     if solid:
         print(f"     {'solid objects, median':28s} " + " ".join(f"{k} {100 * np.median([r['where'][k][0] for r in solid]):4.1f}/{100 * np.median([r['where'][k][1] for r in solid]):5.1f}" for k in WHERE)
               + f" | silhouette short/over {np.median([r['silhouette'][0] for r in solid]):.2f}/{np.median([r['silhouette'][1] for r in solid]):.2f} px per edge px")
+
+
+def _print_settling(rows: list[dict]) -> None:
+    """Per object and summed over the solid ones: IoU at the completion pose, after settling, and the motion."""
+    scored = [r for r in rows if "iou0" in r]
+    print("\nsettling: IoU at the completion pose -> after settling (keyframe initial); lowest point's drop (mm, + down), slide (mm), turn (deg); "
+          "lowest point over the truth's before -> after (mm)")
+    for r in scored:
+        print(f"{r['seed']:4d} {r['name']:28s} {r['iou0']:5.2f} -> {r['iou']:5.2f} ({r['iou'] - r['iou0']:+5.2f})  drop {r['drop_mm']:6.1f}  "
+              f"slide {r['slide_mm']:6.1f}  turn {r['turn_deg']:5.1f}  low {r['low0_mm']:+5.1f} -> {r['low1_mm']:+5.1f}")
+    solid = [r for r in scored if r["name"] not in CONTAINERS]
+    if solid:
+        loss = [r["iou0"] - r["iou"] for r in solid]
+        print(f"     solid objects: median IoU at completion {np.median([r['iou0'] for r in solid]):.3f}, after settling "
+              f"{np.median([r['iou'] for r in solid]):.3f}; settling cost total {sum(loss):+.2f} IoU points (median {np.median(loss):+.3f}); "
+              f"median drop {np.median([r['drop_mm'] for r in solid]):.1f} mm, slide {np.median([r['slide_mm'] for r in solid]):.1f} mm, "
+              f"turn {np.median([r['turn_deg'] for r in solid]):.1f} deg")
 
 
 if __name__ == "__main__":
