@@ -298,8 +298,10 @@ def split_command(command: str) -> list[str]:
                   r"|when (?:that s |you re |you )?(?:done|finished)|(?:but )?(?:in|at|by) the end)\b", ",", text)
     text = re.sub(r"\s+but (?=(?:dont|do not|never|no need to|leave|keep|stay)\b)", ", ", text)  # "..., but don't put the mug in it"
     text = _run_on(text)
-    parts = [p.strip() for p in re.split(r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", text) if p and p.strip()]
-    parts = [re.sub(r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+", "", p) for p in parts]
+    cut, lead = r"\s*(?:,|;|\.(?!\d)|\bthen\b|\band\b|\bbefore that\b)\s*", r"^(?:(?:first|firstly|second|secondly|next(?! to\b)|finally|lastly|last|also|and|then|after|to start|to begin)\s+)+"
+    parts = [re.sub(lead, "", p.strip()) for p in re.split(cut, text) if p and p.strip()]
+    # the phrase each sentence opens with: never the tail of the sentence before it
+    opening = {re.sub(lead, "", first.strip()) for sentence in re.split(r"\.(?!\d)", text) if (first := next((q for q in re.split(cut, sentence) if q.strip()), ""))}
     clauses: list[str] = []
     verb_re = re.compile(rf"^(?:{'|'.join(re.escape(v) for v in sorted(ALL_VERBS, key=len, reverse=True))})\b")
     parts = [re.sub(rf"^you (?:{_YOU_MODAL} )?(?={verb_re.pattern[1:]})", "", p) for p in parts]  # "the banana, you (must) put in the bowl"
@@ -312,7 +314,12 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 and not _STATES.search(f"{clauses[-1]} {part}") else None
-            if AVOID.match(part) or ((_WILL_BE.match(part) or _GOES_THERE.match(part)) and verb_re.match(clauses[-1])):
+            if AVOID.match(part) or ((_WILL_BE.match(part) or _GOES_THERE.match(part)) and verb_re.match(clauses[-1])) or (
+                    _STATES.search(clauses[-1]) and not verb_re.match(clauses[-1]) and re.match(r"(?:the|that|this) ", part) and not _STATES.search(part)):
+                # "these sodas are a mess. the one on the left, ...": a thing named after a statement is not part of it,
+                # and named alone it says what "it" means next
+                if not (AVOID.match(part) or _WILL_BE.match(part) or _GOES_THERE.match(part) or rel_re.search(f" {part} ")):
+                    part = f"{topic.TOPIC}{part}"
                 # "..., and don't touch the mug"; "..., it should be back where it is"; "... aside. the strawberry goes in the bowl": a step of its own
                 clauses.append(part)
             elif (same := re.fullmatch(r"(?:(?:in|on|into|onto|to|at) )?(?:the )?same (\w+)(?: again| too| as well)?", part)) and rel and (
@@ -340,6 +347,8 @@ def split_command(command: str) -> list[str]:
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
                 clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())
+            elif part in opening and not verb_re.match(clauses[-1]) and re.match(r"(?:the|that|this) ", part) and not rel_re.search(f" {part} "):
+                clauses.append(f"{topic.TOPIC}{part}")  # "..., drives me mad. The one on the left, could you ...": what "it" means next
             else:
                 clauses[-1] = f"{clauses[-1]} and {part}"
         else:

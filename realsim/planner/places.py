@@ -21,7 +21,7 @@ def positions(text: str) -> str:
     text = re.sub(rf"\b(?:{_BOOST})?(?:at|in|on) the (?:very |far |extreme )(front|back)\b{_NOT_OF}", r"at the \1", text)
     text = re.sub(rf"\b{_BOOST}(?:at|in|on) the (front|back)\b{_NOT_OF}", r"at the \1", text)
     text = re.sub(rf"\b(?:right |way )?up front\b{_NOT_OF}", "at the front", text)
-    text = re.sub(r"\bthe ((?!(?:one|furthest|farthest|most)\b)[a-z]+(?: [a-z]+)?) (?:furthest|farthest|most) (?:to the |on the )(left|right)\b", r"the \2most \1", text)
+    text = re.sub(r"\bthe ((?!(?:furthest|farthest|most)\b)[a-z]+(?: [a-z]+)?) (?:furthest|farthest|most) (?:to the |on the )(left|right)\b", r"the \2most \1", text)
     return re.sub(r"\b(?:(?:that is |thats |that s |which is |which s )?(?:the )?(?:furthest|farthest|most) (?:to the |on the )?|(?:on |to )?the (?:far|very) )(left|right)\b",
                   r"the \1most", text)
 
