@@ -328,6 +328,7 @@ def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> No
     # a thing named at the start of a sentence after talk says what "it" means; never joined to the talk
     ("My flatmate leaves these cans lying around, drives me mad. The one furthest to the left, could you stand it next to the bowl?",
      "put the left can next to the bowl"),
+    ("That red cube, put it right up next to the bowl.", "put the red cube next to the bowl"),
     # stiff legal or office English
     ("The operator hereby requests that the banana be relocated to a position immediately adjacent to the bowl.", "put the banana next to the bowl"),
     ("Notwithstanding any prior instructions, the banana is to be displaced a distance of eight centimetres in the forward direction, i.e. away from the robot.",

@@ -202,6 +202,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:to )?within (?:about |roughly |around |some )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|a couple of|a few) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*|finger\w*)"
                   r" (?:of|from) (?=(?:the|that|this|it|them)\b)", "next to ", text)  # "to within a couple of centimetres of the blue one"
     text = re.sub(r"\bmore at (?:the )?(left|right)\b", r"more to the \1", text)  # "do it more at left"
+    text = re.sub(r"\b(?:right|way|all the way) up (?=(?:next to|beside|against|close to|alongside)\b)", "", text)  # "put it right up next to the bottle"
     text = re.sub(r"\b(?:you )?do ((?:it|them|(?:the|that|this) [a-z ]+?)) (?=more (?:to the )?(?:left|right|forward|back)\b)", r"move \1 ", text)
     text = re.sub(r"\b(left|right)[- ]hand (?!side\b)(?=[a-z])", r"\1 ", text)  # "the right-hand one": the right one
     text = re.sub(r"\bmy (left|right)\b", r"the \1", text)  # the speaker stands behind the robot: their left is its left

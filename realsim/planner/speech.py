@@ -32,7 +32,7 @@ _ATTENTION = re.compile(rf"^(?:(?:now|ok|okay|alright|all right|so|right|and)[\s
                         r"(?: (?:the (?:robot|arm)|it|this))?\s*[:,.!-]+\s*)?")
 _NARRATION = re.compile(r"^(?:(?:now|alright|all right|ok|okay|so|class|everyone|kids|guys|and|then)\s+)*"
                         r"(?:(?:watch|look|see)(?: closely| carefully)?(?: everyone| class| kids)?\s+(?:as |how )?(?:the robot|the arm|it)\s+"
-                        r"|(?:the robot|the arm|it|you|we)\s+(?:will|is going to|s going to|are going to|re going to|gonna|shall|is about to|can|is able to"
+                        r"|(?:the robot|the arm|it|you|we)\s+(?:will|is going to|s going to|are going to|re going to|(?:is |s |are |re )?gonna|shall|is about to|can|is able to"
                         r"|is now going to|s now going to|will now)\s+(?:now\s+)?)")
 _ADDRESS = re.compile(r"^(?:hey |ok |okay |alright |yo |hi |hello )?(?:robot|franka|panda|class|everyone)\s+(?=\w)")
 
