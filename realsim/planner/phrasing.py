@@ -316,7 +316,7 @@ def split_command(command: str) -> list[str]:
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 and not _STATES.search(f"{clauses[-1]} {part}") else None
             if AVOID.match(part) or ((_WILL_BE.match(part) or _GOES_THERE.match(part)) and verb_re.match(clauses[-1])) or (
-                    _STATES.search(clauses[-1]) and not verb_re.match(clauses[-1]) and re.match(r"(?:the|that|this) ", part) and not _STATES.search(part)):
+                    part in opening and _STATES.search(clauses[-1]) and not verb_re.match(clauses[-1]) and _NAMED_ALONE.fullmatch(part) and not _STATES.search(part)):
                 # "these sodas are a mess. the one on the left, ...": a thing named after a statement is not part of it,
                 # and named alone it says what "it" means next
                 if not (AVOID.match(part) or _WILL_BE.match(part) or _GOES_THERE.match(part) or rel_re.search(f" {part} ")):
@@ -348,7 +348,7 @@ def split_command(command: str) -> list[str]:
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
                 clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())
-            elif part in opening and not verb_re.match(clauses[-1]) and re.match(r"(?:the|that|this) ", part) and not rel_re.search(f" {part} "):
+            elif part in opening and not verb_re.match(clauses[-1]) and _NAMED_ALONE.fullmatch(part) and not _STATES.search(part) and not rel_re.search(f" {part} "):
                 clauses.append(f"{topic.TOPIC}{part}")  # "..., drives me mad. The one on the left, could you ...": what "it" means next
             else:
                 clauses[-1] = f"{clauses[-1]} and {part}"
@@ -485,6 +485,9 @@ _ASK = re.compile(r"^(?:(?:can|could|may|might|shall) i (?:please )?(?:have|get|
 # "the banana goes in the bowl", "can the mug go in the bowl", "the cup should go behind the bowl"
 _MODAL_WORDS = r"(?:should|needs to|need to|has to|have to|must|will|would|is to|ought to|is supposed to)"
 WHICH_ONE = re.compile(r"(?:which|what) (one|\w+) (?:is|s) (.+)")
+# a noun phrase said alone (no verb of its own: "the one on the left", not "the marker hasn't moved")
+_NAMED_ALONE = re.compile(r"(?:the|that|this) (?:(?!(?:is|isnt|are|arent|was|wasnt|were|werent|has|hasnt|have|havent|had|does|doesnt|did|didnt|will|wont"
+                          r"|can|cant|should|would|could|keeps|looks|seems|been|moved|got|gets)\b)[a-z]+ ?)+")
 _GOES_THERE = re.compile(r"^(?:the|that|this|my|it|they)\b[a-z ]*? (?:goes|go|belongs|belong|needs to go|has to go|ought to go|is going) (?:back )?(?:in|into|inside|on|onto|next|beside|behind|in front|left|right|between|to the)\b")
 _WILL_BE = re.compile(rf"^.+? {_MODAL_WORDS} (?:have |be |go |end up |stay )")
 _MODAL = r"(?:should|needs to|need to|has to|have to|must|can|could|will|would|is to|ought to|is supposed to)"
