@@ -329,6 +329,7 @@ def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> No
     ("My flatmate leaves these cans lying around, drives me mad. The one furthest to the left, could you stand it next to the bowl?",
      "put the left can next to the bowl"),
     ("That red cube, put it right up next to the bowl.", "put the red cube next to the bowl"),
+    ("Strawberry, from the red cube down, on the table now putting.", "put the strawberry on the table"),  # the source is never moved
     # stiff legal or office English
     ("The operator hereby requests that the banana be relocated to a position immediately adjacent to the bowl.", "put the banana next to the bowl"),
     ("Notwithstanding any prior instructions, the banana is to be displaced a distance of eight centimetres in the forward direction, i.e. away from the robot.",
@@ -358,3 +359,11 @@ def test_a_thing_named_by_a_part_it_has() -> None:
     assert call_lines("pick up the white thing with a handle", objects) == ["grasp('obj9_mug')"]
     with pytest.raises(InputError, match="ambiguous"):
         RulePlanner().plan("pick up the red thing with the stripes", objects)
+
+
+def test_a_verb_said_last_never_moves_the_source() -> None:
+    """The strawberry sits on the red cube: "from the red cube the strawberry you take" takes the strawberry."""
+    stacked = [replace(o, position=(0.55, 0.25, 0.08)) if o.name == "obj8_strawberry" else o for o in CLUTTER]
+    assert call_lines("From the red cube the strawberry you take, and on the table you put it.", stacked) == call_lines(
+        "take the strawberry off the red cube, then put it on the table", stacked)
+    assert call_lines("Strawberry, from the red cube down, on the table now putting.", stacked) == ["place_down('obj8_strawberry')"]

@@ -278,7 +278,22 @@ def clean(command: str) -> str:
     # the object said first, then the robot told what it does with it: "the cereal box you are pushing 5 cm forward"
     text = re.sub(rf"(?:^|(?<=[.,;] ))((?:the|that|this) [a-z ]+?) you (?:{_YOU_MODAL} )?({VERB_START.pattern})", r"\2 \1", text)
     text = re.sub(rf"(?:^|(?<=[.,;] ))you (?:{_YOU_MODAL} )?(?={VERB_START.pattern})", "", text)  # "orange cylinder, you are sliding it left"
+    text = _verb_last(text)
     return re.sub(r"\bto (forwards?|backwards?|ahead)\b", r"\1", text)  # "to forward"
+
+
+# a phrase whose command verb comes last ("on the table you put it", "from the box the cup you take"): said verb first
+_VERB_LAST = re.compile(rf"(?:^|(?<=[.,;] ))((?:the|that|this|from|off|out of|on|onto|in|into|next to|behind|to the)\b(?:(?![.,;]).)*?)"
+                        rf"(?: (?:you|we|now))* ((?:{VERB_START.pattern}))(?: (it|them))?(?=\s*(?:$|[.,;]))")
+
+
+def _verb_last(text: str) -> str:
+    """``text`` with each verb-final phrase said verb first, its source after the thing taken
+    ("take from the box the cup" -> "take the cup from the box"): a source is never the thing moved."""
+    def first(m: re.Match[str]) -> str:
+        said = f"{m.group(2)} {m.group(3) + ' ' if m.group(3) else ''}{m.group(1)}"
+        return re.sub(r"^(\w+(?: up)?) ((?:from|off|out of) (?:the|that|this) [a-z ]+?) ((?:the|that|this) [a-z ]+)$", r"\1 \3 \2", said)
+    return _VERB_LAST.sub(first, text)
 
 
 def _by_comparison(text: str) -> str:

@@ -146,6 +146,9 @@ def _read_by_unit(sentences: list[str], p: Parser, pieces: bool = False) -> tupl
                 more, also_kept = placed
             elif is_request(sentence, p.resolver.scene_words) or (pieces and not _idle(sentence, p)):
                 return None
+            elif re.match(r"(?:from|off|off of|out of)\b", cleaned(sentence)):  # "..., from the box down, ...": where it comes from, never "it"
+                p.ctx.set(before)
+                continue
             else:
                 p.ctx.set(mentioned(sentence, p) or before)
                 continue

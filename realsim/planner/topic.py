@@ -24,7 +24,8 @@ _VERB = VERB_START
 _PRONOUN = re.compile(r"\b(?:it|them|th(?:at|is) one)\b")
 # a locator said as a piece of its own after a topic ("..., closest to you, push it ..."): which one, never where to
 _LOCATOR = re.compile(r"(?:the one )?(?:(?:that is |thats |that s |which is )?(?:closest|nearest|closer|nearer|furthest|farthest|further|farther)\b"
-                      r"|(?:on|at|in) the (?:front|back|middle|centre|center|left|right)\b|the \w+most\b)")
+                      r"|(?:on|at|in) the (?:front|back|middle|centre|center|left|right)\b|the \w+most\b"
+                      r"|(?:from|off|off of|out of) (?:the|that|this) [a-z ]+?(?: (?:down|off|away|out))?$)")  # where it is taken from
 _STATEMENT = re.compile(rf"(?<!that )(?<!which )(?<!who )\b{STATEMENT_VERB}\b")
 _LIST = r"(?:the |that |this )?[a-z ]+?(?:(?:,| or| and)\s+(?:the |that |this )?[a-z ]+?)+"
 
@@ -144,7 +145,8 @@ def fronted(parts: list[str], verb_re: re.Pattern[str], comma: bool) -> list[str
     topic = re.sub(r"^(?:whatever|whichever|which ever) (?!(?:one|thing|is|s)\b)((?:\w+ )?\w+) (?:is|s|are) ", r"the \1 ", topic)  # "whichever can is closer to the bowl"
     topic = compared(re.sub(r"^(?:whatever|whichever)(?: one| thing)? (?:is |s )?", "the thing ", _EXISTS.sub("the ", topic)))
     topic = re.sub(rf"\s+(?:on|at|upon) (?:the |my |your |our )?{_SURFACE}$", "", topic)
-    if n > 1 and not resumed or said and not resumed:
+    placed_as_is = bool(verb) and relation_start(rest[verb.end():].strip())  # "..., from the box, put on the table": its object left out
+    if n > 1 and not resumed and not placed_as_is or said and not resumed:
         return parts
     if (_STATEMENT.search(topic) or verb_re.match(topic) or AVOID.match(topic) or casual.terse(topic, has_relation(topic))
             or re.match(r"(?:i|we) (?:would |d )?(?:like|want|need|wish)\b", topic)):  # "i want the banana. give it to me": a wish
