@@ -26,3 +26,11 @@ def test_a_place_a_later_step_changes_is_a_checkpoint() -> None:
 def test_a_lift_that_a_placing_needs_anyway_is_none() -> None:
     assert _checks("pick up the banana and put it in the bowl") == []
     assert _checks("put the strawberry in the bowl") == []
+
+
+def test_an_undo_puts_the_thing_back_and_checks_the_step_it_undoes() -> None:
+    """"push the banana 5 cm left. actually, undo that": moved, then back where it was (it had been dropped unread)."""
+    plan = RulePlanner().plan("Push the banana 5 cm to the left. Hmm, actually, undo that.", CLUTTER)
+    assert [c.text() for c in plan.calls][-1] == "place('obj7_banana', [0.65, 0.0, 0.02])"
+    assert [g.describe() for g in plan.goals] == ["obj7_banana put down at (0.650, 0.000)"]
+    assert _checks("push the banana 5 cm to the left, then undo it") == ["obj7_banana moved 5 cm toward (+0.00, +1.00) (after call 1)"]

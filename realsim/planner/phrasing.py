@@ -107,6 +107,8 @@ _IN_THE_WAY = re.compile(r"(^|(?<=[.;!?] ))(?:(?:ugh|argh|man|honestly|seriously
                          r"(?: (?:always|still|constantly|just|kind of|sort of|really|totally|completely|now))* (?:in (?:the|my|your) way|getting in (?:the|my) way"
                          r"|blocking (?:things|everything|me|the way|my (?:view|reach|path|arm|hand))|(?:cluttering|crowding|hogging|taking up)(?: up)? [a-z ]+?"
                          r"|obstructing [a-z ]+?)(?: again| all the time| constantly)?(?=\s*(?:[.;!?]|$|,\s*i (?:need|want) it (?:out of there|gone|moved|away)\s*(?:[.;!?]|$)))")
+# an undo of the step just said: the thing it moved put back where it was
+_UNDO = re.compile(r"\b(?:undo|reverse|revert|take back|roll back) (?:that|it|this|the (?:last )?(?:move|step|one|push))(?: (?:move|step|one))?\b(?: (?:again|please|too|as well))?")
 _BODY_WIDTH_CM = {"hand": 10, "palm": 8, "finger": 2, "thumb": 2}  # a hand's width is about 10 cm, a finger's 2 cm
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
@@ -124,6 +126,7 @@ def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
     text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(_by_comparison(voices.plain(text)))))))
+    text = _UNDO.sub("put it back where it was", text)  # "move the mug 5 cm left. actually, undo that": where it was before
     text = re.sub(r"\s*,?\s*(?:and )?(?:be (?:quick|fast|snappy|swift|careful|gentle|nice|quiet)(?: about it)?|make it (?:snappy|quick)|look lively"
                   r"|step (?:to it|lively)|(?:and )?(?:on|at) the double|chop[- ]chop)(?=\s*(?:$|[.,;!?]))", "", text)  # "... and be quick about it!"
     text = re.sub(r"(\b(?:swap|switch|exchange|trade)\b[^.;!?]*?),?\s*(?:the |to the )?(?:left|right) (?:for|with|and) (?:the |to the )?(?:left|right)\b", r"\1", text)
