@@ -9,7 +9,7 @@ from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import ObjectInfo, RulePlanner, check
-from realsim.planner.phrasing import rephrase, split_command
+from realsim.planner.phrasing import clean, rephrase, split_command
 
 
 @pytest.mark.parametrize(("clause", "imperative"), [
@@ -367,3 +367,10 @@ def test_a_verb_said_last_never_moves_the_source() -> None:
     assert call_lines("From the red cube the strawberry you take, and on the table you put it.", stacked) == call_lines(
         "take the strawberry off the red cube, then put it on the table", stacked)
     assert call_lines("Strawberry, from the red cube down, on the table now putting.", stacked) == ["place_down('obj8_strawberry')"]
+
+
+@pytest.mark.parametrize(("said", "kept"), [("put the strawberry in the bowl, in the same place", "in the same place"),
+                                             ("the red cube, on the stack, push it left", "on the stack")])
+def test_a_noun_that_is_also_a_verb_ends_a_phrase_as_a_noun(said: str, kept: str) -> None:
+    """"place", "stack" at a phrase's end are things, not a verb said last (only "you" / "now" mark that order)."""
+    assert kept in clean(said)

@@ -285,9 +285,10 @@ def clean(command: str) -> str:
     return re.sub(r"\bto (forwards?|backwards?|ahead)\b", r"\1", text)  # "to forward"
 
 
-# a phrase whose command verb comes last ("on the table you put it", "from the box the cup you take"): said verb first
+# a phrase whose command verb comes last after "you" or "now" ("on the table you put it", "from the box the cup you
+# take", "on the table now putting"): said verb first
 _VERB_LAST = re.compile(rf"(?:^|(?<=[.,;] ))((?:the|that|this|from|off|out of|on|onto|in|into|next to|behind|to the)\b(?:(?![.,;]).)*?)"
-                        rf"(?: (?:you|we|now))* ((?:{VERB_START.pattern}))(?: (it|them))?(?=\s*(?:$|[.,;]))")
+                        rf"(?: (?:you|we|now))+ ((?:{VERB_START.pattern}))(?: (it|them))?(?=\s*(?:$|[.,;]))")  # "you" / "now" marks it: "on the stack" is no verb
 
 
 def _verb_last(text: str) -> str:
@@ -366,6 +367,8 @@ def split_command(command: str) -> list[str]:
                 # "put the cube in the bowl and then the banana (too)": the same verb and place
                 obj = re.sub(r"\s(?:too|as well|also)$", "", part)
                 clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())
+            elif re.match(r"(?:from|off|off of|out of) (?:the|that|this) ", part):
+                clauses[-1] = f"{clauses[-1]} {part}"  # "strawberry, from the red cube down, ...": where it comes from, never another thing
             elif part in opening and not verb_re.match(clauses[-1]) and _NAMED_ALONE.fullmatch(part) and not _STATES.search(part) and not rel_re.search(f" {part} "):
                 clauses.append(f"{topic.TOPIC}{part}")  # "..., drives me mad. The one on the left, could you ...": what "it" means next
             else:
