@@ -55,17 +55,23 @@ class RulePlanner:
 
     def plan(self, command: str, scene_objects: list[ObjectInfo], robot_yaw: float = 0.0,
              robot_base: tuple[float, float] | None = None) -> Plan:
-        steps = parse_steps(command, scene_objects, robot_yaw, robot_base)
-        program = Program(tuple(c for s in steps for c in s.calls), command)
-        goals, checkpoints = _goals(steps, {o.name: o.position[:2] for o in scene_objects})
+        calls, goals, checkpoints = _planned(command, scene_objects, robot_yaw, robot_base)
+        program = Program(tuple(calls), command)
         return Plan(program=program.source(), goals=goals, planner=self.name, calls=program, checkpoints=checkpoints)
 
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> tuple[list[Call], list[Goal]]:
     """Primitive calls and the goals that hold at the end for ``command``; raises :class:`InputError` when it cannot."""
+    return _planned(command, objects, robot_yaw, robot_base)[:2]
+
+
+def _planned(command: str, objects: Sequence[ObjectInfo], robot_yaw: float,
+             robot_base: tuple[float, float] | None) -> tuple[list[Call], list[Goal], list[Checkpoint]]:
+    """The calls of ``command``, its goals at the end, and its checkpoints."""
     steps = parse_steps(command, objects, robot_yaw, robot_base)
-    return [c for s in steps for c in s.calls], _goals(steps, {o.name: o.position[:2] for o in objects})[0]
+    goals, checkpoints = _goals(steps, {o.name: o.position[:2] for o in objects})
+    return [c for s in steps for c in s.calls], goals, checkpoints
 
 
 def parse_steps(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
