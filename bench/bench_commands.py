@@ -587,6 +587,8 @@ def bench_plans(args: argparse.Namespace) -> int:
             continue
         try:
             plan = make_planner(args.planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw(), robot_base=sim.robot_base())
+            if plan.calls is not None:  # as `realsim run` does before anything moves
+                sim.check_holdable(plan.calls)
             acted = (set(plan.calls.acted_on()) if plan.calls is not None
                      else set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program)))
             # "at X" alone (X kept where it is): met by never acting on X, so X need not be acted on

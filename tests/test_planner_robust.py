@@ -61,6 +61,8 @@ def test_distance_and_bound() -> None:
     assert correct("gren", ["green", "grey"]) is None  # two as near
     assert correct("cans", ["can"]) is None  # a plural is no typo
     assert correct("grab", ["gray"], known=["grab"]) is None  # a known word stays
+    assert correct("lfet", ["left", "let"]) == "left"  # as near as "let", but with the word's own letters
+    assert correct("lfet", ["lift", "loft"]) is None
 
 
 @pytest.mark.parametrize(("sentence", "lines"), [
@@ -155,9 +157,16 @@ def test_texting_and_indirect_requests(sentence: str, lines: list[str]) -> None:
     ("set the banana besdie the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'next')"]),
     ("put the strawberry ontop of the blue cube", ["place_on('obj8_strawberry', 'obj4_cube')"]),
     ("shvoe the green cube rihgt 2 cm", ["push('obj5_cube', 'right', 0.02)"]),
+    ("shove the strawberry to the lfet 3 cm", ["push('obj8_strawberry', 'left', 0.03)"]),  # "left", not "let": its own letters swapped
+    ("put the banana on the rigth side of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'right')"]),  # a side's slot: beside, not on
+    ("grab the blue thign and put it in the bowl", ["grasp('obj4_cube')", "place_in('obj4_cube', 'obj6_bowl')"]),
 ])
 def test_misspelled_command_words(sentence: str, lines: list[str]) -> None:
     assert call_lines(sentence) == lines
+
+
+def test_a_misspelled_swap_is_read() -> None:
+    assert call_lines("swpa the banana and the strawberry")[-2:] == call_lines("swap the banana and the strawberry")[-2:]
 
 
 def test_a_scene_word_is_never_respelled_into_a_command_word() -> None:

@@ -24,6 +24,7 @@ from realsim.planner import (
     speech,
     technical,
     topic,
+    typos,
     voices,
     wishes,
 )
@@ -175,6 +176,7 @@ def clean(command: str) -> str:
     text = re.sub(r"(?<![\w'])'?em\b", "them", text)  # "swap 'em"
     for short, word in _TEXTING.items():  # "could u grab the can pls"
         text = re.sub(rf"(?<![\w'-]){re.escape(short)}(?![\w'-])", word, text)
+    text = typos.sides(text)
     text = re.sub(r"(?<![\w'-])([lr])(?= of\b)|(?<=\d)( ?(?:cm|mm|in|inch|inches|centimet\w*|millimet\w*) )([lr])(?![\w'-])",  # "L of red can", "10cm L"
                   lambda m: f"{m.group(2) or ''}{'left' if (m.group(1) or m.group(3)) == 'l' else 'right'}", text)
     # spoken fractions and trade units: "two and a half centimetres", "three quarters of an inch", "ten mil", "a hand's width"

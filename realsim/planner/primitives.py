@@ -51,7 +51,8 @@ class Param:
 class Primitive:
     """One primitive: ``doc`` is its prompt text ("\\n" where the prompt wraps); entries sharing a
     ``group`` are documented on one line; ``binding``/``robot`` default to ``name``; ``query``
-    primitives read the scene and return a value instead of acting."""
+    primitives read the scene and return a value instead of acting; ``carries`` ones hold their
+    first object in the hand."""
 
     name: str
     params: tuple[Param, ...]
@@ -60,6 +61,7 @@ class Primitive:
     binding: str = ""
     robot: str = ""
     query: bool = False
+    carries: bool = False
 
     @property
     def signature(self) -> str:
@@ -133,21 +135,21 @@ PRIMITIVES: tuple[Primitive, ...] = (
               "`pos` = [x, y, z] in m; `quat` = (w, x, y, z) orientation, or None for pointing straight down."),
     Primitive("open_gripper", (), "open fully / close the fingers.", group="gripper"),
     Primitive("close_gripper", (), "open fully / close the fingers.", group="gripper"),
-    Primitive("grasp", (_OBJ,), "approach `obj` from above, close the gripper on it and lift it about 10 cm."),
+    Primitive("grasp", (_OBJ,), "approach `obj` from above, close the gripper on it and lift it about 10 cm.", carries=True),
     Primitive("place", (_OBJ, Param("pos", "point")), "carry `obj` (grasping it first if needed) so its centre is over\n"
               "pos = [x, y, z] (m), lower it until it rests on whatever is below, release it, retreat.\n"
-              "z only needs to be roughly right: the object is lowered until contact."),
+              "z only needs to be roughly right: the object is lowered until contact.", carries=True),
     Primitive("place_on", (_OBJ, Param("target", "object")), "put `obj` on top of the object `target` (stacking, a plate, a box);\n"
-              "nothing moves when it already rests there."),
+              "nothing moves when it already rests there.", carries=True),
     Primitive("place_in", (_OBJ, Param("container", "object")),
               "put `obj` inside the open container `container` (bowl, basket, bin);\n"
-              "nothing moves when it already rests there."),
+              "nothing moves when it already rests there.", carries=True),
     Primitive("place_beside", (_OBJ, Param("ref", "object"), Param("side", "side", '"next"')),
               "put `obj` on the table beside `ref`; `side` is \"next\" (any free\n"
               "side), \"left\", \"right\", \"front\" (toward the robot) or \"behind\" (away from it), as seen from the\n"
-              "robot. A spot clear of other objects is chosen at run time."),
-    Primitive("place_between", (_OBJ, Param("a", "object"), Param("b", "object")), "put `obj` on the table between objects `a` and `b`."),
-    Primitive("place_down", (_OBJ,), "put `obj` down on the table at the free spot nearest the hand."),
+              "robot. A spot clear of other objects is chosen at run time.", carries=True),
+    Primitive("place_between", (_OBJ, Param("a", "object"), Param("b", "object")), "put `obj` on the table between objects `a` and `b`.", carries=True),
+    Primitive("place_down", (_OBJ,), "put `obj` down on the table at the free spot nearest the hand.", carries=True),
     Primitive("push", (_OBJ, Param("direction", "direction"), Param("distance", "distance")),
               "push `obj` along the table by `distance` m; `direction` is\n"
               "\"left\", \"right\", \"forward\", \"back\" or a unit vector [dx, dy] in the world xy plane."),

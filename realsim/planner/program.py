@@ -84,6 +84,16 @@ class Program:
         return out
 
 
+    def carried(self) -> list[str]:
+        """The objects the hand holds (first object of each carrying call), each once, in call order."""
+        out: list[str] = []
+        for call in self.calls:
+            prim, objs = BY_NAME.get(call.name), call.objects()
+            if prim is not None and prim.carries and objs and objs[0] not in out:
+                out.append(objs[0])
+        return out
+
+
 def candidates(word: str, names: Sequence[str], limit: int = 8) -> str:
     """``candidates: a, b, ...``: the closest names to ``word`` first, then the rest."""
     close = difflib.get_close_matches(word, list(names), n=limit, cutoff=0.4)

@@ -1,12 +1,14 @@
 """Misspelled words ("the read cube", "the gren block", "the yelow bananna"): a word the
 planner does not know is read as the one word of a vocabulary (the scene's names, colours, sizes)
 it is closest to, when that word is within a distance bound relative to its length and no other
-vocabulary word is as close. Short words (three letters or fewer) are never changed: too many
+vocabulary word is as close (of two as close, one with the very same letters wins: fast typing swaps
+letters far more often than it drops or adds one, "lfet" is "left", not "let"). Short words (three letters or fewer) are never changed: too many
 real words lie one letter apart ("fat", "far").
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable
 from typing import TypeVar
 
@@ -29,11 +31,12 @@ from realsim.planner.vocab import (
     singular,
 )
 
-__all__ = ["bound", "correct", "distance", "retry", "spelled"]
+__all__ = ["bound", "correct", "distance", "retry", "sides", "spelled"]
 
 T = TypeVar("T")
 # the words a command is built of: its verbs and place words (a misspelled one leaves the clause unread)
-_COMMAND_WORDS = frozenset({w for v in ALL_VERBS for w in v.split()} | {w for r, _ in RELATIONS for w in r.split()} | set(DIRECTION_WORDS))
+_SWAPS = ("swap", "switch", "exchange", "trade")  # verbs of a swap, read by their own rule
+_COMMAND_WORDS = frozenset({w for v in ALL_VERBS for w in v.split()} | {w for r, _ in RELATIONS for w in r.split()} | set(DIRECTION_WORDS) | set(_SWAPS))
 
 # words a noun phrase may hold that are no misspelling of a scene's name, a colour or a size
 _KNOWN = frozenset({*COLOR_WORDS, *BIG, *SMALL, *EXTREMES, *ORDINALS, *GENERIC, *NUMBERS, *SYNONYMS, *(w for v in SYNONYMS.values() for w in v),
@@ -72,7 +75,10 @@ def correct(word: str, vocabulary: Iterable[str], known: Iterable[str] = ()) -> 
         return None
     near = sorted((distance(word, v), v) for v in vocab if abs(len(v) - len(word)) <= bound(word) and len(v) > 2)
     near = [(d, v) for d, v in near if d <= bound(word)]
-    if not near or (len(near) > 1 and near[1][0] == near[0][0]):
+    if near:  # of the nearest, those with the word's own letters (swapped) first
+        nearest = [v for d, v in near if d == near[0][0]]
+        near = [(0, v) for v in nearest if sorted(v) == sorted(word)] or [(0, v) for v in nearest]
+    if not near or len(near) > 1:
         return None
     return near[0][1]
 
@@ -86,11 +92,21 @@ _OTHER = frozenset({"plate", "please", "plates", "bowl", "ball", "bottle", "tabl
 
 def spelled(word: str, scene_words: set[str]) -> str:
     """``word`` of a noun phrase, or the one scene name, colour or size word it misspells."""
-    vocabulary = scene_words | (set(COLOR_WORDS) - set(FOREIGN_COLOR_WORDS)) | set(BIG) | set(SMALL)
+    vocabulary = scene_words | (set(COLOR_WORDS) - set(FOREIGN_COLOR_WORDS)) | set(BIG) | set(SMALL) | set(GENERIC)
     if said := correct(word, vocabulary, _KNOWN):
         return said
     said = correct(singular(word), scene_words, _KNOWN) if is_plural(word) else None  # "strawberies": the plural kept
     return f"{said}s" if said else word
+
+
+# a slot only a side fills: "on the lefft side of", "to the rigth of", "the left-hand side"
+_SIDE_SLOT = re.compile(r"\b((?:to|on|at|off) the )([a-z]+)(?=(?:[ -]hand)?(?: side)? of\b)")
+
+
+def sides(text: str) -> str:
+    """``text`` with a misspelled side in a slot only a side fills read as that side ("put the mug on
+    the lefft side of the bowl": a place beside the bowl, not on it)."""
+    return _SIDE_SLOT.sub(lambda m: m.group(1) + (correct(m.group(2), DIRECTION_WORDS, _KNOWN | _OTHER) or m.group(2)), text)
 
 
 def retry(clause: str, scene_words: set[str], read: Callable[[str], T]) -> T:

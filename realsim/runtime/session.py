@@ -227,6 +227,8 @@ def run_command(sim: Sim, text: str, planner: str = "auto", seed: int | None = N
     usage_before.add(llm.SESSION_USAGE)
     # the planner reads colours from the capture and directions from where the robot stands
     plan = p.plan(text, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw(), robot_base=sim.robot_base())
+    if plan.calls is not None:
+        sim.check_holdable(plan.calls)
     t_plan = time.perf_counter() - t0
     record = RunRecord(scene=str(sim.folder), command=text, planner=plan.planner, program=plan.program, seed=sim.seed,
                        notes=list(plan.notes))

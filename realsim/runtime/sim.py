@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from realsim.errors import InputError
+from realsim.planner.program import Program
 from realsim.planner.types import ObjectInfo
 from realsim.robot.model import PREFIX, describe_robot
 from realsim.robot.robot import Robot, RobotParams
@@ -169,6 +170,18 @@ class Sim:
                 affordances=_affordances(rec.manifest, rec.label),
             ))
         return out
+
+    def check_holdable(self, program: Program) -> None:
+        """Raise :class:`InputError`, before anything moves, when ``program`` carries an object the
+        hand cannot hold as it stands (wider than the opening at its narrowest, with no rim or
+        handle to pinch, or only where its weight twists it out of the pinch): the robot's own
+        :meth:`graspability`, asked before the run instead of when the arm arrives."""
+        for name in program.carried():
+            ok, why = self.robot.graspability(name)
+            if not ok:
+                rec = self.records.get(name)
+                push = "; it can still be pushed" if rec is None or rec.manifest.get("is_pushable", True) else ""
+                raise InputError(f"{why}, so it cannot be lifted or carried{push}")
 
     # --- WorldView (read by goals) ------------------------------------------------------------
     def object_pose(self, name: str) -> tuple[Sequence[float], Sequence[float]]:
