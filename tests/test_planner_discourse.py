@@ -126,6 +126,10 @@ def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
     ("whatever is closest to the banana, pick it up", ["grasp('obj4_cube')"]),
     ("which ever is further away, the banana or the strawberry, put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("of the bowl and the banana, grab whichever is closer to you", ["grasp('obj6_bowl')"]),
+    # the pick among the things named, its way said after it ("the one closer to me" is never the one nearest of all)
+    ("of the bowl and the banana, push the one closer to me 3 cm left", ["push('obj6_bowl', 'left', 0.03)"]),
+    ("whichever of the banana and the strawberry is further from me, push that one forward 4 cm", ["push('obj7_banana', 'forward', 0.04)"]),
+    ("Between the bowl and the banana, the one that's closer to me should get pushed 5 cm to the right.", ["push('obj6_bowl', 'right', 0.05)"]),
     # "there's X ... it", "there are two Xs ... the one ..."
     ("there's a banana on the table. put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("There are two soda cans. Put the one further right in the bowl.", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
@@ -135,6 +139,10 @@ def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
 ])
 def test_comparatives_existentials_and_closings(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines
+
+
+def test_two_things_wished_swapped_are_swapped() -> None:
+    assert calls("I'd like the banana and the strawberry to have traded places.") == calls("swap the banana and the strawberry")
 
 
 def test_an_existential_of_several_is_asked() -> None:

@@ -325,6 +325,10 @@ def test_places_said_by_comparison_and_by_a_learner(said: str, plain: str) -> No
     ("The strawberry goes in the bowl, but not until you've moved the banana out of the way.",
      "move the banana out of the way, then put the strawberry in the bowl"),
     ("Move the banana out of the way. The strawberry goes in the bowl.", "move the banana out of the way, then put the strawberry in the bowl"),  # never both in
+    ("Go home at the end, but before that put the banana behind the bowl, and even before that slide the bowl 10 cm back.",
+     "push the bowl back 10 cm, then put the banana behind the bowl, then go home"),
+    ("Two things: banana behind the bowl, strawberry 4 cm to the left, then go home.",  # a piece with an amount is never talk
+     "put the banana behind the bowl, then push the strawberry left 4 cm, then go home"),
     # a thing named at the start of a sentence after talk says what "it" means; never joined to the talk
     ("My flatmate leaves these cans lying around, drives me mad. The one furthest to the left, could you stand it next to the bowl?",
      "put the left can next to the bowl"),

@@ -70,6 +70,7 @@ def test_distance_and_bound() -> None:
     ("if the strawberry fits in the bowl put it in there otherwise set it beside the bowl", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
     ("If the banana fits into the bowl, drop it in there; if it doesn't, put it behind the bowl.", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
     ("if the blue cube is behind the bowl then pick up the bowl", ["grasp('obj6_bowl')"]),
+    ("if the blue cube is still sitting behind the bowl, pick up the bowl", ["grasp('obj6_bowl')"]),  # a posture said in the condition
     ("if the blue cube is behind the bowl, lift the banana and put it on the green cube",
      ["grasp('obj7_banana')", "place_on('obj7_banana', 'obj5_cube')"]),
     ("if there's a cube behind the strawberry, push it left", ["push('obj3_cube', 'left', 0.1)"]),  # the branch names its own "it"

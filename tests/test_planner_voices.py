@@ -74,6 +74,8 @@ def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
 @pytest.mark.parametrize(("sentence", "plain"), [
     ("Station two to robot, come in. Put the banana in the bowl. Over and out.", "put the banana in the bowl"),
     ("Robot, Kim here, over. Lift the strawberry. Copy?", "lift the strawberry"),
+    ("Tuck the banana in behind the bowl.", "put the banana behind the bowl"),
+    ("Base to arm, stand by for tasking... banana into the bowl, then return to home position. Over and out.", "put the banana in the bowl, then go home"),
     ("Execute a grasp on the banana, place pose inside the bowl, then return to nominal.", "pick up the banana, put it in the bowl, then go home"),
     ("Grasp target is the strawberry. Place pose on the -y side of the bowl.", "pick up the strawberry, put it to the right of the bowl"),
     ("Pick the strawberry; place pose 6 cm in -x from the bowl.", "pick up the strawberry, put it in front of the bowl"),

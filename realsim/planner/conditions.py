@@ -27,6 +27,7 @@ _ELSE = r"(?:if not|if it (?:is not|isn t|isnt|does not|doesn t|doesnt)\b[^,.;]*
 _IF = re.compile(rf"^(?:(?:ok|okay|so|and|now|well|oh)[\s,]+)*(?:if|in case|assuming) (?P<cond>[^,;.:]+?)(?:,|;|:|\s+then\b|(?=\s(?:{VERB_START.pattern})))\s*(?:then\s+)?"
                  rf"(?P<then>.+?)(?:\s*(?:[,;.]\s*|\s+)(?:and )?{_ELSE}\s*[,;:]?\s*(?P<other>.+?))?[.!]?$")
 _BE = r"(?:is|are|s|sits|sit|is sitting|are sitting|stands|is standing|lies|is lying)"
+_POSTURE = r"(?:(?:sitting|standing|lying|resting|perched|placed|sat|stood|balanced) )?"  # "is still sitting on top of"
 _KINDS = {kind for _, kind in RELATIONS}
 
 
@@ -72,7 +73,7 @@ def _check(cond: str, r: Resolver) -> tuple[bool, str, str]:
         box = _one(m.group(1), r)
         empty = not any(relation_holds("in", o, box, r.forward, r.left) for o in r.objects if o.name != box.name)
         return empty != bool(m.group(2)), m.group(1), m.group(1)
-    m = re.fullmatch(rf"(.+?) {_BE}( not| nt)? (?:already |still |currently )?(.+)", cond)
+    m = re.fullmatch(rf"(.+?) {_BE}( not| nt)? (?:already |still |currently |now )?{_POSTURE}(.+)", cond)
     kind, ref = _relation(m.group(3)) if m else (None, "")
     if not m or kind not in _KINDS - {"to", "between", "sides", "other"}:
         raise InputError(f"cannot check the condition '{cond}': say it as 'if X is in / on / next to / left of / behind Y' or do it step by step")

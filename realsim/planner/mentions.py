@@ -95,7 +95,7 @@ def _asked_which(text: str, p: Parser) -> list[ObjectInfo]:
 def named_alone(text: str, p: Parser) -> bool:
     """Whether ``text`` is talk that names things and asks nothing of them; those things are then
     what "it" or "them" means. A request ("put the teapot away") is never talk."""
-    if VERB_START.match(cleaned(text)):
+    if VERB_START.match(cleaned(text)) or re.search(r"\d", text):  # an amount ("foam brick 4 cm to the right") asks something
         return False
     found = mentioned(text, p)
     if found:

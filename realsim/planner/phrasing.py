@@ -134,6 +134,7 @@ def clean(command: str) -> str:
     text = re.sub(_KEEP_COMPANY + r" with (?=(?:the|that|this|its|his|her|their|my|your)\b)", r"\1 next to ", text)  # "bring it over to sit with the banana"
     text = re.sub(_KEEP_COMPANY + r"(?= (?:next to|beside|by|near|in|inside|on|behind|in front of|left of|right of|to the|between|under|on top of)\b)", r"\1", text)
     text = focus.singled_out(wishes.as_request(purpose.purpose(technical.technical(formal.formal(radio.radio(text))))))
+    text = topic.whichever_of(text)
     text = clarify.amount(clarify.clarify(remarks.people(discourse.drop_talk(discourse.steps_as_clauses(text)))))
     text = speech.repair(text, VERB_START, RELATION_AT)
     text = re.sub(r"\s*\(([^()]*)\)", r", \1,", text)  # a remark in brackets is a clause of its own
@@ -168,6 +169,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
+    text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
     text = re.sub(r"(?:\bover by|(?:^|(?<=[,.;!?] ))by)(?= (?:the|that|this|my|your) )", "next to", text)  # "banana, (over) by the bowl"
     text = re.sub(r"\b((?:\w+ )?\w+) up[.!,]\s*(?:up )?off the (?:deck|table|floor|ground|surface|counter|desk)\b", r"\1 up", text)  # "marker up! off the deck!": lifted
     text = re.sub(r"\b(?:finish|end|wrap(?: it| things)? up|conclude)(?: off| up)? by (?=\w+ing\b)", "", text)  # "and finish by going back home"
@@ -481,7 +483,7 @@ def _in_order(text: str) -> str:
     text = re.sub(r"\s+\.$", ".", text)
     m = re.fullmatch(rf"before {you}((?:{verbs})\b.+?), (.+)", text)
     # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A, but not until you've B"
-    late = (re.fullmatch(r"(.+?),? (?:but )?(?:before (?:that|this|you do (?:that|this|it)|doing (?:that|this|so))|first(?: of all)?)[,:]? (.+?)\.?", text)
+    late = (re.fullmatch(r"(.+?),? (?:but |and )?(?:even )?(?:before (?:that|this|you do (?:that|this|it)|doing (?:that|this|so))|first(?: of all)?)[,:]? (.+?)\.?", text)
             or re.fullmatch(r"(.+?) (?:second|last|afterwards|after that)[,;]? (?:then |and )?(?:first|before that)?[,:]? ?(.+?)\.?", text)
             or re.fullmatch(rf"(.+?),? (?:but )?not (?:until|before) {you}((?:{verbs})\b.+?)\.?", text))
     if m:
@@ -496,6 +498,8 @@ def _in_order(text: str) -> str:
         return text
     first = re.sub(r"^\w+", lambda w: _PAST.get(w.group(0), w.group(0)), first)
     then = re.sub(r"^\w+", lambda w: _PAST.get(w.group(0), w.group(0)), then)
+    if first != text and re.search(r"\bbefore (?:that|this)\b", first):  # "C, but before that B, and even before that A": A, B, C
+        first = _in_order(first.rstrip("."))
     return f"{first}, {then}"
 
 
@@ -526,10 +530,11 @@ _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
     (re.compile(r"^(?:can|could|would|will|should|may|might|shall) (.+?) be (?:moved|pushed|shifted|slid|put|placed|set|dropped|stacked|transferred)\b\s*(.+)$"),
      "move {0} {1}"),
     # "the box needs to be moved 5 cm forward"
-    (re.compile(rf"^(.+?) (?:{_MODAL} (?:have been|be)|is to be|are to be|wants to be|want to be|has been|have been|is|are|was|were) (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"),
+    (re.compile(rf"^(.+?) (?:{_MODAL} (?:have been|be|get)|is to be|are to be|wants to be|want to be|has been|have been|is|are|was|were|gets|got)"
+                r" (?:moved|pushed|shifted|slid|put|placed|set)\b\s*(.+)$"),
      "move {0} {1}"),
     # "the red can and the white can should have traded places"
-    (re.compile(rf"^(?:(?:it |that )?(?:would |d |will )?be \w+ if )?(.+?) (?:{_MODAL} )?(?:have |had )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)"
+    (re.compile(rf"^(?:(?:it |that )?(?:would |d |will )?be \w+ if )?(.+?) (?:{_MODAL} |to )?(?:have |had )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)"
                 r" (?:places|positions|spots)$"), "swap {0}"),
     # "it'd be great if the banana was in the bowl": the state wished for, made
     (re.compile(r"^(?:it |that |this )?(?:would |d |will |s |is )?be (?:great|nice|good|lovely|helpful|awesome|perfect|ideal|brilliant|wonderful|cool|best|better)"

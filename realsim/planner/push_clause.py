@@ -29,7 +29,9 @@ def push_clause(rest: str, p: Parser, clause: str) -> Step:
     objs, tail, first_error = None, "", None
     for cut in [*TAIL.finditer(rest), None]:  # "push the left can forward": "left" names the can, not the way
         obj_phrase = rest[: cut.start()].strip() if cut else rest
-        if not obj_phrase or NOT_OBJECT.search(obj_phrase) or re.search(r"\b(?:of|the|a|an)$", obj_phrase) or (cut is not None and not has_direction(rest[cut.start():])):
+        if (not obj_phrase or NOT_OBJECT.search(obj_phrase) or re.search(r"\b(?:of|the|a|an)$", obj_phrase)
+                or re.search(r"\b(?:closer|nearer|further|farther)(?: away)?$", obj_phrase)  # "the one closer | to me": a pick, unfinished
+                or (cut is not None and not has_direction(rest[cut.start():]))):
             continue
         try:
             objs = objects_named(obj_phrase, p)

@@ -14,7 +14,7 @@ import re
 __all__ = ["radio"]
 
 _PROCEDURE = (r"over(?: and out)?|out|roger(?: that| roger)?|copy(?: that)?|(?:how|do you) copy|(?:do )?you copy|(?:do you )?read me|do you read(?: me)?"
-              r"|how do you read(?: me)?|come in|wilco|ten four|10 4|affirmative|standing by|say again|go ahead|over to you|break|message ends|end of message")
+              r"|how do you read(?: me)?|come in|wilco|ten four|10 4|affirmative|(?:standing|stand) by(?: for (?:(?:further |new |the next )?(?:tasking|tasks?|instructions|orders)))?|say again|go ahead|over to you|break|message ends|end of message")
 _STATION = r"(?:robot|arm|franka|panda|base|control|command|ops|operator|station|unit|team|lab|bench|desk|kitchen|tower)"
 _CALL_SIGN = (rf"(?:robot|arm|franka|panda)(?: \w+)?|(?:this is|it s|its) [a-z]+(?: [a-z]+)?(?: here)?|[a-z]+ here|{_STATION}(?: \w+)? (?:to|calling) {_STATION}(?: \w+)?"
               rf"|(?:robot|arm|franka|panda),? (?:this is|it s) [a-z]+")

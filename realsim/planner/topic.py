@@ -16,7 +16,7 @@ from realsim.planner import casual
 from realsim.planner.lexicon import AVOID, RELATION_AT, STATEMENT_VERB, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
-__all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive"]
+__all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive", "whichever_of"]
 
 TOPIC = "topic: "  # a clause that only names what the next clause's "it" means
 
@@ -71,6 +71,16 @@ def choice(parts: list[str]) -> list[str]:
     return parts
 
 
+_WHICHEVER_OF = re.compile(r"\b(?:whichever|which ever)(?: one)? (of|out of|between) ((?:the |that |this )?[a-z ]+? (?:and|or) (?:the |that |this )?[a-z ]+?)"
+                           r" (?:is|s) ([a-z ]+?)(?=,)")
+
+
+def whichever_of(text: str) -> str:
+    """"whichever of the banana and the mug is closer to me, push that one ..." as the partitive
+    "of the banana and the mug, the one closer to me, push that one ...": the pick among those two."""
+    return _WHICHEVER_OF.sub(lambda m: f"{m.group(1)} {_and(m.group(2))}, the one {m.group(3)}", text)
+
+
 def _and(listed: str) -> str:
     return re.sub(r"\s*,\s*|\s+or\s+", " and ", listed)
 
@@ -82,7 +92,7 @@ def partitive(parts: list[str]) -> list[str]:
     if len(parts) < 2:
         return parts
     while len(parts) > 2 and re.match(r"(?:of|out of|among|from among|between) ", parts[0]) and re.fullmatch(r"(?:(?:the|that|this) )?[a-z ]+", parts[1]) \
-            and not _VERB.match(parts[1]):  # "of the marker and the meat can": the list was split at its "and"
+            and not _VERB.match(parts[1]) and not re.match(r"(?:the one|whichever|which ever)\b", parts[1]):  # "of the marker and the meat can": split at "and"
         parts = [f"{parts[0]} and {parts[1]}", *parts[2:]]
     m = re.fullmatch(r"(of|out of|among|from among|between|(?:you )?see|look at|notice|(?:so |ok |okay )?(?:there|here)(?: are| is| s)?|we have|i have|i see) "
                      r"((?:all )?(?:the |these |those )?(?:two |three |four |both )?)([a-z ]+)", parts[0])
@@ -97,6 +107,7 @@ def partitive(parts: list[str]) -> list[str]:
                     if not re.match(r"(?:closer|nearer) to\b", r.group(0))
                     and not re.match(r"\s*(?:me|you|the robot|(?:the )?(?:far |very )?(?:left|right|front|back|middle|centre|center)\b(?! of))", parts[1][r.end():])),
                    len(parts[1]))
+        cut = min(cut, _way_start(parts[1], one.end()))  # "push the one closer to me | forward 4 cm"
         phrase = compared(parts[1][start:cut].strip())  # "the one further left | on the plate"
         return [f"{parts[1][:start]}{phrase} among {listed} {parts[1][cut:].strip()}".strip(), *parts[2:]]
     if m and restricts and (" and " in f" {m.group(3)} " or not re.search(r"\bone\b", parts[1])):
@@ -111,6 +122,19 @@ def partitive(parts: list[str]) -> list[str]:
 _DIRECTION = r"(?:left|right|forward|forwards|back|backward|backwards|away|toward (?:me|you)|towards (?:me|you)|closer)"
 _WAY = re.compile(rf"(?:(?:by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) )?(?:to the )?{_DIRECTION}"
                   rf"(?: (?:and |by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*))?")  # "10 cm right", "left 5 cm"
+
+
+# a way said after the pick: a distance, or a direction that no comparative or article makes part of the pick
+_WAY_START = re.compile(r"\s(?:(?:by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b|(?:forwards?|backwards?|back|away|left|right)\b(?! of))")
+_PICK_WORD = ("further", "farther", "more", "most", "the", "far", "very", "to", "on", "at", "in")
+
+
+def _way_start(text: str, start: int) -> int:
+    """Where a way ("forward 4 cm", "5 cm to the left") begins in ``text`` after ``start``, or its end."""
+    for m in _WAY_START.finditer(text, start):
+        if not text[: m.start()].endswith(_PICK_WORD):  # "the one further back", "the one on the left": which one
+            return m.start()
+    return len(text)
 
 
 def joined(parts: list[str], verb_re: re.Pattern[str]) -> list[str]:

@@ -5,7 +5,8 @@ Rule: a wish frame (it would be nice / lovely / great if ..., I'd like / love / 
 I was hoping ...) whose object is a noun phrase with a determiner and whose end is a place word
 and a target is the request to put that object there, as is a question whether it could go there ("could the
 can perhaps go in front of the box?", "is there any way the mug could end up ..."). A wish without a place ("I'd like the mug")
-is left alone: it is read as the take it asks for, or refused.
+is left alone: it is read as the take it asks for, or refused. Two things wished swapped ("I'd like the mug and
+the bowl to have traded places") are the swap.
 """
 
 from __future__ import annotations
@@ -50,11 +51,15 @@ _ASKED = (re.compile(rf"{_START}(?:(?:but|and|so) )?(?:(?:is there (?:any|a|some
 _BETTER = re.compile(rf"{_START}(?:(?:but|and|so|honestly|really) )?(it|they|them|{_WHOLE_THING}) (?:would|d|will|might|could) (?:look|be|sit|fit|feel|go)(?: so| much| a lot| far| way)?"
                      r" (?:better|nicer|best|good|great|lovely|neater|tidier|happier|right|perfect)(?: (?:standing|sitting|resting|placed|put|set|lying))?"
                      rf"(?: (?:if (?:it|they) (?:were|was|went|sat|stood)|(?:over )?there|instead))? (?=(?:{_PLACE}) )")
+# two things wished swapped: "I'd like the mug and the bowl to have traded places", "I want them switched round"
+_SWAPPED = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so) )?(?:{'|'.join(_FRAMES)}){_THING} (?:to )?(?:have )?(?:been )?"
+                      r"(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)(?: (?:places|positions|spots|round|around|over))?\b")
 _WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so|though|although|yet) )?(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
 
 def as_request(text: str) -> str:
     """``text`` (lower case) with every wish for an object to be at a place turned into "put X ..."."""
+    text = _SWAPPED.sub(lambda m: f"swap {m.group(1)}", text)
     text = _WISH.sub(lambda m: f"put {m.group(1)} ", text)
     text = _BETTER.sub(lambda m: f"put {m.group(1)} ", text)
     for asked in _ASKED:
