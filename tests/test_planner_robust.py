@@ -8,6 +8,7 @@ from test_planner_rules import CLUTTER, call_lines
 
 from realsim.errors import InputError
 from realsim.planner import RulePlanner
+from realsim.planner.types import ObjectInfo
 from realsim.planner.typos import correct, distance
 
 
@@ -199,3 +200,25 @@ def test_in_it_is_never_a_thing_that_holds_nothing() -> None:
 ])
 def test_empty_conditions(sentence: str, lines: list[str]) -> None:
     assert [c.text() for c in RulePlanner().plan(sentence, _HELD).calls] == lines
+
+
+TWO_CANS = [
+    ObjectInfo("obj1_can", "can", (), (0.40, 0.10, 0.06), (0.05, 0.05, 0.12), "white"),
+    ObjectInfo("obj2_can", "can", (), (0.40, -0.10, 0.06), (0.08, 0.08, 0.12), "white"),
+    ObjectInfo("obj3_box", "box", (), (0.55, 0.0, 0.03), (0.12, 0.2, 0.06), "red"),
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), [
+    ("lift the skinny can", ["grasp('obj1_can')"]),  # the narrower footprint
+    ("lift the fatter can", ["grasp('obj2_can')"]),
+    ("lift the thinnest white thing", ["grasp('obj1_can')"]),
+    ("lift the pale slim can", ["grasp('obj1_can')"]),  # "pale" alone: whitish
+])
+def test_width_and_pale_words(sentence: str, lines: list[str]) -> None:
+    assert call_lines(sentence, TWO_CANS) == lines
+
+
+def test_a_shade_only_qualifies_its_colour() -> None:
+    assert call_lines("lift the pale yellow banana") == call_lines("lift the yellow banana")
+    assert call_lines("lift the dark-red cube") == ["grasp('obj3_cube')"]

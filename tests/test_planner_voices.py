@@ -75,6 +75,7 @@ def test_a_statement_ending_in_so_is_not_a_purpose() -> None:
     ("Station two to robot, come in. Put the banana in the bowl. Over and out.", "put the banana in the bowl"),
     ("Robot, Kim here, over. Lift the strawberry. Copy?", "lift the strawberry"),
     ("Tuck the banana in behind the bowl.", "put the banana behind the bowl"),
+    ("Look, see the strawberry? The robot's gonna put it in the bowl.", "put the strawberry in the bowl"),  # told to someone else
     ("Base to arm, stand by for tasking... banana into the bowl, then return to home position. Over and out.", "put the banana in the bowl, then go home"),
     ("Execute a grasp on the banana, place pose inside the bowl, then return to nominal.", "pick up the banana, put it in the bowl, then go home"),
     ("Grasp target is the strawberry. Place pose on the -y side of the bowl.", "pick up the strawberry, put it to the right of the bowl"),

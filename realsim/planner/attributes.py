@@ -82,6 +82,8 @@ def _volume(o: ObjectInfo, word: str) -> float:
         return float(o.size[2])
     if axis == -1:
         return float(max(o.size))
+    if axis == -2:
+        return float(min(o.size[:2]))
     return float(np.prod(o.size))
 
 

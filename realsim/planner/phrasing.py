@@ -44,7 +44,7 @@ from realsim.planner.lexicon import (
     relation_start,
 )
 from realsim.planner.refine import REFINE
-from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SMALL, VAGUE_DISTANCES
+from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SHADES, SMALL, VAGUE_DISTANCES
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
@@ -170,6 +170,9 @@ def clean(command: str) -> str:
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
+    text = re.sub(rf"\b(?:{'|'.join(SHADES)})[ -](?=(?:{'|'.join(COLOR_WORDS)})\b)", "", text)  # "pale yellow": yellow
+    # what the robot is said to be about to do, told to someone else: "the robot's gonna put it in the bowl"
+    text = re.sub(rf"(?:(?<=^)|(?<=[.,;!?] ))(?:now |so |and )?(?:the |our |this |my )?(?:robot|arm|franka|panda)(?:'s|'ll| is| s| will| ll)? (?:gonna|going to|about to|will) (?={VERB_START.pattern})", "", text)
     text = re.sub(r"(?:\bover by|(?:^|(?<=[,.;!?] ))by)(?= (?:the|that|this|my|your) )", "next to", text)  # "banana, (over) by the bowl"
     text = re.sub(r"\b((?:\w+ )?\w+) up[.!,]\s*(?:up )?off the (?:deck|table|floor|ground|surface|counter|desk)\b", r"\1 up", text)  # "marker up! off the deck!": lifted
     text = re.sub(r"\b(?:finish|end|wrap(?: it| things)? up|conclude)(?: off| up)? by (?=\w+ing\b)", "", text)  # "and finish by going back home"

@@ -62,8 +62,8 @@ LOCATOR_RELATIONS = (
 _TWO_TONE = re.compile(rf"\b({'|'.join(COLOR_WORDS)})(?:-| and |-and-)({'|'.join(COLOR_WORDS)}) (\w+)")
 # what a thing is made of or its state: words the scene records nothing of, never a noun
 UNCHECKED = frozenset({"plastic", "metal", "metallic", "aluminium", "aluminum", "steel", "wooden", "wood", "cardboard", "paper", "ceramic",
-                       "porcelain", "rubber", "fake", "real", "empty", "full", "clean", "dirty", "new", "old", "shiny", "matte", "chunky",
-                       "skinny", "thin", "thick", "fat", "deep", "shallow", "pointy", "plain", "squeezy", "squeeze"})
+                       "porcelain", "rubber", "fake", "real", "empty", "full", "clean", "dirty", "new", "old", "shiny", "matte",
+                       "deep", "shallow", "pointy", "plain", "squeezy", "squeeze"})
 # "the right one", "the bigger one", "the one on the left": said of several just named, one of them
 _AMONG_NAMED = re.compile(r"(?:the )?(?:(?:left|right|front|back|near|far|middle|first|second|third|last|\w+er|\w+est|\w+most)(?: hand)? one"
                           r"|one (?:on|at|in) the (?:left|right|front|back|middle)(?: side)?)")

@@ -19,7 +19,10 @@ COLOR_WORDS: dict[str, str] = {**{c: c for c in COLORS}, "grey": "gray", "silver
                                "beige": "brown", "tan": "brown", "violet": "purple", "crimson": "red", "navy": "blue", "maroon": "red",
                                "reddish": "red", "greenish": "green", "bluish": "blue", "blueish": "blue", "yellowish": "yellow",
                                "orangish": "orange", "orangey": "orange", "purplish": "purple", "pinkish": "pink", "blackish": "black",
-                               "whitish": "white", "greyish": "gray", "grayish": "gray", "brownish": "brown"}
+                               "whitish": "white", "greyish": "gray", "grayish": "gray", "brownish": "brown",
+                               "pale": "white", "cream": "white", "ivory": "white"}  # "pale" alone: whitish ("pale yellow": yellow, see SHADES)
+# a shade said before a colour only qualifies it: "pale yellow" is yellow, "dark red" red
+SHADES = ("pale", "light", "dark", "bright", "deep", "soft", "dull", "off")
 # the colours in the languages people mix in (accents are folded before reading); never a misspelling's target
 FOREIGN_COLOR_WORDS: dict[str, str] = {"rouge": "red", "rojo": "red", "roja": "red", "rosso": "red", "rossa": "red", "vermelho": "red",
                                "bleu": "blue", "bleue": "blue", "azul": "blue", "blau": "blue", "vert": "green", "verte": "green", "verde": "green",
@@ -29,10 +32,13 @@ FOREIGN_COLOR_WORDS: dict[str, str] = {"rouge": "red", "rojo": "red", "roja": "r
                                "negra": "black", "schwarz": "black", "nero": "black", "nera": "black", "naranja": "orange", "rosa": "pink"}
 COLOR_WORDS.update(FOREIGN_COLOR_WORDS)
 
-BIG = ("big", "large", "bigger", "larger", "biggest", "largest", "huge", "giant", "tall", "taller", "tallest", "high", "long", "longer", "longest")
-SMALL = ("small", "smaller", "smallest", "little", "tiny", "mini", "short", "shorter", "shortest", "low")
+_WIDE = ("wide", "wider", "widest", "fat", "fatter", "fattest", "thick", "thicker", "thickest", "chunky", "broad", "broader", "broadest")
+_NARROW = ("skinny", "skinnier", "skinniest", "thin", "thinner", "thinnest", "slim", "slimmer", "slimmest", "narrow", "narrower", "narrowest", "slender")
+BIG = ("big", "large", "bigger", "larger", "biggest", "largest", "huge", "giant", "tall", "taller", "tallest", "high", "long", "longer", "longest", *_WIDE)
+SMALL = ("small", "smaller", "smallest", "little", "tiny", "mini", "short", "shorter", "shortest", "low", *_NARROW)
 SIZE_AXIS = {"tall": 2, "taller": 2, "tallest": 2, "high": 2, "short": 2, "shorter": 2, "shortest": 2, "low": 2,
-             "long": -1, "longer": -1, "longest": -1}  # -1: the longest extent; absent: volume
+             "long": -1, "longer": -1, "longest": -1,
+             **{w: -2 for w in (*_WIDE, *_NARROW)}}  # -1: the longest extent; -2: the narrower side of the footprint; absent: volume
 
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5}
 NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
