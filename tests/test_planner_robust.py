@@ -19,6 +19,9 @@ from realsim.planner.typos import correct, distance
     ("slide the red cube -- sorry, the blue cube -- slide the blue cube to the left by 4 cm", ["push('obj4_cube', 'left', 0.04)"]),
     ("put the strawberry, no, the banana, i mean the banana, put it behind the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'behind')"]),
     ("pick up the red cube, or rather, the green cube", ["grasp('obj5_cube')"]),
+    # a new request said to be in the old one's place: the old one is not done ("take it out again" would undo it)
+    ("pick up the strawberry, actually no, just push it 3 cm left", ["push('obj8_strawberry', 'left', 0.03)"]),
+    ("lift the banana. no wait, slide it left 3 cm instead", ["push('obj7_banana', 'left', 0.03)"]),
 ])
 def test_restarted_commands(sentence: str, lines: list[str]) -> None:
     assert call_lines(sentence) == lines

@@ -23,6 +23,8 @@ _MARKER = re.compile(rf"(?:^|(?<=[\s,]))({_MARKERS})(?=[\s,])")
 _TRAILING = re.compile(rf"(?:[\s,;.!?-]*\b(?:{_MARKERS}))+[\s,;.!?-]*$")  # "... to the left. hang on," before the repair itself
 # the speaker saying the whole last request was turned round, before saying it again
 _BACKWARDS = re.compile(r"[,.;\s]*(?:i |i ve |you )?(?:said|got|had|have|put|did) (?:that|it|this) (?:backwards|backward|wrong|the wrong way(?: round| around)?|mixed up|the other way(?: round| around)?)[,.;\s]*$")
+# the thing a request acts on: its first noun phrase, up to a place word or the end
+_FIRST_THING = re.compile(r"\b((?:the|that|this|my|your) [a-z ]+?)(?=\s+(?:in|into|on|onto|next|behind|beside|to|toward|towards|left|right|from|off|up|down|out)\b|\s*[,.;!?]|$)")
 _BY = re.compile(r"(?<![a-z])by(?= (?:the|that|this|my|your|it)\b)")  # "by the mug": a place too, where a relation pattern leaves "by" out
 _WEAK = re.compile(r"(?:uh+|um+|er+|erm|hmm+)")
 _AUDIENCE = r"(?:class|students|everyone|everybody|kids|children|guys|folks|team|you all|all of you)"
@@ -72,10 +74,14 @@ def _one_repair(text: str, verb: re.Pattern[str], relation: re.Pattern[str]) -> 
             return f"{before[:start]}{said}".strip()
         if verb.match(said) and not weak:  # "put the mug in the bowl no sorry just pick up the bowl"
             # "..., actually no, take it out again": an undo of what was done, so what was done stays
-            # unless the speaker cancelled it ("scratch that") or the new command names its own object first
+            # unless the speaker cancelled it ("scratch that"), said the new one is instead ("no, just slide it")
+            # or the new command names its own object first
             cancelled = re.match(r"(?:scratch|strike|forget|cancel|ignore) that|let me rephrase|correction", m.group(1))
             undo = re.match(r"[a-z ]*?\b(?:it|them)\b", said) and not re.match(r"[a-z ]*?\b(?:the|a|an|this|that)\s[a-z ]*?\b(?:it|them)\b", said)
-            return f"{before}, {said}" if undo and not cancelled else said
+            instead = re.match(r"(?:just|rather|instead)\b", after) or re.search(r"\binstead\W*$", said)  # "actually no, just slide it": in its place
+            if undo and instead and (thing := _FIRST_THING.search(before[_last_verb(before, verb):])):
+                return f"{thing.group(1)}, {said}"  # "pick up the can - no, just slide it": the can, slid instead
+            return f"{before}, {said}" if undo and not cancelled and not instead else said
         if relation.match(said):  # "the soup can in the mug no no in the bowl"
             places = sorted([*relation.finditer(before), *_BY.finditer(before)], key=lambda r: r.start())  # "put it by the mug. no, between ..."
             if places:
