@@ -17,6 +17,7 @@ from realsim.planner.vocab import COLOR_WORDS, GENERIC, NUMBERS, is_plural, sing
 
 __all__ = ["mentioned", "named_alone"]
 
+_AMOUNT = re.compile(r"\d+(?:\.\d+)?\s*(?:cm|mm|in|inch\w*|centimet\w*|millimet\w*|degrees?)\b")  # not "at clock 11"
 _LONGEST = 6  # words in a noun phrase with its colour, size and locator words
 _JOINS = {"and", "or", "with", "then"}
 _WHERE_ENDS = {"back", "front", "left", "right", "middle", "centre", "center"}  # "the thing farthest back": a locator ends the phrase
@@ -95,7 +96,7 @@ def _asked_which(text: str, p: Parser) -> list[ObjectInfo]:
 def named_alone(text: str, p: Parser) -> bool:
     """Whether ``text`` is talk that names things and asks nothing of them; those things are then
     what "it" or "them" means. A request ("put the teapot away") is never talk."""
-    if VERB_START.match(cleaned(text)) or re.search(r"\d", text):  # an amount ("foam brick 4 cm to the right") asks something
+    if VERB_START.match(cleaned(text)) or _AMOUNT.search(text):  # an amount ("foam brick 4 cm to the right") asks something
         return False
     found = mentioned(text, p)
     if found:
