@@ -419,7 +419,7 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
-        if params.fold_max_angle > 0:  # pieces of one body that meet in a shallow fold (before colour tells bodies apart)
+        if params.fold_max_angle is not None:  # pieces of one body that meet in a shallow fold (before colour tells bodies apart)
             obj_labels = join_shallow_folds(obj_labels, points, normals, grid_shape,
                                             params.jump_distance if jump_limits is None else jump_limits, params.fold_max_angle,
                                             params.fold_window, params.min_contact_links, params.fold_continuous_share)
