@@ -35,6 +35,7 @@ from realsim.perception.object_relations import base_height, filter_by_size, sup
 from realsim.perception.occlusion_bridge import occluded_pairs, view_axis
 from realsim.perception.pixel_area import pixel_areas
 from realsim.perception.plane_patches import connected_groups
+from realsim.perception.shallow_folds import join_shallow_folds
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
@@ -418,6 +419,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
     obj_labels[ids] = np.where(size[obj] >= params.min_object_points, obj, -1)
     if axis is not None and grid_shape is not None:  # pieces of one object parted by a nearer one
         obj_labels = _bridge_occlusions(points, obj_labels, normals, grid_shape, axis, params)
+        if params.fold_max_angle is not None:  # pieces of one body that meet in a shallow fold (before colour tells bodies apart)
+            obj_labels = join_shallow_folds(obj_labels, points, normals, grid_shape,
+                                            params.jump_distance if jump_limits is None else jump_limits, params.fold_max_angle,
+                                            params.fold_window, params.min_contact_links, params.fold_continuous_share)
         if colors is not None:  # touching objects of two colours that meet in a fold
             obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points, normals[ids],
                                               view_points=points[ids])

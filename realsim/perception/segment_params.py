@@ -48,6 +48,10 @@ class SegmentParams:
     max_concave_fraction: float = 0.5  # regions whose border is more concave than this stay apart
     contact_cut_cell: float = 0.015  # m: clouds this fine re-cut touching clusters at concave folds
     # (realsim.perception.contact_cut), and no coarser than segment_scene.fold_resolution (8 mm by default)
+    fold_max_angle: float | None = 40.0  # camera views: touching segments whose surfaces turn less than this (degrees) across
+    # a depth-continuous border are one body's pieces (realsim.perception.shallow_folds; None: off)
+    fold_window: int = 6  # ... each side's surface the mean normal of its pixels this many pixels around the border
+    fold_continuous_share: float = 0.5  # ... when at least this share of the border's pixel links is depth-continuous
     # objects
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller segments are never objects by themselves
