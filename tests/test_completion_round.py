@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from realsim.completion import CompletionParams
 from realsim.completion.circles import corner_rms, fit_circle
-from realsim.completion.revolution import round_axis, silhouette_circle
+from realsim.completion.revolution import complete_revolved, revolved_profile, round_axis, silhouette_circle
 
 CAMERA = np.array([-1.0, -0.2])
 VIEW_DEG = float(np.degrees(np.arctan2(CAMERA[1], CAMERA[0])))  # a turn that lays a body's length along the line of sight
@@ -107,3 +109,62 @@ def test_an_oval_turned_across_the_line_of_sight_is_not_round() -> None:
         assert round_axis(_seen(_ellipse((0.045, 0.03), broadside + turn), seed=turn), 0.0, 0.08, CompletionParams(), CAMERA) is None
     for seed in range(3):  # a round can is still round from anywhere
         assert round_axis(_seen(_ellipse((0.033, 0.033), 0.0), seed=seed), 0.0, 0.08, CompletionParams(), CAMERA) is not None
+
+
+def _berry(z: np.ndarray) -> np.ndarray:
+    """A round body 46 mm tall (a strawberry on its base): 22.5 mm in radius 20 mm up, 10 mm at its top, 8 at its foot."""
+    return np.interp(z, np.linspace(0.0023, 0.0434, 10), [0.0125, 0.0183, 0.021, 0.0223, 0.0225, 0.0219, 0.0207, 0.0188, 0.0157, 0.0102])
+
+
+def _front_of_berry(seed: int, lowest: float = 0.0) -> np.ndarray:
+    """What a camera toward CAMERA sees of the berry: the near half of its side above ``lowest`` and its
+    top, lumpy (1.5 mm along the normal, a lumpy skin bends the near arc) and 1 mm noisy along the line of sight."""
+    rng = np.random.default_rng(seed)
+    toward = np.arctan2(CAMERA[1], CAMERA[0])
+    a = toward + rng.uniform(-np.pi / 2, np.pi / 2, 4000)
+    z = rng.uniform(lowest, 0.046, 4000)
+    r = _berry(z) + 0.001 * np.sin(5 * a) * np.sin(np.pi * z / 0.046)
+    pts = np.column_stack([r * np.cos(a), r * np.sin(a), z])
+    sight = np.append(CAMERA / np.linalg.norm(CAMERA), 0.0)
+    return pts + rng.normal(0, 0.0005, (len(pts), 1)) * sight
+
+
+def _berry_iou(solid) -> float:
+    axes = [np.arange(-0.03, 0.03, 0.001), np.arange(-0.03, 0.03, 0.001), np.arange(0.0005, 0.046, 0.001)]
+    grid = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+    truth = np.hypot(grid[:, 0], grid[:, 1]) <= _berry(grid[:, 2])
+    inside = np.zeros(len(grid), bool)
+    for p in solid.pieces:
+        n, o = p.face_normals, p.triangles[:, 0, :]
+        inside |= np.all(grid @ n.T - np.einsum("fk,fk->f", o, n)[None, :] <= 1e-9, axis=1)
+    return float(np.count_nonzero(inside & truth)) / max(1, np.count_nonzero(inside | truth))
+
+
+def test_a_round_profile_takes_its_axis_from_the_silhouette() -> None:
+    # the circle through the lumpy near arc sits toward the camera; the grazing lines of each band are abreast of the axis
+    params = replace(CompletionParams(), revolution_underside=False)
+    for seed in (0, 1, 2):
+        pts = _front_of_berry(seed, lowest=0.005)
+        with_axis = complete_revolved(pts, 0.0, 0.046, params, CAMERA)
+        without = complete_revolved(pts, 0.0, 0.046, replace(params, revolution_silhouette=False), CAMERA)
+        assert with_axis is not None and without is not None and not with_axis.straight
+        assert np.linalg.norm(with_axis.centre) < 0.0007 < 0.0012 < np.linalg.norm(without.centre)
+        assert _berry_iou(with_axis) > _berry_iou(without) + 0.015
+
+
+def test_an_unseen_round_underside_mirrors_the_upper_side() -> None:
+    # seen only down to 4 mm (the camera above loses the underside turning in): below, no wider than the upper side's mirror
+    turn_in = CompletionParams().straight_profile_share
+    pts = _front_of_berry(0, lowest=0.005)
+    z, r = revolved_profile(pts, np.zeros(2), 0.0225, 0.0, 0.046, 10, turn_in=turn_in)
+    _, flat = revolved_profile(pts, np.zeros(2), 0.0225, 0.0, 0.046, 10)
+    assert r[0] < flat[0] - 0.003 and abs(r[0] - _berry(z[:1])[0]) < abs(flat[0] - _berry(z[:1])[0])
+    assert np.allclose(r[z > 0.007], flat[z > 0.007])  # the seen profile is kept
+    for seed in (0, 1, 2):  # and the completed solid is nearer the truth
+        pts = _front_of_berry(seed, lowest=0.005)
+        mirrored = complete_revolved(pts, 0.0, 0.046, CompletionParams(), CAMERA)
+        extruded = complete_revolved(pts, 0.0, 0.046, replace(CompletionParams(), revolution_underside=False), CAMERA)
+        assert mirrored is not None and extruded is not None and _berry_iou(mirrored) > _berry_iou(extruded) + 0.015
+    column = pts[pts[:, 2] >= 0.02]  # seen only from its widest up (a neighbour hides its foot): nothing shows it turning in
+    assert np.allclose(revolved_profile(column, np.zeros(2), 0.0225, 0.0, 0.046, 10, turn_in=turn_in)[1],
+                       revolved_profile(column, np.zeros(2), 0.0225, 0.0, 0.046, 10)[1])

@@ -22,6 +22,8 @@ class CompletionParams:
     cylinder_sections: int = 32
     revolution_bands: int = 10  # height bands of a revolved profile (one convex frustum each)
     straight_profile_share: float = 0.12  # band radii within this share of the radius: a cylinder (one convex piece)
+    revolution_silhouette: bool = True  # a profile that is not straight takes its axis from the silhouette band by band (the near arc's circle is pulled toward the camera)
+    revolution_underside: bool = True  # a revolved profile seen turning in below its widest: its unseen underside mirrors the upper side
     revolution_percentile: float = 75.0  # a band's radius: this percentile of its points' distances from the axis
     silhouette_min_share: float = 0.85  # a round body's silhouette is at least this share of its fitted diameter
     max_foreign_fraction: float = 0.03  # completed shape may contain this share of a neighbour's points

@@ -95,6 +95,28 @@ def silhouette_circle(side: np.ndarray, centre: np.ndarray, radius: float, camer
     return axis_s * d + mid * lateral, r
 
 
+def silhouette_axis(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
+                    camera_xy: np.ndarray, bands: int, min_bands: int = 3) -> tuple[np.ndarray, float] | None:
+    """The axis of a round body whose profile is not straight (a strawberry, a bottle's shoulder), from
+    its silhouette band by band: each height band of the side (below the top quarter, which holds a cap)
+    its :func:`silhouette_circle`, the axis the median of their centres and the radius the largest of
+    theirs. A circle fitted to the near arc alone is pulled toward the camera and shrunk (a lumpy side
+    seen over less than half a turn: a 22 mm strawberry fitted 5 mm short, its far side 6-13 mm
+    short). None when fewer than ``min_bands`` bands show both grazing lines (``centre``, ``radius``:
+    the fitted circle, for the line of sight)."""
+    side = points[:, 2] < top_z - 0.25 * (top_z - base_z)
+    edges = np.linspace(base_z, top_z, bands + 1)
+    circles = []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        band = points[side & (points[:, 2] >= lo) & (points[:, 2] < hi)]
+        seen = silhouette_circle(band, centre, radius, camera_xy) if len(band) else None
+        if seen is not None:
+            circles.append(seen)
+    if len(circles) < min_bands:
+        return None
+    return np.median([c for c, _ in circles], axis=0), float(max(r for _, r in circles))
+
+
 def _band_rms(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: float, bands: int) -> float:
     """RMS distance of the points from the circle about ``centre`` through their own height band (a
     solid of revolution: each band a circle about the common axis, whatever the profile)."""
@@ -108,9 +130,13 @@ def _band_rms(points: np.ndarray, centre: np.ndarray, base_z: float, top_z: floa
 
 
 def revolved_profile(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
-                     bands: int, percentile: float = 75.0) -> tuple[np.ndarray, np.ndarray]:
+                     bands: int, percentile: float = 75.0, turn_in: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Outer radius (z, r) at the band boundaries: a high ``percentile`` of the points' distances from
-    the axis per height band (a handle or spout, a minority of a band's points, is left out), bands without evidence interpolated, at most the fitted radius + 10 %."""
+    the axis per height band (a handle or spout, a minority of a band's points, is left out), bands without evidence interpolated, at most the fitted radius + 10 %.
+    With ``turn_in``: when the lowest band seen is narrower than the widest by more than that share (the
+    side was seen turning in below its widest: a round underside the camera above loses sight of), the
+    unseen profile below it is no wider than its mirror image about the widest band's middle (the
+    underside mirrors the upper side, as a lying body's does: :mod:`realsim.completion.underside`)."""
     r = np.linalg.norm(points[:, :2] - centre, axis=1)
     edges = np.linspace(base_z, top_z, bands + 1)
     mids = (edges[:-1] + edges[1:]) / 2
@@ -124,6 +150,12 @@ def revolved_profile(points: np.ndarray, centre: np.ndarray, radius: float, base
         return edges, np.full(bands + 1, radius)
     radii = np.clip(np.interp(mids, mids[good], radii[good]), 0.15 * radius, 1.1 * radius)
     at_edges = np.interp(edges, mids, radii)  # ends take their band's radius
+    seen = np.flatnonzero(good)
+    widest = int(seen[np.argmax(radii[seen])])
+    if turn_in is not None and seen[0] < widest and radii[seen[0]] < (1.0 - turn_in) * radii[widest]:
+        below = edges < mids[seen[0]]  # the unseen underside
+        mirrored = np.interp(np.minimum(2.0 * mids[widest] - edges[below], top_z), edges, at_edges)
+        at_edges[below] = np.minimum(at_edges[below], mirrored)
     return edges, at_edges
 
 
@@ -139,7 +171,8 @@ def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: C
     if axis is None:
         return None
     centre, radius = axis
-    z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile)
+    turn_in = params.straight_profile_share if params.revolution_underside else None
+    z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile, turn_in)
     n = params.cylinder_sections
     if float(np.ptp(r[1:-1])) <= params.straight_profile_share * radius:  # a straight side: the fitted cylinder
         if camera_xy is not None and (seen := silhouette_circle(points[points[:, 2] < top_z - 0.25 * (top_z - base_z)], centre, radius, camera_xy)):
@@ -148,6 +181,9 @@ def complete_revolved(points: np.ndarray, base_z: float, top_z: float, params: C
         cylinder = trimesh.creation.cylinder(radius=radius, height=height, sections=n)
         cylinder.apply_translation([centre[0], centre[1], base_z + height / 2])
         return Revolved([cylinder], cylinder, cylinder, centre, radius, straight=True)
+    if params.revolution_silhouette and camera_xy is not None and (seen := silhouette_axis(points, centre, radius, base_z, top_z, camera_xy, params.revolution_bands)):
+        centre, radius = seen
+        z, r = revolved_profile(points, centre, radius, base_z, top_z, params.revolution_bands, params.revolution_percentile, turn_in)
     pieces = [trimesh_hull(np.vstack([_ring(float(r[i]), float(z[i]), centre, n), _ring(float(r[i + 1]), float(z[i + 1]), centre, n)]))
               for i in range(len(z) - 1)]
     line = np.vstack([[0.0, base_z], np.column_stack([r, z]), [0.0, top_z]])
