@@ -17,7 +17,10 @@ from realsim.planner.vocab import COLOR_WORDS, GENERIC, NUMBERS, is_plural, sing
 
 __all__ = ["mentioned", "named_alone"]
 
-_AMOUNT = re.compile(r"\d+(?:\.\d+)?\s*(?:cm|mm|in|inch\w*|centimet\w*|millimet\w*|degrees?)\b")  # not "at clock 11"
+_UNIT = r"\d+(?:\.\d+)?\s*(?:cm|mm|in|inch\w*|centimet\w*|millimet\w*)\b"
+_WAYS = r"(?:left|right|forwards?|backwards?|back|away|closer|nearer|further|farther)\b"
+# a way with its amount ("foam brick 4 cm to the right"), not a clock position ("at clock 11") nor talk ("hasn't moved 1 inch")
+_AMOUNT = re.compile(rf"{_UNIT}\s+(?:(?:to|towards?|toward) (?:the )?)?{_WAYS}|{_WAYS}\s+(?:by\s+)?{_UNIT}")
 _LONGEST = 6  # words in a noun phrase with its colour, size and locator words
 _JOINS = {"and", "or", "with", "then"}
 _WHERE_ENDS = {"back", "front", "left", "right", "middle", "centre", "center"}  # "the thing farthest back": a locator ends the phrase
