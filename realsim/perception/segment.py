@@ -35,8 +35,8 @@ from realsim.perception.object_relations import base_height, filter_by_size, sup
 from realsim.perception.occlusion_bridge import occluded_pairs, view_axis
 from realsim.perception.pixel_area import pixel_areas
 from realsim.perception.plane_patches import connected_groups
-from realsim.perception.shallow_folds import join_shallow_folds
 from realsim.perception.segment_params import SegmentParams, SegmentResult
+from realsim.perception.shallow_folds import join_shallow_folds
 from realsim.perception.stack_split import split_resting
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 from realsim.perception.supervoxels import link_components as _components
