@@ -590,14 +590,6 @@ def bench_plans(args: argparse.Namespace) -> int:
             continue
         try:
             plan = make_planner(args.planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw(), robot_base=sim.robot_base())
-            if plan.calls is not None:  # as `realsim run` does before anything moves
-                try:
-                    sim.check_holdable(plan.calls)
-                except InputError as exc:
-                    if spec != "refuse":  # read right, but asks the hand to hold what it cannot: counted apart
-                        unholdable.append((scene, sentence, str(exc)))
-                        continue
-                    raise
             acted = (set(plan.calls.acted_on()) if plan.calls is not None
                      else set(re.findall(r"(?:grasp|place\w*|push)\(['\"]([^'\"]+)['\"]", plan.program)))
             # "at X" alone (X kept where it is): met by never acting on X, so X need not be acted on
@@ -610,6 +602,16 @@ def bench_plans(args: argparse.Namespace) -> int:
             missing = sorted(g.describe() for g in goals if not any(_same_goal(g, h) for h in planned))
             if ok and missing:  # the right objects, but another relation, side, direction or distance
                 ok, got = False, f"{got}; goals {sorted(g.describe() for g in planned)} lack {missing}"
+            if plan.calls is not None:  # as `realsim run` does before anything moves
+                try:
+                    sim.check_holdable(plan.calls)
+                except InputError as exc:
+                    if ok:  # read right, but asks the hand to hold what it cannot: counted apart
+                        unholdable.append((scene, sentence, str(exc)))
+                        continue
+                    if spec == "refuse":
+                        raise
+                    got = f"{got} (and then declined: {exc})"
         except InputError as exc:
             ok, got = spec == "refuse", f"refused: {exc}"
         right += ok
