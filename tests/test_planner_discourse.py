@@ -130,6 +130,7 @@ def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
     ("of the bowl and the banana, push the one closer to me 3 cm left", ["push('obj6_bowl', 'left', 0.03)"]),
     ("whichever of the banana and the strawberry is further from me, push that one forward 4 cm", ["push('obj7_banana', 'forward', 0.04)"]),
     ("Between the bowl and the banana, the one that's closer to me should get pushed 5 cm to the right.", ["push('obj6_bowl', 'right', 0.05)"]),
+    ("Whichever is closer to you, the bowl or the banana, that one goes behind the green cube.", ["place_beside('obj6_bowl', 'obj5_cube', 'behind')"]),
     # "there's X ... it", "there are two Xs ... the one ..."
     ("there's a banana on the table. put it in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("There are two soda cans. Put the one further right in the bowl.", ["place_in('obj2_soda_can', 'obj6_bowl')"]),
@@ -139,6 +140,14 @@ def test_terse_pieces_and_enumerators(sentence: str, lines: list[str]) -> None:
 ])
 def test_comparatives_existentials_and_closings(sentence: str, lines: list[str]) -> None:
     assert calls(sentence) == lines
+
+
+def test_the_big_one_in_a_locator_is_of_the_kind_just_named() -> None:
+    """"take the small box off the big one": the big box it stands on, never the biggest thing of all."""
+    stacked = [ObjectInfo("obj1_box", "box", (), (0.5, 0.0, 0.10), (0.06, 0.06, 0.04), "white"),
+               ObjectInfo("obj2_box", "box", (), (0.5, 0.0, 0.04), (0.2, 0.2, 0.08), "white", ("graspable", "support")),
+               ObjectInfo("obj3_crate", "crate", (), (0.5, 0.35, 0.1), (0.3, 0.3, 0.2), "red", ("graspable", "support"))]
+    assert [c.text() for c in RulePlanner().plan("take the small box off the big one", stacked).calls] == ["grasp('obj1_box')"]
 
 
 def test_two_things_wished_swapped_are_swapped() -> None:

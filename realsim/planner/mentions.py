@@ -38,6 +38,12 @@ def mentioned(text: str, p: Parser) -> list[ObjectInfo]:
     names exactly one object (the longest from its start: "the left soda can", not "soda can")."""
     if asked := _asked_which(text, p):
         return asked
+    if (pick := re.fullmatch(r"(?:the one|whichever|which ever) .+? among .+", cleaned(text).strip(" .,;"))) is not None:
+        try:  # "the one closer to the bowl among the mug and the banana": the pick among those, never among all
+            named = p.resolver.resolve(pick.group(0), p.ctx, allow_plural=False)
+        except InputError:
+            named = []
+        return named if len(named) == 1 else []
     words = re.sub(r"[.,;]", " ", cleaned(text)).split()
     nouns = _nouns(p)
     found: list[ObjectInfo] = []

@@ -332,8 +332,12 @@ class Resolver:
             for pattern, rel in LOCATOR_RELATIONS:
                 m = re.fullmatch(rf"(.+?)\s+{pattern}\s+(?!the (?:left|right|far left|far right|front|back|middle|center|centre|end)(?: side| end)?$)(.+)", text)
                 if m and not re.fullmatch(r"(?:the )?(?:left|right|front|back|middle|center|centre)(?: side| end| one)?|me|you|the robot", m.group(2)):
+                    ref_phrase = m.group(2)
+                    if re.fullmatch(r"(?:the|that|this) (?:\w+ )?one", ref_phrase):  # "the small white object off the big one": a big white object
+                        kind = " ".join(w for w in m.group(1).split() if w not in DETERMINERS and w not in BIG and w not in SMALL)
+                        ref_phrase = re.sub(r"\bone$", kind, ref_phrase) if kind else ref_phrase
                     try:  # every object the reference may mean: the relation itself may tell them apart
-                        refs = self.resolve(m.group(2), Context(ctx.last), allow_plural=True, loose=True)
+                        refs = self.resolve(ref_phrase, Context(ctx.last), allow_plural=True, loose=True)
                     except InputError:
                         continue
                     text, around = m.group(1), cands
