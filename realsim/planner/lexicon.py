@@ -17,6 +17,9 @@ PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack
 PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate", "kick", "tap")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
+# a length said with its unit: "4 cm", "2.5 inches", "30mm" (inches as "in" only where nothing else can follow)
+UNIT_WORDS = r"(?:cm|mm|inch\w*|centimet\w*|millimet\w*)"
+MEASURE = rf"\d+(?:\.\d+)? ?{UNIT_WORDS}"
 PARTICLES = r"(?:\s+(?:back|down|up|over|away|off|out|round|around|carefully|gently|again|too))*"
 
 # "do that again", "repeat it", "once more": the last step again (a clause of its own)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from realsim.errors import InputError
-from realsim.planner.lexicon import STATEMENT_VERB, VERB_START
+from realsim.planner.lexicon import MEASURE, STATEMENT_VERB, VERB_START
 from realsim.planner.reference import DETERMINERS
 from realsim.planner.sentences import cleaned
 from realsim.planner.steps import Parser
@@ -17,7 +17,7 @@ from realsim.planner.vocab import COLOR_WORDS, GENERIC, NUMBERS, is_plural, sing
 
 __all__ = ["mentioned", "named_alone"]
 
-_UNIT = r"\d+(?:\.\d+)?\s*(?:cm|mm|in|inch\w*|centimet\w*|millimet\w*)\b"
+_UNIT = rf"(?:{MEASURE}|\d+(?:\.\d+)? ?in)\b"
 _WAYS = r"(?:left|right|forwards?|backwards?|back|away|closer|nearer|further|farther)\b"
 # a way with its amount ("foam brick 4 cm to the right"), not a clock position ("at clock 11") nor talk ("hasn't moved 1 inch")
 _AMOUNT = re.compile(rf"{_UNIT}\s+(?:(?:to|towards?|toward) (?:the )?)?{_WAYS}|{_WAYS}\s+(?:by\s+)?{_UNIT}")

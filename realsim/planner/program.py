@@ -83,7 +83,6 @@ class Program:
                 out.append(objs[0])
         return out
 
-
     def carried(self) -> list[str]:
         """The objects the hand holds (first object of each carrying call), each once, in call order."""
         out: list[str] = []

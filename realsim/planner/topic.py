@@ -13,7 +13,7 @@ import re
 
 from realsim.errors import InputError
 from realsim.planner import casual
-from realsim.planner.lexicon import AVOID, RELATION_AT, STATEMENT_VERB, VERB_START, has_relation, relation_start
+from realsim.planner.lexicon import AVOID, MEASURE, RELATION_AT, STATEMENT_VERB, VERB_START, has_relation, relation_start
 from realsim.planner.vocab import singular
 
 __all__ = ["TOPIC", "bare", "choice", "compared", "fronted", "joined", "partitive", "whichever_of"]
@@ -120,12 +120,11 @@ def partitive(parts: list[str]) -> list[str]:
 
 
 _DIRECTION = r"(?:left|right|forward|forwards|back|backward|backwards|away|toward (?:me|you)|towards (?:me|you)|closer)"
-_WAY = re.compile(rf"(?:(?:by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) )?(?:to the )?{_DIRECTION}"
-                  rf"(?: (?:and |by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*))?")  # "10 cm right", "left 5 cm"
+_WAY = re.compile(rf"(?:(?:by )?(?:about )?{MEASURE} )?(?:to the )?{_DIRECTION}(?: (?:and |by )?(?:about )?{MEASURE})?")  # "10 cm right", "left 5 cm"
 
 
 # a way said after the pick: a distance, or a direction that no comparative or article makes part of the pick
-_WAY_START = re.compile(r"\s(?:(?:by )?(?:about )?\d+(?:\.\d+)? ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*)\b|(?:forwards?|backwards?|back|away|left|right)\b(?! of))")
+_WAY_START = re.compile(rf"\s(?:(?:by )?(?:about )?{MEASURE}\b|(?:forwards?|backwards?|back|away|left|right)\b(?! of))")
 _PICK_WORD = ("further", "farther", "more", "most", "the", "far", "very", "to", "on", "at", "in")
 
 

@@ -2,8 +2,8 @@
 planner does not know is read as the one word of a vocabulary (the scene's names, colours, sizes)
 it is closest to, when that word is within a distance bound relative to its length and no other
 vocabulary word is as close (of two as close, one with the very same letters wins: fast typing swaps
-letters far more often than it drops or adds one, "lfet" is "left", not "let"). Short words (three letters or fewer) are never changed: too many
-real words lie one letter apart ("fat", "far").
+letters far more often than it drops or adds one, "lfet" is "left", not "let"). Short words (three
+letters or fewer) are never changed: too many real words lie one letter apart ("fat", "far").
 """
 
 from __future__ import annotations
