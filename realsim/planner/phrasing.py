@@ -272,11 +272,18 @@ def clean(command: str) -> str:
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
                   r"(?: (?:away|off|out|aside))?(?: for (?:me|us))?(?=\s*(?:$|[.,;])| and\b| then\b)",
                   r"move \1 aside", text)
+    # "the blocks in a line with the green one between the red and the blue": the one placed says the line
+    text = re.sub(r"\b(?:(?:put|place|set|arrange|lay out|line up|get|have|want|need|like) )?(?:all )?(?:the (?:two |three |four |five )?(?:[a-z]+ )?([a-z]+s)|them|these|those)(?: up)?"
+                  r" in (?:a|one) (?:straight )?(?:line|row)(?: up)?,? with (the [a-z ]+?) (?:(?:sitting|standing|placed|going|put|set|right|being) )*"
+                  r"(between\b|in (?:the )?(?:middle|centre|center)\b(?: of (?:them|the line|the row))?)",
+                  lambda m: f"put {m.group(2)} between" + ("" if m.group(3).startswith("between") else f" the other two{' ' + m.group(1) if m.group(1) else ''}"), text)
     text = re.sub(r"\bline ((?:up )?.+?)(?: up)? (?:with|next to|beside|alongside|by) ", lambda m: f"put {re.sub(r'^up ', '', m.group(1))} next to ", text)
     text = re.sub(r"\bline up (.+?)(?: in a row| side by side)?(?=$|[.,;]| then\b)|\bline (.+?) up(?: in a row| side by side)?(?=$|[.,;]| then\b)",
                   lambda m: f"put {m.group(1) or m.group(2)} next to each other", text)
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
     text = re.sub(r"(?<!the )(?<!far )(?<!further )(?<!farther )(?<!more )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
+    # "the cup, though, belongs on its left": a contrast set off in the middle of a clause is not a pause in it
+    text = re.sub(r"\s*,\s*(?:though|however|by contrast|on the other hand|for its part|in turn|meanwhile|instead)\s*,\s*", " ", text)
     for filler in FILLERS:
         text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
     text = re.sub(rf"(?:^|(?<=[\s,.;]))do (?={VERB_START.pattern})", "", text)  # "do go back home": emphasis
@@ -366,6 +373,9 @@ def split_command(command: str) -> list[str]:
                 clauses.append(part)
             elif re.match(r"(?:which|who) |that (?:is|are|was|were|s|sits|stands|lies|rests|has|have|had|looks|seems|i|you|we|they|it)\b", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
+            elif _PLACE_ALONE.fullmatch(part) and not rel_re.search(f" {_TOWARD_SPEAKER.sub('', clauses[-1])} "):
+                # "put the mug, in front of the red can": where it goes, said after a pause; "closer to me, in front of the can": the place says how close
+                clauses[-1] = f"{re.sub(rf'(?:,? and)?(?: down| over| back)? {_TOWARD_SPEAKER.pattern}$', '', clauses[-1])} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
             elif _SAYS.match(part):  # "..., my eyes aren't what they used to be": a remark of its own
@@ -385,6 +395,8 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_PLACE_ALONE = re.compile(rf"(?:{'|'.join(re.escape(w) for w, k in sorted(RELATIONS, key=lambda r: -len(r[0])) if k not in ('to', 'sides') and w not in ('by', 'over', 'near', 'toward', 'towards', 'closer to', 'nearer to'))}) (?:the|that|this|it|them)\b.*")
+_TOWARD_SPEAKER = re.compile(r"\b(?:closer|nearer|close|near)(?: to)? (?:me|you|us|the robot|yourself)\b")  # a way, not a place by a thing
 _STATES = re.compile(rf"\b{STATEMENT_VERB}\b")  # "the can is lined up behind the box, it looks cluttered": said of things, nothing placed
 _OTHER_SIDE = re.compile(r"(?:but |and |only )*(?:on |to |at |onto )?(?:the )?(?:other|opposite) (?:side|way|one)(?: (?:this time|instead|of it|round|around))?")
 _SIDES = {"left": "right", "right": "left", "in front of": "behind", "behind": "in front of"}
@@ -443,6 +455,9 @@ def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
     """"don't put the mug in the bowl", "not the banana": what is not to be done keeps its object
     still ("dont touch the mug"); it never becomes the action."""
     m = re.match(r"(?:but )?not (.+)$", part)
+    if m and not re.search(r"\b(?:it|them)\b", m.group(1)) and (re.match(r"(?:out |over |up |down )?(?:there|here|anywhere|somewhere|where)\b", m.group(1))
+                                                                or relation_start(re.sub(r"^(?:out|over|up|down|back) ", "", m.group(1)))):
+        return ""  # "put the can behind the box, not out in the open": a place ruled out, said beside the place meant
     if m and not verb_re.match(m.group(1)):
         return f"dont touch {m.group(1)}"
     m = _KEEP_STILL.fullmatch(part)
@@ -485,9 +500,10 @@ def _in_order(text: str) -> str:
     you = r"(?:you |i )?(?:have |ve )?"
     text = re.sub(r"\s+\.$", ".", text)
     m = re.fullmatch(rf"before {you}((?:{verbs})\b.+?), (.+)", text)
-    # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A, but not until you've B"
+    # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A afterwards, first B"
+    # ("A, and after that B" is in order); "A, but not until you've B"
     late = (re.fullmatch(r"(.+?),? (?:but |and )?(?:even )?(?:before (?:that|this|you do (?:that|this|it)|doing (?:that|this|so))|first(?: of all)?)[,:]? (.+?)\.?", text)
-            or re.fullmatch(r"(.+?) (?:second|last|afterwards|after that)[,;]? (?:then |and )?(?:first|before that)?[,:]? ?(.+?)\.?", text)
+            or re.fullmatch(r"(.+?) (?:(?:second|last)[,;]? (?:then |and )?(?:first|before that)?|(?:afterwards|after that)[,;]? (?:then |and )?(?:first|before that))[,:]? ?(.+?)\.?", text)
             or re.fullmatch(rf"(.+?),? (?:but )?not (?:until|before) {you}((?:{verbs})\b.+?)\.?", text))
     if m:
         first, then = m.group(2), m.group(1)

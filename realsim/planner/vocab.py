@@ -75,6 +75,18 @@ KINDS: dict[str, tuple[str, ...]] = {
 for _shape, _kind in (("cylindrical", "cylinder"), ("boxy", "square"), ("rectangular", "square"), ("cubic", "square"),
                       ("cuboid", "square"), ("spherical", "round"), ("circular", "round")):
     KINDS[_shape] = KINDS[_kind]
+# what things of a kind are usually made of, for "the cardboard one" when the scene records no material
+_BOXES = ("box", "carton", "package", "parcel", "cereal", "cracker", "sugar", "pudding", "gelatin", "jello")
+MATERIAL_KINDS: dict[str, tuple[str, ...]] = {
+    "cardboard": _BOXES, "paper": (*_BOXES, "bag", "cup"),
+    "metal": ("can", "tin", "pot", "pan", "spoon", "fork", "knife", "wrench", "hammer", "scissors", "screwdriver", "plier", "clamp"),
+    "ceramic": ("mug", "cup", "plate", "bowl", "vase", "pot", "saucer", "teapot"),
+    "wooden": ("block", "cube", "board", "spoon", "bowl", "spatula"), "foam": ("brick", "ball", "sponge", "block"),
+    "rubber": ("ball", "duck", "brick", "toy", "strawberry", "banana"),
+}
+for _word, _material in (("metallic", "metal"), ("aluminium", "metal"), ("aluminum", "metal"), ("steel", "metal"), ("porcelain", "ceramic"),
+                         ("china", "ceramic"), ("wood", "wooden"), ("squishy", "foam"), ("spongy", "foam"), ("rubbery", "rubber")):
+    MATERIAL_KINDS[_word] = MATERIAL_KINDS[_material]
 # the colours a kind of object usually has, for "the yellow fruit" when the capture gives no colour
 TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),
