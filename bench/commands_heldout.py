@@ -375,6 +375,7 @@ from commands_blind_nov29n import HELDOUT31  # noqa: E402
 from commands_blind_nov29o import HELDOUT32  # noqa: E402
 from commands_blind_nov30 import HELDOUT33  # noqa: E402
 from commands_blind_nov30b import HELDOUT34  # noqa: E402
+from commands_blind_nov30c import HELDOUT35  # noqa: E402
 
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
@@ -384,4 +385,5 @@ HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout29": HELDOUT29, "heldout30": HELDOUT30, "heldout31": HELDOUT31, "heldout32": HELDOUT32,
     "heldout33": HELDOUT33,
     "heldout34": HELDOUT34,
+    "heldout35": HELDOUT35,
 }
