@@ -35,6 +35,17 @@ KITCHEN = [
     # a short misspelled verb in the verb's slot
     ("pik up the banana", ["grasp('obj7_banana')"]),
     ("mve the banana left 5cm", ["push('obj7_banana'"]),
+    # brands said for the thing; "leave X" said alone; a caution about how; a dog's "heel"; a stage's "upstage of"
+    ("put the Chiquita in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
+    ("No, not the bowl, leave the bowl. Get the strawberry, and drop it next to the banana.", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("pick up the banana -- easy, don't squash it -- and set it down in front of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),
+    ("get the strawberry, drop it right beside the bowl, and then heel.", ["go_home()"]),
+    ("put the strawberry upstage of the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+    # what people let a thing do; breathing cues; how far, said after a pause
+    ("take the strawberry, let it float across, and allow it to settle on the green cube.", ["place_on('obj8_strawberry', 'obj5_cube')"]),
+    ("lift the strawberry gently... and let it come to rest inside the bowl.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("Breathe in... and on the out-breath, ease the banana to the right, five centimetres.", ["push('obj7_banana', 'right', 0.05)"]),
+    ("let the banana drift back towards you -- three inches or so", ["push('obj7_banana', 'back', 0.076)"]),
     # "the blocks in a line with X between ...", "between the other two"
     ("I want the blocks in a line with the green one sitting between the red cube and the blue cube.", ["place_between('obj5_cube', 'obj3_cube', 'obj4_cube')"]),
     ("put the red cube between the other two", ["place_between('obj3_cube', 'obj4_cube', 'obj5_cube')"]),
