@@ -35,6 +35,7 @@ KITCHEN = [
     # a short misspelled verb in the verb's slot
     ("pik up the banana", ["grasp('obj7_banana')"]),
     ("mve the banana left 5cm", ["push('obj7_banana'"]),
+    ("See the strawberry? Push it 5 cm toward yourself.", ["push('obj8_strawberry', 'back', 0.05)"]),  # "see" is no misspelled "set"
     # brands said for the thing; "leave X" said alone; a caution about how; a dog's "heel"; a stage's "upstage of"
     ("put the Chiquita in the bowl", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("No, not the bowl, leave the bowl. Get the strawberry, and drop it next to the banana.", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),

@@ -4,7 +4,7 @@ it is closest to, when that word is within a distance bound relative to its leng
 vocabulary word is as close (of two as close, one with the very same letters wins: fast typing swaps
 letters far more often than it drops or adds one, "lfet" is "left", not "let"). Short words (three
 letters or fewer) are never changed (too many real words lie one letter apart: "fat", "far"), except
-a clause's first word, the verb's slot, when one verb alone is one edit away ("pik up the mug").
+a clause's first word, the verb's slot, when it is one verb with a letter missed ("pik up the mug").
 """
 
 from __future__ import annotations
@@ -115,11 +115,11 @@ _OPENING_VERBS = frozenset(v.split()[0] for v in ALL_VERBS)
 
 def _opening_verb(word: str, known: set[str]) -> str:
     """The clause's first word, or the one verb it misspells: in the verb's own slot even a short word
-    is read ("pik up the mug", "mve it left", "pt it in the bowl"), one edit away and only when no
-    other verb is as close; longer words as :func:`correct` reads them."""
+    is read ("pik up the mug", "mve it left", "pt it in the bowl") when it is that verb with one letter
+    missed and no other verb is; longer words as :func:`correct` reads them."""
     if len(word) > 3 or word in known or word in _OPENING_VERBS or not word.isalpha():
         return correct(word, _COMMAND_WORDS, known) or word
-    near = [v for v in _OPENING_VERBS if len(v) > 2 and distance(word, v) == 1]
+    near = [v for v in _OPENING_VERBS if len(v) == len(word) + 1 and distance(word, v) == 1]  # a letter missed, not changed ("see" is no "set")
     return near[0] if len(near) == 1 else word
 
 
