@@ -445,7 +445,7 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
     try:
         plan, rec = _run_sentence(sim, sentence, planner, seed)
     except InputError as exc:
-        ok = refuse and any(w in str(exc) for w in ("ambiguous", "no object", "does not refer", "candidates", "objects in the scene"))
+        ok = refuse and any(w in str(exc) for w in ("ambiguous", "no object", "does not refer", "candidates", "objects in the scene", "cannot be lifted"))
         return Row(scene, sentence, spec, ok, 0, [], "" if ok else f"refused: {exc}", 0.0, time.perf_counter() - t0, "" if ok else "plan")
     if refuse:
         return Row(scene, sentence, spec, False, len(rec.calls), [], "acted instead of asking which object", rec.sim_time,
@@ -469,7 +469,7 @@ def run_one(sim, scene: str, sentence: str, spec: str, planner: str, seed: int) 
 
 
 def _run_sentence(sim, sentence: str, planner: str, seed: int):
-    """Plan with the robot's heading and the capture's colours, then run the plan (the rule
+    """Plan with the robot's heading and the capture's colours, refuse what the hand cannot hold, then run the plan (the rule
     planner's typed calls, Claude's source) through the same sandbox and primitives as ``realsim run``."""
     from realsim.planner import make_planner
     from realsim.planner.vocab import with_colors
@@ -477,6 +477,8 @@ def _run_sentence(sim, sentence: str, planner: str, seed: int):
 
     sim.reset()
     plan = make_planner(planner).plan(sentence, with_colors(sim.object_infos(), sim.meta), robot_yaw=sim.robot_yaw(), robot_base=sim.robot_base())
+    if plan.calls is not None:
+        sim.check_holdable(plan.calls)  # as realsim run: what the hand cannot hold is refused before anything moves
     record = run_program(sim, plan.calls if plan.calls is not None else plan.program, seed=seed, name=plan.planner, checkpoints=plan.checkpoints)
     return plan, record
 

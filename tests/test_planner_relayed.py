@@ -47,6 +47,11 @@ KITCHEN = [
     ("lift the strawberry gently... and let it come to rest inside the bowl.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
     ("Breathe in... and on the out-breath, ease the banana to the right, five centimetres.", ["push('obj7_banana', 'right', 0.05)"]),
     ("let the banana drift back towards you -- three inches or so", ["push('obj7_banana', 'back', 0.076)"]),
+    # a thing addressed and told to leave, to take another's place, where its entrance is; the thing meant after "leave X"
+    ("Banana, you're not in this scene. Exit -- clear off somewhere out of the way.", ["place('obj7_banana', [0.65, 0.15"]),
+    ("Strawberry, you exit first, off to the side. Then the banana takes the strawberry's old mark.", ["place('obj8_strawberry'", "place('obj7_banana', [0.25, 0.3, "]),
+    ("Banana, your entrance is between the bowl and the strawberry. Places, everyone!", ["place_between('obj7_banana', 'obj6_bowl', 'obj8_strawberry')"]),
+    ("Leave the bowl. Leave it! Strawberry instead -- get it, and hold it up high.", ["grasp('obj8_strawberry')"]),
     # "the blocks in a line with X between ...", "between the other two"
     ("I want the blocks in a line with the green one sitting between the red cube and the blue cube.", ["place_between('obj5_cube', 'obj3_cube', 'obj4_cube')"]),
     ("put the red cube between the other two", ["place_between('obj3_cube', 'obj4_cube', 'obj5_cube')"]),

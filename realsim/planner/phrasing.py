@@ -76,7 +76,7 @@ FILLERS = (
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
     r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
-    r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
+        r"places,? (?:everyone|everybody|people|all)", r"and action", r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # when the speaker wants it done is not part of the command: "when I come back I'd like ...", "by the end of this, ..."
@@ -111,6 +111,13 @@ _IN_THE_WAY = re.compile(r"(^|(?<=[.;!?] ))(?:(?:ugh|argh|man|honestly|seriously
                          r"|obstructing [a-z ]+?)(?: again| all the time| constantly)?(?=\s*(?:[.;!?]|$|,\s*i (?:need|want) it (?:out of there|gone|moved|away)\s*(?:[.;!?]|$)))")
 # an undo of the step just said: the thing it moved put back where it was
 _UNDO = re.compile(r"\b(?:undo|reverse|revert|take back|roll back) (?:that|it|this|the (?:last )?(?:move|step|one|push))(?: (?:move|step|one))?\b(?: (?:again|please|too|as well))?")
+# what is said to a thing told to leave: it goes out of the way
+_LEAVE = (r"(?:you )?(?:exit|clear off|go away|get lost|scram|shoo|make yourself scarce|leave the (?:stage|scene|frame|shot))(?: first| now| stage (?:left|right))?"
+          r"(?:[ ,-]+(?:and )?(?:go |get )?(?:off )?(?:somewhere )?(?:to the side|aside|out of the way|off stage|offstage))?")
+_EXIT = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:and )?{_LEAVE}(?:[ ,;:!.-]+{_LEAVE})*(?=\s*(?:$|[.,;!?]))")
+# one thing taking another's place: "the banana takes the soup can's old mark"
+_TAKES_PLACE = re.compile(r"\b((?:the|that|this) [a-z ]+?) (?:takes|gets|moves into|steps into|takes over|goes to|slides into) ((?:the|that|this) [a-z ]+?)(?:'s| s|s)? "
+                          r"(?:old |former |previous |empty )?(?:mark|spot|place|position)\b")
 _BODY_WIDTH_CM = {"hand": 10, "palm": 8, "finger": 2, "thumb": 2}  # a hand's width is about 10 cm, a finger's 2 cm
 GERUNDS = {"picking": "pick", "putting": "put", "placing": "place", "moving": "move", "pushing": "push", "grabbing": "grab",
            "taking": "take", "setting": "set", "dropping": "drop", "stacking": "stack", "sliding": "slide", "lifting": "lift",
@@ -129,6 +136,10 @@ def clean(command: str) -> str:
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
     text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(_by_comparison(voices.plain(text)))))))
     text = _UNDO.sub("put it back where it was", text)  # "move the mug 5 cm left. actually, undo that": where it was before
+    text = _EXIT.sub("move it aside", text)  # "Red box, ... Exit -- clear off somewhere out of the way": the one addressed leaves
+    text = _TAKES_PLACE.sub(r"put \1 where \2 was", text)  # "the banana takes the soup can's old mark"
+    # "Marker, your entrance is between the brick and the mustard": where the one addressed goes
+    text = re.sub(r"(?:^|(?<=[.,;!?] ))your (?:entrance|mark|spot|place|position|new (?:home|spot|place)|seat) (?:is|will be|s) (?=(?:in|on|next|beside|behind|between|left|right|to the|in front|upstage|downstage)\b)", "put it ", text)
     text = re.sub(r"\s*,?\s*(?:and )?(?:be (?:quick|fast|snappy|swift|careful|gentle|nice|quiet)(?: about it)?|make it (?:snappy|quick)|look lively"
                   r"|step (?:to it|lively)|(?:and )?(?:on|at) the double|chop[- ]chop)(?=\s*(?:$|[.,;!?]))", "", text)  # "... and be quick about it!"
     text = re.sub(r"(\b(?:swap|switch|exchange|trade)\b[^.;!?]*?),?\s*(?:the |to the )?(?:left|right) (?:for|with|and) (?:the |to the )?(?:left|right)\b", r"\1", text)
@@ -390,6 +401,8 @@ def split_command(command: str) -> list[str]:
                 clauses.append(f"{put} {obj} {clauses[-1][rel.start():].strip()}".strip())
             elif re.match(r"(?:from|off|off of|out of) (?:the|that|this) ", part):
                 clauses[-1] = f"{clauses[-1]} {part}"  # "strawberry, from the red cube down, ...": where it comes from, never another thing
+            elif part in opening and clauses[-1].startswith("dont touch ") and not _STATES.search(part) and not rel_re.search(f" {part} ") and not part.startswith(("or ", "nor ")):
+                clauses.append(f"{topic.TOPIC}{part}")  # "Leave the mustard. Rubik's cube instead, get it": the thing meant now, not one more kept still
             elif part in opening and not verb_re.match(clauses[-1]) and _NAMED_ALONE.fullmatch(part) and not _STATES.search(part) and not rel_re.search(f" {part} "):
                 clauses.append(f"{topic.TOPIC}{part}")  # "..., drives me mad. The one on the left, could you ...": what "it" means next
             else:
