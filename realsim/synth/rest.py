@@ -1,0 +1,164 @@
+"""Bodies at rest, checked in MuJoCo: the orientation a scan rests in on a flat support, and
+whether a body stacked on another stays where it was put.
+
+A real capture shows a scene at rest, so the generator's truth must be one too. Each check is a
+short, deterministic MuJoCo simulation of the true mesh's convex hull (exact for contact with a
+plane; for a stacked body, its underside is what touches): on a plane for a body standing on
+furniture, and on a height field of the base's upward-facing surface (ray cast from above, so its
+dips and curves are kept) for a stacked one. The simulation only decides the orientation and
+whether the body stays; the caller then puts the body exactly on its support (no gap).
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+import trimesh
+from scipy.spatial.transform import Rotation
+
+from realsim.synth.meshes import load_ycb, raycaster
+
+
+@dataclass(frozen=True)
+class RestParams:
+    """How bodies are brought to rest and what counts as stable."""
+
+    timestep: float = 0.004  # s
+    settle_time: float = 1.0  # s of simulated time per check
+    friction: float = 0.5  # sliding friction of every contact (cardboard, plastic on wood)
+    rest_speed: float = 0.005  # m/s (and rad/s): a body slower than this at the end is at rest
+    stack_margin: float = 0.005  # m: a stacked body's centre of mass at least this far inside its contacts' polygon
+    stack_min_lift: float = 0.01  # m: a stacked body whose lowest point ends lower than this over the table fell off
+    hfield_cell: float = 0.003  # m: grid spacing of the base's surface
+    max_hull_vertices: int = 128  # a body's hull in the simulation (MuJoCo's maxhullvert; keeps contacts fast)
+    stack_tries: int = 8  # seeded placements simulated on the base before the body is put on the support instead
+
+
+PARAMS = RestParams()
+
+
+def _hull_spec(spec: mujoco.MjSpec, hull: trimesh.Trimesh, params: RestParams) -> mujoco.MjsBody:
+    """A free body holding ``hull`` (vertices in the body frame = world at the start)."""
+    spec.option.timestep = params.timestep
+    spec.add_mesh(name="hull", uservert=hull.vertices.ravel().tolist(), userface=hull.faces.ravel().tolist(), maxhullvert=params.max_hull_vertices)
+    body = spec.worldbody.add_body(name="body")
+    body.add_freejoint()
+    body.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname="hull", density=500.0, friction=[params.friction, 0.005, 0.0001])
+    return body
+
+
+def _settle(spec: mujoco.MjSpec, params: RestParams) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    mujoco.mj_step(model, data, int(round(params.settle_time / params.timestep)))
+    mujoco.mj_forward(model, data)
+    return model, data
+
+
+def _rotation_of(data: mujoco.MjData) -> np.ndarray:
+    """The free body's rotation since the start (body frame = world frame at the start)."""
+    w, x, y, z = data.qpos[3:7]
+    return Rotation.from_quat([x, y, z, w]).as_matrix()
+
+
+@functools.lru_cache(maxsize=128)
+def _rest_rotation_cached(path: str, rot_bytes: bytes, params: RestParams) -> bytes:
+    rot = np.frombuffer(rot_bytes).reshape(4, 4)
+    mesh = load_ycb(path).copy()
+    mesh.apply_transform(rot)
+    hull = mesh.convex_hull.copy()
+    hull.apply_translation(-hull.center_mass)
+    hull.apply_translation([0.0, 0.0, -hull.bounds[0, 2]])  # lowest point on the plane z = 0
+    spec = mujoco.MjSpec()
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1.0, 1.0, 0.1], friction=[params.friction, 0.005, 0.0001])
+    _hull_spec(spec, hull, params)
+    _, data = _settle(spec, params)
+    out = np.eye(4)
+    out[:3, :3] = _rotation_of(data) @ rot[:3, :3]
+    return out.tobytes()
+
+
+def rest_rotation(path: str, rot: np.ndarray, params: RestParams = PARAMS) -> np.ndarray:
+    """The rotation (4x4) the scan at ``path``, first turned by ``rot``, rests in on a flat support
+    (its hull let fall from ``rot`` onto a plane). A body's rest does not depend on its yaw, so one
+    simulation serves every placement (cached per scan and rotation)."""
+    return np.frombuffer(_rest_rotation_cached(path, np.ascontiguousarray(rot, float).tobytes(), params)).reshape(4, 4).copy()
+
+
+def _surface_hfield(spec: mujoco.MjSpec, base: trimesh.Trimesh, floor_z: float, params: RestParams) -> None:
+    """A static height field of ``base``'s upward-facing surface over its footprint and 5 cm around,
+    at ``floor_z`` where no ray meets it (the support it stands on)."""
+    lo, hi = base.bounds[0, :2] - 0.05, base.bounds[1, :2] + 0.05
+    n = np.ceil((hi - lo) / params.hfield_cell).astype(int) + 1
+    xs, ys = np.linspace(lo[0], hi[0], n[0]), np.linspace(lo[1], hi[1], n[1])
+    gx, gy = np.meshgrid(xs, ys)  # rows along y, columns along x (MuJoCo's height-field order)
+    top = float(base.bounds[1, 2]) + 1.0
+    rays = np.zeros((gx.size, 6), np.float32)
+    rays[:, 0], rays[:, 1], rays[:, 2], rays[:, 5] = gx.ravel(), gy.ravel(), top, -1.0
+    import open3d as o3d
+
+    t = raycaster(base).cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
+    z = np.where(np.isfinite(t), top - t, floor_z)
+    z = np.maximum(z, floor_z) - floor_z
+    height = max(float(z.max()), 1e-3)
+    spec.add_hfield(name="base", size=[(hi[0] - lo[0]) / 2, (hi[1] - lo[1]) / 2, height, 0.01],
+                    nrow=int(n[1]), ncol=int(n[0]), userdata=(z / height).ravel().tolist())
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_HFIELD, hfieldname="base", pos=[(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, floor_z],
+                            friction=[params.friction, 0.005, 0.0001])
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0.0, 0.0, 0.1], pos=[0.0, 0.0, floor_z - 1e-4],
+                            friction=[params.friction, 0.005, 0.0001])
+
+
+def support_margin(contacts_xy: np.ndarray, point_xy: np.ndarray, line_width: float) -> float:
+    """How far ``point_xy`` lies inside the polygon of ``contacts_xy`` (negative: outside; no
+    contacts: -inf). Contacts narrower than ``line_width`` across are a line (a round body lying
+    on a flat: it rests, rolling is neutral), and the margin is along the line, the point within
+    ``line_width`` / 2 of it."""
+    if len(contacts_xy) == 0:
+        return -np.inf
+    centre = contacts_xy.mean(axis=0)
+    _, _, axes = np.linalg.svd(contacts_xy - centre, full_matrices=False) if len(contacts_xy) > 1 else (0, 0, np.eye(2))
+    local = (contacts_xy - centre) @ axes.T
+    p = (point_xy - centre) @ axes.T
+    if local[:, 1].max() - local[:, 1].min() < line_width:
+        if abs(p[1]) > line_width / 2:
+            return -np.inf
+        return float(min(p[0] - local[:, 0].min(), local[:, 0].max() - p[0]))
+    from scipy.spatial import ConvexHull
+
+    hull = ConvexHull(contacts_xy)
+    normals, offsets = hull.equations[:, :2], hull.equations[:, 2]  # n . p + d <= 0 inside, |n| = 1
+    return float(-np.max(normals @ point_xy + offsets))
+
+
+def stacked_rest(top: trimesh.Trimesh, base: trimesh.Trimesh, floor_z: float,
+                 params: RestParams = PARAMS) -> np.ndarray | None:
+    """Let ``top`` (a world mesh just touching ``base`` from above) settle on ``base`` (static,
+    its upward surface; the support it stands on at ``floor_z``). The rigid motion (4x4) that
+    brings ``top`` to its rest on ``base``, or None when it does not rest there stably: it fell
+    off, still moves, or its centre of mass is less than ``params.stack_margin`` inside the
+    polygon of its contacts."""
+    hull = top.convex_hull.copy()
+    com = hull.center_mass
+    hull.apply_translation(-com)
+    spec = mujoco.MjSpec()
+    _surface_hfield(spec, base, floor_z, params)
+    body = _hull_spec(spec, hull, params)
+    body.pos = com.tolist()
+    model, data = _settle(spec, params)
+    if np.abs(data.qvel).max() > params.rest_speed:
+        return None
+    motion = np.eye(4)
+    motion[:3, :3] = _rotation_of(data)
+    motion[:3, 3] = data.qpos[:3] - motion[:3, :3] @ com
+    moved = top.vertices @ motion[:3, :3].T + motion[:3, 3]
+    if moved[:, 2].min() < floor_z + params.stack_min_lift:
+        return None
+    contacts = np.array([data.contact[i].pos[:2] for i in range(data.ncon)]).reshape(-1, 2)
+    if support_margin(contacts, data.xipos[1, :2], 2 * params.stack_margin) < params.stack_margin:
+        return None
+    return motion
