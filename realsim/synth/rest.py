@@ -4,8 +4,8 @@ whether a body stacked on another stays where it was put.
 A real capture shows a scene at rest, so the generator's truth must be one too. Each check is a
 short, deterministic MuJoCo simulation of the true mesh's convex hull (exact for contact with a
 plane; for a stacked body, its underside is what touches): on a plane for a body standing on
-furniture, and on a height field of the base's upward-facing surface (ray cast from above, so its
-dips and curves are kept) for a stacked one. The simulation only decides the orientation and
+furniture, and on convex tiles of the base's upward-facing surface (ray cast from above, so its
+curves are kept) for a stacked one. The simulation only decides the orientation and
 whether the body stays; the caller then puts the body exactly on its support (no gap).
 """
 
@@ -32,8 +32,10 @@ class RestParams:
     rest_speed: float = 0.005  # m/s (and rad/s): a body slower than this at the end is at rest
     stack_margin: float = 0.005  # m: a stacked body's centre of mass at least this far inside its contacts' polygon
     stack_min_lift: float = 0.01  # m: a stacked body whose lowest point ends lower than this over the table fell off
-    hfield_cell: float = 0.003  # m: grid spacing of the base's surface
+    surface_cell: float = 0.003  # m: grid spacing of the base's upward surface
+    tile_size: float = 0.015  # m: the base's surface is this many metres across per convex tile
     max_hull_vertices: int = 128  # a body's hull in the simulation (MuJoCo's maxhullvert; keeps contacts fast)
+    contact_tolerance: float = 0.0005  # m: vertices this close (vertically) to the other body touch it
     stack_tries: int = 8  # seeded placements simulated on the base before the body is put on the support instead
 
 
@@ -89,28 +91,37 @@ def rest_rotation(path: str, rot: np.ndarray, params: RestParams = PARAMS) -> np
     return np.frombuffer(_rest_rotation_cached(path, np.ascontiguousarray(rot, float).tobytes(), params)).reshape(4, 4).copy()
 
 
-def _surface_hfield(spec: mujoco.MjSpec, base: trimesh.Trimesh, floor_z: float, params: RestParams) -> None:
-    """A static height field of ``base``'s upward-facing surface over its footprint and 5 cm around,
-    at ``floor_z`` where no ray meets it (the support it stands on)."""
-    lo, hi = base.bounds[0, :2] - 0.05, base.bounds[1, :2] + 0.05
-    n = np.ceil((hi - lo) / params.hfield_cell).astype(int) + 1
-    xs, ys = np.linspace(lo[0], hi[0], n[0]), np.linspace(lo[1], hi[1], n[1])
-    gx, gy = np.meshgrid(xs, ys)  # rows along y, columns along x (MuJoCo's height-field order)
+def _surface_tiles(spec: mujoco.MjSpec, base: trimesh.Trimesh, floor_z: float, params: RestParams) -> None:
+    """``base``'s upward-facing surface (ray cast from above on a ``surface_cell`` grid) as static
+    convex tiles, each the hull of its surface points and their feet on the support at ``floor_z``
+    (so a dip narrower than a tile is bridged), over a plane at ``floor_z``."""
+    import open3d as o3d
+
+    friction = [params.friction, 0.005, 0.0001]
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0.0, 0.0, 0.1], pos=[0.0, 0.0, floor_z], friction=friction)
+    lo, hi = base.bounds[0, :2], base.bounds[1, :2]
+    n = np.ceil((hi - lo) / params.surface_cell).astype(int) + 1
+    gx, gy = np.meshgrid(np.linspace(lo[0], hi[0], n[0]), np.linspace(lo[1], hi[1], n[1]), indexing="ij")
     top = float(base.bounds[1, 2]) + 1.0
     rays = np.zeros((gx.size, 6), np.float32)
     rays[:, 0], rays[:, 1], rays[:, 2], rays[:, 5] = gx.ravel(), gy.ravel(), top, -1.0
-    import open3d as o3d
-
-    t = raycaster(base).cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
-    z = np.where(np.isfinite(t), top - t, floor_z)
-    z = np.maximum(z, floor_z) - floor_z
-    height = max(float(z.max()), 1e-3)
-    spec.add_hfield(name="base", size=[(hi[0] - lo[0]) / 2, (hi[1] - lo[1]) / 2, height, 0.01],
-                    nrow=int(n[1]), ncol=int(n[0]), userdata=(z / height).ravel().tolist())
-    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_HFIELD, hfieldname="base", pos=[(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, floor_z],
-                            friction=[params.friction, 0.005, 0.0001])
-    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0.0, 0.0, 0.1], pos=[0.0, 0.0, floor_z - 1e-4],
-                            friction=[params.friction, 0.005, 0.0001])
+    t = raycaster(base).cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().reshape(gx.shape)
+    per_tile = max(1, int(round(params.tile_size / params.surface_cell)))
+    for i in range(0, n[0] - 1, per_tile):
+        for j in range(0, n[1] - 1, per_tile):
+            block = np.s_[i:i + per_tile + 1, j:j + per_tile + 1]  # neighbouring tiles share their edge
+            hit = np.isfinite(t[block])
+            if hit.sum() < 3:
+                continue
+            surface = np.column_stack([gx[block][hit], gy[block][hit], top - t[block][hit]])
+            feet = surface.copy()
+            feet[:, 2] = floor_z
+            points = np.vstack([surface, feet])
+            if np.ptp(points[:, 0]) < 1e-6 or np.ptp(points[:, 1]) < 1e-6:
+                continue
+            name = f"tile_{i}_{j}"
+            spec.add_mesh(name=name, uservert=points.ravel().tolist())
+            spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, friction=friction)
 
 
 def support_margin(contacts_xy: np.ndarray, point_xy: np.ndarray, line_width: float) -> float:
@@ -139,14 +150,13 @@ def stacked_rest(top: trimesh.Trimesh, base: trimesh.Trimesh, floor_z: float,
                  params: RestParams = PARAMS) -> np.ndarray | None:
     """Let ``top`` (a world mesh just touching ``base`` from above) settle on ``base`` (static,
     its upward surface; the support it stands on at ``floor_z``). The rigid motion (4x4) that
-    brings ``top`` to its rest on ``base``, or None when it does not rest there stably: it fell
-    off, still moves, or its centre of mass is less than ``params.stack_margin`` inside the
-    polygon of its contacts."""
+    brings ``top`` to its rest on ``base``, or None when it does not rest there: it fell off or
+    still moves. (Whether it rests with margin: :func:`support_polygon_margin` on the exact pose.)"""
     hull = top.convex_hull.copy()
     com = hull.center_mass
     hull.apply_translation(-com)
     spec = mujoco.MjSpec()
-    _surface_hfield(spec, base, floor_z, params)
+    _surface_tiles(spec, base, floor_z, params)
     body = _hull_spec(spec, hull, params)
     body.pos = com.tolist()
     model, data = _settle(spec, params)
@@ -158,7 +168,31 @@ def stacked_rest(top: trimesh.Trimesh, base: trimesh.Trimesh, floor_z: float,
     moved = top.vertices @ motion[:3, :3].T + motion[:3, 3]
     if moved[:, 2].min() < floor_z + params.stack_min_lift:
         return None
-    contacts = np.array([data.contact[i].pos[:2] for i in range(data.ncon)]).reshape(-1, 2)
-    if support_margin(contacts, data.xipos[1, :2], 2 * params.stack_margin) < params.stack_margin:
-        return None
     return motion
+
+
+def _heights_over(points: np.ndarray, surface: trimesh.Trimesh, down: bool) -> np.ndarray:
+    """Height of each point over ``surface`` straight below it (``down``) or under it straight
+    above (not ``down``); nan where the vertical line misses the surface."""
+    import open3d as o3d
+
+    rays = np.zeros((len(points), 6), np.float32)
+    rays[:, :2] = points[:, :2]
+    start = surface.bounds[1, 2] + 1.0 if down else surface.bounds[0, 2] - 1.0
+    rays[:, 2], rays[:, 5] = start, -1.0 if down else 1.0
+    t = raycaster(surface).cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().astype(float)
+    hit = start - t if down else start + t
+    return np.where(np.isfinite(t), points[:, 2] - hit if down else hit - points[:, 2], np.nan)
+
+
+def support_polygon_margin(top: trimesh.Trimesh, base: trimesh.Trimesh, params: RestParams = PARAMS) -> float:
+    """How far ``top``'s centre of mass (its hull's) lies inside the polygon of its contacts with
+    ``base`` under it: the vertices of either within ``params.contact_tolerance`` of the closest
+    approach between them (measured vertically)."""
+    up = _heights_over(top.vertices, base, down=True)
+    below = _heights_over(base.vertices, top, down=False)
+    if np.isnan(up).all() and np.isnan(below).all():
+        return -np.inf
+    closest = np.nanmin(np.concatenate([up, below]))
+    touching = np.vstack([top.vertices[up <= closest + params.contact_tolerance], base.vertices[below <= closest + params.contact_tolerance]])
+    return support_margin(touching[:, :2], top.convex_hull.center_mass[:2], 2 * params.stack_margin)

@@ -20,7 +20,7 @@ import trimesh
 from realsim.errors import InputError
 from realsim.geometry import polygons_apart
 from realsim.synth.meshes import box_mesh, load_ycb, raycaster
-from realsim.synth.rest import PARAMS as REST, rest_rotation, stacked_rest
+from realsim.synth.rest import PARAMS as REST, rest_rotation, stacked_rest, support_polygon_margin
 
 # per-face part codes (the mOSD label convention for points: 1..9 furniture, objects 10 * id)
 PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
@@ -369,7 +369,8 @@ def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world
         return False
     pose = motion @ pose
     pose[2, 3] += _drop_height(_transformed(mesh, pose), [base_world])  # on the surface: the simulation's sink taken out
-    return pose
+    top = trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False)
+    return pose if support_polygon_margin(top, base_world) >= REST.stack_margin else False
 
 
 def _ccw(poly: np.ndarray) -> bool:
