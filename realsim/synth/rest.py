@@ -34,7 +34,7 @@ class RestParams:
     stack_min_lift: float = 0.01  # m: a stacked body whose lowest point ends lower than this over the table fell off
     surface_cell: float = 0.003  # m: grid spacing of the base's upward surface
     tile_size: float = 0.015  # m: the base's surface is this many metres across per convex tile
-    max_hull_vertices: int = 128  # a body's hull in the simulation (MuJoCo's maxhullvert; keeps contacts fast)
+    max_hull_vertices: int = -1  # a body's hull in the simulation (MuJoCo's maxhullvert, -1: all)
     contact_tolerance: float = 0.0005  # m: vertices this close (vertically) to the other body touch it
     stack_tries: int = 8  # seeded placements simulated on the base before the body is put on the support instead
 
