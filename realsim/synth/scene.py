@@ -20,7 +20,8 @@ import trimesh
 from realsim.errors import InputError
 from realsim.geometry import polygons_apart
 from realsim.synth.meshes import box_mesh, load_ycb, raycaster
-from realsim.synth.rest import PARAMS as REST, rest_rotation, stacked_rest, support_polygon_margin
+from realsim.synth.rest import PARAMS as REST
+from realsim.synth.rest import rest_rotation, stacked_rest, support_polygon_margin
 
 # per-face part codes (the mOSD label convention for points: 1..9 furniture, objects 10 * id)
 PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
