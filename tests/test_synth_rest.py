@@ -106,3 +106,16 @@ def test_generated_bodies_rest_on_their_supports(layout: str, objects: tuple[str
             over, gaps = _gaps_below(mesh, meshes[o.resting_on])
             assert abs(gaps.min()) < 1e-4, o.name  # on the base's surface, within 0.1 mm
             assert _com_margin(mesh, over[gaps < gaps.min() + CONTACT]) > 0.002, o.name
+
+
+@needs_ycb
+def test_a_round_body_on_a_flat_top_comes_to_rest() -> None:
+    """Rolling resistance: a strawberry set on a flat box rests as a real one does (without it,
+    MuJoCo's round hull keeps rolling and the stack is refused)."""
+    path = ycb_root() / "012_strawberry" / "textured.obj"
+    strawberry = trimesh.load(path, force="mesh")
+    strawberry.apply_transform(rest_rotation(str(path), np.eye(4)))
+    strawberry.apply_translation(-strawberry.bounds[0] + [-0.02, -0.02, 0.05])
+    base = _box((0.2, 0.2, 0.05), (0.0, 0.0, 0.025))
+    motion = stacked_rest(strawberry, base, 0.0)
+    assert motion is not None and np.linalg.norm(motion[:3, 3]) < 0.005

@@ -29,6 +29,7 @@ class RestParams:
     timestep: float = 0.004  # s
     settle_time: float = 1.0  # s of simulated time per check
     friction: float = 0.5  # sliding friction of every contact (cardboard, plastic on wood)
+    rolling_friction: float = 0.0005  # m: rolling resistance (condim 6), so round bodies come to rest as real ones do
     rest_speed: float = 0.005  # m/s (and rad/s): a body slower than this at the end is at rest
     stack_margin: float = 0.005  # m: a stacked body's centre of mass at least this far inside its contacts' polygon
     stack_min_lift: float = 0.01  # m: a stacked body whose lowest point ends lower than this over the table fell off
@@ -48,7 +49,7 @@ def _hull_spec(spec: mujoco.MjSpec, hull: trimesh.Trimesh, params: RestParams) -
     spec.add_mesh(name="hull", uservert=hull.vertices.ravel().tolist(), userface=hull.faces.ravel().tolist(), maxhullvert=params.max_hull_vertices)
     body = spec.worldbody.add_body(name="body")
     body.add_freejoint()
-    body.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname="hull", density=500.0, friction=[params.friction, 0.005, 0.0001])
+    body.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname="hull", density=500.0, friction=[params.friction, 0.005, params.rolling_friction], condim=6)
     return body
 
 
@@ -76,7 +77,7 @@ def _rest_rotation_cached(path: str, rot_bytes: bytes, params: RestParams) -> by
     hull.apply_translation(-hull.center_mass)
     hull.apply_translation([0.0, 0.0, -hull.bounds[0, 2]])  # lowest point on the plane z = 0
     spec = mujoco.MjSpec()
-    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1.0, 1.0, 0.1], friction=[params.friction, 0.005, 0.0001])
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1.0, 1.0, 0.1], friction=[params.friction, 0.005, params.rolling_friction])
     _hull_spec(spec, hull, params)
     _, data = _settle(spec, params)
     out = np.eye(4)
@@ -97,7 +98,7 @@ def _surface_tiles(spec: mujoco.MjSpec, base: trimesh.Trimesh, floor_z: float, p
     (so a dip narrower than a tile is bridged), over a plane at ``floor_z``."""
     import open3d as o3d
 
-    friction = [params.friction, 0.005, 0.0001]
+    friction = [params.friction, 0.005, params.rolling_friction]
     spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0.0, 0.0, 0.1], pos=[0.0, 0.0, floor_z], friction=friction)
     lo, hi = base.bounds[0, :2], base.bounds[1, :2]
     n = np.ceil((hi - lo) / params.surface_cell).astype(int) + 1
