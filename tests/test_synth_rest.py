@@ -117,3 +117,16 @@ def test_a_round_body_on_a_lying_box_is_stacked() -> None:
     scene = make_scene(SceneSpec(layout="table", objects=objects, seed=3))
     stacked = [(o.name, scene.objects[o.resting_on - 1].name) for o in scene.objects if o.resting_on]
     assert stacked == [("012_strawberry", "003_cracker_box")]
+
+
+def test_a_tilted_top_is_whole() -> None:
+    """A box resting 2 degrees off level (its top 7 mm higher at one end): the whole top is where a
+    stacked body is set down, not the band within a few mm of its highest corner."""
+    from realsim.synth.scene import _flat_top, _top_faces
+
+    box = _box((0.21, 0.16, 0.06), (0.0, 0.0, 0.03))
+    box.apply_transform(trimesh.transformations.rotation_matrix(np.radians(2.0), [0.0, 1.0, 0.0]))
+    top = _top_faces(box)
+    assert _flat_top(box) == pytest.approx(0.21 * 0.16, rel=0.01)
+    centre = (box.triangles_center[top, :2] * box.area_faces[top, None]).sum(axis=0) / box.area_faces[top].sum()
+    assert np.linalg.norm(centre) < 0.003

@@ -40,6 +40,7 @@ _PALETTE = np.array([
     [0.90, 0.90, 0.85], [0.55, 0.75, 0.15],
 ])
 _CLEARANCE = 0.03  # gap between objects that are not meant to touch (m)
+_LEVEL_DEG = 18.0  # a face whose normal is this close to up is level (part of a top something can stand on)
 _SLIDE_TOLERANCE = 1e-5  # m: a body slid against another stops this close to it (they touch; no gap)
 _STACK_BASE = "003_cracker_box"  # in drawn subsets with a stack: lying flat, it holds any small object
 Furniture = list[tuple[trimesh.Trimesh, np.ndarray, np.ndarray]]  # (mesh, part per face, colour)
@@ -205,11 +206,26 @@ def _lying(mesh: trimesh.Trimesh) -> np.ndarray:
     return rot
 
 
+def _top_faces(mesh: trimesh.Trimesh) -> np.ndarray:
+    """Mask of the faces of a world mesh's top: the connected level faces (normal within
+    ``_LEVEL_DEG`` of up) holding the highest level face. A bulged or slightly tilted top is
+    whole (a band under the highest point is only its highest corner), a ridge's is its crest."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    level = mesh.face_normals[:, 2] > math.cos(math.radians(_LEVEL_DEG))
+    if not level.any():
+        return level
+    pairs = mesh.face_adjacency[level[mesh.face_adjacency].all(axis=1)]
+    n = len(mesh.faces)
+    _, comp = connected_components(coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n)), directed=False)
+    highest = int(np.flatnonzero(level)[np.argmax(mesh.triangles_center[level, 2])])
+    return level & (comp == comp[highest])
+
+
 def _flat_top(mesh: trimesh.Trimesh) -> float:
-    """Area of the upward faces within 5 mm of the top: how well something can stand on it."""
-    top = mesh.bounds[1, 2]
-    up = (mesh.face_normals[:, 2] > 0.95) & (mesh.triangles_center[:, 2] > top - 0.005)
-    return float(mesh.area_faces[up].sum())
+    """Area of the mesh's top (:func:`_top_faces`): how well something can stand on it."""
+    return float(mesh.area_faces[_top_faces(mesh)].sum())
 
 
 def _posed(mesh: trimesh.Trimesh, base_rot: np.ndarray, yaw: float, xy: np.ndarray, z: float) -> np.ndarray:
@@ -357,11 +373,12 @@ def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world
     from realsim.geometry import inside_convex_polygon
 
     top_z = float(base_world.bounds[1, 2])
-    topv = base_world.vertices[base_world.vertices[:, 2] > top_z - 0.005, :2]
-    c = topv.mean(axis=0) + rng.uniform(-0.01, 0.01, size=2)
+    top = _top_faces(base_world)
+    area = base_world.area_faces[top]
+    c = (base_world.triangles_center[top, :2] * area[:, None]).sum(axis=0) / area.sum() + rng.uniform(-0.01, 0.01, size=2)
     pose = _posed(mesh, rot, yaw, c, top_z)
     v = _transformed(mesh, pose)
-    base_poly = _hull2d(topv)
+    base_poly = _hull2d(base_world.vertices[np.unique(base_world.faces[top]), :2])
     if not inside_convex_polygon(_hull2d(v[:, :2]), base_poly if _ccw(base_poly) else base_poly[::-1], 0.01).all():
         return None
     pose[2, 3] += _drop_height(v, [base_world])
@@ -370,8 +387,8 @@ def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world
         return False
     pose = motion @ pose
     pose[2, 3] += _drop_height(_transformed(mesh, pose), [base_world])  # on the surface: the simulation's sink taken out
-    top = trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False)
-    return pose if support_polygon_margin(top, base_world) >= REST.stack_margin else False
+    placed = trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False)
+    return pose if support_polygon_margin(placed, base_world) >= REST.stack_margin else False
 
 
 def _ccw(poly: np.ndarray) -> bool:
