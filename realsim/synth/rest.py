@@ -27,9 +27,11 @@ class RestParams:
     """How bodies are brought to rest and what counts as stable."""
 
     timestep: float = 0.004  # s
-    settle_time: float = 1.0  # s of simulated time per check
+    settle_time: float = 1.0  # s of simulated time per check (and per extension while a body still moves)
+    max_settle_time: float = 6.0  # s: a body still moving after this is not at rest
     friction: float = 0.5  # sliding friction of every contact (cardboard, plastic on wood)
     rolling_friction: float = 0.0005  # m: rolling resistance (condim 6), so round bodies come to rest as real ones do
+    density: float = 500.0  # kg/m^3 of a body whose mass is not given (only shapes matter for its own rest)
     rest_speed: float = 0.005  # m/s (and rad/s): a body slower than this at the end is at rest
     stack_margin: float = 0.005  # m: a stacked body's centre of mass at least this far inside its contacts' polygon
     stack_min_lift: float = 0.01  # m: a stacked body whose lowest point ends lower than this over the table fell off
@@ -38,34 +40,57 @@ class RestParams:
     max_hull_vertices: int = -1  # a body's hull in the simulation (MuJoCo's maxhullvert, -1: all)
     contact_tolerance: float = 0.0005  # m: vertices this close (vertically) to the other body touch it
     stack_tries: int = 8  # seeded placements simulated on the base before the body is put on the support instead
+    stack_set_downs: int = 40  # seeded set-downs on the base (fitting its top or not) before the body goes on the support
+    base_max_turn: float = 1.0  # degrees: a base turning more than this under the stacked body's weight does not hold it
 
 
 PARAMS = RestParams()
 
 
-def _hull_spec(spec: mujoco.MjSpec, hull: trimesh.Trimesh, params: RestParams) -> mujoco.MjsBody:
-    """A free body holding ``hull`` (vertices in the body frame = world at the start)."""
+def _hull_spec(spec: mujoco.MjSpec, hulls: list[trimesh.Trimesh], params: RestParams,
+               masses: list[float] | None = None) -> mujoco.MjsBody:
+    """A free body holding ``hulls`` (vertices in the body frame = world at the start), each of its
+    mass in ``masses`` (kg) or of one density."""
     spec.option.timestep = params.timestep
-    spec.add_mesh(name="hull", uservert=hull.vertices.ravel().tolist(), userface=hull.faces.ravel().tolist(), maxhullvert=params.max_hull_vertices)
     body = spec.worldbody.add_body(name="body")
     body.add_freejoint()
-    body.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname="hull", density=500.0, friction=[params.friction, 0.005, params.rolling_friction], condim=6)
+    for k, hull in enumerate(hulls):
+        spec.add_mesh(name=f"hull{k}", uservert=hull.vertices.ravel().tolist(), userface=hull.faces.ravel().tolist(), maxhullvert=params.max_hull_vertices)
+        geom = body.add_geom(type=mujoco.mjtGeom.mjGEOM_MESH, meshname=f"hull{k}", density=params.density,
+                             friction=[params.friction, 0.005, params.rolling_friction], condim=6)
+        if masses is not None:
+            geom.mass = masses[k]
     return body
 
 
 def _settle(spec: mujoco.MjSpec, params: RestParams) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """Simulate ``settle_time``, then on in steps as long while the body still moves (faster than
+    ``rest_speed`` at the end of a step, or it moved during it), up to ``max_settle_time``: a body
+    rocking slowly on a round side is not at rest yet."""
     model = spec.compile()
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
-    mujoco.mj_step(model, data, int(round(params.settle_time / params.timestep)))
+    steps = int(round(params.settle_time / params.timestep))
+    mujoco.mj_step(model, data, steps)
+    while data.time + params.settle_time <= params.max_settle_time + 1e-9:
+        before = data.qpos.copy()
+        mujoco.mj_step(model, data, steps)
+        if np.abs(data.qvel).max() <= params.rest_speed and _moved(before, data.qpos) <= params.rest_speed * params.settle_time:
+            break  # still at the end and where it was a step before (not at the turn of a rocking motion)
     mujoco.mj_forward(model, data)
     return model, data
+
+
+def _moved(before: np.ndarray, after: np.ndarray) -> float:
+    """How far a free body moved: its translation (m) or its turn (rad), the larger."""
+    turn = Rotation.from_quat(np.roll(before[3:7], -1)).inv() * Rotation.from_quat(np.roll(after[3:7], -1))
+    return float(max(np.linalg.norm(after[:3] - before[:3]), turn.magnitude()))
 
 
 def _rotation_of(data: mujoco.MjData) -> np.ndarray:
     """The free body's rotation since the start (body frame = world frame at the start)."""
     w, x, y, z = data.qpos[3:7]
-    return Rotation.from_quat([x, y, z, w]).as_matrix()
+    return np.asarray(Rotation.from_quat([x, y, z, w]).as_matrix())
 
 
 @functools.lru_cache(maxsize=128)
@@ -78,7 +103,7 @@ def _rest_rotation_cached(path: str, rot_bytes: bytes, params: RestParams) -> by
     hull.apply_translation([0.0, 0.0, -hull.bounds[0, 2]])  # lowest point on the plane z = 0
     spec = mujoco.MjSpec()
     spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[1.0, 1.0, 0.1], friction=[params.friction, 0.005, params.rolling_friction])
-    _hull_spec(spec, hull, params)
+    _hull_spec(spec, [hull], params)
     _, data = _settle(spec, params)
     out = np.eye(4)
     out[:3, :3] = _rotation_of(data) @ rot[:3, :3]
@@ -158,7 +183,7 @@ def stacked_rest(top: trimesh.Trimesh, base: trimesh.Trimesh, floor_z: float,
     hull.apply_translation(-com)
     spec = mujoco.MjSpec()
     _surface_tiles(spec, base, floor_z, params)
-    body = _hull_spec(spec, hull, params)
+    body = _hull_spec(spec, [hull], params)
     body.pos = com.tolist()
     model, data = _settle(spec, params)
     if np.abs(data.qvel).max() > params.rest_speed:
@@ -197,3 +222,22 @@ def support_polygon_margin(top: trimesh.Trimesh, base: trimesh.Trimesh, params: 
     closest = np.nanmin(np.concatenate([up, below]))
     touching = np.vstack([top.vertices[up <= closest + params.contact_tolerance], base.vertices[below <= closest + params.contact_tolerance]])
     return support_margin(touching[:, :2], top.convex_hull.center_mass[:2], 2 * params.stack_margin)
+
+
+def base_holds(base: trimesh.Trimesh, top: trimesh.Trimesh, floor_z: float, masses: tuple[float, float],
+               params: RestParams = PARAMS) -> bool:
+    """Whether ``base`` (a world mesh on the support at ``floor_z``) stays at rest with ``top`` resting
+    on it: the two hulls (``masses`` kg: base, top) as one body let settle on the support, and the
+    base turns at most ``params.base_max_turn`` degrees (a lying round body with the weight off its
+    contact line rolls, one with a heavy load high over it rolls over; a box with it past its edge tips)."""
+    hulls = [base.convex_hull.copy(), top.convex_hull.copy()]
+    com = (hulls[0].center_mass * masses[0] + hulls[1].center_mass * masses[1]) / sum(masses)
+    for hull in hulls:
+        hull.apply_translation(-com)
+    spec = mujoco.MjSpec()
+    spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0.0, 0.0, 0.1], pos=[0.0, 0.0, floor_z],
+                            friction=[params.friction, 0.005, params.rolling_friction])
+    _hull_spec(spec, hulls, params, list(masses)).pos = com.tolist()
+    _, data = _settle(spec, params)
+    turn = np.degrees(Rotation.from_matrix(_rotation_of(data)).magnitude())
+    return bool(turn <= params.base_max_turn and np.abs(data.qvel).max() <= params.rest_speed)

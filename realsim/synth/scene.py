@@ -21,7 +21,7 @@ from realsim.errors import InputError
 from realsim.geometry import polygons_apart
 from realsim.synth.meshes import box_mesh, load_ycb, raycaster
 from realsim.synth.rest import PARAMS as REST
-from realsim.synth.rest import rest_rotation, stacked_rest, support_polygon_margin
+from realsim.synth.rest import base_holds, rest_rotation, stacked_rest, support_polygon_margin
 
 # per-face part codes (the mOSD label convention for points: 1..9 furniture, objects 10 * id)
 PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
@@ -320,11 +320,13 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
         file = root / name / "textured.obj"
         ok = False
         stack_tries = REST.stack_tries if stack_pair and name == stack_pair[1] else 0
+        set_downs = REST.stack_set_downs if stack_tries else 0
         for _ in range(200):
             yaw = float(rng.uniform(-math.pi, math.pi))
-            if stack_tries:
+            if stack_tries and set_downs:
                 base_obj = next(o for o in placed if o.name == stack_pair[0])  # type: ignore[index]
-                pose = _stacked_pose(mesh, base_rot[name], yaw, world_meshes[placed.index(base_obj)], support.height, rng)
+                set_downs -= 1
+                pose = _stacked_pose(mesh, base_rot[name], yaw, world_meshes[placed.index(base_obj)], support.height, rng, name, base_obj.name)
                 if pose is None:
                     continue
                 stack_tries -= 1
@@ -354,7 +356,7 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
                     continue
             ok = True
             break
-        if not ok:
+        if not ok or not isinstance(pose, np.ndarray):
             return None
         obj = GtObject(k + 1, name, file, pose, support.name, rest_on, touching, tuple(float(c) for c in colors[k % len(colors)]))
         for t in touching:
@@ -366,9 +368,9 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
 
 
 def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world: trimesh.Trimesh, floor_z: float,
-                  rng: np.random.Generator) -> np.ndarray | bool | None:
+                  rng: np.random.Generator, name: str, base_name: str) -> np.ndarray | bool | None:
     """A seeded pose of ``mesh`` resting on ``base_world``: set down over the base's top (its
-    footprint 1 cm inside the top's), settled in MuJoCo and put back exactly on the base's surface.
+    footprint 1 cm inside the top's), settled in MuJoCo and put back exactly on the base's surface, kept when the base holds it.
     None: the footprint does not fit the top (no simulation run); False: simulated, not at rest there."""
     from realsim.geometry import inside_convex_polygon
 
@@ -388,7 +390,19 @@ def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world
     pose = motion @ pose
     pose[2, 3] += _drop_height(_transformed(mesh, pose), [base_world])  # on the surface: the simulation's sink taken out
     placed = trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False)
-    return pose if support_polygon_margin(placed, base_world) >= REST.stack_margin else False
+    masses = (typical_mass(base_name, base_world), typical_mass(name, placed))
+    if support_polygon_margin(placed, base_world) < REST.stack_margin or not base_holds(base_world, placed, floor_z, masses):
+        return False
+    return pose
+
+
+def typical_mass(name: str, mesh: trimesh.Trimesh) -> float:
+    """A scan's typical mass (kg): its category's in the size table (YCB's own weights for the
+    categories it covers), else its hull's volume at ``REST.density``."""
+    from realsim.physics.size_table import lookup
+
+    match = lookup(name.split("_", 1)[1] if name[:3].isdigit() else name)
+    return match.category.mass[1] if match is not None else float(mesh.convex_hull.volume * REST.density)
 
 
 def _ccw(poly: np.ndarray) -> bool:
