@@ -374,6 +374,8 @@ from commands_blind_nov29m import HELDOUT30  # noqa: E402
 from commands_blind_nov29n import HELDOUT31  # noqa: E402
 from commands_blind_nov29o import HELDOUT32  # noqa: E402
 from commands_blind_nov30 import HELDOUT33  # noqa: E402
+from commands_blind_nov30b import HELDOUT34  # noqa: E402
+from commands_blind_nov30c import HELDOUT35  # noqa: E402
 
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
@@ -382,4 +384,6 @@ HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout15": HELDOUT15, "heldout16": HELDOUT16, "heldout17": HELDOUT17, "heldout18": HELDOUT18, "heldout19": HELDOUT19, "heldout20": HELDOUT20, "heldout21": HELDOUT21, "heldout22": HELDOUT22, "heldout23": HELDOUT23, "heldout24": HELDOUT24, "heldout25": HELDOUT25, "heldout26": HELDOUT26, "heldout27": HELDOUT27, "heldout28": HELDOUT28,
     "heldout29": HELDOUT29, "heldout30": HELDOUT30, "heldout31": HELDOUT31, "heldout32": HELDOUT32,
     "heldout33": HELDOUT33,
+    "heldout34": HELDOUT34,
+    "heldout35": HELDOUT35,
 }

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import trimesh
-from scipy.spatial import QhullError
+from scipy.spatial import QhullError, cKDTree
 
 from realsim.completion.hull import solid_hull, trimesh_hull, volume
 from realsim.completion.params import CompletionParams
@@ -95,19 +95,34 @@ class Carving:
 
 
 def carve(mesh: trimesh.Trimesh, view: DepthView, base_z: float, observed: np.ndarray, params: CompletionParams,
-          own: int | None = None, tiles: bool = True, surface_ends: bool = False) -> Carving:
+          own: int | None = None, tiles: bool = True, surface_ends: bool = False, outline: np.ndarray | None = None) -> Carving:
     """Voxelize ``mesh`` once: its carved hull (see :func:`carve_free_space`) and, when ``tiles`` and
     the body is evidently not convex (at least ``tile_min_fraction`` is seen through, or the carved
     hull fills ``carve_min_fraction`` of the voxels again with space the camera saw through), its
-    tiles (see :func:`carve_to_tiles`). ``surface_ends``: see :func:`_voxels`."""
+    tiles (see :func:`carve_to_tiles`; only the voxel columns under the ``outline``, see :func:`under_outline`).
+    ``surface_ends``: see :func:`_voxels`."""
     voxels = _voxels(mesh, view, params, own, base_z, surface_ends)
     fraction = float(voxels[4].mean()) if len(voxels[4]) else 0.0
     if fraction < params.carve_min_fraction or fraction > 0.9:
         return Carving(fraction, mesh)
     hull = _carved_hull(mesh, voxels, base_z, observed, not surface_ends)
     many = tiles and (fraction >= params.tile_min_fraction or (params.tile_when_refilled and _refilled(hull, voxels) >= params.carve_min_fraction))
+    if many and outline is not None and params.tile_outline_steps > 0:
+        step, xy, col, cells, free, ends = voxels
+        voxels = (step, xy, col, cells, free | ~under_outline(xy, outline, params.tile_outline_steps * step)[col], ends)
     pieces = _tiles(voxels, base_z, observed, params) if many else None
     return Carving(fraction, hull, pieces)
+
+
+def under_outline(xy: np.ndarray, outline: np.ndarray, reach: float) -> np.ndarray:
+    """Which voxel columns (centres ``xy``, (M, 2)) have a point of the body's ``outline`` (its seen and
+    completed points, (N, 2+)) within ``reach`` horizontally. A body lying on its support seen from
+    above reaches no farther than its outline from above: a column beyond it is space the body hides
+    from the camera (behind a thin blade, inside a loop, between a handle and a barrel), not body."""
+    if not len(xy) or not len(outline):
+        return np.zeros(len(xy), bool)
+    distance, _ = cKDTree(np.asarray(outline)[:, :2]).query(xy, distance_upper_bound=reach)
+    return np.asarray(np.isfinite(distance))
 
 
 def _refilled(hull: trimesh.Trimesh, voxels: Voxels) -> float:

@@ -138,7 +138,7 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
         if floors is not None:  # not convex or not: judged on the hull extruded down (the space under a round side says nothing of it)
             mesh, base_centre = complete_hull(body, base_z, top_z, drops=drops, floors=floors)
             tiled = replace(ctx.params, tile_min_fraction=0.0 if carving is not None and carving.tiles is not None else np.inf)
-            carving = carve(mesh, ctx.view, base_z, seen, tiled, own=obj.id) if ctx.view is not None else None
+            carving = carve(mesh, ctx.view, base_z, seen, tiled, own=obj.id, outline=body[body[:, 2] <= top_z]) if ctx.view is not None else None
         carved = carving.fraction if carving is not None else 0.0
         if carving is not None and carving.tiles is not None:  # much seen through: the body is not convex
             parts, visual = carving.tiles, carving.hull  # one closed surface to paint

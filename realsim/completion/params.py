@@ -33,6 +33,7 @@ class CompletionParams:
     carve_tile: float = 0.02  # much carved shapes are kept as convex cubic tiles at least this wide (m)
     max_pieces: int = 24  # about this many tiles (the bounding box cut in this many cubes)
     tile_min_fraction: float = 0.1  # a shape this much seen through is kept as tiles (a hull would refill the free space)
+    tile_outline_steps: float = 1.0  # a lying body's tiles keep only voxel columns within this many voxel steps of its points from above (0: all)
     tile_when_refilled: bool = False  # also tiles when the carved hull fills carve_min_fraction of its voxels again with seen free space
     denoise_window: int = 5  # object pixels' depth: the median of this many pixels square of the same object (camera views)
     clip_free_space: bool = True  # cut every finished piece back out of the space the camera saw through

@@ -38,6 +38,7 @@ from realsim.perception.plane_patches import connected_groups
 from realsim.perception.segment_params import SegmentParams, SegmentResult
 from realsim.perception.shallow_folds import join_shallow_folds
 from realsim.perception.stack_split import split_resting
+from realsim.perception.step_joins import join_hidden_steps
 from realsim.perception.supervoxels import cloud_supervoxels, grid_links, grid_normals, grid_supervoxels, knn_links, knn_normals, smallest_eigenvectors
 from realsim.perception.supervoxels import link_components as _components
 from realsim.perception.visibility import OccupancyGrid, visibility_score
@@ -423,6 +424,10 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             obj_labels = join_shallow_folds(obj_labels, points, normals, grid_shape,
                                             params.jump_distance if jump_limits is None else jump_limits, params.fold_max_angle,
                                             params.fold_window, params.min_contact_links, params.fold_continuous_share)
+        if params.step_max_gap is not None:  # a body's nearer piece hiding the foot of its farther piece
+            obj_labels = join_hidden_steps(obj_labels, points, normals, grid_shape, axis,
+                                           params.jump_distance if jump_limits is None else jump_limits, params.step_max_gap,
+                                           params.step_max_facing, params.min_contact_links, params.step_consistent_share)
         if colors is not None:  # touching objects of two colours that meet in a fold
             obj_labels[ids] = split_by_colour(colors[ids], obj_labels[ids], la, lb, params.min_object_points, normals[ids],
                                               view_points=points[ids])

@@ -52,6 +52,10 @@ class SegmentParams:
     # a depth-continuous border are one body's pieces (realsim.perception.shallow_folds; None: off)
     fold_window: int = 6  # ... each side's surface the mean normal of its pixels this many pixels around the border
     fold_continuous_share: float = 0.5  # ... when at least this share of the border's pixel links is depth-continuous
+    step_max_gap: float | None = 0.012  # camera views: segments meeting at a depth step whose nearer side's rim lies this
+    # close (m) to the farther side's surface plane are one body's pieces (realsim.perception.step_joins; None: off)
+    step_max_facing: float = 0.6  # ... when the nearer side turns from the camera there (|n . view| under this)
+    step_consistent_share: float = 0.9  # ... and is the nearer one on at least this share of the step's links
     # objects
     absorb_points: int = 600  # smaller segments touching another segment join it
     min_view_area: float = 0.0015  # m^2 of surface: camera views, smaller segments are never objects by themselves

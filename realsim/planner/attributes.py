@@ -13,7 +13,7 @@ import numpy as np
 from realsim.errors import InputError
 from realsim.planner import relations
 from realsim.planner.types import ObjectInfo
-from realsim.planner.vocab import BIG, COLOR_WORDS, SIZE_AXIS, TYPICAL_COLORS, name_words, norm
+from realsim.planner.vocab import BIG, COLOR_WORDS, MATERIAL_KINDS, SIZE_AXIS, TYPICAL_COLORS, name_words, norm
 
 
 def colors_of(o: ObjectInfo) -> set[str]:
@@ -35,6 +35,28 @@ def usual_colour_pick(nouns: list[str], objs: list[ObjectInfo]) -> list[ObjectIn
     usual = {c for w in nouns for c in TYPICAL_COLORS.get(w, ())}
     hits = [o for o in objs if colors_of(o) & usual]
     return hits if len(hits) == 1 else objs
+
+
+def usual_material_pick(words: list[str], objs: list[ObjectInfo]) -> list[ObjectInfo]:
+    """Those of ``objs`` whose kind is usually made of the material ``words`` say ("the cardboard
+    one" among cans, a mug and a cereal box: the box), when that leaves some; else ``objs``."""
+    kinds = {k for w in words for k in MATERIAL_KINDS.get(w, ())}
+    hits = [o for o in objs if kinds & {*name_words(o.label), *name_words(o.name)}]
+    return hits if hits and kinds else objs
+
+
+_OBLONG = frozenset({"rectangular", "oblong", "elongated"})
+_ROUND = frozenset({"round", "cylindrical", "circular"})
+
+
+def footprint_shape_pick(words: list[str], objs: list[ObjectInfo]) -> list[ObjectInfo]:
+    """Of ``objs`` that their names do not tell apart, those whose footprint has the shape ``words`` say:
+    "rectangular" one side at least 1.25 times the other, "round" within 1.15 ("the rectangular tin"
+    of a round and a flat can); else ``objs``."""
+    aspect = {o.name: (fp := o.footprint or (max(o.size[:2]), min(o.size[:2])))[0] / max(1e-6, fp[1]) for o in objs}
+    hits = ([o for o in objs if aspect[o.name] >= 1.25] if _OBLONG & set(words)
+            else [o for o in objs if aspect[o.name] < 1.15] if _ROUND & set(words) else [])
+    return hits or objs
 
 
 # hues a measured colour is easily named as instead (a yellow box measured orange)

@@ -72,17 +72,25 @@ def described(text: str) -> str:
 
 
 _WHO = r"((?:the|that|this|those|these|both|all)(?: (?!(?:across|to|of|in|on|at|from|with|over|into|by|for|through|past)\b)[a-z-]+){1,5}?|them|it|'?em)"
-_CAUSE = r"\b(?:let|make|have|get|bid|tell|help)"
+_CAUSE = r"\b(?:let|make|have|get|bid|tell|help|allow)"
 
 
 def causative(text: str) -> str:
     """What people have something do, as the request ("let them trade places" -> "swap them", "have
-    the cube go on the plate" -> "put the cube on the plate", "let the arm return to its resting
-    place" -> "go home")."""
+    the cube go on the plate" -> "put the cube on the plate", "allow it to settle on the plate" -> "put
+    it on the plate", "let the arm return to its resting place" -> "go home")."""
     text = re.sub(rf"{_CAUSE} (?:the arm|the robot|yourself|it) (?:to )?(?:return|go|head|come)(?: back)? (?:home|to (?:its|your|the) "
                   r"(?:resting|rest|home|starting|start) (?:place|position|pose|spot))\b", "go home", text)
-    text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions)\b",
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:[a-z]+ly )?(?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions)\b",
                   lambda m: f"swap {m.group(1).lstrip(chr(39))}", text)
-    return re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:go|move|sit|stand|end up|rest|slide|hide|stay) (?=(?:in|into|on|onto|next to|beside|behind|in front of|"
+    # "let it find the table": put on it; "let it float across, ...": carried, the place said next
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?find ((?:the|its|their) (?:table|floor|counter|ground|place|spot))\b", lambda m: f"put {m.group(1).lstrip(chr(39))} on {m.group(2)}", text)
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:float|drift|glide|sail|fly) (?:across|over|along|up|through the air)(?=\s*(?:[,.;]|$| and\b| then\b))",
+                  lambda m: f"lift {m.group(1).lstrip(chr(39))}", text)
+    # "let the mug drift back towards you three inches": how it moves
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:drift|float|glide|slide|ease|roll|travel|wander|go|move|come)(?= (?:back|forward|forwards|backwards|left|right|to the left|to the right|away|closer|toward|towards)\b)",
+                  lambda m: f"move {m.group(1).lstrip(chr(39))}", text)
+    return re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:go|move|sit|stand|end up|rest|come to rest|come to a rest|settle|settle down|land|drop|drift|float|glide|slide|hide|stay|come down)"
+                  r"(?: (?:gently|softly|slowly|down|back|over|across|right))* (?=(?:in|into|inside|on|onto|next to|beside|behind|in front of|"
                   r"to the left of|to the right of|left of|right of|between|on top of|down on)\b)", lambda m: f"put {m.group(1).lstrip(chr(39))} ", text)
 

@@ -44,7 +44,7 @@ from realsim.planner.lexicon import (
     relation_start,
 )
 from realsim.planner.refine import REFINE
-from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SHADES, SMALL, VAGUE_DISTANCES
+from realsim.planner.vocab import BIG, COLOR_WORDS, NUMBERS, SHADES, SMALL, VAGUE_DISTANCES, brands
 
 FILLERS = (
     r"(?:cheers|ta|thanks|thank you)(?: (?:ever |very |so )*much| a lot| a bunch| heaps| loads| kindly)?(?: (?:mate|love|luv|pet|darling|hun|buddy|pal))?",
@@ -76,6 +76,7 @@ FILLERS = (
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
     r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
+    r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
 # when the speaker wants it done is not part of the command: "when I come back I'd like ...", "by the end of this, ..."
@@ -167,6 +168,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\s*,?\s+instead of (?:being )?(?:on|in|inside|next to|beside|behind|in front of|on top of|under|at|by) [^.,;!?]*", "", text)
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:the |your )?arm (?:back )?(?:to )?home\b", "go home", text)  # "2) arm home"
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
+    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:heel|come back(?: to me)?|back to (?:me|base))(?=\s*(?:$|[.,;!?]))", "go home", text)  # a dog's "heel": back to its place
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
@@ -272,11 +274,18 @@ def clean(command: str) -> str:
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
                   r"(?: (?:away|off|out|aside))?(?: for (?:me|us))?(?=\s*(?:$|[.,;])| and\b| then\b)",
                   r"move \1 aside", text)
+    # "the blocks in a line with the green one between the red and the blue": the one placed says the line
+    text = re.sub(r"\b(?:(?:put|place|set|arrange|lay out|line up|get|have|want|need|like) )?(?:all )?(?:the (?:two |three |four |five )?(?:[a-z]+ )?([a-z]+s)|them|these|those)(?: up)?"
+                  r" in (?:a|one) (?:straight )?(?:line|row)(?: up)?,? with (the [a-z ]+?) (?:(?:sitting|standing|placed|going|put|set|right|being) )*"
+                  r"(between\b|in (?:the )?(?:middle|centre|center)\b(?: of (?:them|the line|the row))?)",
+                  lambda m: f"put {m.group(2)} between" + ("" if m.group(3).startswith("between") else f" the other two{' ' + m.group(1) if m.group(1) else ''}"), text)
     text = re.sub(r"\bline ((?:up )?.+?)(?: up)? (?:with|next to|beside|alongside|by) ", lambda m: f"put {re.sub(r'^up ', '', m.group(1))} next to ", text)
     text = re.sub(r"\bline up (.+?)(?: in a row| side by side)?(?=$|[.,;]| then\b)|\bline (.+?) up(?: in a row| side by side)?(?=$|[.,;]| then\b)",
                   lambda m: f"put {m.group(1) or m.group(2)} next to each other", text)
     # "right" as an intensifier ("right beside the box"), not a side ("the can on the right next to ...")
     text = re.sub(r"(?<!the )(?<!far )(?<!further )(?<!farther )(?<!more )\bright (?=(?:next to|beside|behind|in front of|between|on top of|inside|into|onto|against|in|on)\b)", "", text)
+    # "the cup, though, belongs on its left": a contrast set off in the middle of a clause is not a pause in it
+    text = re.sub(r"\s*,\s*(?:though|however|by contrast|on the other hand|for its part|in turn|meanwhile|instead)\s*,\s*", " ", text)
     for filler in FILLERS:
         text = re.sub(rf"(?:(?<=^)|(?<=[\s,.;])){filler}(?=$|[\s,.;])", " ", text)
     text = re.sub(rf"(?:^|(?<=[\s,.;]))do (?={VERB_START.pattern})", "", text)  # "do go back home": emphasis
@@ -284,7 +293,7 @@ def clean(command: str) -> str:
     for g, v in GERUNDS.items():
         text = re.sub(rf"\b{g}\b", v, text)
     text = re.sub(r"[^a-z0-9.,; ]+", " ", text)
-    text = " ".join(text.split())
+    text = brands(" ".join(text.split()))
     # the object said first, then the robot told what it does with it: "the cereal box you are pushing 5 cm forward"
     text = re.sub(rf"(?:^|(?<=[.,;] ))((?:the|that|this) [a-z ]+?) you (?:{_YOU_MODAL} )?({VERB_START.pattern})", r"\2 \1", text)
     text = re.sub(rf"(?:^|(?<=[.,;] ))you (?:{_YOU_MODAL} )?(?={VERB_START.pattern})", "", text)  # "orange cylinder, you are sliding it left"
@@ -336,6 +345,8 @@ def split_command(command: str) -> list[str]:
     parts = topic.fronted(topic.joined(topic.choice(topic.partitive(parts)), verb_re), verb_re, comma=bool(re.match(r"[^,;.]*?(?<!\bthen)\s*,", text)))
     rel_re = re.compile(rf"\s(?:{'|'.join(re.escape(w) for w, _ in RELATIONS if w not in ('to', 'by', 'over', 'near'))})\s")
     for part in filter(None, parts):
+        if clauses and clauses[-1].startswith("dont touch ") and re.fullmatch(r"(?:leave|keep off|not) (?:it|them|that)(?: alone| be)?", part):
+            continue  # "Leave the mustard. Leave it!": said again
         if clauses and not verb_re.match(part) and not AGAIN.fullmatch(part) and not _DESIRE.match(part) and not _OTHER_VERB.match(part):
             verb = verb_re.match(clauses[-1])
             rel = rel_re.search(f" {clauses[-1]} ")
@@ -354,7 +365,7 @@ def split_command(command: str) -> list[str]:
                 continue  # "Red one too, same plate!": the place said again
             elif REFINE.fullmatch(part) and _SIDE_REL.search(f" {clauses[-1]} "):  # "put the can next to the bowl, on the left": which side
                 clauses.append(part)
-            elif _AMOUNT.fullmatch(part) or _MOTION.fullmatch(part):  # "bring the mug closer, 10 centimeter": how far; "red cube. forward ten cm": where
+            elif _AMOUNT.fullmatch(part) or _MOTION.fullmatch(part) or (re.fullmatch(rf"(?:by )?{_HOW_FAR}(?: or so)?", part) and re.search(r"cm|mm|centimet|millimet|inch", part)):  # "bring the mug closer, 10 centimeter": how far; "red cube. forward ten cm": where
                 clauses[-1] = f"{clauses[-1]} {part}"
             elif _OTHER_SIDE.fullmatch(part) and (flipped := _flip_side(clauses[-1])):  # "now the soup can, but the other side"
                 clauses[-1] = flipped
@@ -366,6 +377,9 @@ def split_command(command: str) -> list[str]:
                 clauses.append(part)
             elif re.match(r"(?:which|who) |that (?:is|are|was|were|s|sits|stands|lies|rests|has|have|had|looks|seems|i|you|we|they|it)\b", part):  # "... on the red cube, which is on the plate": says which
                 clauses[-1] = f"{clauses[-1]} {part}"
+            elif _PLACE_ALONE.fullmatch(part) and not rel_re.search(f" {_TOWARD_SPEAKER.sub('', clauses[-1])} "):
+                # "put the mug, in front of the red can": where it goes, said after a pause; "closer to me, in front of the can": the place says how close
+                clauses[-1] = f"{re.sub(rf'(?:,? and)?(?: down| over| back)? {_TOWARD_SPEAKER.pattern}$', '', clauses[-1])} {part}"
             elif put is not None and rel and rel_re.search(f" {part} "):
                 clauses.append(f"{put} {part}".strip())  # "put the can in the bowl and the mug on the box"
             elif _SAYS.match(part):  # "..., my eyes aren't what they used to be": a remark of its own
@@ -385,6 +399,8 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
+_PLACE_ALONE = re.compile(rf"(?:{'|'.join(re.escape(w) for w, k in sorted(RELATIONS, key=lambda r: -len(r[0])) if k not in ('to', 'sides') and w not in ('by', 'over', 'near', 'toward', 'towards', 'closer to', 'nearer to'))}) (?:the|that|this|it|them)\b.*")
+_TOWARD_SPEAKER = re.compile(r"\b(?:closer|nearer|close|near)(?: to)? (?:me|you|us|the robot|yourself)\b")  # a way, not a place by a thing
 _STATES = re.compile(rf"\b{STATEMENT_VERB}\b")  # "the can is lined up behind the box, it looks cluttered": said of things, nothing placed
 _OTHER_SIDE = re.compile(r"(?:but |and |only )*(?:on |to |at |onto )?(?:the )?(?:other|opposite) (?:side|way|one)(?: (?:this time|instead|of it|round|around))?")
 _SIDES = {"left": "right", "right": "left", "in front of": "behind", "behind": "in front of"}
@@ -436,24 +452,30 @@ def _axes(text: str) -> str:
 
 _KEEP_STILL = re.compile(r"(?:but |and |while )?(?:(?:leave|keep) (.+?) (?:exactly |just |right )?(?:where (?:it|they) (?:is|are|was|were|sits?|stands?)(?: now)?"
                          r"|alone|as (?:it|they) (?:is|are)|in (?:its|their) (?:place|spot)|in place|be|untouched|still)"
-                         r"|(?:keep|stay) (?:clear|away) (?:of|from) (.+))")
+                         r"|(?:keep|stay) (?:clear|away) (?:of|from) (.+)"
+                         r"|leave ((?:the|that|this|those|these) (?:(?!(?:in|on|at|by|next|behind|beside|near|to|for|with|and|then|out|there|here)\b)[a-z]+ ?)+))")  # "leave the bowl!"
 
 
 def _prohibition(part: str, verb_re: re.Pattern[str]) -> str:
     """"don't put the mug in the bowl", "not the banana": what is not to be done keeps its object
     still ("dont touch the mug"); it never becomes the action."""
     m = re.match(r"(?:but )?not (.+)$", part)
+    if m and (re.match(r"(?:out |over |up |down )?(?:there|here|anywhere|somewhere|where)\b", m.group(1))
+              or not re.search(r"\b(?:it|them)\b", m.group(1)) and relation_start(re.sub(r"^(?:out|over|up|down|back) ", "", m.group(1)))):
+        return ""  # "put the can behind the box, not out in the open": a place ruled out, said beside the place meant
     if m and not verb_re.match(m.group(1)):
         return f"dont touch {m.group(1)}"
     m = _KEEP_STILL.fullmatch(part)
-    if m and not re.fullmatch(r"(?:it|them|that|this|those|these)", m.group(1) or m.group(2)):
-        return f"dont touch {m.group(1) or m.group(2)}"  # "leave the mug where it is", "keep clear of the bowl"
+    if m and not re.fullmatch(r"(?:it|them|that|this|those|these)", kept := (m.group(1) or m.group(2) or m.group(3)).strip()):
+        return f"dont touch {kept}"  # "leave the mug where it is", "keep clear of the bowl"
     m = re.match(r"(?:please )?(?:dont|don t|do not|never|no need to)\s+(.+)$", part)
     if not m or AVOID.match(part):
         return part
     if re.fullmatch(r"(?:place|put|set|drop|release|let go of|lay) (?:it|them)(?: down| back)?", m.group(1)):
         return ""  # "grasp the mug and hold it. do not place it": it stays in the hand
     verb = verb_re.match(m.group(1))
+    if not verb and re.fullmatch(r"[a-z]+ (?:it|them)(?: over| up| down| too hard)?", m.group(1)):
+        return ""  # "easy, don't squash it": how to handle what is being moved, not a thing to keep still
     rest = m.group(1)[verb.end():].strip() if verb else m.group(1)
     rest = re.sub(r"^(?:up|down|back|over)\s+", "", rest)
     cut = [i for i in (re.search(rf"\s{re.escape(w)}\s", f" {rest} ") for w, _ in RELATIONS) if i]
@@ -485,9 +507,10 @@ def _in_order(text: str) -> str:
     you = r"(?:you |i )?(?:have |ve )?"
     text = re.sub(r"\s+\.$", ".", text)
     m = re.fullmatch(rf"before {you}((?:{verbs})\b.+?), (.+)", text)
-    # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A, but not until you've B"
+    # "put A where B was, but before that, move B": said after, done first; "A second, then/first B"; "A afterwards, first B"
+    # ("A, and after that B" is in order); "A, but not until you've B"
     late = (re.fullmatch(r"(.+?),? (?:but |and )?(?:even )?(?:before (?:that|this|you do (?:that|this|it)|doing (?:that|this|so))|first(?: of all)?)[,:]? (.+?)\.?", text)
-            or re.fullmatch(r"(.+?) (?:second|last|afterwards|after that)[,;]? (?:then |and )?(?:first|before that)?[,:]? ?(.+?)\.?", text)
+            or re.fullmatch(r"(.+?) (?:(?:second|last)[,;]? (?:then |and )?(?:first|before that)?|(?:afterwards|after that)[,;]? (?:then |and )?(?:first|before that))[,:]? ?(.+?)\.?", text)
             or re.fullmatch(rf"(.+?),? (?:but )?not (?:until|before) {you}((?:{verbs})\b.+?)\.?", text))
     if m:
         first, then = m.group(2), m.group(1)

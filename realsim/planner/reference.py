@@ -24,6 +24,7 @@ from realsim.planner import noun_phrase, typos, vocab
 from realsim.planner.attributes import (
     between_of,
     colors_of,
+    footprint_shape_pick,
     holding,
     left_order,
     neighbour_colour_pick,
@@ -31,6 +32,7 @@ from realsim.planner.attributes import (
     relation_holds,
     size_pick,
     usual_colour_pick,
+    usual_material_pick,
 )
 from realsim.planner.clock import AT_CLOCK, bearing_gap
 from realsim.planner.core_noun import core_words
@@ -455,6 +457,10 @@ class Resolver:
             return found
         if len(found) > 1 and not colors:  # "the cracker box" between a white and a red box: a cracker box is red
             found = usual_colour_pick(nouns, found)
+        if len(found) > 1:  # "the cardboard one": the box (a material the scene's own names say was read as a name)
+            found = usual_material_pick([w for w in words if w not in self._said], found)
+        if len(found) > 1:
+            found = footprint_shape_pick(words, found)
         if len(found) > 1 and not loose and core is not None:  # talk around a name that names no one thing: no name at all
             raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
         if len(found) > 1 and not loose:

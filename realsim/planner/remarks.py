@@ -5,8 +5,9 @@ Rule: a sentence, or the last comma piece of one, whose subject is a person (a p
 than "I" and "you", or a word for a family member, a child, a colleague or a term of
 endearment) and whose verb is a statement (wants, keeps, is, likes, ...) is talk, but only when
 another part of the text holds a command verb, and only when it names no place by a thing
-("we need the mug in the bowl" is kept: a request). "She wants you to put ..." is a request
-through her: the command stays, without its opening.
+("we need the mug in the bowl" is kept: a request). "She wants you to put ...", "Dana asked me
+to pass this on: ..." and "she wants it next to the bottle" are requests through her: the command
+stays, without its opening.
 """
 
 from __future__ import annotations
@@ -25,6 +26,11 @@ _SAYS = (r"(?:s|re|is|are|was|were|wants?|wanted|likes?|liked|loves?|needs?|keep
          r"|might|always|never|just|hates?|prefers?|thinks?|says?|said|asked|asks)")
 _REMARK = re.compile(rf"(?:(?:and|but|oh|because|cause|so|cos)\s+)?{_WHO}\s*'?\s*{_SAYS}\b[^.!?;]*")
 _THROUGH = re.compile(rf"^\s*{_WHO}\s+(?:wants?|would like|d like|needs?|asked(?: for)?|asks)\s+(?:you|the robot)\s+to\s+")
+# a request passed on: "Dana asked me to pass this on: ...", "Coach told me to tell you to ...", "my flatmate says ..."
+_RELAY = re.compile(rf"^\s*(?:(?:{_WHO}|[a-z]+) (?:asked|told) me(?: to (?:pass (?:this|it|that) (?:on|along)|tell you|ask you|let you know|say))?"
+                    rf"|{_WHO} (?:says|said))(?: that)?\s*[:,-]*\s*(?:to (?=[a-z]+ (?:the|it|them|that|this|all|both|a)\b))?")
+# her wish with a place is a request through her: "she wants it next to the mustard bottle"
+_WISH = re.compile(rf"^(\s*){_WHO} (?:wants|would like|d like|needs|asked for|asks for)\s+(?!you\b|the robot\b|to\b)")
 _COMMAND = re.compile(rf"{VERB_ANYWHERE.pattern}|\b(?:swap|switch|exchange|trade)\b")
 _PLACE = re.compile(rf"{RELATION_AT.pattern}\s+(?:the|a|an|this|that|my|your|it|them)\b")
 
@@ -34,7 +40,9 @@ def people(text: str) -> str:
     sentences = re.findall(r"[^.!?;]+[.!?;]*", text)
     kept: list[str] = []
     for i, sentence in enumerate(sentences):
-        sentence = _THROUGH.sub("", sentence)
+        sentence = _RELAY.sub("", _THROUGH.sub("", sentence))
+        if _PLACE.search(sentence):
+            sentence = _WISH.sub(r"\1i want ", sentence)
         others = "".join(s for j, s in enumerate(sentences) if j != i)
         body = sentence.rstrip(" .!?;")
         if _is_remark(body) and _COMMAND.search(others):

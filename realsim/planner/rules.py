@@ -59,6 +59,7 @@ class RulePlanner:
         program = Program(tuple(calls), command)
         return Plan(program=program.source(), goals=goals, planner=self.name, calls=program, checkpoints=checkpoints)
 
+_OTHER_TWO = re.compile(r"(?:the )?(?:other (?:two|2)|two others|other ones|others|rest)(?: (?:of the )?([a-z]+s))?")  # "between the other two cubes"
 
 def parse_calls(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> tuple[list[Call], list[Goal]]:
@@ -505,7 +506,12 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
             goals.append(OnTable(o.name))
         return Step(calls, goals, tuple(o.name for o in objs))
     if kind == "between":
-        refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
+        if others := _OTHER_TWO.fullmatch(target_phrase):  # "the green one between the other two (blocks)": the two others of its kind
+            named = objects_named(obj_phrase, p)
+            kind_noun = others.group(1) or f"{name_words(named[0].label)[-1]}s"
+            refs = [o for o in p.resolver.resolve(f"the {kind_noun}", Context(p.ctx.last), allow_plural=True) if o.name not in {n.name for n in named}]
+        else:
+            refs = p.resolver.resolve(target_phrase, Context(p.ctx.last), allow_plural=True)
         if len(refs) != 2:
             raise InputError(f"between needs two objects; {target_phrase!r} names {len(refs)}")
         objs = [o for o in objects_named(obj_phrase, p) if o.name not in {r.name for r in refs}]

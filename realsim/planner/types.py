@@ -22,8 +22,8 @@ class ObjectInfo:
 
     ``name`` is the scene body name (``"obj3_mug"``), ``label`` its category (``"mug"``),
     ``aliases`` other words for it (from the size table), ``position`` its centre (world frame,
-    m), ``size`` its extents (x, y, z in m), ``color`` a colour name when known, and
-    ``affordances`` a subset of :data:`AFFORDANCES`.
+    m), ``size`` its extents (x, y, z in m), ``color`` a colour name when known, ``affordances`` a subset of :data:`AFFORDANCES`, and
+    ``footprint`` its horizontal length and narrowest width however it is turned (m), when known.
     """
 
     name: str
@@ -33,6 +33,7 @@ class ObjectInfo:
     size: tuple[float, float, float] = (0.05, 0.05, 0.05)
     color: str | None = None
     affordances: tuple[str, ...] = ("graspable",)
+    footprint: tuple[float, float] | None = None
 
     def describe(self) -> str:
         x, y, z = self.position

@@ -3,7 +3,8 @@ planner does not know is read as the one word of a vocabulary (the scene's names
 it is closest to, when that word is within a distance bound relative to its length and no other
 vocabulary word is as close (of two as close, one with the very same letters wins: fast typing swaps
 letters far more often than it drops or adds one, "lfet" is "left", not "let"). Short words (three
-letters or fewer) are never changed: too many real words lie one letter apart ("fat", "far").
+letters or fewer) are never changed (too many real words lie one letter apart: "fat", "far"), except
+a clause's first word, the verb's slot, when it is one verb with a letter missed ("pik up the mug").
 """
 
 from __future__ import annotations
@@ -109,6 +110,19 @@ def sides(text: str) -> str:
     return _SIDE_SLOT.sub(lambda m: m.group(1) + (correct(m.group(2), DIRECTION_WORDS, _KNOWN | _OTHER) or m.group(2)), text)
 
 
+_OPENING_VERBS = frozenset(v.split()[0] for v in ALL_VERBS)
+
+
+def _opening_verb(word: str, known: set[str]) -> str:
+    """The clause's first word, or the one verb it misspells: in the verb's own slot even a short word
+    is read ("pik up the mug", "mve it left", "pt it in the bowl") when it is that verb with one letter
+    missed and no other verb is; longer words as :func:`correct` reads them."""
+    if len(word) > 3 or word in known or word in _OPENING_VERBS or not word.isalpha():
+        return correct(word, _COMMAND_WORDS, known) or word
+    near = [v for v in _OPENING_VERBS if len(v) == len(word) + 1 and distance(word, v) == 1]  # a letter missed, not changed ("see" is no "set")
+    return near[0] if len(near) == 1 else word
+
+
 def retry(clause: str, scene_words: set[str], read: Callable[[str], T]) -> T:
     """``read(clause)``; when that fails, ``read`` of the clause with its misspelled verbs and place
     words corrected ("pcik up the banana", "put it behnid the bowl"), if any; the first error else.
@@ -117,7 +131,8 @@ def retry(clause: str, scene_words: set[str], read: Callable[[str], T]) -> T:
         return read(clause)
     except Exception as exc:
         known = _KNOWN | scene_words
-        fixed = " ".join(correct(w, _COMMAND_WORDS - scene_words, known | _OTHER) or w for w in clause.split())
+        words = clause.split()
+        fixed = " ".join([_opening_verb(words[0], known | _OTHER), *(correct(w, _COMMAND_WORDS - scene_words, known | _OTHER) or w for w in words[1:])] if words else [])
         if fixed == clause:
             raise
         try:

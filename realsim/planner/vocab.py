@@ -50,11 +50,32 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "dish": ("plate", "bowl"), "plate": ("dish",), "bottle": ("jar",), "jar": ("bottle",), "ball": ("sphere",),
     "bin": ("basket", "container"), "basket": ("bin",), "pen": ("marker",), "marker": ("pen",), "jug": ("pitcher",),
     "pitcher": ("jug",), "drill": ("power drill",), "cleanser": ("bleach",), "bleach": ("cleanser",),
-    # brand names people use for the thing
-    "spam": ("meat",), "clorox": ("bleach",), "coke": ("soda", "can"), "cheezit": ("cracker",), "jello": ("gelatin",),
-    "lego": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",), "puck": ("cylinder", "disk", "disc"),
-    "disc": ("cylinder", "puck"), "disk": ("cylinder", "puck"),
+    "puck": ("cylinder", "disk", "disc"), "disc": ("cylinder", "puck"), "disk": ("cylinder", "puck"),
 }
+# brand names people use for the thing (said as one word: :func:`brands` joins "cheez its", "campbell's")
+BRANDS: dict[str, tuple[str, ...]] = {
+    "spam": ("meat",), "hormel": ("meat",), "clorox": ("bleach",), "softscrub": ("bleach", "cleanser"), "windex": ("bottle", "cleaner"),
+    "coke": ("soda", "can"), "cocacola": ("soda", "can"), "pepsi": ("soda", "can"), "sprite": ("soda", "can"), "fanta": ("soda", "can"),
+    "redbull": ("soda", "can"), "drpepper": ("soda", "can"), "cheezit": ("cracker",), "ritz": ("cracker",), "jello": ("gelatin",),
+    "lego": ("block", "brick"), "duplo": ("block", "brick"), "sharpie": ("marker",), "expo": ("marker",), "crayola": ("marker",),
+    "campbell": ("soup", "can"), "progresso": ("soup", "can"), "heinz": ("ketchup",), "frenchs": ("mustard",), "french": ("mustard",), "guldens": ("mustard",),
+    "chiquita": ("banana",), "dole": ("banana",), "kelloggs": ("cereal",), "cheerios": ("cereal",),
+    "pringles": ("chip", "can"), "tupperware": ("container", "bowl"), "pyrex": ("dish", "bowl"), "dixie": ("cup",),
+    "dewalt": ("drill",), "makita": ("drill",), "bosch": ("drill",), "ryobi": ("drill",), "fiskars": ("scissors",), "stanley": ("hammer",),
+    "folgers": ("coffee", "can"), "nerf": ("ball",), "nutella": ("jar",), "oreo": ("cookie",),
+}
+SYNONYMS.update(BRANDS)
+_BRAND_SPELLINGS = {"cheez its": "cheezit", "cheez it": "cheezit", "cheezits": "cheezit", "coca cola": "cocacola", "red bull": "redbull",
+                    "dr pepper": "drpepper", "soft scrub": "softscrub", "french s": "frenchs", "gulden s": "guldens", "kellogg s": "kelloggs",
+                    "campbell s": "campbell", "campbells": "campbell", "de walt": "dewalt", "jell o": "jello"}
+
+
+def brands(text: str) -> str:
+    """``text`` (lower case, punctuation gone) with a brand said in pieces or with its possessive as one
+    word of :data:`BRANDS` ("cheez its" -> "cheezit", "campbell s" -> "campbell")."""
+    for said, word in sorted(_BRAND_SPELLINGS.items(), key=lambda kv: -len(kv[0])):
+        text = re.sub(rf"\b{said}\b", word, text)
+    return re.sub(rf"\b({'|'.join(BRANDS)}) s\b", r"\1", text)
 # words naming a kind of object rather than one: they select by the size table's record
 KINDS: dict[str, tuple[str, ...]] = {
     "fruit": ("banana", "apple", "strawberry", "orange", "lemon", "pear", "peach", "plum", "lime", "grape", "fruit"),
@@ -75,6 +96,18 @@ KINDS: dict[str, tuple[str, ...]] = {
 for _shape, _kind in (("cylindrical", "cylinder"), ("boxy", "square"), ("rectangular", "square"), ("cubic", "square"),
                       ("cuboid", "square"), ("spherical", "round"), ("circular", "round")):
     KINDS[_shape] = KINDS[_kind]
+# what things of a kind are usually made of, for "the cardboard one" when the scene records no material
+_BOXES = ("box", "carton", "package", "parcel", "cereal", "cracker", "sugar", "pudding", "gelatin", "jello")
+MATERIAL_KINDS: dict[str, tuple[str, ...]] = {
+    "cardboard": _BOXES, "paper": (*_BOXES, "bag", "cup"),
+    "metal": ("can", "tin", "pot", "pan", "spoon", "fork", "knife", "wrench", "hammer", "scissors", "screwdriver", "plier", "clamp"),
+    "ceramic": ("mug", "cup", "plate", "bowl", "vase", "pot", "saucer", "teapot"),
+    "wooden": ("block", "cube", "board", "spoon", "bowl", "spatula"), "foam": ("brick", "ball", "sponge", "block"),
+    "rubber": ("ball", "duck", "brick", "toy", "strawberry", "banana"),
+}
+for _word, _material in (("metallic", "metal"), ("aluminium", "metal"), ("aluminum", "metal"), ("steel", "metal"), ("porcelain", "ceramic"),
+                         ("china", "ceramic"), ("wood", "wooden"), ("squishy", "foam"), ("spongy", "foam"), ("rubbery", "rubber")):
+    MATERIAL_KINDS[_word] = MATERIAL_KINDS[_material]
 # the colours a kind of object usually has, for "the yellow fruit" when the capture gives no colour
 TYPICAL_COLORS: dict[str, tuple[str, ...]] = {
     "banana": ("yellow",), "lemon": ("yellow",), "strawberry": ("red",), "cherry": ("red",), "tomato": ("red",),

@@ -284,15 +284,20 @@ def grasp_candidates(pts: np.ndarray, surface_z: float, base_xy: np.ndarray, pre
     return cands
 
 
+def footprint_widths(pts: np.ndarray, n: int = 36) -> tuple[float, float]:
+    """The object's horizontal footprint over ``n`` directions (m): its length across the narrowest
+    direction's perpendicular, and its narrowest extent (a lying can: its length, its diameter)."""
+    angles = np.pi * np.arange(2 * n) / (2 * n)
+    dirs = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+    proj = pts[:, :2] @ dirs.T
+    widths = proj.max(axis=0) - proj.min(axis=0)
+    k = int(np.argmin(widths[::2])) * 2  # the n directions narrowest_width has always used
+    return float(widths[(k + n) % (2 * n)]), float(widths[k])
+
+
 def narrowest_width(pts: np.ndarray, n: int = 36) -> float:
     """The object's narrowest horizontal extent over ``n`` directions (m)."""
-    xy = pts[:, :2]
-    widths = []
-    for k in range(n):
-        d = np.array([np.cos(np.pi * k / n), np.sin(np.pi * k / n)])
-        p = xy @ d
-        widths.append(p.max() - p.min())
-    return float(min(widths))
+    return footprint_widths(pts, n)[1]
 
 
 PAD_RADIUS = 0.008  # m: effective radius of a finger pad's contact patch for twisting friction

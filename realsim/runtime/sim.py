@@ -24,6 +24,7 @@ import numpy as np
 from realsim.errors import InputError
 from realsim.planner.program import Program
 from realsim.planner.types import ObjectInfo
+from realsim.robot.grasps import footprint_widths
 from realsim.robot.model import PREFIX, describe_robot
 from realsim.robot.robot import Robot, RobotParams
 from realsim.scene_format import KEYFRAME
@@ -159,7 +160,8 @@ class Sim:
         out = []
         for name in self.object_names():
             rec = self.records.get(name) or SceneObjectRecord(name, name, {})
-            lo, hi = self.bounds(name)
+            pts = self.robot.object_points(name)
+            lo, hi = pts.min(axis=0), pts.max(axis=0)
             out.append(ObjectInfo(
                 name=name,
                 label=rec.label.replace("_", " "),
@@ -168,6 +170,7 @@ class Sim:
                 size=tuple(round(float(v), 4) for v in hi - lo),  # type: ignore[arg-type]
                 color=None,
                 affordances=_affordances(rec.manifest, rec.label),
+                footprint=tuple(round(w, 4) for w in footprint_widths(pts)),  # type: ignore[arg-type]
             ))
         return out
 
