@@ -225,13 +225,16 @@ def test_empty_table_converts_with_a_warning(tmp_path: Path) -> None:
 
 def test_noiseless_cloud_objects_keep_their_feet(gt, tmp_path: Path) -> None:
     """In a noiseless cloud (a sampled mesh) the support's points lie on its plane, so an
-    object's points from 2 mm up are the object's: under 5 % of each object is left to the table
-    (with the Kinect-tuned 8 mm cut it was 5-11 %)."""
+    object's points from 2 mm up are the object's: under 5 % of each object's points 2 mm or more
+    over the table are left to it (with the Kinect-tuned 8 mm cut it was 5-11 %). Its lowest 2 mm
+    are not counted: an object stands on the table (a Rubik's cube's rounded feet are 6 % of its
+    points there; they were 1 % when the generator floated every object 0.5 mm up)."""
     _, ids = write_point_cloud(gt, tmp_path / "clean.ply", 150_000, noise=0.0)
     scene = run_pipeline(tmp_path / "clean.ply", pipeline=_pipeline(tmp_path))
     assert len(scene.objects) >= len(gt.objects) - 1  # the touching pair may merge
+    height = np.asarray(trimesh.load(tmp_path / "clean.ply").vertices)[:, 2] - gt.primary_support().height
     for k in range(1, len(gt.objects) + 1):
-        mine = ids == k
+        mine = (ids == k) & (height >= 0.002)
         assert (scene.labels[mine] == 0).mean() < 0.05, gt.objects[k - 1].name
 
 

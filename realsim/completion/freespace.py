@@ -34,6 +34,7 @@ INSIDE_SAMPLES = 2000
 MAX_CUT_LOSS = 0.1  # a piece that one cut would lose more of is split in two first
 MIN_SPLIT = 0.04  # m: pieces shorter than this are cut, never split
 KEEP_MARGIN = 0.002  # m: seen points this far outside a piece still bind its cuts
+STALL = 1e-4  # a cut taking less than this share of the piece's volume made no headway
 
 
 def _unit_rows(rows: np.ndarray) -> np.ndarray:
@@ -72,6 +73,26 @@ def _samples(piece: trimesh.Trimesh, seed: int) -> np.ndarray:
     t = tri[face]
     pts = t[:, 0] + a[:, None] * (t[:, 1] - t[:, 0]) + b[:, None] * (t[:, 2] - t[:, 0])
     return np.vstack([piece.vertices, pts])
+
+
+def _pixel_samples(piece: trimesh.Trimesh, view: DepthView) -> np.ndarray:
+    """The piece's front surface where every pixel's ray enters it: a sliver thinner than the random
+    samples' spacing (a top edge set a few millimetres too high) still covers whole pixels, each tested."""
+    normals = np.asarray(piece.face_normals)
+    planes = np.column_stack([normals, np.einsum("fk,fk->f", normals, piece.triangles[:, 0, :])])
+    return view.front_hits(planes, np.asarray(piece.vertices))
+
+
+def _tested_surface(piece: trimesh.Trimesh, view: DepthView, tolerance: float, seed: int, pixels: bool) -> tuple[np.ndarray, np.ndarray]:
+    """The surface samples a clip is weighed on and which of them were seen through: the random ones
+    (:func:`_samples`) and, with ``pixels``, every pixel's entry point (:func:`_pixel_samples`): no
+    pixel the piece covers is left unasked."""
+    surface = _samples(piece, seed)
+    bad = view.seen_through(surface, tolerance)
+    if not pixels:
+        return surface, bad
+    hits = _pixel_samples(piece, view)
+    return np.vstack([surface, hits]), np.concatenate([bad, view.seen_through(hits, tolerance)])
 
 
 def _image(view: DepthView, points: np.ndarray) -> np.ndarray:
@@ -113,9 +134,12 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         far = np.maximum(np.linalg.norm(towards, axis=1, keepdims=True), 1e-9)
         seen = seen + towards / far * np.minimum(far, tolerance)
         keep = seen if keep is None else np.vstack([keep, seen])
+    pixels = False  # every pixel's entry point is asked too once the random samples are clear or their cuts stall
     for cut_number in range(MAX_CUTS):
-        surface = _samples(piece, seed)
-        bad = view.seen_through(surface, tolerance)
+        surface, bad = _tested_surface(piece, view, tolerance, seed, pixels)
+        if not bad.any() and not pixels:
+            pixels = True
+            surface, bad = _tested_surface(piece, view, tolerance, seed, pixels)
         if not bad.any():
             return [piece]
         if keep is not None and cut_number == 0:
@@ -137,6 +161,7 @@ def clip_to_free_space(piece: trimesh.Trimesh, view: DepthView, tolerance: float
         cut = clip_convex(piece, -n, -c)
         if cut is None or volume(cut) < 0.05 * whole:
             return []
+        pixels |= volume(cut) > (1.0 - STALL) * volume(piece)  # a shave off samples lying on the last cut's face
         piece = cut
     return [piece]
 

@@ -134,8 +134,16 @@ def _normals_match(vertices: np.ndarray, faces: np.ndarray, normals: np.ndarray)
 
 
 def _by_trimesh(points: np.ndarray) -> trimesh.Trimesh:
+    """trimesh's hull, or Qhull's own triangles when trimesh's repair left it open (it drops a sliver
+    triangle of near-collinear corners, e.g. where a cut plane passes by a vertex): a piece is closed."""
     hull: trimesh.Trimesh = trimesh.convex.convex_hull(points)
-    return hull
+    if hull.is_watertight:
+        return hull
+    try:
+        closed = fast_hull(np.asarray(hull.vertices))  # its merged corners, every Qhull triangle kept
+    except (QhullError, ValueError):
+        return hull
+    return closed if closed.is_watertight and volume(closed) > 0 else hull
 
 
 MeshArrays = tuple[np.ndarray, np.ndarray, np.ndarray]

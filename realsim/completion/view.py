@@ -167,6 +167,34 @@ class DepthView:
             return np.asarray(opt[:, 2] / self.scale < seen - tol)
 
 
+    def front_hits(self, planes: np.ndarray, corners: np.ndarray, chunk: int = 4096) -> np.ndarray:
+        """Where the ray of every pixel centre first meets the convex solid ``planes`` (F, 4: ``n . x <= d``
+        as rows ``(n, d)``, world frame) whose vertices are ``corners`` (world points, (N, 3)): its front
+        surface at pixel resolution (nothing when a corner lies behind the camera)."""
+        opt = corners @ self.world_to_optical[:3, :3].T + self.world_to_optical[:3, 3]
+        if not len(corners) or np.any(opt[:, 2] <= 0):
+            return np.zeros((0, 3))
+        uv = self.intrinsics.project(opt)
+        h, w = self.depth.shape
+        u0, v0 = np.maximum(np.floor(uv.min(axis=0)).astype(int), 0)
+        u1, v1 = np.minimum(np.ceil(uv.max(axis=0)).astype(int), [w - 1, h - 1])
+        if u1 < u0 or v1 < v0:
+            return np.zeros((0, 3))
+        v, u = np.mgrid[v0:v1 + 1, u0:u1 + 1]
+        ray = np.column_stack([(u.ravel() - self.intrinsics.cx) / self.intrinsics.fx, (v.ravel() - self.intrinsics.cy) / self.intrinsics.fy, np.ones(u.size)])
+        ray = ray @ np.linalg.inv(self.world_to_optical[:3, :3]).T  # world directions (t = 1 at unit optical depth)
+        camera = self.camera
+        out = []
+        for s in range(0, len(ray), chunk):
+            d = ray[s:s + chunk] @ planes[:, :3].T  # (n, F): n . direction
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = (planes[:, 3] - planes[:, :3] @ camera)[None, :] / d
+            enter = np.where(d < 0, t, -np.inf).max(axis=1)
+            leave = np.where(d > 0, t, np.inf).min(axis=1)
+            hit = (enter <= leave) & (enter > 0) & np.isfinite(enter)
+            out.append(camera + enter[hit, None] * ray[s:s + chunk][hit])
+        return np.vstack(out)
+
     def over_support(self, points: np.ndarray, height: float, margin: float = SUPPORT_MARGIN) -> np.ndarray:
         """Mask of world ``points`` more than ``margin`` above the support plane at ``height`` whose
         nearest pixel shows that support (no object there, its point within ``margin`` of the plane) and

@@ -20,6 +20,8 @@ import trimesh
 from realsim.errors import InputError
 from realsim.geometry import polygons_apart
 from realsim.synth.meshes import box_mesh, load_ycb, raycaster
+from realsim.synth.rest import PARAMS as REST
+from realsim.synth.rest import base_holds, rest_rotation, stacked_rest, support_polygon_margin
 
 # per-face part codes (the mOSD label convention for points: 1..9 furniture, objects 10 * id)
 PART_SUPPORT_TOP = 1  # the upward-facing top surface of a table or counter
@@ -38,7 +40,8 @@ _PALETTE = np.array([
     [0.90, 0.90, 0.85], [0.55, 0.75, 0.15],
 ])
 _CLEARANCE = 0.03  # gap between objects that are not meant to touch (m)
-_CONTACT_GAP = 0.0005  # gap left between touching or stacked objects (m)
+_LEVEL_DEG = 18.0  # a face whose normal is this close to up is level (part of a top something can stand on)
+_SLIDE_TOLERANCE = 1e-5  # m: a body slid against another stops this close to it (they touch; no gap)
 _STACK_BASE = "003_cracker_box"  # in drawn subsets with a stack: lying flat, it holds any small object
 Furniture = list[tuple[trimesh.Trimesh, np.ndarray, np.ndarray]]  # (mesh, part per face, colour)
 
@@ -203,11 +206,26 @@ def _lying(mesh: trimesh.Trimesh) -> np.ndarray:
     return rot
 
 
+def _top_faces(mesh: trimesh.Trimesh) -> np.ndarray:
+    """Mask of the faces of a world mesh's top: the connected level faces (normal within
+    ``_LEVEL_DEG`` of up) holding the highest level face. A bulged or slightly tilted top is
+    whole (a band under the highest point is only its highest corner), a ridge's is its crest."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    level = mesh.face_normals[:, 2] > math.cos(math.radians(_LEVEL_DEG))
+    if not level.any():
+        return level
+    pairs = mesh.face_adjacency[level[mesh.face_adjacency].all(axis=1)]
+    n = len(mesh.faces)
+    _, comp = connected_components(coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n)), directed=False)
+    highest = int(np.flatnonzero(level)[np.argmax(mesh.triangles_center[level, 2])])
+    return level & (comp == comp[highest])
+
+
 def _flat_top(mesh: trimesh.Trimesh) -> float:
-    """Area of the upward faces within 5 mm of the top: how well something can stand on it."""
-    top = mesh.bounds[1, 2]
-    up = (mesh.face_normals[:, 2] > 0.95) & (mesh.triangles_center[:, 2] > top - 0.005)
-    return float(mesh.area_faces[up].sum())
+    """Area of the mesh's top (:func:`_top_faces`): how well something can stand on it."""
+    return float(mesh.area_faces[_top_faces(mesh)].sum())
 
 
 def _posed(mesh: trimesh.Trimesh, base_rot: np.ndarray, yaw: float, xy: np.ndarray, z: float) -> np.ndarray:
@@ -245,7 +263,7 @@ def _drop_height(vertices: np.ndarray, below: list[trimesh.Trimesh]) -> float:
 
 
 def _slide_into_contact(mesh_b: trimesh.Trimesh, pose_b: np.ndarray, mesh_a_world: trimesh.Trimesh, direction: np.ndarray) -> np.ndarray:
-    """Move B along the horizontal ``direction`` until it is ``_CONTACT_GAP`` from A."""
+    """Move B along the horizontal ``direction`` until it touches A (within ``_SLIDE_TOLERANCE``)."""
     import open3d as o3d
 
     rc = o3d.t.geometry.RaycastingScene()
@@ -254,9 +272,9 @@ def _slide_into_contact(mesh_b: trimesh.Trimesh, pose_b: np.ndarray, mesh_a_worl
     for _ in range(40):
         v = _transformed(mesh_b, pose).astype(np.float32)
         gap = float(rc.compute_distance(o3d.core.Tensor(v)).numpy().min())
-        if gap < 2 * _CONTACT_GAP:
+        if gap < _SLIDE_TOLERANCE:
             break
-        pose[:3, 3] += direction * (gap - _CONTACT_GAP)
+        pose[:3, 3] += direction * gap
     return pose
 
 
@@ -272,13 +290,14 @@ def _region(spec: SceneSpec, support: GtSupport) -> tuple[np.ndarray, np.ndarray
 def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furniture: list[trimesh.Trimesh],
                    rng: np.random.Generator) -> list[GtObject] | None:
     root = ycb_root()
-    meshes = {n: load_ycb(str(root / n / "textured.obj")) for n in names}
-    base_rot = {n: np.eye(4) for n in names}
+    files = {n: str(root / n / "textured.obj") for n in names}
+    meshes = {n: load_ycb(files[n]) for n in names}
+    base_rot = {n: rest_rotation(files[n], np.eye(4)) for n in names}  # as each scan rests on a flat support
     order = list(names)
     lo, hi = _region(spec, support)
     stack_pair: tuple[str, str] | None = None
     if spec.stacked and len(names) >= 2:
-        lied = {n: _lying(meshes[n]) for n in names}
+        lied = {n: rest_rotation(files[n], _lying(meshes[n])) for n in names}
         flat = {n: _flat_top(trimesh.Trimesh(_transformed(meshes[n], lied[n]), meshes[n].faces, process=False)) for n in names}
         base = max(names, key=lambda n: (flat[n], n))
         base_rot[base] = lied[base]
@@ -300,23 +319,19 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
         mesh = meshes[name]
         file = root / name / "textured.obj"
         ok = False
+        stack_tries = REST.stack_tries if stack_pair and name == stack_pair[1] else 0
+        set_downs = REST.stack_set_downs if stack_tries else 0
         for _ in range(200):
             yaw = float(rng.uniform(-math.pi, math.pi))
-            if stack_pair and name == stack_pair[1]:
-                base_obj = next(o for o in placed if o.name == stack_pair[0])
-                base_world = world_meshes[placed.index(base_obj)]
-                top_z = float(base_world.bounds[1, 2])
-                topv = base_world.vertices[base_world.vertices[:, 2] > top_z - 0.005, :2]
-                c = topv.mean(axis=0) + rng.uniform(-0.01, 0.01, size=2)
-                pose = _posed(mesh, base_rot[name], yaw, c, top_z)
-                v = _transformed(mesh, pose)
-                poly = _hull2d(v[:, :2])
-                base_poly = _hull2d(topv)
-                from realsim.geometry import inside_convex_polygon
-
-                if not inside_convex_polygon(poly, base_poly[::1] if _ccw(base_poly) else base_poly[::-1], 0.01).all():
+            if stack_tries and set_downs:
+                base_obj = next(o for o in placed if o.name == stack_pair[0])  # type: ignore[index]
+                set_downs -= 1
+                pose = _stacked_pose(mesh, base_rot[name], yaw, world_meshes[placed.index(base_obj)], support.height, rng, name, base_obj.name)
+                if pose is None:
                     continue
-                pose[2, 3] += _drop_height(v, [base_world]) + _CONTACT_GAP
+                stack_tries -= 1
+                if isinstance(pose, bool):  # simulated and not at rest there
+                    continue
                 rest_on, touching = base_obj.id, []
             else:
                 xy = rng.uniform(lo, hi)
@@ -339,10 +354,9 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
                 others = [f for f, o in zip(footprints, placed) if not touching or o.id not in touching]
                 if not all(polygons_apart(poly, q, _CLEARANCE) for q in others):
                     continue
-                pose[2, 3] += _CONTACT_GAP
             ok = True
             break
-        if not ok:
+        if not ok or not isinstance(pose, np.ndarray):
             return None
         obj = GtObject(k + 1, name, file, pose, support.name, rest_on, touching, tuple(float(c) for c in colors[k % len(colors)]))
         for t in touching:
@@ -351,6 +365,44 @@ def _place_objects(spec: SceneSpec, names: list[str], support: GtSupport, furnit
         world_meshes.append(obj.mesh())
         footprints.append(_hull2d(world_meshes[-1].vertices[:, :2]))
     return placed
+
+
+def _stacked_pose(mesh: trimesh.Trimesh, rot: np.ndarray, yaw: float, base_world: trimesh.Trimesh, floor_z: float,
+                  rng: np.random.Generator, name: str, base_name: str) -> np.ndarray | bool | None:
+    """A seeded pose of ``mesh`` resting on ``base_world``: set down over the base's top (its
+    footprint 1 cm inside the top's), settled in MuJoCo and put back exactly on the base's surface, kept when the base holds it.
+    None: the footprint does not fit the top (no simulation run); False: simulated, not at rest there."""
+    from realsim.geometry import inside_convex_polygon
+
+    top_z = float(base_world.bounds[1, 2])
+    top = _top_faces(base_world)
+    area = base_world.area_faces[top]
+    c = (base_world.triangles_center[top, :2] * area[:, None]).sum(axis=0) / area.sum() + rng.uniform(-0.01, 0.01, size=2)
+    pose = _posed(mesh, rot, yaw, c, top_z)
+    v = _transformed(mesh, pose)
+    base_poly = _hull2d(base_world.vertices[np.unique(base_world.faces[top]), :2])
+    if not inside_convex_polygon(_hull2d(v[:, :2]), base_poly if _ccw(base_poly) else base_poly[::-1], 0.01).all():
+        return None
+    pose[2, 3] += _drop_height(v, [base_world])
+    motion = stacked_rest(trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False), base_world, floor_z)
+    if motion is None:
+        return False
+    pose = motion @ pose
+    pose[2, 3] += _drop_height(_transformed(mesh, pose), [base_world])  # on the surface: the simulation's sink taken out
+    placed = trimesh.Trimesh(_transformed(mesh, pose), mesh.faces, process=False)
+    masses = (typical_mass(base_name, base_world), typical_mass(name, placed))
+    if support_polygon_margin(placed, base_world) < REST.stack_margin or not base_holds(base_world, placed, floor_z, masses):
+        return False
+    return pose
+
+
+def typical_mass(name: str, mesh: trimesh.Trimesh) -> float:
+    """A scan's typical mass (kg): its category's in the size table (YCB's own weights for the
+    categories it covers), else its hull's volume at ``REST.density``."""
+    from realsim.physics.size_table import lookup
+
+    match = lookup(name.split("_", 1)[1] if name[:3].isdigit() else name)
+    return match.category.mass[1] if match is not None else float(mesh.convex_hull.volume * REST.density)
 
 
 def _ccw(poly: np.ndarray) -> bool:
