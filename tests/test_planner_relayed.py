@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 from test_planner_rules import call_lines
 
+from realsim.errors import InputError
 from realsim.planner.types import ObjectInfo
 from realsim.robot.grasps import footprint_widths, narrowest_width
 
@@ -52,6 +53,10 @@ KITCHEN = [
     ("Strawberry, you exit first, off to the side. Then the banana takes the strawberry's old mark.", ["place('obj8_strawberry'", "place('obj7_banana', [0.25, 0.3, "]),
     ("Banana, your entrance is between the bowl and the strawberry. Places, everyone!", ["place_between('obj7_banana', 'obj6_bowl', 'obj8_strawberry')"]),
     ("Leave the bowl. Leave it! Strawberry instead -- get it, and hold it up high.", ["grasp('obj8_strawberry')"]),
+    # where a thing addressed goes; the arm sent to standby; the ship's computer addressed; a phone call's asides
+    ("Strawberry, strawberry, so red and bright, go sit in the bowl.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("Computer, take the banana and set it on the table, then return the arm to standby position.", ["place_down('obj7_banana')", "go_home()"]),
+    ("Hold on, Mum. Banana, slide it left about three inches. Okay, carry on.", ["push('obj7_banana', 'left', 0.076)"]),
     # "the blocks in a line with X between ...", "between the other two"
     ("I want the blocks in a line with the green one sitting between the red cube and the blue cube.", ["place_between('obj5_cube', 'obj3_cube', 'obj4_cube')"]),
     ("put the red cube between the other two", ["place_between('obj3_cube', 'obj4_cube', 'obj5_cube')"]),
@@ -60,6 +65,16 @@ def test_relayed_and_padded_requests(sentence: str, lines: list[str]) -> None:
     got = call_lines(sentence)
     for line in lines:
         assert any(g.startswith(line) for g in got), (sentence, got)
+
+
+def test_no_place_is_lent_on_from_what_the_robot_cannot_do() -> None:
+    with pytest.raises(InputError, match="cannot"):  # "be daring" never became a thing put into the bowl
+        call_lines("the banana is ripe, or so I've been told; pour it into the bowl, be daring and bold.")
+
+
+def test_where_a_thing_comes_from_is_never_the_thing() -> None:
+    with pytest.raises(InputError, match="no object matches"):  # the strawberry is not on the green cube: never the cube put down
+        call_lines("The strawberry. Off the green cube, down on the table. Good.")
 
 
 def test_after_that_keeps_the_order_said() -> None:

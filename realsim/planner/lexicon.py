@@ -13,8 +13,8 @@ TAKE = ("pick up", "pick", "grab", "grasp", "take", "lift up", "lift", "raise", 
         "collect", "hand me", "give me", "pass me", "bring me", "show me", "retrieve", "gather up", "gather")
 PUT = ("put back", "put down", "put", "place", "set down", "set", "drop", "stack", "insert", "transfer", "bring", "carry",
        "lay down", "lay", "position", "stick", "pop", "toss", "throw", "dump", "store", "stash", "leave", "relocate", "return",
-       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck", "haul", "lug", "sink", "butt", "line up", "line")
-PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate", "kick", "tap")
+       "move", "shift", "slide", "drag", "stand", "rest", "translate", "park", "plonk", "tuck", "haul", "lug", "sink", "butt", "line up", "line", "dock")
+PUSH = ("push", "slide", "shove", "nudge", "move", "drag", "shift", "scoot", "bump", "roll", "pull", "budge", "translate", "kick", "tap", "retract")
 ALL_VERBS = tuple(sorted(set(TAKE + PUT + PUSH + ("give", "hand", "pass") + ("open", "close", "shut", "go", "return", "reset", "release", "let go", "home",
                                                   "come", "head", "pull open", "pull out", "push in"))))
 # a length said with its unit: "4 cm", "2.5 inches", "30mm" (inches as "in" only where nothing else can follow)
@@ -43,7 +43,7 @@ RELATIONS: tuple[tuple[str, str], ...] = (
     ("inside of", "in"), ("inside", "in"), ("into", "in"), ("in", "in"), ("within", "in"),
     ("toward", "next"), ("towards", "next"), ("to", "to"),  # toward a thing is a way, not into it
 )
-SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|work surface|bench|benchtop|floor)(?: top)?"
+SURFACES = r"(?:the )?(?:table|counter|countertop|desk|surface|tabletop|table top|worktop|work surface|bench|benchtop|floor|deck)(?: top)?"
 
 
 def has_relation(text: str) -> bool:

@@ -32,6 +32,7 @@ from realsim.planner.lexicon import (
     AGAIN,
     ALL_VERBS,
     AVOID,
+    BEYOND,
     PUSH,
     PUT,
     RELATION_AT,
@@ -76,6 +77,7 @@ FILLERS = (
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
     r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
+        r"(?:okay,? |ok,? )?carry on", r"hold on,?(?: (?:mum|mom|dad|love|honey|a (?:sec|second|moment|minute)))?", r"make it so", r"engage",
         r"places,? (?:everyone|everybody|people|all)", r"and action", r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
@@ -87,7 +89,7 @@ _PRECISE = (r"(?:a couple of|a few|an?|one|two|three|four|five|six|seven|eight|n
 _TIME_FRAME = re.compile(r"^\s*(?:(?:when|once|by the time|before) (?:i|you|we) (?:[a-z']+ ){0,3}?(?:back|home|here|in|out|return|returns|done|finished)"
                          r"|(?:by|at|towards?) the end of (?:this|it|all this|the day|today))\b,?\s*|\s*,?\s*\bby now\b")
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
-_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy)\s*(?=[,.;:]|$)")
+_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy|computer|helm|arm)\s*(?=[,.;:]|$)")
 # constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
 _THINGS = r"(?:anything|everything|something|(?:any of )?the (?:other|remaining|rest of the) (?:thing|object|item)s?|(?:other|remaining) (?:thing|object|item)s?|the rest)"
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
@@ -180,6 +182,11 @@ def clean(command: str) -> str:
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:the |your )?arm (?:back )?(?:to )?home\b", "go home", text)  # "2) arm home"
     text = re.sub(r"\bpark (?:the arm|your arm|yourself|the robot)\b|\bpark(?=\s*(?:$|[.;!?]))", "go home", text)  # "..., then park the arm"
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen )|(?<=\band ))(?:heel|come back(?: to me)?|back to (?:me|base))(?=\s*(?:$|[.,;!?]))", "go home", text)  # a dog's "heel": back to its place
+    text = re.sub(r"\b(?:return|bring|send|put) (?:the arm|your arm|yourself|the robot)(?: back)? to (?:the |its |your )?(?:standby|rest|resting|home|start|starting|neutral|park(?:ed|ing)?)"
+                  r"(?: (?:position|pose|spot|place|state))?\b|(?:^|(?<=[.,;!?] ))(?:the |your )?arm back to (?:its )?(?:rest|standby|home|start)(?: position| pose)?(?=\s*(?:$|[.,;!?]))", "go home", text)
+    # said to a thing addressed: "Banana, ..., go sit in the bowl": it goes there
+    text = re.sub(r"(?:^|(?<=[.,;!?] ))(?:and )?(?:now )?(?:go|come)(?: and)?(?: (?:sit|stand|rest|lie|live|hide|wait))? (?=(?:in|into|inside|on|onto|next to|beside|behind|in front of|to the left of|to the right of|left of|right of|between|on top of)\b)",
+                  "put it ", text)
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
@@ -363,6 +370,8 @@ def split_command(command: str) -> list[str]:
             rel = rel_re.search(f" {clauses[-1]} ")
             # "the strawberry in the bowl and the banana too": a verbless placing lends its place as a put does
             put = verb.group(0) if verb and verb.group(0) in PUT else "" if not verb and rel and rel.start() > 0 and not _STATES.search(f"{clauses[-1]} {part}") else None
+            if BEYOND.match(clauses[-1]):
+                put = None  # "pour it into the red box, be daring and bold": no place lent on from what the robot cannot do
             if AVOID.match(part) or ((_WILL_BE.match(part) or _GOES_THERE.match(part)) and verb_re.match(clauses[-1])) or (
                     part in opening and _STATES.search(clauses[-1]) and not verb_re.match(clauses[-1]) and _NAMED_ALONE.fullmatch(part) and not _STATES.search(part)):
                 # "these sodas are a mess. the one on the left, ...": a thing named after a statement is not part of it,
@@ -412,7 +421,7 @@ def split_command(command: str) -> list[str]:
     return clauses
 
 
-_PLACE_ALONE = re.compile(rf"(?:{'|'.join(re.escape(w) for w, k in sorted(RELATIONS, key=lambda r: -len(r[0])) if k not in ('to', 'sides') and w not in ('by', 'over', 'near', 'toward', 'towards', 'closer to', 'nearer to'))}) (?:the|that|this|it|them)\b.*")
+_PLACE_ALONE = re.compile(rf"(?:(?:down|back|over|up) )?(?:{'|'.join(re.escape(w) for w, k in sorted(RELATIONS, key=lambda r: -len(r[0])) if k not in ('to', 'sides') and w not in ('by', 'over', 'near', 'toward', 'towards', 'closer to', 'nearer to'))}) (?:the|that|this|it|them)\b.*")
 _TOWARD_SPEAKER = re.compile(r"\b(?:closer|nearer|close|near)(?: to)? (?:me|you|us|the robot|yourself)\b")  # a way, not a place by a thing
 _STATES = re.compile(rf"\b{STATEMENT_VERB}\b")  # "the can is lined up behind the box, it looks cluttered": said of things, nothing placed
 _OTHER_SIDE = re.compile(r"(?:but |and |only )*(?:on |to |at |onto )?(?:the )?(?:other|opposite) (?:side|way|one)(?: (?:this time|instead|of it|round|around))?")

@@ -127,5 +127,7 @@ def objects_named(phrase: str, p: Parser, want: str | None = None, exclude: Sequ
     """The objects a phrase names, with a trailing particle ("up", "over") and a leading "up/back/down" dropped."""
     phrase = re.sub(rf"(?<!the){PARTICLES}$", "", " " + phrase).strip()  # "the thing in the back" keeps its "back"
     phrase = re.sub(r"^(?:up|back|down)\s+", "", phrase)
+    if re.match(r"(?:off|off of|from|out of) (?:the|that|this|it|them)\b", phrase):  # "off the green cube, down on the table": where from, never what
+        raise InputError(f"{phrase!r} says where something comes from, not what it is; name the object")
     objs = p.resolver.resolve(phrase, p.ctx, want=want, exclude=exclude)
     return objs
