@@ -72,6 +72,11 @@ def test_no_place_is_lent_on_from_what_the_robot_cannot_do() -> None:
         call_lines("the banana is ripe, or so I've been told; pour it into the bowl, be daring and bold.")
 
 
+def test_hold_on_is_only_an_aside_to_a_person() -> None:
+    with pytest.raises(InputError):  # "hold on, not the banana, the apple": a repair to a thing the scene lacks, never the banana
+        call_lines("Drop the banana in the bowl -- hold on, not the banana, the apple.")
+
+
 def test_where_a_thing_comes_from_is_never_the_thing() -> None:
     with pytest.raises(InputError, match="no object matches"):  # the strawberry is not on the green cube: never the cube put down
         call_lines("The strawberry. Off the green cube, down on the table. Good.")

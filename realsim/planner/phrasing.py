@@ -77,7 +77,7 @@ FILLERS = (
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
     r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
-        r"(?:okay,? |ok,? )?carry on", r"hold on,?(?: (?:mum|mom|dad|love|honey|a (?:sec|second|moment|minute)))?", r"make it so", r"engage",
+        r"(?:okay,? |ok,? )?carry on", r"hold on,? (?:mum|mom|dad|love|honey|a (?:sec|second|moment|minute))", r"make it so", r"engage",
         r"places,? (?:everyone|everybody|people|all)", r"and action", r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
