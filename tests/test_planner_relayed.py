@@ -43,6 +43,7 @@ KITCHEN = [
     ("pick up the banana -- easy, don't squash it -- and set it down in front of the bowl", ["place_beside('obj7_banana', 'obj6_bowl', 'front')"]),
     ("get the strawberry, drop it right beside the bowl, and then heel.", ["go_home()"]),
     ("put the strawberry upstage of the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
+    ("put the strawberry at the back of the bowl", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),  # beside the stage words, kept
     # what people let a thing do; breathing cues; how far, said after a pause
     ("take the strawberry, let it float across, and allow it to settle on the green cube.", ["place_on('obj8_strawberry', 'obj5_cube')"]),
     ("lift the strawberry gently... and let it come to rest inside the bowl.", ["place_in('obj8_strawberry', 'obj6_bowl')"]),

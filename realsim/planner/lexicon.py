@@ -31,7 +31,8 @@ RELATIONS: tuple[tuple[str, str], ...] = (
     ("either side of", "sides"), ("on opposite sides of", "sides"),
     ("at the left of", "left"), ("at the right of", "right"), ("on the far side of", "behind"), ("to the far side of", "behind"), ("on the near side of", "front"), ("to the near side of", "front"),
     ("on this side of", "front"), ("on the other side of", "other"), ("to the other side of", "other"), ("on the opposite side of", "other"),
-    ("in front of", "front"), ("in back of", "behind"), ("upstage of", "behind"), ("downstage of", "front"),  # a stage seen from the robot ("at the back of", "behind"), ("to the back of", "behind"),
+    ("in front of", "front"), ("in back of", "behind"), ("at the back of", "behind"), ("to the back of", "behind"),
+    ("upstage of", "behind"), ("downstage of", "front"),  # a stage seen from the robot: its audience
     ("to the front of", "front"), ("at the front of", "front"), ("to the left hand side of", "left"), ("to the left side of", "left"), ("on the left hand side of", "left"),
     ("to the right hand side of", "right"), ("to the right side of", "right"), ("on the right hand side of", "right"),
     ("closer to", "next"), ("nearer to", "next"), ("to the left of", "left"), ("on the left side of", "left"), ("on the left of", "left"), ("left of", "left"),
