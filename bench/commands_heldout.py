@@ -377,6 +377,7 @@ from commands_blind_nov30 import HELDOUT33  # noqa: E402
 from commands_blind_nov30b import HELDOUT34  # noqa: E402
 from commands_blind_nov30c import HELDOUT35  # noqa: E402
 from commands_blind_nov30d import HELDOUT36  # noqa: E402
+from commands_blind_nov30e import HELDOUT37  # noqa: E402
 
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
@@ -388,4 +389,5 @@ HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout34": HELDOUT34,
     "heldout35": HELDOUT35,
     "heldout36": HELDOUT36,
+    "heldout37": HELDOUT37,
 }
