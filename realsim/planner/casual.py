@@ -81,12 +81,14 @@ def causative(text: str) -> str:
     it on the plate", "let the arm return to its resting place" -> "go home")."""
     text = re.sub(rf"{_CAUSE} (?:the arm|the robot|yourself|it) (?:to )?(?:return|go|head|come)(?: back)? (?:home|to (?:its|your|the) "
                   r"(?:resting|rest|home|starting|start) (?:place|position|pose|spot))\b", "go home", text)
-    text = re.sub(rf"{_CAUSE} {_WHO} (?:[a-z]+ly )?(?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions)\b",
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:[a-z]+ly )?(?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions|seats)\b",
                   lambda m: f"swap {m.group(1).lstrip(chr(39))}", text)
     # "let it find the table": put on it; "let it float across, ...": carried, the place said next
     text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?find ((?:the|its|their) (?:table|floor|counter|ground|place|spot))\b", lambda m: f"put {m.group(1).lstrip(chr(39))} on {m.group(2)}", text)
     text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:float|drift|glide|sail|fly) (?:across|over|along|up|through the air)(?=\s*(?:[,.;]|$| and\b| then\b))",
                   lambda m: f"lift {m.group(1).lstrip(chr(39))}", text)
+    # "let it down onto the table", "help the can back down": lowered, where to said next
+    text = re.sub(rf"\b(?:let|help|ease) {_WHO} (?:gently |slowly |softly )?(?:back )?down\b", lambda m: f"put {m.group(1).lstrip(chr(39))} down", text)
     # "let the mug drift back towards you three inches": how it moves
     text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?(?:drift|float|glide|slide|ease|roll|travel|wander|go|move|come)(?= (?:back|forward|forwards|backwards|left|right|to the left|to the right|away|closer|toward|towards)\b)",
                   lambda m: f"move {m.group(1).lstrip(chr(39))}", text)

@@ -37,6 +37,10 @@ def _quarter(hour: int) -> int:
 
 def clock(text: str) -> str:
     """``text`` (lower case) with clock-face sides, ways and places in the planner's words."""
+    # "on the mug's six, so just behind it": the pilots' "on your six" (behind, by the thing's own facing) is read by the
+    # side the speaker spells out after it, never by the robot's clock face
+    text = re.sub(r"\bon (?:the )?([a-z]+(?: [a-z]+)?)'?s (?:six|6)(?: o'?clock)?,? (?:(?:so|that is|i\.?e\.?|i mean|meaning|as in),? )?(?:just |right |directly )?"
+                  r"(behind|in front of|to the left of|to the right of|left of|right of) (?:it|them)\b", r"\2 the \1", text)
     text = re.sub(rf"\b(?:on |to |at )?(?:the )?([a-z]+(?: [a-z]+)?)'?s {_HOUR}{_OCLOCK}?{_ISH} side\b",
                   lambda m: f"{_SIDE[_quarter(_hour(m.group(2)))]} the {m.group(1)}", text)
     text = re.sub(rf"\b(?:on |to |at )?the {_HOUR}{_OCLOCK}?{_ISH} side of\b", lambda m: _SIDE[_quarter(_hour(m.group(1)))], text)

@@ -51,12 +51,24 @@ _FORM = ((r",?\s*(?:up)?on receipt of (?:this|these|the|my|our) (?:instructions?
          (r"\b(?:is|are) to be (?:removed|taken|lifted) (?:from|off)(?: of)? (?:atop |on top of )?(?:the|that|this) [a-z ]+? and (?=(?:deposited|placed|put|set|moved|relocated)\b)", "is to be "),
          (r"\b(?:by )?a distance of (?=\w)", ""), (r"\bin the (forward|backward|left|right|rightward|leftward) direction\b", r"\1"))
 
+# office jargon around a request: "low-hanging fruit first:", "going forward", "can we get that actioned?", "circle back to your home position"
+_JARGON = ((r"(?:^|(?<=[.;!?:,] ))(?:(?:the |some )?low[- ]hanging fruit(?: first)?|first things first|quick win(?: first)?|(?:as )?(?:an |one )?action item|top priority|"
+            r"priority (?:one|number one)|(?:going|moving) forward|at the end of the day|bottom line|big picture|(?:just )?to level set|to close the loop|"
+            r"(?:just )?(?:a )?quick (?:one|ask|sync|ping)|(?:when|if) you (?:have|get) (?:the )?(?:bandwidth|cycles|a sec)|no blockers?(?: here)?)\s*[,:;.\-]*\s*", ""),
+           (r"[,.;]?\s*(?:(?:can|could) (?:we|you|i) (?:get|have) (?:that|this|it|these) (?:actioned|done|sorted|sorted out|taken care of|over the line|across the line)"
+            r"|(?:please )?action (?:that|this|it)|let(?: s| us)? (?:action|actio) (?:that|this|it)|(?:that s|that is) the (?:deliverable|ask|action item)"
+            r"|(?:if you have|with your) (?:the )?bandwidth|ping me (?:when|once) (?:it s |that s |you re )?(?:done|finished)|(?:asap|eod|by eod|by end of day|by cob))(?=\s*(?:$|[.;!?,]))", ""),
+           (r"\bcircle back (?=to\b)", "go back "), (r"\bcircle back(?=\s*(?:$|[.;!?,]))", "go home"))
+
+
 _THE_ARM = re.compile(r"(?:,\s*)?\bafter which\b\s*(?:the (?:arm|robot|manipulator)|it) (?:should|must|can|will|is to|needs to|ought to|shall) ")
 
 
 def formal(text: str) -> str:
     """``text`` (lower case, punctuation kept) without its letter frame, its passive requests made plain."""
     text = _SIGN_OFF.sub("", _WHEN.sub("", text.strip()))
+    for pattern, word in _JARGON:
+        text = re.sub(pattern, word, text)
     for _ in range(3):  # "further to my message, I must ask that ...": one opening after another
         text = _OPENING.sub("", text)
     for pattern, word in _FORM:

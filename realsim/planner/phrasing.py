@@ -56,7 +56,7 @@ FILLERS = (
     r"if (?:that|it|this)(?: s| is| would be)? (?:doable|feasible|no problem|not a problem|ok with you|alright with you)", r"if you (?:could|can|would) manage(?: it| that)?",
     r"if you (?:would|could|will) be so (?:very )?kind", r"(?:would|do) you mind (?:terribly|awfully|very much|at all)", r"yay", r"woo+", r"yippee", r"hooray",
     r"neatly", r"nicely", r"tidily", r"(?:young|little|good|dear|my|nice) (?:robot|machine|bot|friend|dear)",
-    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon)(?: so)?",
+    r"(?:would|could|will) you be so good as to", r"be so good as to", r"for us", r"lol", r"lmao", r"possibly", r"perhaps", r"by any chance", r"haha", r"rq", r"fr", r"ez", r"yo", r"oh", r"maybe", r"i (?:guess|think|suppose|reckon|fear|suspect|believe|bet|trust|expect|imagine|swear|admit|confess|must say|have to say|gotta say)(?: so)?", r"i(?: m| am) afraid",
     r"or (?:whatever|something|so)", r"(?:would|will|could|can) (?:ya|you)(?= *$| *[,.;])", r"(?:that s|thats|that is) (?:it|all)", r"listen(?: up)?", r"basically", r"while you(?: re| are)? at it",
     r"if (?:that|it|this)(?: s| is)? (?:ok|okay|alright|all right|fine|possible)", r"bro", r"dude", r"mate", r"lets go{2,}", r"let s go{2,}", r"let go{2,}",
     r"(?:would|could|will) you (?:be so (?:very )?kind as|be kind enough) to", r"be so (?:very )?kind as to", r"would you kindly",
@@ -89,7 +89,7 @@ _PRECISE = (r"(?:a couple of|a few|an?|one|two|three|four|five|six|seven|eight|n
 _TIME_FRAME = re.compile(r"^\s*(?:(?:when|once|by the time|before) (?:i|you|we) (?:[a-z']+ ){0,3}?(?:back|home|here|in|out|return|returns|done|finished)"
                          r"|(?:by|at|towards?) the end of (?:this|it|all this|the day|today))\b,?\s*|\s*,?\s*\bby now\b")
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
-_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy|computer|helm|arm)\s*(?=[,.;:]|$)")
+_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy|computer|helm|arm|(?:right |ok |okay |alright )?(?:crew|team|folks|gang|squad|troops|everyone|everybody|people|guys|all|y all|yall|you all))\s*(?=[,.;:]|$)")
 # constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
 _THINGS = r"(?:anything|everything|something|(?:any of )?the (?:other|remaining|rest of the) (?:thing|object|item)s?|(?:other|remaining) (?:thing|object|item)s?|the rest)"
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
@@ -111,6 +111,13 @@ _IN_THE_WAY = re.compile(r"(^|(?<=[.;!?] ))(?:(?:ugh|argh|man|honestly|seriously
                          r"(?: (?:always|still|constantly|just|kind of|sort of|really|totally|completely|now))* (?:in (?:the|my|your) way|getting in (?:the|my) way"
                          r"|blocking (?:things|everything|me|the way|my (?:view|reach|path|arm|hand))|(?:cluttering|crowding|hogging|taking up)(?: up)? [a-z ]+?"
                          r"|obstructing [a-z ]+?)(?: again| all the time| constantly)?(?=\s*(?:[.;!?]|$|,\s*i (?:need|want) it (?:out of there|gone|moved|away)\s*(?:[.;!?]|$)))")
+# a complaint about what a thing does to another, said before what to do about it: "the cereal box is crowding the bowl, three
+# inches left", "the marker keeps picking on the cube. put it aside": the thing complained of is what "it" means next; said to
+# the thing addressed ("cereal box, you're crowding the bowl, ...") it goes, the address said it
+_COMPLAINT = re.compile(r"(^|(?<=[.,;!?] ))(?:(?:i swear|honestly|seriously|ugh|god|gosh|man|i feel like|it seems|it looks like|looks like)[,]? )*((?:the|that|this|my) [a-z]+(?: [a-z]+){0,2}?|you) (?:is |are |s |re |has been |have been )?(?:(?:always|still|constantly|just|really|keeps?|kept) )*"
+                        r"(?:crowding|cramping|squashing|squeezing|squishing|bumping|poking|elbowing|jostling|shoving|leaning on|pressing on|picking on|bullying|teasing"
+                        r"|pestering|bothering|annoying|hassling|hiding|shading|smothering|hogging|blocking|touching|bumping into|getting too close to|too close to)"
+                        r"(?: (?:the|that|this|my|your|its|his|her) [a-z]+(?: [a-z]+){0,2}?)(?: (?:again|all day|all the time|constantly|today|lately|so much))*(?=\s*[.,;!?])")
 # an undo of the step just said: the thing it moved put back where it was
 _UNDO = re.compile(r"\b(?:undo|reverse|revert|take back|roll back) (?:that|it|this|the (?:last )?(?:move|step|one|push))(?: (?:move|step|one))?\b(?: (?:again|please|too|as well))?")
 # what is said to a thing told to leave: it goes out of the way
@@ -187,6 +194,7 @@ def clean(command: str) -> str:
     # said to a thing addressed: "Banana, ..., go sit in the bowl": it goes there
     text = re.sub(r"(?:^|(?<=[.,;!?] ))(?:and )?(?:now )?(?:go|come)(?: and)?(?: (?:sit|stand|rest|lie|live|hide|wait))? (?=(?:in|into|inside|on|onto|next to|beside|behind|in front of|to the left of|to the right of|left of|right of|between|on top of)\b)",
                   "put it ", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?return (?:back )?to (?:base|home|(?:the |your |its )?(?:home|start|rest|starting|base)(?: position| pose| point)?)(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
@@ -227,6 +235,11 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
     text = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?: hand)?(?: side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)  # "the thing to its right"
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    # "the soda can furthest to the left": the leftmost one
+    text = re.sub(r"\bthe ((?:[a-z]+ ){0,3}?[a-z]+) (?:that s |that is |which is |thats )?(?:the )?(?:furthest|farthest|most|the most) (?:to|on|at|over to) (?:the|your|my) (left|right)\b",
+                  r"the \2most \1", text)
+    text = re.sub(r"\b(?:the )?(?:two|three|four|both|all) of (?:them|those|these)\b", "them", text)
+    text = re.sub(r"\s+for a (?:little |quick |short |well earned |well-earned |nice )?(?:rest|break|nap|breather|lie[- ]down|sit[- ]down|snooze|kip)\b", "", text)  # what it is for  # "put the two of them next to each other"
     text = re.sub(r"\b(closer to|nearer to|farther from|further from|farther away from|further away from) (?:me|you|the robot) than (?:it|they) (?:is|are|was|were)(?: now| at the moment)?\b",
                   lambda m: "closer" if m.group(1).startswith(("closer", "nearer")) else "further away", text)  # than where it is now
     text = re.sub(r"\b(?:to )?within (?:about |roughly |around |some )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|a couple of|a few) ?(?:cm|mm|centimet\w*|millimet\w*|inch\w*|finger\w*)"
@@ -276,6 +289,9 @@ def clean(command: str) -> str:
     text = re.sub(r"\bso (?:that )?(?:i|we|you|everyone|the class|the kids|they|people)(?: all)? (?:can|could|may|will) (?:see|watch|look at|check)"
                   r"(?: it| them)?\b", " ", text)  # what it is for, not what to do
     text = re.sub(r"\bmore (?:close|near)\b", "closer", text)
+    # what the move is for, naming no place: "put the marker aside so it can think about what it did"
+    text = re.sub(r"\s*,?\s*\bso (?:that )?(?:it|they|he|she|we|i|you) (?:can|could|will|would|may|might|gets to|get to) ([^.,;!?]*)",
+                  lambda m: m.group(0) if has_relation(m.group(1)) or re.match(r"(?:be|sit|stand|rest|go|fit|stay|end up|lie|land)\b", m.group(1)) else "", text)
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
     # a floating quantifier: "the cans all go in the bowl", "the mug and the can both go ..."
@@ -284,9 +300,12 @@ def clean(command: str) -> str:
     # "get the banana out of the way", "put the can to one side", "clear the mug away": aside (a later move makes it a take)
     text = re.sub(r"\b(?:(?:the|that|this|my) )?([a-z]+(?: [a-z]+)?) (?:is|s) (?:in (?:the|my|your) way|blocking(?: (?:things|everything|me|the way))?),? (?:(?:so|please|could you|can you) )*"
                   r"(move|get|shift|push|put|take) (?:it|that)(?: away)?(?=$|[.,;])", r"\2 the \1 aside", text)  # "the banana is in the way, move it"
-    text = _IN_THE_WAY.sub(r"\1put \2 aside", text)  # "that foam brick keeps getting in my way.": a complaint said alone asks for it moved
-    text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)  # "move it somewhere else"
+    text = _IN_THE_WAY.sub(r"\1put \2 aside", text)
+    text = _COMPLAINT.sub(lambda m: m.group(1) + ("" if m.group(2) == "you" else m.group(2)), text)  # "that foam brick keeps getting in my way.": a complaint said alone asks for it moved
+    text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)
+    text = re.sub(r"(?:,?\s*(?:and|then|and then) )?\b(?:stay|stop|remain|wait|sit tight|rest|keep still)(?: right)? (?:there|put|where it is|where you are|in place)(?=\s*(?:$|[.,;!?]))", "", text)  # "move it somewhere else"
     text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) (?:way|path|workspace|work space|work area|workzone|reach)(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:from|off) (?:my|your|our|the) path|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
+    text = re.sub(r"\baside(?:\s+(?:somewhere|someplace|anywhere|for now|for a bit|for a while))+\b", "aside", text)  # "out of the way somewhere"
     text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park|clear) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=\s*(?:$|[.,;])| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (away|off|out) (?!(?:the|that|this|those|these|my|your|a|an|it|them)\b)", r"clear \1 the ", text)  # "clear away cereal box"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
@@ -583,7 +602,7 @@ _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
      "move {0} {1}"),
     # "the red can and the white can should have traded places"
     (re.compile(rf"^(?:(?:it |that )?(?:would |d |will )?be \w+ if )?(.+?) (?:{_MODAL} |to )?(?:have |had )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)"
-                r" (?:places|positions|spots)$"), "swap {0}"),
+                r" (?:places|positions|spots|seats)$"), "swap {0}"),
     # "it'd be great if the banana was in the bowl": the state wished for, made
     (re.compile(r"^(?:it |that |this )?(?:would |d |will |s |is )?be (?:great|nice|good|lovely|helpful|awesome|perfect|ideal|brilliant|wonderful|cool|best|better)"
                 r" if (.+?) (?:was|were|is|are|sat|stood|ended up|could be|would be) (.+)$"), "put {0} {1}"),

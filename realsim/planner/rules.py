@@ -20,11 +20,11 @@ import re
 from collections.abc import Sequence
 
 from realsim.errors import InputError
-from realsim.planner import typos
+from realsim.planner import aliases, compass, typos
 from realsim.planner.aside import ASIDE, WHERE, aside, where_was
 from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
-from realsim.planner.fit import check_fits, held_in
+from realsim.planner.fit import check_fits, held_in, holds_things
 from realsim.planner.goals import AtHome, Between, Checkpoint, DrawerClosed, DrawerOpen, Goal, Inside, Lifted, NextTo, On, OnTable, Placed, SideOf
 from realsim.planner.lexicon import AGAIN, ALL_VERBS, BEYOND, PARTICLES, PUSH, PUT, RELATIONS, SURFACES, TAKE, VERB_START, relation_start
 from realsim.planner.mentions import mentioned, named_alone
@@ -78,6 +78,7 @@ def _planned(command: str, objects: Sequence[ObjectInfo], robot_yaw: float,
 def parse_steps(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> list[Step]:
     """The steps (calls and goals) ``command`` asks for; raises :class:`InputError` when it cannot."""
+    command = compass.bearings(aliases.named(command))  # "the mug is Falcon", "north is away from you": said plainly
     if is_question(command):
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
     try:
@@ -549,6 +550,8 @@ def _relation(obj_phrase: str, kind: str, target_phrase: str, p: Parser, verb: s
     p.ctx.set(objs)
     if kind == "to":
         kind = "in" if "container" in target.affordances else "on" if "support" in target.affordances else "next"
+    elif kind == "in" and "support" in target.affordances and not holds_things(target) and target.size[2] <= min(0.04, 0.35 * min(target.size[:2])):
+        kind = "on"  # "the cube into the plate": a flat thing (a plate, a tray) holds things on it, not in it
     calls, goals = [], []
     for o in objs:
         if kind == "in":
