@@ -81,7 +81,7 @@ def causative(text: str) -> str:
     it on the plate", "let the arm return to its resting place" -> "go home")."""
     text = re.sub(rf"{_CAUSE} (?:the arm|the robot|yourself|it) (?:to )?(?:return|go|head|come)(?: back)? (?:home|to (?:its|your|the) "
                   r"(?:resting|rest|home|starting|start) (?:place|position|pose|spot))\b", "go home", text)
-    text = re.sub(rf"{_CAUSE} {_WHO} (?:[a-z]+ly )?(?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions|seats)\b",
+    text = re.sub(rf"{_CAUSE} {_WHO} (?:[a-z]+ly )?(?:to )?(?:trade|swap|switch|exchange) (?:their |its )?(?:places|spots|positions|seats|squares)\b",
                   lambda m: f"swap {m.group(1).lstrip(chr(39))}", text)
     # "let it find the table": put on it; "let it float across, ...": carried, the place said next
     text = re.sub(rf"{_CAUSE} {_WHO} (?:to )?find ((?:the|its|their) (?:table|floor|counter|ground|place|spot))\b", lambda m: f"put {m.group(1).lstrip(chr(39))} on {m.group(2)}", text)

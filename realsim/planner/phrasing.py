@@ -11,6 +11,7 @@ import unicodedata
 
 from realsim.planner import (
     casual,
+    narration,
     clarify,
     clock,
     code_calls,
@@ -143,6 +144,37 @@ QUESTION = re.compile(r"(?!what i(?: ?'?m| am| ?'?d| would)? (?:after|like|want|
 def clean(command: str) -> str:
     """Lower case, polite and filler words removed, gerunds to verbs; clause punctuation kept."""
     text = "".join(c for c in unicodedata.normalize("NFD", command.lower().replace("’", "'")) if not unicodedata.combining(c))  # "plátano": accents go
+    text = narration.narrated(text)  # "the arm is going to pick up the banana": the request told to an audience
+    # a game's and a garden's words for moving things: "castle the mug and the bowl", "the cube advances 5 cm", "Blue cube, retreat",
+    # "transplant the bottle into the gap", "the red cube gets planted on the plate", "heel the mug in just in front of the bowl"
+    text = re.sub(r"\bcastle(?= (?:the|that|this|them|it)\b)", "swap", text)
+    text = re.sub(r"(^|(?<=[.,;!?] ))((?:the |that |this )?[a-z']+(?: [a-z']+){0,2}?) (advances|retreats)\b", lambda m: f"{m.group(1)}move {m.group(2)} {'forward' if m.group(3) == 'advances' else 'back'}", text)
+    text = re.sub(r"\b(advance|retreat)(?= (?:the|that|this|it|them)\b)", lambda m: "move", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] ))(?:now )?(retreat|fall back|back off|withdraw|advance)(?=\s*(?:$|[.,;!?]))", lambda m: f"move it {'forward' if m.group(1) == 'advance' else 'back'}", text)
+    text = re.sub(r"\b(?:transplant|replant|re-pot|repot)\b", "move", text)
+    text = re.sub(r"\bheel (.+?) in\b(?= (?:just |right )?(?:in front|behind|next|beside|between|on|left|right|to the)\b)", r"put \1", text)
+    text = re.sub(r"(^|(?<=[.,;!?] ))((?:the |that |this )?[a-z']+(?: [a-z']+){0,2}?) (?:gets|get|got|is|s) (?:planted|put|placed|set|moved|parked|popped|dropped|stuck|laid) "
+                  r"(?=(?:on|in|into|onto|next|beside|behind|between|in front|left|right|to the)\b)", r"\1put \2 ", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] ))((?:in|into|onto|on|on top of|next to|behind|beside) (?:the|that|this) [a-z ]+?) (?:it|she|he|they) (?:go|goes)\b", r"put it \1", text)
+    text = re.sub(r"\bwhere (it|they) (?:originally|first|initially|previously|once|used to be|had been) (?:was|were|stood|sat|lay|started)\b", r"where \1 was", text)
+    text = re.sub(r"\b(take|get|lift|bring) (it|them|the [a-z ]+?) (?:down )?off (?:of )?(?:the thing|whatever|what) (?:it|they)(?:'s|'re| s| re| is| are)? (?:sitting|standing|resting|lying|perched)(?: on)?\b", r"\1 \2", text)
+    text = re.sub(r"\btowards? (?:my|your|our|the robot s|the robot's) (?:side|end|edge)\b", "toward me", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] ))for ((?:the|that|this) [a-z' ]+?)(?=\s*[-,.:;!?])", r"\1", text)  # "knight's move for the mug - hop it over ...": the one it is for
+    text = re.sub(r"\b(?:in|into|to|onto)? ?the (?:gap|space|spot|room|slot|opening|hole)(?: that s| that is| left)? (?:right )?(?=between\b)", "", text)  # "into the gap between A and B"
+    text = re.sub(r"\boff the (?:board|field|pitch|stage|playing area|bed)\b", "aside", text)  # "move the can off the board to one side"
+    text = re.sub(r"\b(?:hop|jump|land|plant|deliver)( it| them| (?:the|that|this) [a-z ]+?)(?: over| across| down)?(?: and)? (?=(?:in|into|onto|on|next to|beside|behind|in front of|to the|left of|right of|between|where|exactly where|at)\b)",
+                  r"put\1 ", text)  # "hop it over and into the bowl", "land the cube exactly where the can stood"
+    text = re.sub(r"\bwhere (the [a-z ]+?|it|they) (?:stood|sat|was standing|was sitting|used to (?:be|stand|sit))\b", r"where \1 was", text)
+    # a thing said to move itself to a place: "the can steps down off the box and lands on the table beside the bowl"
+    text = re.sub(r"(^|(?<=[.,;!?] ))((?:the|that|this) [a-z' ]+?) (?:(?:steps|hops|jumps|climbs|comes|gets) (?:down )?off (?:of )?(?:the|that|this) [a-z ]+? and )?"
+                  r"(?:lands|hops|steps|jumps|moves|slides|settles|ends up|comes to rest|sits down|walks|strolls|wanders|travels|heads)(?: down| over)? "
+                  r"(?=(?:on|in|into|onto|next to|beside|behind|in front of|to the|left of|right of|between)\b)", r"\1put \2 ", text)
+    # "two inches to the right for the foam brick": the way said first, then whom it is for
+    text = re.sub(r"(^|(?<=[.,;!?] ))((?:about |roughly )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|six|seven|eight|nine|ten) ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) "
+                  r"(?:to the (?:left|right)|left|right|forward|back|backward|closer|away|toward (?:me|you)|towards (?:me|you))) for ((?:the|that|this) [a-z' ]+?)(?=\s*(?:$|[.,;!?]))",
+                  r"\1move \3 \2", text)
+    text = re.sub(r"\bno (?:lifting|picking up|picking|grabbing|grasping|carrying) (?=(?:that|the|this|it)\b)", "", text)  # "no lifting that can, just ease it back": the manner ruled out
+    text = re.sub(r"\bease (it|them|(?:the|that|this) [a-z ]+?) (?=(?:back|forward|left|right|over|closer|away|toward|towards|to the|into|onto|in|on|off)\b)", r"move \1 ", text)
     text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(_by_comparison(voices.plain(text)))))))
     text = _UNDO.sub("put it back where it was", text)  # "move the mug 5 cm left. actually, undo that": where it was before
     text = _EXIT.sub("move it aside", text)  # "Red box, ... Exit -- clear off somewhere out of the way": the one addressed leaves
@@ -194,7 +226,7 @@ def clean(command: str) -> str:
     # said to a thing addressed: "Banana, ..., go sit in the bowl": it goes there
     text = re.sub(r"(?:^|(?<=[.,;!?] ))(?:and )?(?:now )?(?:go|come)(?: and)?(?: (?:sit|stand|rest|lie|live|hide|wait))? (?=(?:in|into|inside|on|onto|next to|beside|behind|in front of|to the left of|to the right of|left of|right of|between|on top of)\b)",
                   "put it ", text)
-    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?return (?:back )?to (?:base|home|(?:the |your |its )?(?:home|start|rest|starting|base)(?: position| pose| point)?)(?=\s*(?:$|[.,;!?]))", "go home", text)
+    text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?return (?:back )?to (?:base|home|(?:the |your |its )?(?:home|start|rest|resting|starting|base|park(?:ed|ing)?|neutral|standby)(?: position| pose| point| spot| place)?)(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"(?:^|(?<=[.,;!?] )|(?<=\bthen ))(?:and )?back (?:to )?(?:the |your |its )?(?:home|start|rest|starting)(?: position| pose| point)?(?=\s*(?:$|[.,;!?]))", "go home", text)
     text = re.sub(r"\b(?:on )?over (?=(?:beside|next to|near|alongside|behind|in front of|to the|left of|right of)\b)", "", text)  # "over beside the bowl": beside it
     text = re.sub(r"(?<=[a-z]) in (?=(?:behind|in front of|next to|beside|alongside|between|against|on top of|under)\b)", " ", text)  # "tuck it in behind the bowl"
@@ -260,7 +292,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:front|near) side of\b", "in front of", text)
     text = re.sub(r"\b(?:in|into|inside|at|to|on) (?:the )?(?:back|rear|far) side of\b", "behind", text)
     text = re.sub(r"\b(?:towards?|to|in|into) (?:yourself|your self|your direction|the direction of you|your way)\b", "toward you", text)
-    text = re.sub(r"\bbetween (?:(?:you|yourself|me|myself|the robot|us) and ((?:the|that|this) [a-z]+(?: [a-z]+)?)|((?:the|that|this) [a-z]+(?: [a-z]+)?) and (?:you|yourself|me|myself|the robot|us))\b",
+    text = re.sub(r"\bbetween (?:(?:you|yourself|me|myself|the robot|us) and ((?:the|that|this) [a-z]+(?: [a-z]+)?)|((?:the|that|this) [a-z]+(?: [a-z]+)?) and (?:you|yourself|me|myself|the robot|us))(?: itself| yourself| myself)?\b",
                   lambda m: f"in front of {m.group(1) or m.group(2)}", text)  # "between the box and yourself": nearer the robot than the box
     text = re.sub(r"\bchange (?:the )?(?:place|places|position|positions|spot|spots)(?: of)? (.+?) (?:with|and) ", r"swap \1 with ", text)
     text = re.sub(r",? (?:so )?(?:each one|each|both)(?: of them)? (?:go|goes|ends? up|sits?|is) (?:where|in the place)(?: is)? the other(?: one)?(?: (?:is|was|sits|sat))?(?=$|[,.;!?])", "", text)
@@ -290,7 +322,8 @@ def clean(command: str) -> str:
                   r"(?: it| them)?\b", " ", text)  # what it is for, not what to do
     text = re.sub(r"\bmore (?:close|near)\b", "closer", text)
     # what the move is for, naming no place: "put the marker aside so it can think about what it did"
-    text = re.sub(r"\s*,?\s*\bso (?:that )?(?:it|they|he|she|we|i|you) (?:can|could|will|would|may|might|gets to|get to) ([^.,;!?]*)",
+    text = re.sub(r"\s*,?\s*\bso (?:that )?(?:it|they|he|she|we|i|you|everyone|everybody|(?:the |our )?(?:people|audience|crowd|class|kids|guests|visitors|folks|judges)(?: [a-z]+){0,4}?)"
+                  r" (?:can|could|will|would|may|might|gets to|get to|stops|stop|quits|no longer|isn t|is not|doesn t|does not|won t|will not|wont|isnt|doesnt) ([^.,;!?]*)",
                   lambda m: m.group(0) if has_relation(m.group(1)) or re.match(r"(?:be|sit|stand|rest|go|fit|stay|end up|lie|land)\b", m.group(1)) else "", text)
     text = re.sub(r"\bso (?:that )?(?:it|they|its)(?: (?:is|are|sits|sit|stands|stand|ends up|end up|lands|rests|will be|goes|stays|is now))?\b", " ", text)
     text = re.sub(r"\b(?:one by one|one at a time|one after (?:the )?other|individually|in turn)\b", " ", text)
@@ -305,7 +338,8 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:(?:somewhere|someplace|anywhere) else|elsewhere)\b", " aside ", text)
     text = re.sub(r"(?:,?\s*(?:and|then|and then) )?\b(?:stay|stop|remain|wait|sit tight|rest|keep still)(?: right)? (?:there|put|where it is|where you are|in place)(?=\s*(?:$|[.,;!?]))", "", text)  # "move it somewhere else"
     text = re.sub(r"\b(?:out of (?:the|my|your|our|his|her|their) (?:way|path|workspace|work space|work area|workzone|reach)(?: of [^,.;]*?(?=$|[.,;]| and\b| then\b))?|(?:from|off) (?:my|your|our|the) path|(?:off )?to (?:one|the|a) side(?! of\b))", " aside ", text)
-    text = re.sub(r"\baside(?:\s+(?:somewhere|someplace|anywhere|for now|for a bit|for a while))+\b", "aside", text)  # "out of the way somewhere"
+    text = re.sub(r"\baside(?:\s+(?:somewhere|someplace|anywhere|for now|for a bit|for a while|aside))+\b", "aside", text)
+    text = re.sub(r"\s+(?:first|to begin with|to start with|beforehand)(?=\s*[,;.]?\s*(?:and )?then\b)", "", text)  # "move the can aside first, then ...": in the order said  # "out of the way somewhere"
     text = re.sub(r"\b(?:put|tuck|stash|stow|store|set|place|park|clear) ([^,.;]+?)(?<!\bfurther)(?<!\bfarther)(?<!\bmore) (?:away|aside)(?=\s*(?:$|[.,;])| and\b| then\b)", r"put \1 aside", text)  # "tuck the banana away"
     text = re.sub(r"\bclear (away|off|out) (?!(?:the|that|this|those|these|my|your|a|an|it|them)\b)", r"clear \1 the ", text)  # "clear away cereal box"
     text = re.sub(r"\bclear (?:away |off |out )?((?:the|that|this|those|these|my|your|a|an) [a-z]+(?: (?!(?:away|off|out|aside|and|then)\b)[a-z]+)*?)"
@@ -602,7 +636,7 @@ _STATEMENTS: tuple[tuple[re.Pattern[str], str], ...] = (
      "move {0} {1}"),
     # "the red can and the white can should have traded places"
     (re.compile(rf"^(?:(?:it |that )?(?:would |d |will )?be \w+ if )?(.+?) (?:{_MODAL} |to )?(?:have |had )?(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)"
-                r" (?:places|positions|spots|seats)$"), "swap {0}"),
+                r" (?:places|positions|spots|seats|squares)$"), "swap {0}"),
     # "it'd be great if the banana was in the bowl": the state wished for, made
     (re.compile(r"^(?:it |that |this )?(?:would |d |will |s |is )?be (?:great|nice|good|lovely|helpful|awesome|perfect|ideal|brilliant|wonderful|cool|best|better)"
                 r" if (.+?) (?:was|were|is|are|sat|stood|ended up|could be|would be) (.+)$"), "put {0} {1}"),

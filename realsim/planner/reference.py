@@ -463,6 +463,9 @@ class Resolver:
             found = footprint_shape_pick(words, found)
         if len(found) > 1 and not loose and core is not None:  # talk around a name that names no one thing: no name at all
             raise InputError(f"no object matches {phrase.strip()!r}; {self.listing()}")
+        if len(found) > 1 and re.match(r"(?:that|this|the same) ", text):  # "... in front of the red can, so between that can and you": the one just named
+            named = [o for o in (*ctx.last, *([ctx.place] if ctx.place else []), *reversed(ctx.seen)) if o in found]
+            found = named[:1] or found
         if len(found) > 1 and not loose:
             raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(found))}; "
                              "say which one (colour, size, left/right, or the body name)")

@@ -21,7 +21,8 @@ __all__ = ["people"]
 _WHO = (r"(?:she|he|they|we|(?:my|our|the|your|his|her) (?:little |baby |youngest |eldest |oldest |older |younger |new )?"
         r"(?:one|son|daughter|kid|kids|child|children|boy|girl|boys|girls|wife|husband|partner|mum|mom|mother|dad|father|baby|boss|colleague"
         r"|colleagues|friend|friends|guest|guests|family|team|toddler|grandson|granddaughter|grandkids|neighbour|neighbor|roommate|flatmate)"
-        r"|honey|sweetie|darling|hubby|grandma|grandpa|granny|mum|mom|dad|everyone|everybody|somebody|someone)")
+        r"|honey|sweetie|darling|hubby|grandma|grandpa|granny|mum|mom|dad|everyone|everybody|somebody|someone"
+        r"|(?:the |our |my |your |this )?(?:buyer|customer|client|bidder|winning bidder|winner|gentleman|lady|owner|audience|crowd|judges?|boss|chef|teacher))")
 _SAYS = (r"(?:s|re|is|are|was|were|wants?|wanted|likes?|liked|loves?|needs?|keeps?|kept|has|have|had|will|ll|d|would|gets?|got|can|could"
          r"|might|always|never|just|hates?|prefers?|thinks?|says?|said|asked|asks)")
 _REMARK = re.compile(rf"(?:(?:and|but|oh|because|cause|so|cos)\s+)?{_WHO}\s*'?\s*{_SAYS}\b[^.!?;]*")

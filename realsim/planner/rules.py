@@ -20,7 +20,7 @@ import re
 from collections.abc import Sequence
 
 from realsim.errors import InputError
-from realsim.planner import aliases, compass, typos
+from realsim.planner import aliases, compass, measures, typos
 from realsim.planner.aside import ASIDE, WHERE, aside, where_was
 from realsim.planner.asides import is_aside, without_talk
 from realsim.planner.conditions import branch
@@ -78,7 +78,8 @@ def _planned(command: str, objects: Sequence[ObjectInfo], robot_yaw: float,
 def parse_steps(command: str, objects: Sequence[ObjectInfo], robot_yaw: float = 0.0,
                 robot_base: tuple[float, float] | None = None) -> list[Step]:
     """The steps (calls and goals) ``command`` asks for; raises :class:`InputError` when it cannot."""
-    command = compass.bearings(aliases.named(command))  # "the mug is Falcon", "north is away from you": said plainly
+    # "the mug is Falcon", "north is away from you", "call a square 5 cm": what the speaker set up, said plainly
+    command = measures.made_up_units(compass.bearings(aliases.named(command)))
     if is_question(command):
         raise InputError(f"{command.strip()!r} is a question; realsim acts on commands such as 'put the mug in the bowl'")
     try:

@@ -52,8 +52,8 @@ class Parser:
         self.by_name = {o.name: o for o in self.objects}
 
 
-SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|seats|locations) of| where| places of)?"
-                  r" (.+?)(?: (?:and|with|for) (.+?))?(?: (?:are|is|around|round|over|places|positions|spots|seats|sit))*")
+SWAP = re.compile(r"(?:swap|switch|exchange|trade|interchange)(?: around| over)?(?: the (?:positions|places|spots|seats|squares|locations) of| where| places of)?"
+                  r" (.+?)(?: (?:and|with|for) (.+?))?(?: (?:are|is|around|round|over|places|positions|spots|seats|squares|sit))*")
 EACH_OTHER = re.compile(r"(?:each other|one another|one other|together)")
 
 

@@ -53,7 +53,7 @@ _BETTER = re.compile(rf"{_START}(?:(?:but|and|so|honestly|really) )?(it|they|the
                      rf"(?: (?:if (?:it|they) (?:were|was|went|sat|stood)|(?:over )?there|instead))? (?=(?:{_PLACE}) )")
 # two things wished swapped: "I'd like the mug and the bowl to have traded places", "I want them switched round"
 _SWAPPED = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so) )?(?:{'|'.join(_FRAMES)}){_THING} (?:to )?(?:have )?(?:been )?"
-                      r"(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)(?: (?:places|positions|spots|seats|round|around|over))?\b")
+                      r"(?:traded|swapped|switched|exchanged|trade|swap|switch|exchange)(?: (?:places|positions|spots|seats|squares|round|around|over))?\b")
 _WISH = re.compile(rf"(?:^|(?<=[.,;!?] ))(?:(?:but|and|so|though|although|yet) )?(?:{'|'.join(_FRAMES)}){_THING} {_STATE}(?=(?:{_PLACE}) )")
 
 
