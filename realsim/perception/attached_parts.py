@@ -25,7 +25,8 @@ __all__ = ["join_attached_parts"]
 def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarray, resting_on: dict[int, int | None],
                         stand_height: float, reach: float, jump: float, view_axis: np.ndarray | None = None,
                         grid_shape: tuple[int, int] | None = None, links: tuple[np.ndarray, np.ndarray] | None = None,
-                        base_gap: float | None = None) -> np.ndarray:
+                        base_gap: float | None = None, normals: np.ndarray | None = None,
+                        rest_face_angle: float = 30.0) -> np.ndarray:
     """Labels (>= 1 objects) with each object that rests on another (or floats next to it) but
     is not held up by it at its own foot (:func:`realsim.perception.contact_cut.supported`)
     merged into that other one; an object standing on its support stays.
@@ -37,8 +38,10 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
     (row-major over the points): a floating object whose foot a nearer one hides (more than a
     depth ``jump``, m, nearer just below it in the image) stays as it is. A cloud seen from around
     (no view) gives its neighbour ``links`` instead and the ``base_gap`` of its grid
-    (:func:`realsim.perception.object_relations.base_height`); no foot of it is hidden."""
-    params = CutParams(stand_height=stand_height)
+    (:func:`realsim.perception.object_relations.base_height`); no foot of it is hidden. Given the
+    points' ``normals``, an object also rests on another where that one's face under it turns less
+    than ``rest_face_angle`` (degrees) from up (:func:`realsim.perception.contact_cut.supported`)."""
+    params = CutParams(stand_height=stand_height, rest_face_angle=rest_face_angle)
     root = {o: o for o in resting_on}
 
     def find(o: int) -> int:
@@ -73,7 +76,7 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
         if floating and view_axis is not None and grid_shape is not None and _foot_hidden(height, points @ view_axis, out, o,
                                                                                           grid_shape, jump):
             continue  # its foot is hidden, not missing
-        if not supported(points[group], height[group], side, contact, params):
+        if not supported(points[group], height[group], side, contact, params, None if normals is None else normals[group, 2]):
             out[mine] = body
             root[o] = body
     return out
