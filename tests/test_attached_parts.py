@@ -96,3 +96,45 @@ def test_in_a_cloud_a_piece_of_wall_joins_its_body_and_a_resting_box_stays() -> 
     top = _block((0.05, 0.05, 0.07), (0.12, 0.12, 0.14), 0.01)
     out, labels = _cloud_join([base, top], {1: None, 2: 1})
     assert np.array_equal(out, labels)
+
+
+def _rod_on(body: np.ndarray, far: np.ndarray, foot_gap: float) -> tuple[np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """A thin rod (1 cm, along x at y = 0.1, its foot at z = 0.065) on ``body`` plus the ``far`` points of it; links: the
+    rod's foot to the body's points ``foot_gap`` beside it, its middle and top to the ``far`` ones (the view's
+    neighbours across the rod's far outline, within reach but over a depth jump)."""
+    xs = np.arange(0.05, 0.151, 0.01)
+    rod = np.concatenate([np.stack([xs, np.full_like(xs, 0.1), np.full_like(xs, z)], axis=1) for z in (0.065, 0.07, 0.075)])
+    points = np.vstack([body, far, rod])
+    labels = np.concatenate([np.ones(len(body) + len(far), dtype=np.int32), np.full(len(rod), 2, dtype=np.int32)])
+    tree = {tuple(np.round(p, 4)): i for i, p in enumerate(points)}
+    a, b = [], []
+    for k, x in enumerate(xs):
+        foot, mid, top = len(body) + len(far) + k, len(body) + len(far) + len(xs) + k, len(body) + len(far) + 2 * len(xs) + k
+        a.append(foot), b.append(tree[(round(x, 4), round(0.1 - foot_gap, 4), 0.06)])
+        for end in (mid, top) if len(far) else ():
+            a.append(end), b.append(tree[(round(x, 4), 0.105, 0.06)])
+    return points, labels, (np.array(a), np.array(b))
+
+
+def test_a_thin_body_lying_on_a_top_meets_it_at_the_crease_under_it() -> None:
+    """A rod lying on a box top: its foot meets the top at a depth-continuous crease, its far outline only
+    comes within reach of the top behind it (over a depth jump): it rests on the box and stays."""
+    xs = np.arange(0.05, 0.151, 0.01)
+    body = _block((0.0, 0.0, 0.0), (0.2, 0.2, 0.06), 0.01)
+    far = np.stack([xs, np.full_like(xs, 0.105), np.full_like(xs, 0.06)], axis=1)
+    points, labels, links = _rod_on(body, far, 0.0)
+    out = join_attached_parts(points, labels, points[:, 2], {1: None, 2: 1}, 0.015, 0.016, 0.008, links=links)
+    assert np.array_equal(out, labels)
+
+
+def test_a_body_lying_on_an_upward_face_rests_however_little_of_it_is_seen() -> None:
+    """A rod whose foot meets an upward face of a body seen only beside it (its foot over none of that
+    body from above) rests on it given the normals; on a wall (normals sideways) it is the body's part."""
+    body = _block((0.0, 0.0, 0.0), (0.2, 0.09, 0.06), 0.01)
+    points, labels, links = _rod_on(body, np.zeros((0, 3)), 0.01)
+    up = np.tile([0.0, 0.0, 1.0], (len(points), 1))
+    side = np.tile([0.0, -1.0, 0.0], (len(points), 1))
+    args = (points, labels, points[:, 2], {1: None, 2: 1}, 0.015, 0.016, 0.008)
+    assert np.array_equal(join_attached_parts(*args, links=links, normals=up), labels)
+    assert np.all(join_attached_parts(*args, links=links, normals=side) == 1)
+    assert np.all(join_attached_parts(*args, links=links) == 1)

@@ -25,7 +25,8 @@ __all__ = ["join_attached_parts"]
 def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarray, resting_on: dict[int, int | None],
                         stand_height: float, reach: float, jump: float, view_axis: np.ndarray | None = None,
                         grid_shape: tuple[int, int] | None = None, links: tuple[np.ndarray, np.ndarray] | None = None,
-                        base_gap: float | None = None) -> np.ndarray:
+                        base_gap: float | None = None, normals: np.ndarray | None = None,
+                        rest_face_angle: float = 30.0) -> np.ndarray:
     """Labels (>= 1 objects) with each object that rests on another (or floats next to it) but
     is not held up by it at its own foot (:func:`realsim.perception.contact_cut.supported`)
     merged into that other one; an object standing on its support stays.
@@ -37,8 +38,10 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
     (row-major over the points): a floating object whose foot a nearer one hides (more than a
     depth ``jump``, m, nearer just below it in the image) stays as it is. A cloud seen from around
     (no view) gives its neighbour ``links`` instead and the ``base_gap`` of its grid
-    (:func:`realsim.perception.object_relations.base_height`); no foot of it is hidden."""
-    params = CutParams(stand_height=stand_height)
+    (:func:`realsim.perception.object_relations.base_height`); no foot of it is hidden. Given the
+    points' ``normals``, an object also rests on another where that one's face under it turns less
+    than ``rest_face_angle`` (degrees) from up (:func:`realsim.perception.contact_cut.supported`)."""
+    params = CutParams(stand_height=stand_height, rest_face_angle=rest_face_angle)
     root = {o: o for o in resting_on}
 
     def find(o: int) -> int:
@@ -67,36 +70,43 @@ def join_attached_parts(points: np.ndarray, labels: np.ndarray, height: np.ndarr
             continue
         group = np.flatnonzero(mine | theirs)
         side = mine[group]
-        contact = _contact(points, group, side, links, reach)
+        contact = _contact(points, group, side, links, jump, reach)
         if not contact[side].any() or not contact[~side].any():
             continue
         if floating and view_axis is not None and grid_shape is not None and _foot_hidden(height, points @ view_axis, out, o,
                                                                                           grid_shape, jump):
             continue  # its foot is hidden, not missing
-        if not supported(points[group], height[group], side, contact, params):
+        if not supported(points[group], height[group], side, contact, params, None if normals is None else normals[group, 2]):
             out[mine] = body
             root[o] = body
     return out
 
 
 def _contact(points: np.ndarray, group: np.ndarray, side: np.ndarray, links: tuple[np.ndarray, np.ndarray],
-             reach: float) -> np.ndarray:
+             jump: float, reach: float) -> np.ndarray:
     """Mask over ``group`` of the points where its two ``side``s meet: the ends of neighbouring
-    pixel pairs across them no farther apart than ``reach`` (m), or, where the image shows no such
-    pair (a handle's ends hidden behind its body), the points within ``reach`` of the other side."""
+    pixel pairs across them whose surfaces touch (no farther apart than a depth ``jump``, m: the
+    crease where a body lying on another meets its face); where the image shows no such pair, those
+    no farther apart than ``reach`` (m; a thin body's far outline merely passes over the face behind
+    it, so it counts only where no crease shows); where none either (a handle's ends hidden behind
+    its body), the points within ``reach`` of the other side."""
     local = np.full(len(points), -1, dtype=np.int64)
     local[group] = np.arange(len(group))
     la, lb = local[links[0]], local[links[1]]
     both = (la >= 0) & (lb >= 0)
     la, lb = la[both], lb[both]
-    across = (side[la] != side[lb]) & (np.linalg.norm(points[group[la]] - points[group[lb]], axis=1) <= reach)
+    across = side[la] != side[lb]
+    length = np.linalg.norm(points[group[la]] - points[group[lb]], axis=1)
+    for limit in (jump, reach):
+        near = across & (length <= limit)
+        if near.any():
+            contact = np.zeros(len(group), dtype=bool)
+            contact[la[near]] = contact[lb[near]] = True
+            return contact
     contact = np.zeros(len(group), dtype=bool)
-    contact[la[across]] = contact[lb[across]] = True
-    if contact.any():
-        return contact
-    for near, far in ((side, ~side), (~side, side)):
-        dist, _ = cKDTree(points[group[far]]).query(points[group[near]], distance_upper_bound=reach)
-        contact[np.flatnonzero(near)[np.isfinite(dist)]] = True
+    for near_side, far in ((side, ~side), (~side, side)):
+        dist, _ = cKDTree(points[group[far]]).query(points[group[near_side]], distance_upper_bound=reach)
+        contact[np.flatnonzero(near_side)[np.isfinite(dist)]] = True
     return contact
 
 

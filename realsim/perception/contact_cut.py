@@ -51,6 +51,7 @@ class CutParams:
     min_points: int = 5  # and it holds at least this many points
     stand_height: float = 0.015  # m: a side whose base is higher above its support does not stand on it
     rest_fraction: float = 0.35  # ... and rests on the other only if they meet in its lowest part of its height
+    rest_face_angle: float = 30.0  # ... over it seen from above, or on a face of it turned this close to up (degrees)
     max_depth: int = 4  # bisections per group
     intact_share: float = 0.8  # a first cluster with this share of its points in one final part stays as it was
     confirm_share: float = 0.97  # ... and with this share it keeps the rest of its points too
@@ -84,12 +85,15 @@ def _extent(points: np.ndarray) -> float:
     return float(np.max(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
 
 
-def supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams) -> bool:
+def supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact: np.ndarray, params: CutParams,
+              up: np.ndarray | None = None) -> bool:
     """Whether the points ``side`` can be an object of their own: they stand on the support, or
     they rest on the rest: the points where they meet it (``contact``) lie in their lowest part
     (a handle meets its body at both ends, a stacked can at its bottom) and that lowest part lies
     over the rest seen from above (a stacked can's foot is on its base's top; a handle's lower end
-    hangs beside its body, over nothing)."""
+    hangs beside its body, over nothing) or, given each point's upward normal component ``up``,
+    the rest's face where they meet it faces up (within ``rest_face_angle``: a face holding a body
+    from below, however little of the rest is seen around it; a handle meets a wall)."""
     h = height[side]
     if base_height(h) <= params.stand_height:
         return True
@@ -98,12 +102,20 @@ def supported(points: np.ndarray, height: np.ndarray, side: np.ndarray, contact:
     lowest = h <= low + params.rest_fraction * (h.max() - low)
     if not len(meet) or float(np.median(meet)) > low + params.rest_fraction * (h.max() - low):
         return False
+    if up is not None and _faces_up(up[~side & contact], params.rest_face_angle):
+        return True
     under = points[~side, :2]
     try:
         hull = polygon_and_rectangle(under)[0]
     except ValueError:  # the rest is a line seen from above: nothing to rest on
         return False
     return bool(inside_convex_polygon(points[side][lowest, :2], hull).mean() >= 0.5)
+
+
+def _faces_up(up: np.ndarray, max_angle: float) -> bool:
+    """Whether the median of the upward normal components ``up`` (NaN: unknown) lies within ``max_angle`` (deg) of up."""
+    up = up[np.isfinite(up)]
+    return bool(len(up)) and float(np.median(up)) >= np.cos(np.radians(max_angle))
 
 
 def _width(points: np.ndarray, axis: np.ndarray) -> float:

@@ -468,7 +468,8 @@ def segment_objects(points: np.ndarray, colors: np.ndarray | None, planes: list[
             labels = kept
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)
         joined = join_attached_parts(points, labels, height, resting_on, params.stack_min_height, 2 * params.jump_distance,
-                                     params.jump_distance, axis, grid_shape)
+                                     params.jump_distance, axis, grid_shape, normals=normals,
+                                     rest_face_angle=params.rest_face_angle)
         if not np.array_equal(joined, labels):  # a handle or a container's inside is its body's
             labels = _renumbered(points, joined)
             support_of, resting_on = support_relations(points, labels, support, height, planes, params)

@@ -68,6 +68,8 @@ class SegmentParams:
     # than this share of its pairs is backdrop, cut out of a wall (realsim.perception.backdrop_patch)
     min_object_points: int = 200  # smaller isolated clusters are noise (-1)
     stack_min_height: float = 0.015  # an object whose base is this high rests on another one
+    rest_face_angle: float = 30.0  # camera views: ... held up by it where it meets a face of it turned this close to up
+    # (degrees), however little of that one is seen around its foot (realsim.perception.attached_parts)
     base_gap: float | None = None  # m: clouds worked on a grid (its cell): an object's base is its lowest point
     # with another within this above it (None: camera views, the 5th-lowest point; object_relations.base_height)
     # sizes of objects (unorganized clouds): larger clusters are structure (walls, furniture sides),
