@@ -61,6 +61,38 @@ def test_named_and_bearing_requests(sentence: str, lines: list[str]) -> None:
         assert any(g.startswith(line) for g in got), (sentence, got)
 
 
+@pytest.mark.parametrize(("sentence", "lines"), [
+    # the robot's actions told to an audience
+    ("Folks, gather round: in our next trick the robot is going to lift the strawberry and drop it into the bowl. Watch closely.",
+     ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("What you'll see now is our trusty arm nudging the banana about three centimetres to the left.", ["push('obj7_banana', 'left', 0.03)"]),
+    ("And for the finale, the gripper sets the green cube on the red cube and then returns to its resting position.",
+     ["place_on('obj5_cube', 'obj3_cube')", "go_home()"]),
+    # an auction's and a bargain's talk around the request
+    ("Lot number seven, a fine red strawberry! The buyer wants it next to the banana. Going, going, gone!", ["place_beside('obj8_strawberry', 'obj7_banana', 'next')"]),
+    ("Here's the deal: the green cube goes in the bowl and we'll call it even. Take it or leave it.", ["place_in('obj5_cube', 'obj6_bowl')"]),
+    # a unit made up for the message; a game's and a garden's verbs
+    ("Slide the banana two squares to the right, where a square is three centimetres.", ["push('obj7_banana', 'right', 0.06)"]),
+    ("Castle the banana and the strawberry.", ["place('obj7_banana'", "place('obj8_strawberry'"]),
+    ("Green cube, retreat.", ["push('obj5_cube', 'back'"]),
+    ("Transplant the strawberry into the gap between the red cube and the blue cube.", ["place_between('obj8_strawberry', 'obj3_cube', 'obj4_cube')"]),
+    ("The green cube gets planted on the blue cube.", ["place_on('obj5_cube', 'obj4_cube')"]),
+    ("Three centimetres forward for the strawberry, please.", ["push('obj8_strawberry', 'forward', 0.03)"]),
+    ("The strawberry hops off the red cube and lands right beside the bowl.", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    # "that can": the one just named
+    ("Put the banana in front of the left can, so between that can and yourself.", ["place_beside('obj7_banana', 'obj1_soda_can', 'front')"]),
+])
+def test_told_and_bargained_requests(sentence: str, lines: list[str]) -> None:
+    got = call_lines(sentence)
+    for line in lines:
+        assert any(g.startswith(line) for g in got), (sentence, got)
+
+
+def test_a_thing_the_robot_is_pointed_at_is_no_narration() -> None:
+    got = call_lines("push the banana toward the robot then lift the strawberry")
+    assert got[0].startswith("push('obj7_banana', 'back'") and got[1:] == ["grasp('obj8_strawberry')"]
+
+
 def test_compass_words_without_a_set_up_are_not_guessed() -> None:
     assert bearings("push the banana 5 cm north") == "push the banana 5 cm north"
     with pytest.raises(InputError):

@@ -18,9 +18,9 @@ _APPROX = r"(?:about |roughly |around |approximately |some |just |exactly |preci
 # "call a square five centimetres", "a file's about six centimetres", "a square is 5 cm", "one square = 5 cm", "where a step is an inch"
 _DEFINE = (
     re.compile(rf"\b(?:let s |lets |we ll |we will |i ll |just )?(?:call|make|count|treat|take) (?:a|one|each) ([a-z]+) (?:as |to be |being |=\s*)?{_APPROX}{_AMOUNT} ?({_REAL})\b(?! (?:wide|tall|high|long|across|thick|deep))"),
-    re.compile(rf"\b(?:where |with |if |and )?(?:a|one|each) ([a-z]+)(?:'s| is| s| being| equals| means| =| of)\s+{_APPROX}{_AMOUNT} ?({_REAL})\b(?! (?:wide|tall|high|long|across|thick|deep))"),
+    re.compile(rf"\b(?:where |with |if |and )?(?:a|one|each) ([a-z]+)(?:'s| is| s| being| equals| means| =)\s+{_APPROX}{_AMOUNT} ?({_REAL})\b(?! (?:wide|tall|high|long|across|thick|deep))"),
 )
-_EXCLUDED = frozenset({"inch", "centimetre", "centimeter", "millimetre", "millimeter", "metre", "meter", "foot", "bit", "little", "touch", "hair",
+_EXCLUDED = frozenset({"distance", "length", "width", "height", "depth", "total", "maximum", "minimum", "gap", "move", "push", "nudge", "inch", "centimetre", "centimeter", "millimetre", "millimeter", "metre", "meter", "foot", "bit", "little", "touch", "hair",
                        "tad", "smidge", "lot", "few", "couple"})
 
 

@@ -11,13 +11,13 @@ import unicodedata
 
 from realsim.planner import (
     casual,
-    narration,
     clarify,
     clock,
     code_calls,
     discourse,
     focus,
     formal,
+    narration,
     places,
     purpose,
     radio,
@@ -167,7 +167,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\bwhere (the [a-z ]+?|it|they) (?:stood|sat|was standing|was sitting|used to (?:be|stand|sit))\b", r"where \1 was", text)
     # a thing said to move itself to a place: "the can steps down off the box and lands on the table beside the bowl"
     text = re.sub(r"(^|(?<=[.,;!?] ))((?:the|that|this) [a-z' ]+?) (?:(?:steps|hops|jumps|climbs|comes|gets) (?:down )?off (?:of )?(?:the|that|this) [a-z ]+? and )?"
-                  r"(?:lands|hops|steps|jumps|moves|slides|settles|ends up|comes to rest|sits down|walks|strolls|wanders|travels|heads)(?: down| over)? "
+                  r"(?:lands|hops|steps|jumps|moves|slides|settles|ends up|comes to rest|sits down|walks|strolls|wanders|travels|heads)(?: down| over)? (?:right |just |directly )?"
                   r"(?=(?:on|in|into|onto|next to|beside|behind|in front of|to the|left of|right of|between)\b)", r"\1put \2 ", text)
     # "two inches to the right for the foam brick": the way said first, then whom it is for
     text = re.sub(r"(^|(?<=[.,;!?] ))((?:about |roughly )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|six|seven|eight|nine|ten) ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) "
