@@ -31,9 +31,11 @@ def _lidded_jug(radius: float = 0.07, height: float = 0.24, recess: float = 0.01
                       (radius - 0.012, height - recess), (0.0, height - recess)])
 
 
-def _view(mesh: trimesh.Trimesh, elevation_deg: float, distance: float = 1.2, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+def _view(mesh: trimesh.Trimesh, elevation_deg: float, distance: float = 1.2, seed: int = 0,
+          mixed: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """(points seen, camera centre): ``mesh`` on z = 0 seen from ``distance`` away along -x, the camera
-    ``elevation_deg`` above its top; a 2 mm grid of rays at the object, depth noise 1 mm."""
+    ``elevation_deg`` above its top; a 2 mm grid of rays at the object, depth noise 1 mm, and where the
+    depth jumps between neighbouring rays (over a rim), with ``mixed``, pixels between the two depths (a Kinect's)."""
     top = float(mesh.bounds[1][2])
     camera = np.array([-distance, 0.0, top + distance * np.tan(np.radians(elevation_deg))])
     lo, hi = mesh.bounds
@@ -45,8 +47,17 @@ def _view(mesh: trimesh.Trimesh, elevation_deg: float, distance: float = 1.2, se
     scene.add_triangles(o3d.core.Tensor(np.asarray(mesh.vertices, np.float32)), o3d.core.Tensor(np.asarray(mesh.faces, np.uint32)))
     rays = np.column_stack([np.repeat(camera[None], len(directions), axis=0), directions]).astype(np.float32)
     t = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy()
-    hit = np.isfinite(t)
     rng = np.random.default_rng(seed)
+    grid = t.reshape(ys.shape)
+    with np.errstate(invalid="ignore"):
+        jump = np.isfinite(grid[1:]) & np.isfinite(grid[:-1]) & (np.abs(grid[1:] - grid[:-1]) > 0.02)
+    rows, cols = np.nonzero(jump)
+    t = t.copy()
+    for k in (1, 2, 3) if mixed else ():  # the pixels past the edge take depths between the two
+        past = rows + k < ys.shape[0]
+        near, far = np.minimum(grid[rows, cols], grid[rows + 1, cols])[past], np.maximum(grid[rows, cols], grid[rows + 1, cols])[past]
+        t[(rows[past] + k) * ys.shape[1] + cols[past]] = near + rng.uniform(0, 1, past.sum()) * (far - near)
+    hit = np.isfinite(t)
     depth = t[hit] + rng.normal(0.0, 0.001, hit.sum())
     return camera + directions[hit] * depth[:, None], camera
 
@@ -64,6 +75,8 @@ def test_a_deep_mug_seen_at_a_grazing_angle_is_hollow_to_its_bottom_and_holds_a_
     # over the near rim the camera sees the far wall's inside about 2 R tan(27 deg) = 43 mm down, never the floor
     assert mug is not None
     assert mug.floor_z < 0.015  # the unseen floor: the bottom as thick as the wall, not the lowest wall point seen
+    assert np.interp(0.2 * H, *mug.outside) > R - 0.004  # the wall straight down to it, not a funnel to the axis
+    assert abs(mug.visual.volume - _mug().volume) < 0.2 * _mug().volume  # as much wall as the true mug
     x, y, z = drop_ball(mug.pieces, np.array([rim[0][0], rim[0][1], top + 0.05]), seconds=1.5)
     assert np.hypot(x - rim[0][0], y - rim[0][1]) < rim[1] and z < top - 0.04
 
@@ -72,7 +85,7 @@ def test_a_lidded_jug_or_can_seen_from_above_keeps_its_closed_top() -> None:
     # the jug's lid 18 mm under its rim: the camera, 33 degrees up, would see 90 mm into an open jug this wide
     for mesh, radius, elevation in ((_lidded_jug(), 0.07, 33.0), (_lidded_jug(), 0.07, 45.0),
                                     (_lidded_jug(R, H, 0.008), R, 11.0)):  # a can's lid 8 mm down, seen grazing
-        points, camera = _view(mesh, elevation)
+        points, camera = _view(mesh, elevation, mixed=False)  # no mixed pixels: only the lid's relief
         top = float(np.percentile(points[:, 2], 98))
         assert cavity_floor(points, np.zeros(2), radius, top, camera_xy=camera[:2], camera_z=float(camera[2])) is None
 
