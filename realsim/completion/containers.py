@@ -33,7 +33,6 @@ class ContainerParams:
     min_wall: float = 0.003  # m
     max_wall_share: float = 0.25  # of the rim radius
     min_floor: float = 0.002  # thinnest bottom (m)
-    grazing_share: float = 0.25  # the lowest points inside within this share of the seeable depth of the lowest line of sight over the rim, and this share of the height up: the floor is below them, unseen
 
 
 @dataclass
@@ -60,37 +59,6 @@ def seeable_depth(centre: np.ndarray, radius: float, rim_z: float, height: float
         return 0.0
     run = float(np.linalg.norm(centre - camera_xy)) - radius  # from the camera to the near rim, across
     return height if run <= 0 else float(min(height, 2.0 * radius * (camera_z - rim_z) / run))
-
-
-def sight_limit(points: np.ndarray, centre: np.ndarray, radius: float, rim_z: float, camera_xy: np.ndarray,
-                camera_z: float) -> np.ndarray:
-    """Per point inside the rim (a circle of ``radius`` about ``centre`` at height ``rim_z``), the lowest
-    height the camera can see at its place: where the line of sight grazing the near rim comes down
-    to it (-inf for points whose horizontal line of sight does not cross the rim)."""
-    c = camera_xy - centre
-    d = points[:, :2] - camera_xy
-    a, b, k = np.einsum("ij,ij->i", d, d), d @ c, float(c @ c) - radius * radius
-    disc = b * b - a * k
-    t = (-b - np.sqrt(np.maximum(disc, 0.0))) / np.maximum(a, 1e-12)  # the fraction of the way at which it crosses the rim
-    crosses = (disc > 0) & (t > 1e-6) & (t <= 1)
-    return np.where(crosses, camera_z - (camera_z - rim_z) / np.maximum(t, 1e-6), -np.inf)
-
-
-def floor_hidden(inner: np.ndarray, centre: np.ndarray, radius: float, base_z: float, rim_z: float,
-                 camera_xy: np.ndarray | None, camera_z: float | None, share: float) -> bool:
-    """True when the lowest tenth of the points seen inside (``inner``) lie where the lines of sight
-    over the rim could reach no lower (within ``share`` of the depth seeable there) and more than
-    ``share`` of the height above the base: the inside of the far wall seen down to the grazing line,
-    the floor deeper. A floor the camera saw lies above that limit (it hides what is under it), or
-    low, where no floor could be deeper."""
-    if camera_xy is None or camera_z is None or camera_z <= rim_z or len(inner) == 0:
-        return False
-    low = inner[inner[:, 2] <= np.percentile(inner[:, 2], 10)]
-    limit = sight_limit(low, centre, radius, rim_z, camera_xy, camera_z)
-    ok = np.isfinite(limit)
-    if not ok.any() or np.median(low[:, 2]) - base_z <= share * (rim_z - base_z):
-        return False
-    return bool(np.median(low[ok, 2] - limit[ok]) < share * np.median(rim_z - limit[ok]))
 
 
 def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, params: ContainerParams = ContainerParams(),
@@ -145,15 +113,13 @@ def round_rim(points: np.ndarray, base_z: float, top_z: float, max_radius: float
 
 
 def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor: float, top_z: float, bins: int,
-                   camera_xy: np.ndarray | None, shift: float = 0.0, wall: float = 0.0, floor_seen: bool = True) -> tuple[np.ndarray, np.ndarray]:
+                   camera_xy: np.ndarray | None, shift: float = 0.0, wall: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """The cavity's surface as a polyline (r, z) from the axis up to the rim at (``radius``, ``top_z``),
     both non-decreasing: per radial bin the median height of the points seen inside the rim (on the
     side away from the camera, where the camera sees the inner wall), bins nearer the axis than any
     evidence the floor (a deep cavity seen only on its wall), and per height band the median radius
     of those points (a steep wall, straight down to the floor below the lowest band seen). The seen surface is moved ``shift`` outwards; ``radius`` is the
-    rim's (the middle of its crest), the cavity ends half a ``wall`` inside it. Without ``floor_seen``
-    (the far wall seen down to the grazing line, see :func:`floor_hidden`) the points inside mark the
-    wall only: the floor is flat from the axis to the wall, which goes straight down to it."""
+    rim's (the middle of its crest), the cavity ends half a ``wall`` inside it."""
     rel = points[:, :2] - centre
     r = np.linalg.norm(rel, axis=1)
     inside = r < radius
@@ -170,14 +136,13 @@ def _inner_profile(points: np.ndarray, centre: np.ndarray, radius: float, floor:
             heights[i] = float(np.median(points[near, 2]))
     good = np.isfinite(heights)
     heights = np.interp(mids, mids[good], heights[good], left=floor) if good.any() else np.full(bins, floor)
-    heights = np.clip(np.maximum.accumulate(np.clip(heights, floor, top_z)), floor, top_z) if floor_seen else np.full(bins, floor)
+    heights = np.clip(np.maximum.accumulate(np.clip(heights, floor, top_z)), floor, top_z)
     # a steep wall puts all its points in one radial bin: it is sampled by height too (its radius per band)
     levels = np.linspace(heights[0], top_z, bins + 1)
     walls = [(float(np.median(r[band])), (lo + hi) / 2) for lo, hi in zip(levels[:-1], levels[1:])
              if (band := inside & (points[:, 2] >= lo) & (points[:, 2] < hi)).sum() >= 5]
     walls += walls[:1] and [(walls[0][0], float(heights[0]))]  # unseen below its lowest band, the wall goes straight down
-    radial = np.column_stack([mids, heights]) if floor_seen else np.array([[0.0, floor]])
-    rz = np.vstack([radial, np.array(walls).reshape(-1, 2)])
+    rz = np.vstack([np.column_stack([mids, heights]), np.array(walls).reshape(-1, 2)])
     rz = rz[np.lexsort((rz[:, 0], rz[:, 1]))]  # up the wall: by height, then outwards
     edge = radius - wall / 2
     rz[:, 0] = np.clip(np.maximum.accumulate(rz[:, 0]) + shift, 0.0, edge)
@@ -290,15 +255,14 @@ def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: floa
     wall = float(np.clip(np.percentile(rr, 95) - np.percentile(rr, 5), params.min_wall, params.max_wall_share * radius))
     inner = cavity[np.linalg.norm(cavity[:, :2] - centre, axis=1) < 0.7 * radius]
     # the floor where it was seen; unseen (a deep cup seen aslant), the bottom as thick as the wall
-    seen_floor = len(inner) >= 20 and not floor_hidden(inner, centre, radius, base_z, top_z, camera_xy, camera_z, params.grazing_share)
-    floor = min(floor, float(np.percentile(inner[:, 2], 10))) if seen_floor else base_z + wall
+    floor = min(floor, float(np.percentile(inner[:, 2], 10))) if len(inner) >= 20 else base_z + wall
     floor = float(np.clip(floor, base_z + params.min_floor, top_z - 0.2 * height))
     shift = 0.0
     sides = seen_wall(cavity, centre, floor, top_z, camera_xy, params.bands)
     if sides is not None:  # the seen sides set the wall (the rim band's spread also holds its slope and the noise)
         wall = float(np.clip(sides, params.min_wall, params.max_wall_share * radius))
         shift = min(0.0, (sides - wall) / 2)  # thinner than the least wall: that wall centred between the two sides
-    r_in, z_in = _inner_profile(cavity, centre, radius, floor, top_z, params.bands, camera_xy, shift, wall, seen_floor)
+    r_in, z_in = _inner_profile(cavity, centre, radius, floor, top_z, params.bands, camera_xy, shift, wall)
     seen = _seen_outside(points, centre, base_z, top_z, camera_xy, params.bands)
 
     def outside(r: np.ndarray, z: np.ndarray) -> np.ndarray:  # no thinner than the wall the camera saw outside
