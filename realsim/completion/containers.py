@@ -24,7 +24,8 @@ class ContainerParams:
     """How an open container is recognised and built."""
 
     enabled: bool = True
-    min_depth: float = 0.3  # cavity depth (rim minus floor) as a share of the height that makes it open
+    min_depth: float = 0.3  # cavity depth (rim minus floor) as a share of the depth the camera could see inside that makes it open
+    min_reach: float = 0.033  # m: that depth is taken as at least this (or the height): a grazing view must still see the inside 1 cm down
     bands: int = 12  # radial bins of the cavity's profile
     sectors: int = 12  # wall pieces around
     segments: int = 3  # wall pieces up: at least this many (when the profile has the points)
@@ -46,13 +47,30 @@ class OpenContainer:
     outside: tuple[np.ndarray, np.ndarray]  # the outer wall's radius over height (heights ascending, radii)
 
 
-def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, min_depth: float,
-                 camera_xy: np.ndarray | None = None) -> float | None:
-    """The height of the cavity floor when the observed top is hollow (most of the points inside the
-    rim lie well below it), else None: the lowest tenth of the points near the axis, or, when the
-    camera saw too few there (a deep mug seen aslant), of the inside of the far wall (points within
-    the rim on the side away from ``camera_xy``: from outside, the camera cannot see that side below
-    the rim), a floor at least that deep."""
+def seeable_depth(centre: np.ndarray, radius: float, rim_z: float, height: float, camera_xy: np.ndarray | None,
+                  camera_z: float | None) -> float:
+    """How far below the rim the camera could see inside an open top: a line of sight over the near
+    rim meets the far wall two radii on, so at most ``2 radius tan(elevation)`` down, and no deeper
+    than ``height``; 0 when the camera is not above the rim (the opening cannot be seen). Without a
+    camera, ``height``."""
+    if camera_xy is None or camera_z is None:
+        return height
+    if camera_z <= rim_z:
+        return 0.0
+    run = float(np.linalg.norm(centre - camera_xy)) - radius  # from the camera to the near rim, across
+    return height if run <= 0 else float(min(height, 2.0 * radius * (camera_z - rim_z) / run))
+
+
+def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: float, params: ContainerParams = ContainerParams(),
+                 camera_xy: np.ndarray | None = None, camera_z: float | None = None) -> float | None:
+    """The height of the cavity floor when the observed top is hollow, else None: the camera saw the
+    inside lower than the rim around it, by ``params.min_depth`` of the depth it could see there
+    (:func:`seeable_depth`: a deep mug seen at a grazing angle shows only the top of its far inner
+    wall; a lid or a can's top, however seen, shows nothing below its rim). The floor is the lowest
+    tenth of the points near the axis, or, when the camera saw too few there (a deep mug seen aslant),
+    of the inside of the far wall (points within the rim on the side away from ``camera_xy``: from
+    outside, the camera cannot see that side below the rim), a floor at least that deep. None when
+    the camera (at height ``camera_z``) is not above the rim: the opening is not seen."""
     rel = points[:, :2] - centre
     r = np.linalg.norm(rel, axis=1)
     inner, rim = points[r < 0.7 * radius], points[(r > 0.8 * radius) & (r < 1.15 * radius)]
@@ -61,7 +79,8 @@ def cavity_floor(points: np.ndarray, centre: np.ndarray, radius: float, height: 
     if len(inner) < 20 or len(rim) < 20:
         return None
     rim_z = float(np.percentile(rim[:, 2], 90))
-    if rim_z - float(np.percentile(inner[:, 2], 25)) <= min_depth * height:
+    reach = seeable_depth(centre, radius, rim_z, height, camera_xy, camera_z)
+    if reach <= 0.0 or rim_z - float(np.percentile(inner[:, 2], 25)) <= params.min_depth * min(height, max(reach, params.min_reach)):
         return None
     return float(np.percentile(inner[:, 2], 10))
 
@@ -216,17 +235,18 @@ def _ring(radius: float, z: float, angles: np.ndarray, centre: np.ndarray) -> np
 
 def complete_open_container(points: np.ndarray, centre: np.ndarray, radius: float, base_z: float, top_z: float,
                             params: ContainerParams = ContainerParams(), camera_xy: np.ndarray | None = None,
-                            seen_inside: np.ndarray | None = None) -> OpenContainer | None:
+                            seen_inside: np.ndarray | None = None, camera_z: float | None = None) -> OpenContainer | None:
     """The hollow solid of an open round container, or None when its observed top is not hollow.
 
     The cavity is the surface seen inside the rim (see :func:`_inner_profile`; ``seen_inside``: every
     point the camera saw within the rim, whatever object it was given to: a shallow floor is often
     taken for the support), the wall that surface moved outwards by the thickness scanned at the
-    rim, the bottom solid down to the support."""
+    rim, the bottom solid down to the support. ``camera_z``: the camera's height (with ``camera_xy``,
+    how deep inside it could see: see :func:`cavity_floor`)."""
     if not params.enabled:
         return None
     height = top_z - base_z
-    floor = cavity_floor(points, centre, radius, height, params.min_depth, camera_xy)
+    floor = cavity_floor(points, centre, radius, height, params, camera_xy, camera_z)
     if floor is None:
         return None
     cavity = points if seen_inside is None else np.vstack([points, seen_inside])

@@ -119,7 +119,8 @@ def complete_object(obj: SceneObject, ctx: Context, base_z: float) -> Shape:
         within = (np.linalg.norm(ctx.points[:, :2] - rim[0], axis=1) < rim[1]) & (ctx.points[:, 2] < top_z)
         within &= ctx.points[:, 2] > base_z + ctx.params.containers.min_wall  # lower: the support seen under a flaring wall
         container = complete_open_container(pts, rim[0], rim[1], base_z, top_z, ctx.params.containers,
-                                            ctx.view.camera[:2] if ctx.view is not None else None, ctx.points[within & ~mask])
+                                            ctx.view.camera[:2] if ctx.view is not None else None, ctx.points[within & ~mask],
+                                            float(ctx.view.camera[2]) if ctx.view is not None else None)
     carved = 0.0
     if container is not None and rim is not None:
         mesh, parts, visual = container.outer, container.pieces, container.visual

@@ -76,7 +76,7 @@ def open_rim(container: np.ndarray, base_z: float, max_radius: float, camera: np
     if rim is None:
         return None
     centre, radius = rim
-    if np.linalg.norm(camera[:2] - centre) < 1e-6 or cavity_floor(container, centre, radius, height, params.min_depth, camera[:2]) is None:
+    if np.linalg.norm(camera[:2] - centre) < 1e-6 or cavity_floor(container, centre, radius, height, params, camera[:2], float(camera[2])) is None:
         return None
     return OpenRim(top_z, height, centre, radius)
 
