@@ -60,22 +60,65 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
         near_left, near_right = _extreme_depth(-wb, sb), _extreme_depth(wb, sb)
         contour.extend([near_left, near_right])
         if params.mirror_point and _both_sides_clear(rim[band], wb, lateral, view, params.mirror_probe):
-            middles.append((0.5 * (near_left + near_right), 0.5 * (left + right), abs(near_left - near_right)))
+            middles.append((0.5 * (near_left + near_right), 0.5 * (left + right), abs(near_left - near_right), 0.5 * (lo + hi)))
     if len(contour) < 4:
         return None
     plane = float(np.median(contour))
     front = points[s < plane]
     if len(front) < 10:
         return None
-    images = [points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]]
+    reflected = front - 2.0 * (front @ d - plane)[:, None] * d[None, :]
     stagger = float(np.median([m[2] for m in middles])) if len(middles) >= 2 else 0.0
-    if stagger > params.mirror_stagger * width:  # grazing lines not abreast: turned, so also half a turn about their middle
+    if stagger <= params.mirror_stagger * width:
+        return np.vstack([points, reflected])
+    # grazing lines not abreast: turned, so half a turn about their middle
+    if not params.mirror_turn_alone:
         axis_s, axis_w = np.median(np.asarray(middles)[:, :2], axis=0)
         axis = np.append(axis_s * d[:2] + axis_w * lateral[:2], 0.0)
         turned = 2.0 * axis - points[s < axis_s] * [1, 1, -1]
         if np.mean(view.seen_through(turned, params.carve_tolerance)) <= params.mirror_max_seen_through:
-            images.append(turned)  # else the camera saw through where the turned body would be: it is not symmetric so
-    return np.vstack(images)
+            return np.vstack([points, reflected, turned])  # else the camera saw through where the turned body would be: it is not symmetric so
+        return np.vstack([points, reflected])
+    axis_s, axis_w = _axis_at(np.asarray(middles), points[:, 2])
+    front_half = s < axis_s
+    centre = axis_s[front_half, None] * d[None, :] + axis_w[front_half, None] * lateral[None, :]
+    turned = 2.0 * centre - points[front_half] * [1, 1, -1]
+    return np.vstack([points, *_turned_where_believed(turned, reflected, view, base_z, top_z, params)])
+
+
+def _axis_at(middles: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The vertical axis between the grazing lines at heights ``z``: a straight line (depth and lateral
+    offset linear in height, least squares) through the band ``middles`` (rows: depth, lateral, stagger,
+    height), held at its ends above and below them. A body narrowing to one side (a bottle's shoulder
+    toward an offset cap) moves its middle with height; one axis for all heights turns its upper half
+    onto space the camera saw through."""
+    zc = np.clip(z, middles[:, 3].min(), middles[:, 3].max())
+    fit = np.polyfit(middles[:, 3], middles[:, :2], 1)
+    return np.polyval(fit[:, 0], zc), np.polyval(fit[:, 1], zc)
+
+
+def _turned_where_believed(turned: np.ndarray, reflected: np.ndarray, view: DepthView, base_z: float, top_z: float,
+                           params: CompletionParams) -> list[np.ndarray]:
+    """Height slice by height slice (``params.mirror_bands`` of the body's height): the half-turned image
+    without its points where the camera saw through, unless more than ``params.mirror_turn_refuted`` of
+    them lie there (the section is not centrally symmetric at that height): then the reflection. A
+    centrally symmetric section (an oval, a rounded rectangle) is its half turn at any turn, and the
+    reflection across the line of sight of a turned body's front reaches past its far side; where the
+    body departs from it a little (an offset cap, a shoulder sloping to it) the free space trims it."""
+    through = view.seen_through(turned, params.carve_tolerance)
+    k_t = _slice_index(turned, base_z, top_z, params.mirror_bands)
+    k_r = _slice_index(reflected, base_z, top_z, params.mirror_bands)
+    kept = []
+    for j in range(params.mirror_bands):
+        t = k_t == j
+        believed = not t.any() or float(np.mean(through[t])) <= params.mirror_turn_refuted
+        kept.append(turned[t & ~through] if believed else reflected[k_r == j])
+    return kept
+
+
+def _slice_index(points: np.ndarray, base_z: float, top_z: float, n: int) -> np.ndarray:
+    """The height slice (of ``n`` between ``base_z`` and ``top_z``, the end ones open) of each point."""
+    return np.clip(np.floor((points[:, 2] - base_z) / max(top_z - base_z, 1e-9) * n), 0, n - 1).astype(np.int64)
 
 
 def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:

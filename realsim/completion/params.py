@@ -50,6 +50,8 @@ class CompletionParams:
     containers: ContainerParams = ContainerParams()  # open round containers completed hollow
     mirror_max_depth_share: float = 1.5  # mirror about the occluding contour unless the visible depth is this share of the width
     mirror_point: bool = True  # the hidden half is also the seen half turned half a turn about the vertical axis between the grazing lines (centrally symmetric sections at any turn), not only reflected about the plane across the line of sight
+    mirror_turn_alone: bool = True  # a turned body's hidden half is its half-turned front alone, height slice by height slice (its front reflected across the line of sight reaches past its far side); the reflection only in the slices where the camera saw through the turned image
+    mirror_turn_refuted: float = 0.5  # a height slice whose half-turned image lies more than this share where the camera saw through is not centrally symmetric: reflected instead
     mirror_stagger: float = 0.1  # grazing lines farther apart along the line of sight than this share of the width: a turned body
     mirror_max_seen_through: float = 0.01  # a half-turned image with more of its points in seen free space is refuted
     mirror_probe: float = 0.01  # m: a side's grazing line counts when the camera saw past it this far out
