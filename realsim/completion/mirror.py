@@ -80,9 +80,8 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
             return np.vstack([points, reflected, turned])  # else the camera saw through where the turned body would be: it is not symmetric so
         return np.vstack([points, reflected])
     axis_s, axis_w = _axis_at(np.asarray(middles), points[:, 2])
-    front_half = s < axis_s
-    centre = axis_s[front_half, None] * d[None, :] + axis_w[front_half, None] * lateral[None, :]
-    turned = 2.0 * centre - points[front_half] * [1, 1, -1]
+    centre = axis_s[:, None] * d[None, :] + axis_w[:, None] * lateral[None, :]
+    turned = 2.0 * centre - points * [1, 1, -1]  # every seen point faces the camera: its antipode faces away, hidden
     return np.vstack([points, *_turned_where_believed(turned, reflected, view, base_z, top_z, params)])
 
 
