@@ -25,11 +25,14 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
 
     A body symmetric about that plane has its two grazing lines abreast. When they are staggered by
     more than ``params.mirror_stagger`` of its width (in the height bands whose both ends the camera
-    saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the front
-    is also turned half a turn about the vertical axis halfway between them (exact for a centrally
-    symmetric section at any turn: a box or an oval bottle set diagonally), unless more than
-    ``params.mirror_max_seen_through`` of that image lies where the camera saw through (the body is
-    not symmetric so). The hull of both images is the least body either symmetry allows.
+    saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the seen
+    points are turned half a turn about the vertical axis halfway between them (a line through the
+    bands' middles: see :func:`_axis_at`), exact for a centrally symmetric section at any turn (a box,
+    an oval or rounded-rectangle bottle set diagonally). With ``params.mirror_turn_alone`` that image
+    replaces the reflection (which reaches past a turned body's far side) height slice by height slice,
+    trimmed by the free space, except where the free space refutes it (see
+    :func:`_turned_where_believed`); without, the hull of both images is kept unless more than
+    ``params.mirror_max_seen_through`` of the turned one lies where the camera saw through.
     """
     d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
     if np.linalg.norm(d) < 1e-6:
