@@ -26,7 +26,7 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     A body symmetric about that plane has its two grazing lines abreast. When they are staggered by
     more than ``params.mirror_stagger`` of its width (in the height bands whose both ends the camera
     saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the seen
-    points are turned half a turn about the vertical axis halfway between them (a line through the
+    near half is turned half a turn about the vertical axis halfway between them (a line through the
     bands' middles: see :func:`_axis_at`), exact for a centrally symmetric section at any turn (a box,
     an oval or rounded-rectangle bottle set diagonally). With ``params.mirror_turn_alone`` that image
     replaces the reflection (which reaches past a turned body's far side) height slice by height slice,
@@ -83,8 +83,9 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
             return np.vstack([points, reflected, turned])  # else the camera saw through where the turned body would be: it is not symmetric so
         return np.vstack([points, reflected])
     axis_s, axis_w = _axis_at(np.asarray(middles), points[:, 2])
-    centre = axis_s[:, None] * d[None, :] + axis_w[:, None] * lateral[None, :]
-    turned = 2.0 * centre - points * [1, 1, -1]  # every seen point faces the camera: its antipode faces away, hidden
+    near = s < axis_s  # the near half onto the far half (a far point seen over the top, turned, would land on the seen front)
+    centre = axis_s[near, None] * d[None, :] + axis_w[near, None] * lateral[None, :]
+    turned = 2.0 * centre - points[near] * [1, 1, -1]
     return np.vstack([points, *_turned_where_believed(turned, reflected, view, base_z, top_z, params)])
 
 
