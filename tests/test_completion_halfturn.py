@@ -108,27 +108,26 @@ def test_no_half_turn_the_camera_saw_through() -> None:
     reflected = mirror_hidden_half(seen, view, 0.0, 0.2, dataclasses.replace(params, mirror_point=False))
     believed = mirror_hidden_half(seen, view, 0.0, 0.2, dataclasses.replace(params, mirror_turn_refuted=1.0))
     assert refuted is not None and reflected is not None and believed is not None
-    assert np.array_equal(np.unique(refuted, axis=0), np.unique(reflected, axis=0))
+    assert np.array_equal(refuted, reflected)
     assert len(believed) == len(seen)  # believed, every turned point is trimmed by the free space
 
 
-def test_the_half_turn_is_refuted_only_at_the_heights_seen_through() -> None:
-    """The camera saw through where the turned back would be in the upper half only (a cap or a shoulder
-    that is not centrally symmetric): the lower half stays turned, the upper half is reflected."""
+def test_a_half_turn_a_little_off_is_trimmed_not_refuted() -> None:
+    """The camera saw through a few of the turned points (a cap or shoulder that is not symmetric, an axis
+    a little off): those go, the rest stays, and the reflection is not added."""
     turn = np.radians(40.0)
     seen = _seen_side(turn)
     view = _view(5.0, turn)
-    rows = np.arange(view.depth.shape[0])
-    upper = rows < INTR.cy  # image rows above the camera's height: world z > 0.1 at the oval
-    view.depth[np.ix_(upper, view.depth[0] < 5.0)] = 1.2
+    top_rows = np.arange(view.depth.shape[0]) < 41  # the rows of the oval's upper 1.5 cm
+    view.depth[np.ix_(top_rows, view.depth[0] < 5.0)] = 1.2  # the camera saw past the top of the oval there
     params = CompletionParams()
     done = mirror_hidden_half(seen, view, 0.0, 0.2, params)
-    reflected = mirror_hidden_half(seen, view, 0.0, 0.2, dataclasses.replace(params, mirror_point=False))
-    assert done is not None and reflected is not None
-    low, high = done[done[:, 2] < 0.07], done[done[:, 2] > 0.13]
-    assert _covered(low, turn) > 0.92 and _area_share(low, turn) < 1.12  # turned
-    high_reflected = reflected[reflected[:, 2] > 0.13]
-    assert np.array_equal(np.unique(high, axis=0), np.unique(high_reflected, axis=0))
+    clear = mirror_hidden_half(seen, _view(5.0, turn), 0.0, 0.2, params)
+    assert done is not None and clear is not None
+    trimmed = len(clear) - len(done)
+    assert 0 < trimmed < params.mirror_turn_refuted * (len(clear) - len(seen))
+    assert _area_share(done, turn) < 1.12  # turned, not also reflected
+    assert not np.any(view.seen_through(done[len(seen):], params.carve_tolerance))
 
 
 def test_no_half_turn_where_a_nearer_body_hides_the_sides() -> None:

@@ -29,9 +29,10 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     near half is turned half a turn about the vertical axis halfway between them (a line through the
     bands' middles: see :func:`_axis_at`), exact for a centrally symmetric section at any turn (a box,
     an oval or rounded-rectangle bottle set diagonally). With ``params.mirror_turn_alone`` that image
-    replaces the reflection (which reaches past a turned body's far side) height slice by height slice,
-    trimmed by the free space, except where the free space refutes it (see
-    :func:`_turned_where_believed`); without, the hull of both images is kept unless more than
+    replaces the reflection, which reaches past a turned body's far side, less its points where the
+    camera saw through (an axis a little off, a cap or shoulder that is not symmetric), unless more
+    than ``params.mirror_turn_refuted`` of it lies there (the body is not centrally symmetric: the
+    reflection stands). Without, the hull of both images is kept unless more than
     ``params.mirror_max_seen_through`` of the turned one lies where the camera saw through.
     """
     d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
@@ -86,7 +87,10 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
     near = s < axis_s  # the near half onto the far half (a far point seen over the top, turned, would land on the seen front)
     centre = axis_s[near, None] * d[None, :] + axis_w[near, None] * lateral[None, :]
     turned = 2.0 * centre - points[near] * [1, 1, -1]
-    return np.vstack([points, *_turned_where_believed(turned, reflected, view, base_z, top_z, params)])
+    through = view.seen_through(turned, params.carve_tolerance)
+    if np.mean(through) > params.mirror_turn_refuted:
+        return np.vstack([points, reflected])  # the free space refutes the half turn: not centrally symmetric
+    return np.vstack([points, turned[~through]])
 
 
 def _axis_at(middles: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -98,30 +102,6 @@ def _axis_at(middles: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray
     zc = np.clip(z, middles[:, 3].min(), middles[:, 3].max())
     fit = np.polyfit(middles[:, 3], middles[:, :2], 1)
     return np.polyval(fit[:, 0], zc), np.polyval(fit[:, 1], zc)
-
-
-def _turned_where_believed(turned: np.ndarray, reflected: np.ndarray, view: DepthView, base_z: float, top_z: float,
-                           params: CompletionParams) -> list[np.ndarray]:
-    """Height slice by height slice (``params.mirror_bands`` of the body's height): the half-turned image
-    without its points where the camera saw through, unless more than ``params.mirror_turn_refuted`` of
-    them lie there (the section is not centrally symmetric at that height): then the reflection. A
-    centrally symmetric section (an oval, a rounded rectangle) is its half turn at any turn, and the
-    reflection across the line of sight of a turned body's front reaches past its far side; where the
-    body departs from it a little (an offset cap, a shoulder sloping to it) the free space trims it."""
-    through = view.seen_through(turned, params.carve_tolerance)
-    k_t = _slice_index(turned, base_z, top_z, params.mirror_bands)
-    k_r = _slice_index(reflected, base_z, top_z, params.mirror_bands)
-    kept = []
-    for j in range(params.mirror_bands):
-        t = k_t == j
-        believed = not t.any() or float(np.mean(through[t])) <= params.mirror_turn_refuted
-        kept.append(turned[t & ~through] if believed else reflected[k_r == j])
-    return kept
-
-
-def _slice_index(points: np.ndarray, base_z: float, top_z: float, n: int) -> np.ndarray:
-    """The height slice (of ``n`` between ``base_z`` and ``top_z``, the end ones open) of each point."""
-    return np.clip(np.floor((points[:, 2] - base_z) / max(top_z - base_z, 1e-9) * n), 0, n - 1).astype(np.int64)
 
 
 def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
