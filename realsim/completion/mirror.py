@@ -25,11 +25,15 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
 
     A body symmetric about that plane has its two grazing lines abreast. When they are staggered by
     more than ``params.mirror_stagger`` of its width (in the height bands whose both ends the camera
-    saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the front
-    is also turned half a turn about the vertical axis halfway between them (exact for a centrally
-    symmetric section at any turn: a box or an oval bottle set diagonally), unless more than
-    ``params.mirror_max_seen_through`` of that image lies where the camera saw through (the body is
-    not symmetric so). The hull of both images is the least body either symmetry allows.
+    saw past, ``params.mirror_probe`` out), the body is turned: with ``params.mirror_point`` the seen
+    near half is turned half a turn about the vertical axis halfway between them (a line through the
+    bands' middles: see :func:`_axis_at`), exact for a centrally symmetric section at any turn (a box,
+    an oval or rounded-rectangle bottle set diagonally). With ``params.mirror_turn_alone`` that image
+    replaces the reflection, which reaches past a turned body's far side, less its points where the
+    camera saw through (an axis a little off, a cap or shoulder that is not symmetric), unless more
+    than ``params.mirror_turn_refuted`` of it lies there (the body is not centrally symmetric: the
+    reflection stands). Without, the hull of both images is kept unless more than
+    ``params.mirror_max_seen_through`` of the turned one lies where the camera saw through.
     """
     d = np.append(points[:, :2].mean(axis=0) - view.camera[:2], 0.0)
     if np.linalg.norm(d) < 1e-6:
@@ -60,22 +64,44 @@ def mirror_hidden_half(points: np.ndarray, view: DepthView, base_z: float, top_z
         near_left, near_right = _extreme_depth(-wb, sb), _extreme_depth(wb, sb)
         contour.extend([near_left, near_right])
         if params.mirror_point and _both_sides_clear(rim[band], wb, lateral, view, params.mirror_probe):
-            middles.append((0.5 * (near_left + near_right), 0.5 * (left + right), abs(near_left - near_right)))
+            middles.append((0.5 * (near_left + near_right), 0.5 * (left + right), abs(near_left - near_right), 0.5 * (lo + hi)))
     if len(contour) < 4:
         return None
     plane = float(np.median(contour))
     front = points[s < plane]
     if len(front) < 10:
         return None
-    images = [points, front - 2.0 * (front @ d - plane)[:, None] * d[None, :]]
+    reflected = front - 2.0 * (front @ d - plane)[:, None] * d[None, :]
     stagger = float(np.median([m[2] for m in middles])) if len(middles) >= 2 else 0.0
-    if stagger > params.mirror_stagger * width:  # grazing lines not abreast: turned, so also half a turn about their middle
+    if stagger <= params.mirror_stagger * width:
+        return np.vstack([points, reflected])
+    # grazing lines not abreast: turned, so half a turn about their middle
+    if not params.mirror_turn_alone:
         axis_s, axis_w = np.median(np.asarray(middles)[:, :2], axis=0)
         axis = np.append(axis_s * d[:2] + axis_w * lateral[:2], 0.0)
         turned = 2.0 * axis - points[s < axis_s] * [1, 1, -1]
         if np.mean(view.seen_through(turned, params.carve_tolerance)) <= params.mirror_max_seen_through:
-            images.append(turned)  # else the camera saw through where the turned body would be: it is not symmetric so
-    return np.vstack(images)
+            return np.vstack([points, reflected, turned])  # else the camera saw through where the turned body would be: it is not symmetric so
+        return np.vstack([points, reflected])
+    axis_s, axis_w = _axis_at(np.asarray(middles), points[:, 2])
+    near = s < axis_s  # the near half onto the far half (a far point seen over the top, turned, would land on the seen front)
+    centre = axis_s[near, None] * d[None, :] + axis_w[near, None] * lateral[None, :]
+    turned = 2.0 * centre - points[near] * [1, 1, -1]
+    through = view.seen_through(turned, params.carve_tolerance)
+    if np.mean(through) > params.mirror_turn_refuted:
+        return np.vstack([points, reflected])  # the free space refutes the half turn: not centrally symmetric
+    return np.vstack([points, turned[~through]])
+
+
+def _axis_at(middles: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The vertical axis between the grazing lines at heights ``z``: a straight line (depth and lateral
+    offset linear in height, least squares) through the band ``middles`` (rows: depth, lateral, stagger,
+    height), held at its ends above and below them. A body narrowing to one side (a bottle's shoulder
+    toward an offset cap) moves its middle with height; one axis for all heights turns its upper half
+    onto space the camera saw through."""
+    zc = np.clip(z, middles[:, 3].min(), middles[:, 3].max())
+    fit = np.polyfit(middles[:, 3], middles[:, :2], 1)
+    return np.polyval(fit[:, 0], zc), np.polyval(fit[:, 1], zc)
 
 
 def mirror_about_crest(points: np.ndarray, view: DepthView, base_z: float, top_z: float, params: CompletionParams) -> np.ndarray | None:
