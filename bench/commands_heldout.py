@@ -379,6 +379,7 @@ from commands_blind_nov30c import HELDOUT35  # noqa: E402
 from commands_blind_nov30d import HELDOUT36  # noqa: E402
 from commands_blind_nov30e import HELDOUT37  # noqa: E402
 from commands_blind_nov30f import HELDOUT38  # noqa: E402
+from commands_blind_nov30g import HELDOUT39  # noqa: E402
 
 HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout": HELDOUT, "heldout2": HELDOUT2, "heldout3": HELDOUT3, "heldout4": HELDOUT4,
@@ -392,4 +393,5 @@ HELDOUT_SETS: dict[str, list[tuple[str, str, str]]] = {
     "heldout36": HELDOUT36,
     "heldout37": HELDOUT37,
     "heldout38": HELDOUT38,
+    "heldout39": HELDOUT39,
 }

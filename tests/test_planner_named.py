@@ -34,6 +34,7 @@ def test_a_name_given_is_said_as_what_it_stands_for(message: str, said: str) -> 
     "The bowl is the white one.",  # both sides describe a thing
     "Banana: in the bowl please",  # a thing's own word is no name
     "the red cube is heavy, lift it",
+    "the mug goes on the LEFT of the bowl. Your left! it's the same left, just do it.",  # a side is never a name
 ])
 def test_statements_are_no_names(message: str) -> None:
     assert named(message) == message

@@ -28,6 +28,9 @@ _PLACE = re.compile(r"^(?:the )?(?:gap|space|spot|place|area|room|slot|middle|po
                     r"|to the left of|to the right of|on top of|inside|in|on)\s+(?:the|that|this)\b", re.I)
 _MARK = r"(?:code ?name(?:d)?|code-named|call ?sign|alias|aka|a\.k\.a\.|known as|nicknamed?)"
 _DET = r"(?:the|our|my|your|a|an)"
+# words a place or a way is said with: never a name's ("it's the same left": no name "same left")
+_NOT_NAMES = frozenset({"left", "right", "front", "back", "top", "bottom", "middle", "centre", "center", "side", "same", "other", "way",
+                        "end", "edge", "corner", "near", "far", "up", "down", "plan", "idea", "problem", "thing", "deal"})
 _PRONOUN = re.compile(r"^(?:it|this|that|they|them|these|those|he|she|you|i|we|me|us|one|here|there|everything|something|nothing)$", re.I)
 _STATEMENT = re.compile(r"\b(?:is|are|was|were|be|been|being|not|very|too|so|really|in|on|at|of|to|with|from|and|or|but|if|because)\b", re.I)
 _OPENERS = r"(?:(?:and|so|ok|okay|right|now|alright|listen|first|also|then|well),?\s+)*"
@@ -60,7 +63,7 @@ def _as_name(phrase: str, raw: str, marked: bool) -> str | None:
     three words, said with "the", capitalised or marked, and is no pronoun, statement or amount."""
     text = re.sub(rf"^(?:{_MARK}\s+)?(?:{_DET}\s+)?", "", phrase.strip(" ,.\"'"), flags=re.I).strip(" \"'")
     words = text.split()
-    if not 1 <= len(words) <= 3 or _PRONOUN.match(text) or not marked and any(w.lower() in _THING_WORDS and w.lower() not in GENERIC for w in words) or _STATEMENT.search(text) or re.search(r"\d", text) and len(words) == 1:
+    if not 1 <= len(words) <= 3 or _PRONOUN.match(text) or any(w.lower() in _NOT_NAMES for w in words) or not marked and any(w.lower() in _THING_WORDS and w.lower() not in GENERIC for w in words) or _STATEMENT.search(text) or re.search(r"\d", text) and len(words) == 1:
         return None
     capitalised = any(w[:1].isupper() for w in words) and not raw.lstrip().startswith(words[0]) or any(w[:1].isupper() for w in words[1:])
     said_as_name = re.match(rf"\s*(?:{_MARK}\s+)?(?:the|our)\s", phrase, re.I) is not None
@@ -85,7 +88,7 @@ _IS = re.compile(rf"^{_OPENERS}(?P<a>.+?)\s+(?:is|=|will be|shall be|becomes|mea
 _COLON = re.compile(rf"^{_OPENERS}(?P<a>[A-Za-z][\w ]{{0,30}}?)\s*:\s*(?P<b>.+)$")
 _CALL = re.compile(rf"^{_OPENERS}(?:(?:we(?:'ll| will| shall)?|i(?:'ll| will)?|let's|let us)\s+)?(?:call|name|dub)\s+(?P<b>it|them|that|this|.+?)\s+(?P<a>(?:{_DET}\s+)?\S+(?:\s\S+)?)$", re.I)
 _MARKED = re.compile(rf"^{_OPENERS}(?P<b>.+?),?\s+{_MARK}\s+(?P<a>.+)$", re.I)
-_THATS = re.compile(rf"^{_OPENERS}(?:that|this|it)(?:'s| is)\s+(?P<a>(?:{_DET}\s+)?[\w ]+)$", re.I)
+_THATS = re.compile(rf"^{_OPENERS}(?:that|this)(?:'s| is)\s+(?P<a>(?:{_DET}\s+)?[\w ]+)$", re.I)
 _FIRST_THING = re.compile(r"\b(?:the|that|this)\s+(?:[a-z']+\s+){0,3}[a-z']+\b", re.I)
 
 
