@@ -80,6 +80,13 @@ def test_named_and_bearing_requests(sentence: str, lines: list[str]) -> None:
     ("The green cube gets planted on the blue cube.", ["place_on('obj5_cube', 'obj4_cube')"]),
     ("Three centimetres forward for the strawberry, please.", ["push('obj8_strawberry', 'forward', 0.03)"]),
     ("The strawberry hops off the red cube and lands right beside the bowl.", ["place_beside('obj8_strawberry', 'obj6_bowl', 'next')"]),
+    # a magician's, a station announcer's and a furniture mover's words; a thing spoken of as a person
+    ("For my last trick, my lovely assistant will make the strawberry vanish... into the bowl! Hey presto!", ["place_in('obj8_strawberry', 'obj6_bowl')"]),
+    ("The banana simply disappears. Whisk it out of the way, assistant.", ["place('obj7_banana'"]),
+    ("The green cube is requested on the blue cube. Green cube, please take your seat on the blue cube.", ["place_on('obj5_cube', 'obj4_cube')"]),
+    ("Would the strawberry, currently by the bowl, please disembark onto the red cube.", ["place_on('obj8_strawberry', 'obj3_cube')"]),
+    ("Don't lift the bowl, just walk it along the table, five centimetres to the right.", ["push('obj6_bowl', 'right', 0.05)"]),
+    ("The strawberry is the guest of honour, so she sits between the red cube and the blue cube.", ["place_between('obj8_strawberry', 'obj3_cube', 'obj4_cube')"]),
     # "that can": the one just named
     ("Put the banana in front of the left can, so between that can and yourself.", ["place_beside('obj7_banana', 'obj1_soda_can', 'front')"]),
 ])

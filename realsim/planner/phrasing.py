@@ -78,7 +78,7 @@ FILLERS = (
     r"por ?favou?r", r"porfa", r"gracias", r"muchas gracias", r"bitte(?: schon| sehr)?", r"danke(?: schon| sehr)?", r"merci(?: beaucoup| bien)?",
     r"s ?il (?:te|vous) plait", r"alors", r"allez", r"vale", r"bueno", r"oye", r"arre", r"jaldi(?: se| jaldi)?", r"yaani", r"per favore", r"grazie",
     r"prego", r"obrigad[oa]", r"kudasai", r"onegai(?: ?shimasu)?", r"shukriya", r"dhanyavaa?d", r"bas", r"accha|acha", r"ja", r"genau",
-        r"(?:okay,? |ok,? )?carry on", r"hold on,? (?:mum|mom|dad|love|honey|a (?:sec|second|moment|minute))", r"make it so", r"engage",
+        r"(?:okay,? |ok,? )?carry on", r"abracadabra", r"hey presto", r"presto", r"ta-?da+", r"et voila", r"voila", r"wherever there s (?:room|space)", r"wherever it fits", r"hold on,? (?:mum|mom|dad|love|honey|a (?:sec|second|moment|minute))", r"make it so", r"engage",
         r"places,? (?:everyone|everybody|people|all)", r"and action", r"(?:breathe|inhale|exhale)(?: in| out)?(?: (?:deeply|slowly|gently))?", r"(?:and )?(?:on|with) (?:the|your|an?) (?:in|out)[ -]?breath", r"take a (?:deep |slow )?breath",
     r"thank you so much", r"thanks so much", r"(?:good )?(?:morning|afternoon|evening)", r"hello", r"dear", r"no wait", r"wait", r"actually", r"oops", r"sorry", r"instead",
 )
@@ -90,7 +90,7 @@ _PRECISE = (r"(?:a couple of|a few|an?|one|two|three|four|five|six|seven|eight|n
 _TIME_FRAME = re.compile(r"^\s*(?:(?:when|once|by the time|before) (?:i|you|we) (?:[a-z']+ ){0,3}?(?:back|home|here|in|out|return|returns|done|finished)"
                          r"|(?:by|at|towards?) the end of (?:this|it|all this|the day|today))\b,?\s*|\s*,?\s*\bby now\b")
 # addressing the robot ("robot, ...", "..., panda") is not part of the command
-_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy|computer|helm|arm|(?:right |ok |okay |alright )?(?:crew|team|folks|gang|squad|troops|everyone|everybody|people|guys|all|y all|yall|you all))\s*(?=[,.;:]|$)")
+_VOCATIVE = re.compile(r"(?:^|(?<=[,.;]))\s*(?:hey |hi |ok |okay )?(?:robot|franka|panda|robot arm|buddy|computer|helm|arm|(?:my )?(?:lovely |trusty |able )?assistant|(?:right |ok |okay |alright )?(?:crew|team|folks|gang|squad|troops|everyone|everybody|people|guys|all|y all|yall|you all))\s*(?=[,.;:]|$)")
 # constraints the robot always keeps (it avoids moving anything else): "without touching anything else"
 _THINGS = r"(?:anything|everything|something|(?:any of )?the (?:other|remaining|rest of the) (?:thing|object|item)s?|(?:other|remaining) (?:thing|object|item)s?|the rest)"
 _CONSTRAINT = re.compile(r"\b(?:(?:and )?(?:while |by )?being careful not to|careful not to|without|(?:and )?(?:dont|don t|do not|try not to|avoid))"
@@ -173,7 +173,9 @@ def clean(command: str) -> str:
     text = re.sub(r"(^|(?<=[.,;!?] ))((?:about |roughly )?(?:\d+(?:\.\d+)?|an?|one|two|three|four|five|six|seven|eight|nine|ten) ?(?:cm|mm|inch\w*|centimet\w*|millimet\w*) "
                   r"(?:to the (?:left|right)|left|right|forward|back|backward|closer|away|toward (?:me|you)|towards (?:me|you))) for ((?:the|that|this) [a-z' ]+?)(?=\s*(?:$|[.,;!?]))",
                   r"\1move \3 \2", text)
-    text = re.sub(r"\bno (?:lifting|picking up|picking|grabbing|grasping|carrying) (?=(?:that|the|this|it)\b)", "", text)  # "no lifting that can, just ease it back": the manner ruled out
+    text = re.sub(r"\bno (?:lifting|picking up|picking|grabbing|grasping|carrying) (?=(?:that|the|this|it)\b)", "", text)
+    text = re.sub(r"\b(?:dont|do not|don t|don't) (?:lift|pick up|raise|carry|grab) ((?:that|the|this) [a-z ]+?|it)(?=\s*[,.;-]+\s*(?:just |only |simply |instead )?(?:move|push|slide|walk|nudge|shove|ease|scoot|drag)\b)",
+                  r"\1", text)  # "don't lift that bowl, just walk it along": the manner ruled out, the thing still moved  # "no lifting that can, just ease it back": the manner ruled out
     text = re.sub(r"\bease (it|them|(?:the|that|this) [a-z ]+?) (?=(?:back|forward|left|right|over|closer|away|toward|towards|to the|into|onto|in|on|off)\b)", r"move \1 ", text)
     text = casual.causative(clock.nautical(clock.clock(_TIME_FRAME.sub("", code_calls.as_words(_by_comparison(voices.plain(text)))))))
     text = _UNDO.sub("put it back where it was", text)  # "move the mug 5 cm left. actually, undo that": where it was before
@@ -214,6 +216,28 @@ def clean(command: str) -> str:
     text = re.sub(rf"\b(lift|raise|pick up|hold up) ({_THE_THING}) (?:up )?off (?:of )?the (?:table|counter|desk|surface|floor)\b",
                   r"\1 \2", text)  # "lift that mug up off the table"
     text = re.sub(r"\b(?:him|her)\b", "it", text)  # an object is "it" ("you put him beside the bottle")
+    # a thing spoken of as a person: "he stands between the couple", "she sits at its left", "their way to the bowl"
+    text = re.sub(r"\b(?:he|she)(?= (?:sits|stands|goes|belongs|needs|should|must|has to|will|can|gets|stays|lands|comes|moves|rests|waits|sit|stand|go|rest))\b", "it", text)
+    # a stage magician's words: "make it vanish into the bowl", "the levitating mug", "the switcheroo", "whisk it out of the way"
+    text = re.sub(r"\bmake (it|them|(?:the|that|this) [a-z ]+?) (?:vanish|disappear|reappear|appear|materiali[sz]e|teleport)(?:[.\s]*)(?=(?:in|into|inside|on|onto|next to|beside|behind|in front of)\b)", r"put \1 ", text)
+    text = re.sub(r"\b(?:make (it|them|(?:the|that|this) [a-z ]+?) (?:vanish|disappear)|((?:the|that|this) [a-z ]+?) (?:simply |just )?(?:vanishes|disappears))\b",
+                  lambda m: f"move {m.group(1) or m.group(2)} aside", text)
+    text = re.sub(r"\b(?:whisk|spirit|magic) (it|them|(?:the|that|this) [a-z ]+?) (?=(?:away|out of|off|aside|into|onto|in|on)\b)", r"move \1 ", text)
+    text = re.sub(r"\b(?:levitate|float) (it|them|(?:the|that|this) [a-z ]+?)(?=\s*(?:$|[.,;!?]| up\b))", r"lift \1", text)
+    text = re.sub(r"\bthe (?:levitating|floating|flying|vanishing|disappearing|amazing|incredible|mysterious) ([a-z]+(?: [a-z]+)?)\b", r"the \1", text)
+    text = re.sub(r"\b(?:do |perform )?the (?:switcheroo|old switcheroo|switch-?a-?roo|swaparoo)\b", "swap them", text)
+    # a station's announcements: "the tin is requested at the bowl", "please make their way to the bowl", "report to the front of the bowl"
+    text = re.sub(r"\b((?:the|that|this) [a-z ]+?) (?:is|are) (?:requested|wanted|needed|expected|called) (?=(?:at|in|inside|on|next to|beside|behind|in front of|on the|to the)\b)", r"put \1 ", text)
+    text = re.sub(r"\b(?:please )?(?:make (?:their|its|his|her|your) way|report|proceed|go|move)(?: directly| now)? to (?=(?:the front|the back|the left|the right|the (?:far|near) side) of\b)", "put it at ", text)
+    text = re.sub(r"\b(?:please )?(?:make (?:their|its|his|her|your) way|proceed) (?:over |directly )?to ((?:the|that|this) [a-z ]+?)(?: and (?:wait|stand|sit|stay|rest) (?=(?:on|at|in|by|beside|next to|behind|in front of)\b)| |(?=\s*[.,;!?]|$))",
+                  r"put it next to \1 ", text)
+    text = re.sub(r"\b(?:please )?(?:take (?:your|its|their|his|her) seat|be seated|have a seat|board|embark) (?=(?:in|inside|on|at|next to|beside)\b)", "put it ", text)
+    text = re.sub(r"\b(?:please )?(?:disembark|alight|get off|step off|climb down)(?: (?:from|off) (?:the|that|this) [a-z ]+?)? (?=(?:onto|on|to|at|next to|beside)\b)", "put it ", text)
+    text = re.sub(r"\b(?:walk|waltz|shimmy|jockey) (it|them|(?:the|that|this) [a-z ]+?)(?: along(?: the (?:table|counter|surface|floor))?)?[\s,-]+(?=(?:\d|an?|one|two|three|four|five|ten|about|left|right|forward|back|to the|toward|towards|over|closer|away|along)\b)", r"move \1 ", text)
+    text = re.sub(r"\bthe (table|floor|counter) proper\b", r"the \1", text)
+    text = re.sub(r"(?:^|(?<=[.!?] ))would ((?:the|that|this) [a-z ]+?)(?=,| please\b)", r"\1", text)  # "Would the small white object, ..., please ...": the one addressed
+    text = re.sub(r"\bthe (?:passenger|guest|traveller|traveler|customer|party|person|gentleman|lady|patient|contestant|volunteer)s? (?:travelling|traveling|known|listed|booked|going|sitting|registered|named) (?:as|under(?: the name)?) ", "", text)
+    text = re.sub(r"\s*,?\s*(?:on|at) (?:the robot s|the robots|the robot|your|my|our|the near|the nearer|the close|the closer) side(?=\s*(?:$|[.,;!?]))", "", text)  # "the front of the bowl, on the robot's side"
     text = re.sub(r"\bfrom (?:itself|yourself|the robot itself)\b", "from you", text)  # "farther away from itself": the robot
     text = re.sub(r"^(?:when|once|by the time) (?:it ?'?s|it is|it has|you ?'?re|you are|you have|that ?'?s|that is|everything ?'?s|everything is|all is|we ?'?re|we are)"
                   r" (?:finished|done|over|through|complete)[,\s]+", "", text)  # "when it's finished, the mug should be ..."
@@ -265,7 +289,7 @@ def clean(command: str) -> str:
     text = re.sub(r"\b(?:(?:to|toward|towards) )?(?:the |your )?(?:robot|franka|panda)'?s (left|right)\b", r"to the \1", text)  # its own
     text = _axes(text)
     text = re.sub(r"\b(to|on|at) (?:the )?([a-z ]+?)'s (left|right)(?: hand)?(?: side)?\b", r"\1 the \3 of the \2", text)
-    text = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?: hand)?(?: side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)  # "the thing to its right"
+    text = re.sub(r"\b(?:to|on|at) (its|their) (left|right)(?:[- ]hand)?(?: side)?\b", lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)  # "the thing to its right"
     text = re.sub(r"\bside by side\b", "next to each other", text)
     # "the soda can furthest to the left": the leftmost one
     text = re.sub(r"\bthe ((?:[a-z]+ ){0,3}?[a-z]+) (?:that s |that is |which is |thats )?(?:the )?(?:furthest|farthest|most|the most) (?:to|on|at|over to) (?:the|your|my) (left|right)\b",
