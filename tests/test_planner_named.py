@@ -40,7 +40,7 @@ def test_statements_are_no_names(message: str) -> None:
     assert named(message) == message
 
 
-@pytest.mark.parametrize(("sentence", "lines"), [
+NAMED_AND_BEARINGS: list[tuple[str, list[str]]] = [
     ("Bravo is the banana, Charlie is the bowl. Bravo goes in Charlie.", ["place_in('obj7_banana', 'obj6_bowl')"]),
     ("The green cube is the Scout. Push the Scout back 4 cm, then return to base.", ["push('obj5_cube', 'back', 0.04)", "go_home()"]),
     ("North is away from you. Push the banana two inches south.", ["push('obj7_banana', 'back', 0.05"]),
@@ -55,14 +55,8 @@ def test_statements_are_no_names(message: str) -> None:
     ("Put the strawberry on the bowl's six, that is, behind it.", ["place_beside('obj8_strawberry', 'obj6_bowl', 'behind')"]),
     ("lift the soda can furthest to your right", ["grasp('obj2_soda_can')"]),
     ("let the strawberry down onto the table for a breather", ["place_down('obj8_strawberry')"]),
-])
-def test_named_and_bearing_requests(sentence: str, lines: list[str]) -> None:
-    got = call_lines(sentence)
-    for line in lines:
-        assert any(g.startswith(line) for g in got), (sentence, got)
-
-
-@pytest.mark.parametrize(("sentence", "lines"), [
+]
+TOLD_AND_BARGAINED: list[tuple[str, list[str]]] = [
     # the robot's actions told to an audience
     ("Folks, gather round: in our next trick the robot is going to lift the strawberry and drop it into the bowl. Watch closely.",
      ["place_in('obj8_strawberry', 'obj6_bowl')"]),
@@ -89,8 +83,11 @@ def test_named_and_bearing_requests(sentence: str, lines: list[str]) -> None:
     ("The strawberry is the guest of honour, so she sits between the red cube and the blue cube.", ["place_between('obj8_strawberry', 'obj3_cube', 'obj4_cube')"]),
     # "that can": the one just named
     ("Put the banana in front of the left can, so between that can and yourself.", ["place_beside('obj7_banana', 'obj1_soda_can', 'front')"]),
-])
-def test_told_and_bargained_requests(sentence: str, lines: list[str]) -> None:
+]
+
+
+@pytest.mark.parametrize(("sentence", "lines"), NAMED_AND_BEARINGS + TOLD_AND_BARGAINED)
+def test_named_bearing_told_and_bargained_requests(sentence: str, lines: list[str]) -> None:
     got = call_lines(sentence)
     for line in lines:
         assert any(g.startswith(line) for g in got), (sentence, got)
