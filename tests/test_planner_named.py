@@ -96,6 +96,7 @@ def test_named_bearing_told_and_bargained_requests(sentence: str, lines: list[st
 def test_a_thing_the_robot_is_pointed_at_is_no_narration() -> None:
     got = call_lines("push the banana toward the robot then lift the strawberry")
     assert got[0].startswith("push('obj7_banana', 'back'") and got[1:] == ["grasp('obj8_strawberry')"]
+    assert call_lines("The thing closest to the robot goes into the thing farther away.") == ["place_in('obj8_strawberry', 'obj6_bowl')"]
 
 
 def test_compass_words_without_a_set_up_are_not_guessed() -> None:

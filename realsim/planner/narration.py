@@ -59,7 +59,8 @@ def narrated(text: str) -> str:
         verb = _plain(m.group(3)) if m else None
         # the robot said as the one acting: at a clause's start, or with a tense ("... demo the arm is going to pick up"), or
         # its verb in the third person ("... the arm just nudges"); "push the can toward the robot then lift it" is no narration
-        if m and verb and (m.group(1).strip() or m.start() == 0 or _TENSE.search(m.group(2)) or m.group(3) != verb):
+        after_place = re.search(r"\b(?:to|toward|towards|from|of|at|near|by|with|behind|beside|than|into|onto|on|in|past|for)\s*$", sentence[:m.start()]) if m else None
+        if m and verb and not after_place and (m.group(1).strip() or m.start() == 0 or _TENSE.search(m.group(2)) or m.group(3) != verb):
             head, tail = sentence[:m.start()] + m.group(1), sentence[m.end():]
             tail = re.sub(r"\b(and(?: then)?|then) (\w+)\b", lambda t: f"{t.group(1)} {_plain(t.group(2)) or t.group(2)}", tail)
             sentence = f"{head}{verb}{tail}"
