@@ -99,6 +99,11 @@ def test_a_thing_the_robot_is_pointed_at_is_no_narration() -> None:
     assert call_lines("The thing closest to the robot goes into the thing farther away.") == ["place_in('obj8_strawberry', 'obj6_bowl')"]
 
 
+def test_that_one_never_means_several() -> None:
+    with pytest.raises(InputError, match="ambiguous"):  # "that one" is one of the two, never both
+        call_lines("take the two soda cans, then put that one in the bowl")
+
+
 def test_compass_words_without_a_set_up_are_not_guessed() -> None:
     assert bearings("push the banana 5 cm north") == "push the banana 5 cm north"
     with pytest.raises(InputError):

@@ -52,6 +52,8 @@ def _plain(verb: str) -> str | None:
 
 def narrated(text: str) -> str:
     """``text`` (lower case) with the robot's actions told in the third person said as requests."""
+    if re.search(r"\b(?:sold|bid|bids|bidder|bidding|auction|auctioneer|going,? going)\b", text):  # at an auction "on the block" is for sale
+        text = re.sub(r"\s*(?:up )?on the (?:auction )?block\b", "", text)
     text = _EYES.sub(r"\1, ", _TALK.sub("", _AUDIENCE.sub("", text)))
     out: list[str] = []
     for sentence in re.split(r"(?<=[.;!?])\s+", text):

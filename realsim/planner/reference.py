@@ -246,6 +246,8 @@ class Resolver:
         if text in SINGULAR_PRONOUNS or text in PLURAL_PRONOUNS:
             if not ctx.last:
                 raise InputError(f"{phrase.strip()!r} does not refer to anything yet; name the object; {self.listing()}")
+            if text.endswith("one") and len(ctx.last) > 1:  # "two soda cans ..., that one goes in the bowl": one of them, not both
+                raise InputError(f"{phrase.strip()!r} is ambiguous: {', '.join(self._distinguish(list(ctx.last)))}; say which one")
             return list(ctx.last)
         m = re.fullmatch(r"(?:obj|object|item|thing|number|no)\s*#?\s*(\d+)((?: [a-z]+)*)", text)  # "object 3", "obj4", "obj1_cube": the scene's numbering
         if m:
